@@ -1,0 +1,24 @@
+/* Error reports for user input: every message names the file, the line and
+ * the key (or script statement) at fault, e.g.
+ *   runs/knot72/c.knot72:12: NTST: must be a positive integer, got '-5'   */
+#ifndef CABLE_ERROR_H
+#define CABLE_ERROR_H
+
+#include <stddef.h>
+
+typedef struct cable_error {
+  int status;          /* a cable_status code (< 0) */
+  char file[512];      /* "" when not from a file */
+  int line;            /* 0 when unknown */
+  char key[64];        /* constants key, script function or "" */
+  char msg[512];
+} cable_error;
+
+void cable_error_clear(cable_error *e);
+/* Fill e (when not NULL) and return status. */
+int cable_error_set(cable_error *e, int status, const char *file, int line, const char *key,
+                    const char *fmt, ...) __attribute__((format(printf, 6, 7)));
+/* "file:line: key: msg" (parts omitted when empty) into buf. */
+const char *cable_error_format(const cable_error *e, char *buf, size_t len);
+
+#endif

@@ -1,0 +1,75 @@
+/* The problem interface: the C form of AUTO-07p's FUNC, BCND, ICND, STPNT and
+ * PVLS user routines, plus the dimensions and names AUTO keeps in the
+ * constants file.  Built-in problems and user plug-ins (.so files exporting
+ * `cable_problem_entry`) are described by the same struct.
+ *
+ * Conventions (identical to AUTO-07p's C interface, with a trailing params):
+ *  - the independent variable is t in [0,1]; the system is autonomous;
+ *  - par[k] is AUTO's PAR(k+1); icp[] holds 0-based parameter indices;
+ *  - derivative arrays are column-major (Fortran, LAPACK):
+ *      dfdu[i + ndim*j]            = d f_i / d u_j            (ndim x ndim)
+ *      dfdp[i + ndim*k]            = d f_i / d par_k          (ndim x npar)
+ *      dbc [i + nbc*j]             j <  ndim:      d fb_i / d u0_j
+ *                                  j <  2 ndim:    d fb_i / d u1_(j-ndim)
+ *                                  j >= 2 ndim:    d fb_i / d par_(j-2ndim)
+ *      dint[i + nint*j]            j < ndim: d fi_i / d u_j; else d/d par_(j-ndim)
+ *  - ijac = 0: values only; 1: also derivatives w.r.t. u; 2: also w.r.t. par.
+ *    Only the columns of the free parameters (icp[0..nfpr-1]) are read.
+ *  - return value: 0 success; > 0 recoverable (the engine rejects the step and
+ *    retries with a smaller one); < 0 fatal (the run stops with a diagnostic).
+ *  - the callbacks may not keep pointers to their array arguments.
+ */
+#ifndef CABLE_PROBLEM_H
+#define CABLE_PROBLEM_H
+
+#include <stddef.h>
+
+#define CABLE_PROBLEM_ABI 1        /* bump when the struct layout changes */
+#define CABLE_NPAR_DEFAULT 36      /* AUTO's default NPAR */
+#define CABLE_PROBLEM_ENTRY "cable_problem_entry"
+
+struct cable_solution;
+
+typedef int cable_func_fn(int ndim, const double *u, const int *icp, const double *par,
+                          int ijac, double *f, double *dfdu, double *dfdp, void *params);
+typedef int cable_bcnd_fn(int ndim, const double *par, const int *icp, int nbc,
+                          const double *u0, const double *u1, int ijac, double *fb,
+                          double *dbc, void *params);
+/* uold, udot, upold: the previous solution, the tangent and its t-derivative at
+ * the same point (AUTO's arguments; used by phase conditions). */
+typedef int cable_icnd_fn(int ndim, const double *par, const int *icp, int nint,
+                          const double *u, const double *uold, const double *udot,
+                          const double *upold, int ijac, double *fi, double *dint,
+                          void *params);
+/* Starting solution at t; also sets the parameters' starting values. */
+typedef int cable_stpnt_fn(int ndim, double t, double *u, double *par, void *params);
+/* Derived quantities of a converged solution, written into par[] slots that the
+ * constants file may list in ICP after the free parameters (AUTO's PVLS). */
+typedef int cable_pvls_fn(const struct cable_solution *sol, double *par, void *params);
+
+typedef struct cable_problem {
+  int abi_version;              /* CABLE_PROBLEM_ABI */
+  size_t struct_size;           /* sizeof(cable_problem) when compiled */
+  const char *name;             /* selected with e=NAME */
+  const char *description;      /* one line */
+  int ndim;                     /* number of ODEs */
+  int nbc;                      /* number of boundary conditions */
+  int nint;                     /* number of integral conditions */
+  int npar;                     /* parameter slots the problem uses (<= NPAR) */
+  const char *const *parnames;  /* npar names, a NULL entry means unnamed; may be NULL */
+  const char *const *unames;    /* ndim names or NULL */
+  cable_func_fn *func;          /* required */
+  cable_bcnd_fn *bcnd;          /* required when nbc > 0 */
+  cable_icnd_fn *icnd;          /* required when nint > 0 */
+  cable_stpnt_fn *stpnt;        /* required for IRS = 0 starts */
+  cable_pvls_fn *pvls;          /* optional */
+  int func_has_jac;             /* 1: func fills dfdu/dfdp when asked; 0: engine differences */
+  int bcnd_has_jac;
+  int icnd_has_jac;
+  void *params;                 /* passed to every callback */
+} cable_problem;
+
+/* A plug-in exports `const cable_problem *cable_problem_entry(void);`. */
+typedef const cable_problem *cable_problem_entry_fn(void);
+
+#endif

@@ -1,0 +1,20 @@
+#include "cable_constants.h"
+
+#include <string.h>
+
+void cable_constants_init(cable_constants *c)
+{
+  memset(c, 0, sizeof *c);
+  c->ndim = 0; c->ips = 4; c->nbc = 0; c->nint = 0; c->npar = 36;
+  c->ntst = 20; c->ncol = 4; c->iad = 3;
+  c->irs = 0; c->isw = 1; c->isp = 2; c->ilp = 1;
+  c->nmx = 0; c->npr = 0; c->iplt = 0;
+  c->rl0 = -1e300; c->rl1 = 1e300; c->a0 = 0.0; c->a1 = 1e300;
+  c->ds = 0.01; c->dsmin = 0.005; c->dsmax = 0.1; c->iads = 1;
+  c->epsl = 1e-7; c->epsu = 1e-7; c->epss = 1e-5;
+  c->itmx = 9; c->itnw = 5; c->nwtn = 3; c->jac = 0;
+  c->thu_default = 1.0;
+  c->iid = 2; c->iis = 3;
+  c->linsolver = CABLE_LINSOLVER_CONDENSE;
+  c->nsv = 0; c->bpsym = 0;
+}

@@ -1,0 +1,65 @@
+/* AUTO-07p constants, as the engine consumes them.  Field names follow AUTO's
+ * keywords; defaults (cable_constants_init) are AUTO-07p's unless noted in
+ * doc/constants.md.  Parameter indices in icp/uzr/thl are 0-based here
+ * (AUTO's PAR(k) is index k-1); the constants-file parser converts. */
+#ifndef CABLE_CONSTANTS_H
+#define CABLE_CONSTANTS_H
+
+#define CABLE_MAX_ICP 64
+#define CABLE_MAX_UZR 128
+#define CABLE_MAX_THL 64
+#define CABLE_NAME_MAX 256
+
+typedef struct {
+  int par;          /* 0-based parameter index (or -1: unused) */
+  double value;
+  int stop;         /* 1: UZSTOP, end the branch here */
+} cable_uzr;
+
+typedef struct {
+  int index;        /* 0-based parameter index */
+  double weight;
+} cable_thl;
+
+typedef enum { CABLE_LINSOLVER_CONDENSE = 0, CABLE_LINSOLVER_KLU = 1 } cable_linsolver;
+
+typedef struct cable_constants {
+  /* problem */
+  int ndim, ips, nbc, nint, npar;
+  int icp[CABLE_MAX_ICP];  int nicp;      /* free + printed parameters */
+  /* discretisation */
+  int ntst, ncol, iad;
+  /* start and switching */
+  int irs;                                /* 0: STPNT; >0 label; <0: -n-th solution */
+  char irs_name[16];                      /* 'BP1', 'UZ2' ... ("" when numeric) */
+  int isw, isp, ilp;
+  /* limits */
+  int nmx, npr, iplt;
+  double rl0, rl1, a0, a1;
+  /* step control */
+  double ds, dsmin, dsmax;
+  int iads;
+  /* Newton */
+  double epsl, epsu, epss;
+  int itmx, itnw, nwtn, jac;
+  /* weights */
+  cable_thl thl[CABLE_MAX_THL]; int nthl;
+  double thu_default;                     /* cable: one weight for all u (AUTO THU) */
+  /* user zeros */
+  cable_uzr uzr[CABLE_MAX_UZR]; int nuzr;
+  /* output control */
+  int iid, iis;
+  /* cable extensions (documented in doc/constants.md) */
+  cable_linsolver linsolver;              /* LINSOLVER = condense | klu */
+  int nsv;                                /* NSV: singular values tracked for BP test (0: off) */
+  int bpsym;                              /* BPDIR: kernel vector index for 2-d kernels */
+  /* names */
+  char e[CABLE_NAME_MAX], s[CABLE_NAME_MAX], sv[CABLE_NAME_MAX], dat[CABLE_NAME_MAX];
+  int stop_on[8]; int nstop;              /* STOP=['BP1'...] parsed by type code and count */
+  int stop_count[8];
+} cable_constants;
+
+/* AUTO-07p defaults. */
+void cable_constants_init(cable_constants *c);
+
+#endif

@@ -1,0 +1,47 @@
+/* What the continuation engine hands to its caller: one row per computed point
+ * (a line of AUTO's b-file), the labelled solutions (s-file entries) and
+ * diagnostics (d-file).  The engine never writes files itself. */
+#ifndef CABLE_OUTPUT_H
+#define CABLE_OUTPUT_H
+
+#include "cable_solution.h"
+
+/* AUTO's type codes for boundary-value problems. */
+enum cable_point_type {
+  CABLE_TY_NONE = 0,
+  CABLE_TY_BP = 6,   /* branch point */
+  CABLE_TY_LP = 5,   /* fold */
+  CABLE_TY_UZ = -4,  /* user zero */
+  CABLE_TY_EP = 9,   /* end point */
+  CABLE_TY_MX = -9,  /* abnormal end (no convergence, DSMIN reached) */
+  CABLE_TY_RG = 4    /* regular output point (AUTO prints TY blank, stores 4) */
+};
+
+typedef struct cable_point {
+  int ibr;              /* branch number (sign: AUTO prints negative for... not used) */
+  int pt;               /* point number on the branch, 1-based; AUTO prints it negative for stable... unused for BVPs */
+  int itp;              /* type code (enum cable_point_type) */
+  int lab;              /* label, 0 when the point is not stored */
+  int ndim, npar;
+  int nicp;             /* columns printed after L2-NORM and MAX U: icp[1..nicp-1] */
+  const int *icp;       /* icp[0] is the principal parameter */
+  const double *par;    /* [npar] */
+  double l2norm;        /* AUTO's L2-NORM of the solution (all components) */
+  const double *umax;   /* [ndim] MAX U(i): the value of largest modulus over t */
+  /* diagnostics */
+  int newton_iters;
+  double ds;            /* step size that produced the point */
+  double err_est;       /* discretisation-error estimate (< 0 unknown) */
+} cable_point;
+
+typedef struct cable_sink {
+  void *ctx;
+  /* every point the engine accepts (the caller applies NPR/IPLT choices) */
+  int (*point)(void *ctx, const cable_point *pt);
+  /* labelled solutions; sol->lab matches the point's lab */
+  int (*solution)(void *ctx, const cable_point *pt, const cable_solution *sol);
+  /* one line of diagnostics (no trailing newline) */
+  void (*diag)(void *ctx, const char *line);
+} cable_sink;
+
+#endif

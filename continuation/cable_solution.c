@@ -1,0 +1,60 @@
+#include "cable_solution.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+cable_solution *cable_solution_alloc(int ndim, int ntst, int ncol, int npar, int nfpr)
+{
+  if (ndim < 1 || ntst < 1 || ncol < 1 || npar < 1 || nfpr < 0) return NULL;
+  cable_solution *s = calloc(1, sizeof *s);
+  if (!s) return NULL;
+  s->ndim = ndim; s->ntst = ntst; s->ncol = ncol; s->npar = npar; s->nfpr = nfpr;
+  s->err_est = -1.0;
+  size_t np = (size_t)ntst * (size_t)ncol + 1;
+  s->t = calloc(np, sizeof *s->t);
+  s->u = calloc(np * (size_t)ndim, sizeof *s->u);
+  s->udot = calloc(np * (size_t)ndim, sizeof *s->udot);
+  s->par = calloc((size_t)npar, sizeof *s->par);
+  s->icp = calloc((size_t)nfpr + 1, sizeof *s->icp);
+  s->pardot = calloc((size_t)nfpr + 1, sizeof *s->pardot);
+  if (!s->t || !s->u || !s->udot || !s->par || !s->icp || !s->pardot) {
+    cable_solution_free(s);
+    return NULL;
+  }
+  return s;
+}
+
+void cable_solution_free(cable_solution *s)
+{
+  if (!s) return;
+  free(s->t); free(s->u); free(s->udot); free(s->par); free(s->icp); free(s->pardot);
+  free(s);
+}
+
+int cable_solution_copy(cable_solution *dst, const cable_solution *src)
+{
+  if (dst->ndim != src->ndim || dst->ntst != src->ntst || dst->ncol != src->ncol ||
+      dst->npar != src->npar || dst->nfpr != src->nfpr)
+    return -1;
+  size_t np = (size_t)cable_solution_npts(src);
+  dst->ibr = src->ibr; dst->ntot = src->ntot; dst->itp = src->itp; dst->lab = src->lab;
+  dst->isw = src->isw; dst->err_est = src->err_est;
+  memcpy(dst->t, src->t, np * sizeof *dst->t);
+  memcpy(dst->u, src->u, np * (size_t)src->ndim * sizeof *dst->u);
+  if (src->udot) memcpy(dst->udot, src->udot, np * (size_t)src->ndim * sizeof *dst->udot);
+  else memset(dst->udot, 0, np * (size_t)src->ndim * sizeof *dst->udot);
+  memcpy(dst->par, src->par, (size_t)src->npar * sizeof *dst->par);
+  memcpy(dst->icp, src->icp, (size_t)src->nfpr * sizeof *dst->icp);
+  memcpy(dst->pardot, src->pardot, (size_t)src->nfpr * sizeof *dst->pardot);
+  return 0;
+}
+
+cable_solution *cable_solution_clone(const cable_solution *src)
+{
+  cable_solution *s = cable_solution_alloc(src->ndim, src->ntst, src->ncol, src->npar, src->nfpr);
+  if (s && cable_solution_copy(s, src) != 0) {
+    cable_solution_free(s);
+    return NULL;
+  }
+  return s;
+}

@@ -1,0 +1,34 @@
+/* A stored solution: what AUTO writes to an s-file for one label.
+ * Values are kept at the NTST*NCOL+1 points AUTO stores: the mesh points and
+ * NCOL-1 equally spaced nodes inside each mesh interval. */
+#ifndef CABLE_SOLUTION_H
+#define CABLE_SOLUTION_H
+
+typedef struct cable_solution {
+  int ndim, ntst, ncol;
+  int npar;        /* length of par[] (AUTO's NPAR) */
+  int nfpr;        /* number of free parameters */
+  int ibr;         /* branch number */
+  int ntot;        /* point number on the branch */
+  int itp;         /* AUTO type code (BP 6, LP 5, UZ -4, EP 9, MX -9; +10*k for regular) */
+  int lab;         /* label */
+  int isw;
+  double *t;       /* [ntst*ncol+1] in [0,1]; t[j*ncol] are the mesh points */
+  double *u;       /* [(ntst*ncol+1)*ndim], u[k*ndim + i] = u_i(t[k]) */
+  double *udot;    /* tangent, same layout; NULL when unknown */
+  double *par;     /* [npar] */
+  int *icp;        /* [nfpr] free-parameter indices (0-based) */
+  double *pardot;  /* [nfpr] tangent components of the free parameters */
+  double err_est;  /* estimated max-norm discretisation error (< 0: unknown) */
+} cable_solution;
+
+/* Every field zeroed except the sizes; arrays allocated; NULL on failure. */
+cable_solution *cable_solution_alloc(int ndim, int ntst, int ncol, int npar, int nfpr);
+void cable_solution_free(cable_solution *s);            /* NULL is a no-op */
+int cable_solution_copy(cable_solution *dst, const cable_solution *src); /* same sizes */
+cable_solution *cable_solution_clone(const cable_solution *src);
+
+/* Number of stored points, ntst*ncol + 1. */
+static inline int cable_solution_npts(const cable_solution *s) { return s->ntst * s->ncol + 1; }
+
+#endif

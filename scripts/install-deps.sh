@@ -1,0 +1,46 @@
+#!/usr/bin/env bash
+# Install cable's build dependencies from Debian packages, only those missing.
+# Usage: scripts/install-deps.sh [--check]   (--check: report, install nothing)
+set -euo pipefail
+
+# header-or-library probe  ->  Debian package that provides it
+probes=(
+  "/usr/include/kinsol/kinsol.h:libsundials-dev"
+  "/usr/include/sunlinsol/sunlinsol_klu.h:libsundials-dev"
+  "/usr/include/suitesparse/klu.h:libsuitesparse-dev"
+  "/usr/include/lapacke.h:liblapacke-dev"
+  "/usr/lib/x86_64-linux-gnu/liblapack.so:liblapack-dev"
+  "/usr/lib/x86_64-linux-gnu/libopenblas.so:libopenblas-dev"
+  "/usr/include/gsl/gsl_version.h:libgsl-dev"
+  "/usr/include/cairo/cairo.h:libcairo2-dev"
+)
+
+arch_dir=$(dpkg-architecture -qDEB_HOST_MULTIARCH 2>/dev/null || echo x86_64-linux-gnu)
+missing=()
+for p in "${probes[@]}"; do
+  file=${p%%:*}; pkg=${p##*:}
+  file=${file//x86_64-linux-gnu/$arch_dir}
+  [ -e "$file" ] || missing+=("$pkg")
+done
+# de-duplicate
+mapfile -t missing < <(printf '%s\n' "${missing[@]}" | sed '/^$/d' | sort -u)
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all build dependencies present"
+  exit 0
+fi
+if [ "${1:-}" = "--check" ]; then
+  echo "install-deps: missing packages: ${missing[*]}" >&2
+  exit 1
+fi
+
+echo "install-deps: installing ${missing[*]}"
+sudo=""
+if [ "$(id -u)" -ne 0 ]; then
+  command -v sudo >/dev/null || { echo "install-deps: not root and no sudo; install: ${missing[*]}" >&2; exit 1; }
+  sudo="sudo"
+fi
+export DEBIAN_FRONTEND=noninteractive
+$sudo apt-get update -qq
+$sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+echo "install-deps: done"

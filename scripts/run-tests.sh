@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# Run every test program in BUILD/tests, from the repository root, and print one
+# summary line "N passed, M failed".  A test program that crashes or exits
+# non-zero without printing a FAIL line counts as one failure.
+# Environment: CABLE_TEST_WRAPPER (e.g. valgrind ...), CABLE_TEST_QUICK=1.
+set -u
+build=${1:?usage: run-tests.sh BUILD_DIR}
+cd "$(dirname "$0")/.."
+mkdir -p tests/tmp
+passed=0; failed=0
+for t in "$build"/tests/test_*; do
+  case "$t" in *.o|*.d) continue;; esac
+  [ -x "$t" ] || continue
+  name=$(basename "$t")
+  log="tests/tmp/$name.log"
+  ${CABLE_TEST_WRAPPER:-} "$t" >"$log" 2>&1
+  rc=$?
+  p=$(grep -c '^PASS' "$log"); f=$(grep -c '^FAIL' "$log")
+  grep '^FAIL' "$log" | sed "s/^/$name: /"
+  if [ "$rc" -ne 0 ] && [ "$f" -eq 0 ]; then
+    echo "$name: exited with status $rc (see $log):"; tail -n 20 "$log" | sed 's/^/    /'
+    f=1
+  fi
+  if [ "$p" -eq 0 ] && [ "$f" -eq 0 ]; then
+    echo "$name: ran no check"; f=1
+  fi
+  printf '%-32s %4d passed, %d failed\n' "$name" "$p" "$f"
+  passed=$((passed + p)); failed=$((failed + f))
+done
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]
