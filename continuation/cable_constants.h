@@ -21,6 +21,11 @@ typedef struct {
   double weight;
 } cable_thl;
 
+typedef struct {
+  int index;        /* 0-based parameter index */
+  double value;
+} cable_parval;
+
 typedef enum { CABLE_LINSOLVER_CONDENSE = 0, CABLE_LINSOLVER_KLU = 1 } cable_linsolver;
 
 typedef struct cable_constants {
@@ -47,6 +52,8 @@ typedef struct cable_constants {
   double thu_default;                     /* cable: one weight for all u (AUTO THU) */
   /* user zeros */
   cable_uzr uzr[CABLE_MAX_UZR]; int nuzr;
+  /* starting parameter values overriding STPNT / the restart (AUTO-07p's PAR={...}) */
+  cable_parval par_override[CABLE_MAX_THL]; int npar_override;
   /* output control */
   int iid, iis;
   /* cable extensions (documented in doc/constants.md) */

@@ -1,0 +1,32 @@
+/* Newton's method for the collocation system, run by SUNDIALS KINSOL.
+ * The residual and the Newton matrix come from colloc_system; the linear
+ * systems are solved by the structured condensation solver (a custom
+ * SUNLinearSolver) or, as a reference, by KLU (LINSOLVER=klu).
+ *
+ * Convergence (AUTO's test, through KINSOL's scaled-step test): the last
+ * Newton correction satisfies |dx_i| <= EPS (1 + |x_i|) for every unknown,
+ * EPS = min(EPSU, EPSL), and the residual has decreased below
+ * COLLOC_NEWTON_RES_ACCEPT relative to its scale; full Newton (a new
+ * factorisation every iteration) for the first NWTN iterations, then the
+ * factorisation is reused (KINSOL's modified Newton) up to ITNW iterations. */
+#ifndef CABLE_COLLOC_NEWTON_H
+#define CABLE_COLLOC_NEWTON_H
+
+#include "cable_constants.h"
+#include "colloc_system.h"
+
+typedef struct colloc_newton colloc_newton;
+
+colloc_newton *colloc_newton_alloc(colloc_system *sys, const cable_constants *c, int *status);
+void colloc_newton_free(colloc_newton *nw);
+
+/* Solve F(x) = 0 starting from x (overwritten with the solution).
+ * Returns CABLE_SUCCESS, CABLE_ERR_NEWTON (no convergence: x is undefined),
+ * CABLE_ERR_RECOVERABLE (a callback rejected an iterate) or CABLE_ERR_CALLBACK. */
+int colloc_newton_solve(colloc_newton *nw, double *x);
+
+int colloc_newton_iterations(const colloc_newton *nw);  /* of the last solve */
+double colloc_newton_residual(const colloc_newton *nw); /* max-norm of F at the last iterate */
+const char *colloc_newton_message(const colloc_newton *nw);
+
+#endif

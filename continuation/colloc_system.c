@@ -1,0 +1,391 @@
+#include "colloc_system.h"
+
+#include <float.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cable_status.h"
+
+/* Central differences have error O(d^2 f''') + O(eps f / d); balancing gives
+ * d ~ eps^(1/3) relative to the variable's size: about 6e-6. */
+#define COLLOC_FD_REL_STEP 6.0e-6
+
+static void *xcalloc(size_t n, size_t size, int *fail)
+{
+  void *p = calloc(n ? n : 1, size);
+  if (!p) *fail = 1;
+  return p;
+}
+
+colloc_system *colloc_system_alloc(const cable_problem *pb, const cable_constants *c,
+                                   int ntst, int ncol, const int *icp, int nfpr, int *status)
+{
+  *status = CABLE_ERR_INPUT;
+  if (!pb || !pb->func || ntst < 1 || nfpr < 1 || nfpr > CABLE_MAX_ICP) return NULL;
+  if (nfpr != pb->nbc + pb->nint - pb->ndim + 1) return NULL;
+  colloc_system *s = calloc(1, sizeof *s);
+  if (!s) {
+    *status = CABLE_ERR_ALLOC;
+    return NULL;
+  }
+  s->pb = pb;
+  s->ndim = pb->ndim; s->nbc = pb->nbc; s->nint = pb->nint;
+  s->npar = c->npar > pb->npar ? c->npar : pb->npar;
+  s->ntst = ntst; s->ncol = ncol; s->nfpr = nfpr;
+  s->n = s->ndim * (ntst * ncol + 1) + nfpr;
+  for (int p = 0; p < nfpr; p++) s->icp[p] = icp[p];
+  int jac = c->jac;
+  s->use_jac_func = jac != 0 && pb->func_has_jac;
+  s->use_jac_bcnd = jac != 0 && pb->bcnd_has_jac;
+  s->use_jac_icnd = jac != 0 && pb->icnd_has_jac;
+  if (colloc_basis_init(&s->basis, ncol) != CABLE_SUCCESS) {
+    free(s);
+    return NULL;
+  }
+  int fail = 0, nd = s->ndim, np = s->npar, nb = s->nbc > 0 ? s->nbc : 1;
+  int ni = s->nint > 0 ? s->nint : 1;
+  s->mesh = xcalloc((size_t)ntst + 1, sizeof(double), &fail);
+  s->par = xcalloc((size_t)np, sizeof(double), &fail);
+  s->x0 = xcalloc((size_t)s->n, sizeof(double), &fail);
+  s->xdot0 = xcalloc((size_t)s->n, sizeof(double), &fail);
+  s->thu = xcalloc((size_t)nd, sizeof(double), &fail);
+  s->thl = xcalloc((size_t)nfpr, sizeof(double), &fail);
+  s->w_u = xcalloc((size_t)nd, sizeof(double), &fail);
+  s->w_du = xcalloc((size_t)nd, sizeof(double), &fail);
+  s->w_f = xcalloc((size_t)nd, sizeof(double), &fail);
+  s->w_fp = xcalloc((size_t)nd, sizeof(double), &fail);
+  s->w_dfdu = xcalloc((size_t)nd * (size_t)nd, sizeof(double), &fail);
+  s->w_dfdp = xcalloc((size_t)nd * (size_t)np, sizeof(double), &fail);
+  s->w_fb = xcalloc((size_t)nb, sizeof(double), &fail);
+  s->w_fbp = xcalloc((size_t)nb, sizeof(double), &fail);
+  s->w_dbc = xcalloc((size_t)nb * (size_t)(2 * nd + np), sizeof(double), &fail);
+  s->w_fi = xcalloc((size_t)ni, sizeof(double), &fail);
+  s->w_fip = xcalloc((size_t)ni, sizeof(double), &fail);
+  s->w_dint = xcalloc((size_t)ni * (size_t)(nd + np), sizeof(double), &fail);
+  s->w_uold = xcalloc((size_t)nd, sizeof(double), &fail);
+  s->w_udot = xcalloc((size_t)nd, sizeof(double), &fail);
+  s->w_upold = xcalloc((size_t)nd, sizeof(double), &fail);
+  s->w_parp = xcalloc((size_t)np, sizeof(double), &fail);
+  if (fail) {
+    colloc_system_free(s);
+    *status = CABLE_ERR_ALLOC;
+    return NULL;
+  }
+  for (int i = 0; i < nd; i++) s->thu[i] = c->thu_default;
+  for (int p = 0; p < nfpr; p++) {
+    s->thl[p] = 1.0;
+    for (int k = 0; k < c->nthl; k++)
+      if (c->thl[k].index == icp[p]) s->thl[p] = c->thl[k].weight;
+  }
+  colloc_system_uniform_mesh(s);
+  *status = CABLE_SUCCESS;
+  return s;
+}
+
+void colloc_system_free(colloc_system *s)
+{
+  if (!s) return;
+  double *bufs[] = {s->mesh, s->par, s->x0, s->xdot0, s->thu, s->thl, s->w_u, s->w_du, s->w_f,
+                    s->w_fp, s->w_dfdu, s->w_dfdp, s->w_fb, s->w_fbp, s->w_dbc, s->w_fi,
+                    s->w_fip, s->w_dint, s->w_uold, s->w_udot, s->w_upold, s->w_parp};
+  for (size_t i = 0; i < sizeof bufs / sizeof bufs[0]; i++) free(bufs[i]);
+  free(s);
+}
+
+void colloc_system_uniform_mesh(colloc_system *s)
+{
+  for (int j = 0; j <= s->ntst; j++) s->mesh[j] = (double)j / s->ntst;
+}
+
+void colloc_system_times(const colloc_system *s, double *t)
+{
+  for (int j = 0; j < s->ntst; j++) {
+    double h = s->mesh[j + 1] - s->mesh[j];
+    for (int k = 0; k < s->ncol; k++) t[j * s->ncol + k] = s->mesh[j] + h * k / s->ncol;
+  }
+  t[s->ntst * s->ncol] = s->mesh[s->ntst];
+}
+
+/* Copy the free parameters of x into the full parameter vector. */
+static void load_params(colloc_system *s, const double *x)
+{
+  const double *p = x + (size_t)s->ndim * (size_t)(s->ntst * s->ncol + 1);
+  for (int k = 0; k < s->nfpr; k++) s->par[s->icp[k]] = p[k];
+}
+
+/* u and u' (in the local variable) at collocation point m of interval j. */
+static void colloc_point(const colloc_system *s, const double *x, int j, int m, double *u,
+                         double *du)
+{
+  int nd = s->ndim, nc = s->ncol;
+  const double *uj = x + (size_t)(j * nc) * (size_t)nd;
+  for (int i = 0; i < nd; i++) {
+    double v = 0.0, dv = 0.0;
+    for (int k = 0; k <= nc; k++) {
+      v += s->basis.l[m][k] * uj[k * nd + i];
+      dv += s->basis.dl[m][k] * uj[k * nd + i];
+    }
+    u[i] = v;
+    if (du) du[i] = dv;
+  }
+}
+
+static int call_func(colloc_system *s, const double *u, int ijac, double *f, double *dfdu,
+                     double *dfdp)
+{
+  s->nfunc++;
+  int rc = s->pb->func(s->ndim, u, s->icp, s->par, ijac, f, dfdu, dfdp, s->pb->params);
+  if (rc != 0) {
+    s->last_callback = rc;
+    return rc;
+  }
+  for (int i = 0; i < s->ndim; i++)
+    if (!isfinite(f[i])) return s->last_callback = 1; /* NaN/Inf: reject the point */
+  return 0;
+}
+
+/* Values of the integral-condition integrand at collocation point (j, m). */
+static int call_icnd(colloc_system *s, const double *x, int j, int m, int ijac, double *fi,
+                     double *dint)
+{
+  colloc_point(s, x, j, m, s->w_u, NULL);
+  colloc_point(s, s->x0, j, m, s->w_uold, s->w_upold);
+  colloc_point(s, s->xdot0, j, m, s->w_udot, NULL);
+  double h = s->mesh[j + 1] - s->mesh[j];
+  for (int i = 0; i < s->ndim; i++) s->w_upold[i] /= h;
+  int rc = s->pb->icnd(s->ndim, s->par, s->icp, s->nint, s->w_u, s->w_uold, s->w_udot,
+                       s->w_upold, ijac, fi, dint, s->pb->params);
+  if (rc != 0) s->last_callback = rc;
+  return rc;
+}
+
+double colloc_system_inner(const colloc_system *s, const double *a, const double *b)
+{
+  int nd = s->ndim, nc = s->ncol;
+  double sum = 0.0;
+  for (int j = 0; j < s->ntst; j++) {
+    double h = s->mesh[j + 1] - s->mesh[j], part = 0.0;
+    for (int k = 0; k <= nc; k++) {
+      const double *ak = a + (size_t)(j * nc + k) * (size_t)nd;
+      const double *bk = b + (size_t)(j * nc + k) * (size_t)nd;
+      double dot = 0.0;
+      for (int i = 0; i < nd; i++) dot += s->thu[i] * ak[i] * bk[i];
+      part += s->basis.wn[k] * dot;
+    }
+    sum += h * part;
+  }
+  size_t off = (size_t)nd * (size_t)(s->ntst * nc + 1);
+  for (int p = 0; p < s->nfpr; p++) sum += s->thl[p] * a[off + p] * b[off + p];
+  return sum;
+}
+
+int colloc_system_residual(colloc_system *s, const double *x, double *F)
+{
+  int nd = s->ndim, nc = s->ncol, rc;
+  load_params(s, x);
+  for (int j = 0; j < s->ntst; j++) {
+    double h = s->mesh[j + 1] - s->mesh[j];
+    for (int m = 0; m < nc; m++) {
+      colloc_point(s, x, j, m, s->w_u, s->w_du);
+      if ((rc = call_func(s, s->w_u, 0, s->w_f, NULL, NULL)) != 0) return rc;
+      double *Fr = F + (size_t)(j * nc + m) * (size_t)nd;
+      for (int i = 0; i < nd; i++) Fr[i] = s->w_du[i] - h * s->w_f[i];
+    }
+  }
+  size_t row = (size_t)s->ntst * (size_t)nc * (size_t)nd;
+  if (s->nbc > 0) {
+    const double *u0 = x, *u1 = x + (size_t)(s->ntst * nc) * (size_t)nd;
+    rc = s->pb->bcnd(nd, s->par, s->icp, s->nbc, u0, u1, 0, F + row, NULL, s->pb->params);
+    if (rc != 0) return s->last_callback = rc;
+    row += (size_t)s->nbc;
+  }
+  if (s->nint > 0) {
+    for (int q = 0; q < s->nint; q++) F[row + (size_t)q] = 0.0;
+    for (int j = 0; j < s->ntst; j++) {
+      double h = s->mesh[j + 1] - s->mesh[j];
+      for (int m = 0; m < nc; m++) {
+        if ((rc = call_icnd(s, x, j, m, 0, s->w_fi, NULL)) != 0) return rc;
+        for (int q = 0; q < s->nint; q++) F[row + (size_t)q] += h * s->basis.w[m] * s->w_fi[q];
+      }
+    }
+    row += (size_t)s->nint;
+  }
+  if (s->closing == COLLOC_CLOSE_FIXPAR) {
+    F[row] = s->par[s->icp[0]] - s->fixval;
+  } else {
+    /* <x - x0, xdot0> - ds, without forming x - x0 in a work vector */
+    F[row] = colloc_system_inner(s, x, s->xdot0) - colloc_system_inner(s, s->x0, s->xdot0) - s->ds;
+  }
+  for (int i = 0; i < s->n; i++)
+    if (!isfinite(F[i])) return s->last_callback = 1;
+  return 0;
+}
+
+/* d f / d u and d f / d par(free) at u, analytically or by central differences. */
+static int func_derivs(colloc_system *s, const double *u, double *dfdu, double *dfdp)
+{
+  int nd = s->ndim;
+  if (s->use_jac_func) return call_func(s, u, 2, s->w_f, dfdu, dfdp);
+  int rc;
+  double *up = s->w_du; /* free during Jacobian assembly */
+  memcpy(up, u, (size_t)nd * sizeof *up);
+  for (int l = 0; l < nd; l++) {
+    double d = COLLOC_FD_REL_STEP * (1.0 + fabs(u[l]));
+    up[l] = u[l] + d;
+    if ((rc = call_func(s, up, 0, s->w_fp, NULL, NULL)) != 0) return rc;
+    up[l] = u[l] - d;
+    if ((rc = call_func(s, up, 0, s->w_f, NULL, NULL)) != 0) return rc;
+    up[l] = u[l];
+    for (int i = 0; i < nd; i++) dfdu[i + nd * l] = (s->w_fp[i] - s->w_f[i]) / (2 * d);
+  }
+  for (int p = 0; p < s->nfpr; p++) {
+    int k = s->icp[p];
+    double pk = s->par[k], d = COLLOC_FD_REL_STEP * (1.0 + fabs(pk));
+    s->par[k] = pk + d;
+    rc = call_func(s, u, 0, s->w_fp, NULL, NULL);
+    s->par[k] = pk - d;
+    if (rc == 0) rc = call_func(s, u, 0, s->w_f, NULL, NULL);
+    s->par[k] = pk;
+    if (rc != 0) return rc;
+    for (int i = 0; i < nd; i++) dfdp[i + nd * k] = (s->w_fp[i] - s->w_f[i]) / (2 * d);
+  }
+  return 0;
+}
+
+static int bcnd_derivs(colloc_system *s, const double *u0, const double *u1)
+{
+  int nd = s->ndim, nb = s->nbc, rc;
+  double *dbc = s->w_dbc;
+  if (s->use_jac_bcnd) {
+    rc = s->pb->bcnd(nd, s->par, s->icp, nb, u0, u1, 2, s->w_fb, dbc, s->pb->params);
+    return rc ? (s->last_callback = rc) : 0;
+  }
+  /* perturb a private copy of (u0, u1) */
+  double *v0 = s->w_uold, *v1 = s->w_udot;
+  memcpy(v0, u0, (size_t)nd * sizeof *v0);
+  memcpy(v1, u1, (size_t)nd * sizeof *v1);
+  for (int col = 0; col < 2 * nd + s->nfpr; col++) {
+    double *var, saved;
+    int dcol;
+    if (col < 2 * nd) {
+      var = col < nd ? &v0[col] : &v1[col - nd];
+      dcol = col;
+    } else {
+      var = &s->par[s->icp[col - 2 * nd]];
+      dcol = 2 * nd + s->icp[col - 2 * nd];
+    }
+    saved = *var;
+    double d = COLLOC_FD_REL_STEP * (1.0 + fabs(saved));
+    *var = saved + d;
+    rc = s->pb->bcnd(nd, s->par, s->icp, nb, v0, v1, 0, s->w_fbp, NULL, s->pb->params);
+    *var = saved - d;
+    if (rc == 0) rc = s->pb->bcnd(nd, s->par, s->icp, nb, v0, v1, 0, s->w_fb, NULL, s->pb->params);
+    *var = saved;
+    if (rc != 0) return s->last_callback = rc;
+    for (int i = 0; i < nb; i++) dbc[i + nb * dcol] = (s->w_fbp[i] - s->w_fb[i]) / (2 * d);
+  }
+  return 0;
+}
+
+/* d q / d u, d q / d par at collocation point (j, m) into s->w_dint (nint x (ndim+npar)). */
+static int icnd_derivs(colloc_system *s, const double *x, int j, int m)
+{
+  int nd = s->ndim, ni = s->nint, rc;
+  double *dint = s->w_dint;
+  if (s->use_jac_icnd) return call_icnd(s, x, j, m, 2, s->w_fi, dint);
+  if ((rc = call_icnd(s, x, j, m, 0, s->w_fi, NULL)) != 0) return rc; /* fills w_u etc. */
+  double *u = s->w_u;
+  for (int col = 0; col < nd + s->nfpr; col++) {
+    double *var = col < nd ? &u[col] : &s->par[s->icp[col - nd]];
+    int dcol = col < nd ? col : nd + s->icp[col - nd];
+    double saved = *var, d = COLLOC_FD_REL_STEP * (1.0 + fabs(saved));
+    *var = saved + d;
+    rc = s->pb->icnd(nd, s->par, s->icp, ni, u, s->w_uold, s->w_udot, s->w_upold, 0, s->w_fip,
+                     NULL, s->pb->params);
+    *var = saved - d;
+    if (rc == 0)
+      rc = s->pb->icnd(nd, s->par, s->icp, ni, u, s->w_uold, s->w_udot, s->w_upold, 0, s->w_fi,
+                       NULL, s->pb->params);
+    *var = saved;
+    if (rc != 0) return s->last_callback = rc;
+    for (int q = 0; q < ni; q++) dint[q + ni * dcol] = (s->w_fip[q] - s->w_fi[q]) / (2 * d);
+  }
+  return 0;
+}
+
+int colloc_system_jacobian(colloc_system *s, const double *x, colloc_jac *J)
+{
+  int nd = s->ndim, nc = s->ncol, nf = s->nfpr, rc;
+  int ldc = nc * nd, nde = J->ndense;
+  s->njac++;
+  load_params(s, x);
+  colloc_jac_zero(J);
+  for (int j = 0; j < s->ntst; j++) {
+    double h = s->mesh[j + 1] - s->mesh[j];
+    double *B = colloc_jac_coll_block(J, j);
+    for (int m = 0; m < nc; m++) {
+      /* w_upold holds u here: func_derivs uses w_du, w_f and w_fp as scratch */
+      colloc_point(s, x, j, m, s->w_upold, NULL);
+      if ((rc = func_derivs(s, s->w_upold, s->w_dfdu, s->w_dfdp)) != 0) return rc;
+      for (int k = 0; k <= nc; k++) {
+        double lk = s->basis.l[m][k], dlk = s->basis.dl[m][k];
+        for (int l = 0; l < nd; l++) {
+          double *col = B + (size_t)(k * nd + l) * (size_t)ldc + (size_t)(m * nd);
+          for (int i = 0; i < nd; i++) col[i] = -h * lk * s->w_dfdu[i + nd * l];
+          col[l] += dlk;
+        }
+      }
+      for (int p = 0; p < nf; p++) {
+        double *col = B + (size_t)((nc + 1) * nd + p) * (size_t)ldc + (size_t)(m * nd);
+        for (int i = 0; i < nd; i++) col[i] = -h * s->w_dfdp[i + nd * s->icp[p]];
+      }
+    }
+  }
+  if (s->nbc > 0) {
+    const double *u0 = x, *u1 = x + (size_t)(s->ntst * nc) * (size_t)nd;
+    if ((rc = bcnd_derivs(s, u0, u1)) != 0) return rc;
+    int nb = s->nbc;
+    for (int col = 0; col < 2 * nd; col++)
+      for (int i = 0; i < nb; i++) J->bc[i + nb * col] = s->w_dbc[i + nb * col];
+    for (int p = 0; p < nf; p++)
+      for (int i = 0; i < nb; i++)
+        J->bc[i + nb * (2 * nd + p)] = s->w_dbc[i + nb * (2 * nd + s->icp[p])];
+  }
+  if (s->nint > 0) {
+    int ni = s->nint;
+    for (int j = 0; j < s->ntst; j++) {
+      double h = s->mesh[j + 1] - s->mesh[j];
+      double *D = colloc_jac_dense_block(J, j);
+      for (int m = 0; m < nc; m++) {
+        if ((rc = icnd_derivs(s, x, j, m)) != 0) return rc;
+        double hw = h * s->basis.w[m];
+        for (int k = 0; k <= nc; k++) {
+          double c = hw * s->basis.l[m][k];
+          for (int l = 0; l < nd; l++)
+            for (int q = 0; q < ni; q++) D[q + nde * (k * nd + l)] += c * s->w_dint[q + ni * l];
+        }
+        for (int p = 0; p < nf; p++)
+          for (int q = 0; q < ni; q++)
+            J->dense_par[q + nde * p] += hw * s->w_dint[q + ni * (nd + s->icp[p])];
+      }
+    }
+  }
+  /* closing row: the last dense row */
+  int r = nde - 1;
+  if (s->closing == COLLOC_CLOSE_FIXPAR) {
+    J->dense_par[r + nde * 0] = 1.0;
+  } else {
+    for (int j = 0; j < s->ntst; j++) {
+      double h = s->mesh[j + 1] - s->mesh[j];
+      double *D = colloc_jac_dense_block(J, j);
+      for (int k = 0; k <= nc; k++) {
+        const double *xd = s->xdot0 + (size_t)(j * nc + k) * (size_t)nd;
+        for (int l = 0; l < nd; l++) D[r + nde * (k * nd + l)] = h * s->basis.wn[k] * s->thu[l] * xd[l];
+      }
+    }
+    const double *pd = s->xdot0 + (size_t)nd * (size_t)(s->ntst * nc + 1);
+    for (int p = 0; p < nf; p++) J->dense_par[r + nde * p] = s->thl[p] * pd[p];
+  }
+  return 0;
+}

@@ -1,0 +1,78 @@
+/* The discretised boundary-value problem: orthogonal collocation of
+ *   u' = f(u, p), b(u(0), u(1), p) = 0, int_0^1 q(u, p) dt = 0,
+ * plus one closing equation (the principal parameter fixed, or AUTO's
+ * pseudo-arclength equation), as a square nonlinear system F(x) = 0 in the
+ * unknowns x of continuation/colloc_jac.h.
+ *
+ * Collocation rows are scaled by the interval length h_j:
+ *   sum_k l_k'(c_m) u_{j,k} - h_j f(u(t_j + c_m h_j)) = 0,
+ * so that Jacobian entries are O(1) whatever the mesh. */
+#ifndef CABLE_COLLOC_SYSTEM_H
+#define CABLE_COLLOC_SYSTEM_H
+
+#include "cable_constants.h"
+#include "cable_problem.h"
+#include "colloc_basis.h"
+#include "colloc_jac.h"
+
+typedef enum {
+  COLLOC_CLOSE_FIXPAR = 0,   /* par[icp[0]] = fixval */
+  COLLOC_CLOSE_ARCLENGTH = 1 /* <x - x0, xdot0>_theta = ds */
+} colloc_closing;
+
+typedef struct colloc_system {
+  const cable_problem *pb;
+  int ndim, ntst, ncol, nbc, nint, npar, nfpr;
+  int n;                      /* unknowns */
+  int icp[CABLE_MAX_ICP];     /* free parameters (0-based), nfpr of them */
+  int use_jac_func, use_jac_bcnd, use_jac_icnd; /* analytic derivatives in use */
+  colloc_basis basis;
+  double *mesh;               /* [ntst+1] */
+  double *par;                /* [npar] all parameters; free ones overwritten from x */
+  /* closing equation */
+  colloc_closing closing;
+  double fixval;
+  double ds;
+  double *x0, *xdot0;         /* [n] previous point and its tangent */
+  double *thu;                /* [ndim] weights of u components */
+  double *thl;                /* [nfpr] weights of the free parameters */
+  /* counters */
+  long nfunc, njac;
+  int last_callback;          /* last nonzero callback return, 0 if none */
+  /* workspace (owned) */
+  double *w_u, *w_du, *w_f, *w_fp, *w_dfdu, *w_dfdp, *w_fb, *w_fbp, *w_dbc;
+  double *w_fi, *w_fip, *w_dint, *w_uold, *w_udot, *w_upold;
+  double *w_parp;             /* [npar] perturbed parameters */
+} colloc_system;
+
+/* nfpr = nbc + nint - ndim + 1 free parameters icp[0..nfpr-1]. */
+colloc_system *colloc_system_alloc(const cable_problem *pb, const cable_constants *c,
+                                   int ntst, int ncol, const int *icp, int nfpr, int *status);
+void colloc_system_free(colloc_system *s);
+
+/* Uniform mesh. */
+void colloc_system_uniform_mesh(colloc_system *s);
+
+/* Residual F(x) into F[n].  Returns 0, or the callback's nonzero status. */
+int colloc_system_residual(colloc_system *s, const double *x, double *F);
+/* Newton matrix at x into J (closing row included).  0 or callback status. */
+int colloc_system_jacobian(colloc_system *s, const double *x, colloc_jac *J);
+
+/* Weighted inner product <a, b>_theta over u (node quadrature) and free parameters. */
+double colloc_system_inner(const colloc_system *s, const double *a, const double *b);
+
+/* Node times t[k], k = 0..ntst*ncol, into t (the s-file's time column). */
+void colloc_system_times(const colloc_system *s, double *t);
+
+/* Pointer to u at node k of interval j inside x. */
+static inline double *colloc_node(const colloc_system *s, double *x, int j, int k)
+{
+  return x + (size_t)(j * s->ncol + k) * (size_t)s->ndim;
+}
+/* Free parameters inside x. */
+static inline double *colloc_params(const colloc_system *s, double *x)
+{
+  return x + (size_t)s->ndim * (size_t)(s->ntst * s->ncol + 1);
+}
+
+#endif
