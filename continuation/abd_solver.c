@@ -1,0 +1,742 @@
+/* Structured LU of the collocation Newton matrix: local condensation with
+ * partial pivoting, then banded LU with partial pivoting of the augmented
+ * mesh-point system.  doc/linear-algebra.md explains the augmented system,
+ * the orderings below and why the determinant of J is recovered exactly.
+ *
+ * Augmented unknowns at mesh point j (0..ntst), "z_j", m of them, in order
+ *   c_j (ndim)  copy of u(0)
+ *   q_j (nfpr)  copy of the free parameters (q_0 is the true parameter vector)
+ *   u_j (ndim)  the mesh-point value
+ *   s_j (nq)    running sums of the dense rows over intervals 0..j-1
+ * Band rows, in order:
+ *   start (ndim + nq):  c_0 - u_0 = 0,  s_0 = 0
+ *   interval j (m):     c_{j+1} - c_j = 0 (ndim), q_{j+1} - q_j = 0 (nfpr),
+ *                       the ndim+nq condensed rows of interval j
+ *   end (nbc + nq):     b(c_N, u_N, q_N),  s_N + dense_par q_N = rhs
+ * Interval j's local rows ("slots"): its ncol*ndim collocation rows (which use
+ * the parameter copy q_{j+1}) then nq running-sum rows
+ *   s_{j+1} - s_j - D_j x_j = 0.
+ * Local columns: the (ncol-1)*ndim interior unknowns, then the "outer" ones
+ *   u_j, u_{j+1}, q_{j+1}, s_j, s_{j+1}. */
+#include "abd_solver.h"
+
+#include <cblas.h>
+#include <lapacke.h>
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+enum { STATE_NONE = 0, STATE_OK = 1, STATE_SINGULAR = 2 };
+
+struct abd_solver {
+  int nd, N, nc, nf, nb, nint, nq; /* sizes of colloc_jac.h; nq = nint + 1 */
+  int n;                           /* unknowns of J */
+  int nr;                          /* collocation rows per interval, ncol*ndim */
+  int nI;                          /* interior unknowns per interval, (ncol-1)*ndim */
+  int r;                           /* local rows per interval, nr + nq */
+  int nO;                          /* outer local columns, 2*ndim + nfpr + 2*nq */
+  int m;                           /* augmented unknowns per mesh point */
+  int a;                           /* start rows, ndim + nq */
+  int nband;                       /* order of the banded system, (N+1)*m */
+  int kl, ku, ldab;                /* band widths and LAPACK leading dimension */
+  int off_c, off_q, off_u, off_s;  /* offsets inside z_j */
+  int *omap;                       /* [nO] band column of outer column o, relative to j*m */
+  int perm_sign;                   /* parity of the structural reordering (see factor) */
+  size_t loc_size;                 /* doubles per local block, r*(nI+nO) */
+  double *loc;                     /* [N] local blocks after condensation: L\U | X over S */
+  lapack_int *loc_piv;             /* [N*nI] local row interchanges */
+  double *ab;                      /* [ldab*nband] banded LU */
+  lapack_int *band_piv;            /* [nband] */
+  double *w_rhs;                   /* [nband] band right-hand side */
+  double *w_piv;                   /* [N*nI] transformed pivot-row right-hand sides */
+  double *w_loc;                   /* [r] one interval's local right-hand side */
+  double *w_o;                     /* [nO] one interval's outer values */
+  int state;                       /* STATE_* */
+  int band_overflow;               /* an entry fell outside kl/ku (internal error) */
+  int det_sign;
+  double det_log;
+  double growth;
+  /* smallest_sv workspace, grown on demand */
+  int sv_k;
+  double *sv_v, *sv_w, *sv_b, *sv_r, *sv_x, *sv_yt, *sv_s, *sv_work, *sv_vec, *sv_res;
+  lapack_int sv_lwork;
+};
+
+/* Band column of component i of block `off` of z_j. */
+static int zcol(const abd_solver *s, int j, int off, int i) { return j * s->m + off + i; }
+/* First band row of interval j's group. */
+static int grow_base(const abd_solver *s, int j) { return s->a + j * s->m; }
+static int end_base(const abd_solver *s) { return s->a + s->N * s->m; }
+static double *loc_block(const abd_solver *s, int j) { return s->loc + (size_t)j * s->loc_size; }
+
+static void band_put(abd_solver *s, int row, int col, double v)
+{
+  int d = row - col;
+  if (d > s->kl || -d > s->ku) {
+    s->band_overflow = 1;
+    return;
+  }
+  s->ab[(size_t)col * (size_t)s->ldab + (size_t)(s->kl + s->ku + d)] = v;
+}
+
+static void extent_update(int row, int col, int *kl, int *ku)
+{
+  if (row - col > *kl) *kl = row - col;
+  if (col - row > *ku) *ku = col - row;
+}
+
+/* Band widths from the structural nonzeros of every band row (the same
+ * enumeration as factor's assembly; band_put checks the agreement). */
+static void band_extent(abd_solver *s)
+{
+  int kl = 0, ku = 0;
+  for (int i = 0; i < s->nd; i++) {
+    extent_update(i, zcol(s, 0, s->off_c, i), &kl, &ku);
+    extent_update(i, zcol(s, 0, s->off_u, i), &kl, &ku);
+  }
+  for (int d = 0; d < s->nq; d++) extent_update(s->nd + d, zcol(s, 0, s->off_s, d), &kl, &ku);
+  for (int j = 0; j < s->N; j++) {
+    int g = grow_base(s, j);
+    for (int i = 0; i < s->nd; i++) {
+      extent_update(g + i, zcol(s, j, s->off_c, i), &kl, &ku);
+      extent_update(g + i, zcol(s, j + 1, s->off_c, i), &kl, &ku);
+    }
+    for (int p = 0; p < s->nf; p++) {
+      extent_update(g + s->nd + p, zcol(s, j, s->off_q, p), &kl, &ku);
+      extent_update(g + s->nd + p, zcol(s, j + 1, s->off_q, p), &kl, &ku);
+    }
+    for (int k = 0; k < s->r - s->nI; k++)
+      for (int o = 0; o < s->nO; o++) extent_update(g + s->nd + s->nf + k, j * s->m + s->omap[o], &kl, &ku);
+  }
+  int e = end_base(s);
+  for (int b = 0; b < s->nb; b++) {
+    for (int i = 0; i < s->nd; i++) {
+      extent_update(e + b, zcol(s, s->N, s->off_c, i), &kl, &ku);
+      extent_update(e + b, zcol(s, s->N, s->off_u, i), &kl, &ku);
+    }
+    for (int p = 0; p < s->nf; p++) extent_update(e + b, zcol(s, s->N, s->off_q, p), &kl, &ku);
+  }
+  for (int d = 0; d < s->nq; d++) {
+    for (int p = 0; p < s->nf; p++) extent_update(e + s->nb + d, zcol(s, s->N, s->off_q, p), &kl, &ku);
+    extent_update(e + s->nb + d, zcol(s, s->N, s->off_s, d), &kl, &ku);
+  }
+  s->kl = kl;
+  s->ku = ku;
+  s->ldab = 2 * kl + ku + 1;
+}
+
+/* ---- sign of the structural reordering --------------------------------
+ * Canonical augmented matrix M: rows = the n equations of J (dense rows
+ * replaced by the final rows s_N + dense_par q = rhs), then the definition
+ * rows of the extra unknowns; columns = the n unknowns of J, then the extras.
+ * Ordered so, the definitions form a unit lower bidiagonal block and
+ * det M = det J (block elimination of the extras).  The factorisation works
+ * on M with rows and columns permuted to "final" order (interior pivot rows
+ * and interior unknowns first, then the band order); perm_sign is the product
+ * of the parities of those two permutations. */
+static long canon_cdef(const abd_solver *s, int j, int i) { return s->n + (long)j * s->nd + i; }
+static long canon_qdef(const abd_solver *s, int j, int p) /* j >= 1 */
+{
+  return s->n + (long)(s->N + 1) * s->nd + (long)(j - 1) * s->nf + p;
+}
+static long canon_sdef(const abd_solver *s, int j, int d)
+{
+  return s->n + (long)(s->N + 1) * s->nd + (long)s->N * s->nf + (long)j * s->nq + d;
+}
+/* Canonical row of slot k of interval j. */
+static long canon_slot(const abd_solver *s, int j, int k)
+{
+  return k < s->nr ? (long)j * s->nr + k : canon_sdef(s, j + 1, k - s->nr);
+}
+/* Canonical column of band column (j, off, i). */
+static long canon_zcol(const abd_solver *s, int j, int off, int i)
+{
+  if (off == s->off_u) return (long)j * s->nr + i;
+  if (off == s->off_c) return canon_cdef(s, j, i);
+  if (off == s->off_q) return j == 0 ? s->n - s->nf + i : canon_qdef(s, j, i);
+  return canon_sdef(s, j, i);
+}
+
+static int perm_parity(const long *p, long len, unsigned char *seen)
+{
+  long cycles = 0;
+  memset(seen, 0, (size_t)len);
+  for (long i = 0; i < len; i++) {
+    if (seen[i]) continue;
+    cycles++;
+    for (long k = i; !seen[k]; k = p[k]) seen[k] = 1;
+  }
+  return ((len - cycles) % 2) ? -1 : 1;
+}
+
+static int structural_sign(abd_solver *s)
+{
+  long len = (long)s->N * s->nI + s->nband;
+  long *p = malloc((size_t)len * sizeof *p);
+  unsigned char *seen = malloc((size_t)len);
+  if (!p || !seen) {
+    free(p);
+    free(seen);
+    return 0;
+  }
+  /* rows */
+  long f = 0;
+  for (int j = 0; j < s->N; j++)
+    for (int k = 0; k < s->nI; k++) p[f++] = canon_slot(s, j, k);
+  for (int i = 0; i < s->nd; i++) p[f++] = canon_cdef(s, 0, i);
+  for (int d = 0; d < s->nq; d++) p[f++] = canon_sdef(s, 0, d);
+  for (int j = 0; j < s->N; j++) {
+    for (int i = 0; i < s->nd; i++) p[f++] = canon_cdef(s, j + 1, i);
+    for (int q = 0; q < s->nf; q++) p[f++] = canon_qdef(s, j + 1, q);
+    for (int k = s->nI; k < s->r; k++) p[f++] = canon_slot(s, j, k);
+  }
+  for (int b = 0; b < s->nb + s->nq; b++) p[f++] = (long)s->N * s->nr + b;
+  int sign = perm_parity(p, len, seen);
+  /* columns */
+  f = 0;
+  for (int j = 0; j < s->N; j++)
+    for (int t = 0; t < s->nI; t++) p[f++] = (long)j * s->nr + s->nd + t;
+  for (int j = 0; j <= s->N; j++) {
+    for (int i = 0; i < s->nd; i++) p[f++] = canon_zcol(s, j, s->off_c, i);
+    for (int q = 0; q < s->nf; q++) p[f++] = canon_zcol(s, j, s->off_q, q);
+    for (int i = 0; i < s->nd; i++) p[f++] = canon_zcol(s, j, s->off_u, i);
+    for (int d = 0; d < s->nq; d++) p[f++] = canon_zcol(s, j, s->off_s, d);
+  }
+  sign *= perm_parity(p, len, seen);
+  free(p);
+  free(seen);
+  return sign;
+}
+
+abd_solver *abd_solver_alloc(int ndim, int ntst, int ncol, int nfpr, int nbc, int nint)
+{
+  if (ndim < 1 || ntst < 1 || ncol < 1 || nfpr < 0 || nbc < 0 || nint < 0) return NULL;
+  if (nbc + nint + 1 != ndim + nfpr) return NULL;
+  abd_solver *s = calloc(1, sizeof *s);
+  if (!s) return NULL;
+  s->nd = ndim;
+  s->N = ntst;
+  s->nc = ncol;
+  s->nf = nfpr;
+  s->nb = nbc;
+  s->nint = nint;
+  s->nq = nint + 1;
+  s->n = ndim * (ntst * ncol + 1) + nfpr;
+  s->nr = ncol * ndim;
+  s->nI = (ncol - 1) * ndim;
+  s->r = s->nr + s->nq;
+  s->nO = 2 * ndim + nfpr + 2 * s->nq;
+  s->m = 2 * ndim + nfpr + s->nq;
+  s->a = ndim + s->nq;
+  s->nband = (ntst + 1) * s->m;
+  s->off_c = 0;
+  s->off_q = ndim;
+  s->off_u = ndim + nfpr;
+  s->off_s = 2 * ndim + nfpr;
+  s->loc_size = (size_t)s->r * (size_t)(s->nI + s->nO);
+
+  s->omap = malloc((size_t)s->nO * sizeof *s->omap);
+  if (!s->omap) goto fail;
+  {
+    int o = 0;
+    for (int i = 0; i < ndim; i++) s->omap[o++] = s->off_u + i;
+    for (int i = 0; i < ndim; i++) s->omap[o++] = s->m + s->off_u + i;
+    for (int p = 0; p < nfpr; p++) s->omap[o++] = s->m + s->off_q + p;
+    for (int d = 0; d < s->nq; d++) s->omap[o++] = s->off_s + d;
+    for (int d = 0; d < s->nq; d++) s->omap[o++] = s->m + s->off_s + d;
+  }
+  band_extent(s);
+
+  size_t nIt = (size_t)ntst * (size_t)s->nI;
+  s->loc = malloc((size_t)ntst * s->loc_size * sizeof(double));
+  s->loc_piv = malloc((nIt ? nIt : 1) * sizeof(lapack_int));
+  s->ab = malloc((size_t)s->ldab * (size_t)s->nband * sizeof(double));
+  s->band_piv = malloc((size_t)s->nband * sizeof(lapack_int));
+  s->w_rhs = malloc((size_t)s->nband * sizeof(double));
+  s->w_piv = malloc((nIt ? nIt : 1) * sizeof(double));
+  s->w_loc = malloc((size_t)s->r * sizeof(double));
+  s->w_o = malloc((size_t)s->nO * sizeof(double));
+  if (!s->loc || !s->loc_piv || !s->ab || !s->band_piv || !s->w_rhs || !s->w_piv || !s->w_loc || !s->w_o) goto fail;
+  s->perm_sign = structural_sign(s);
+  if (s->perm_sign == 0) goto fail;
+  s->det_log = -INFINITY;
+  return s;
+fail:
+  abd_solver_free(s);
+  return NULL;
+}
+
+static void sv_free(abd_solver *s)
+{
+  free(s->sv_v);
+  free(s->sv_w);
+  free(s->sv_b);
+  free(s->sv_r);
+  free(s->sv_x);
+  free(s->sv_yt);
+  free(s->sv_s);
+  free(s->sv_work);
+  free(s->sv_vec);
+  free(s->sv_res);
+  s->sv_v = s->sv_w = s->sv_b = s->sv_r = s->sv_x = s->sv_yt = s->sv_s = s->sv_work = s->sv_vec = s->sv_res = NULL;
+  s->sv_k = 0;
+}
+
+void abd_solver_free(abd_solver *s)
+{
+  if (!s) return;
+  free(s->omap);
+  free(s->loc);
+  free(s->loc_piv);
+  free(s->ab);
+  free(s->band_piv);
+  free(s->w_rhs);
+  free(s->w_piv);
+  free(s->w_loc);
+  free(s->w_o);
+  sv_free(s);
+  free(s);
+}
+
+int abd_solver_size(const abd_solver *s) { return s->n; }
+
+void abd_solver_space(const abd_solver *s, long *ndoubles, long *nints)
+{
+  long nIt = (long)s->N * s->nI;
+  *ndoubles = (long)s->N * (long)s->loc_size + (long)s->ldab * s->nband + s->nband + nIt + s->r + s->nO +
+              (s->sv_k ? (long)s->sv_k * (3L * s->n + 3L * s->sv_k + 1) + 2L * s->n : 0L) + (long)s->sv_lwork;
+  *nints = s->nO + nIt + s->nband;
+}
+
+static int jac_matches(const abd_solver *s, const colloc_jac *J)
+{
+  return J->ndim == s->nd && J->ntst == s->N && J->ncol == s->nc && J->nfpr == s->nf && J->nbc == s->nb &&
+         J->nint == s->nint && J->n == s->n;
+}
+
+/* Largest |entry| of J, or NaN when an entry is not finite. */
+static double jac_maxabs(const colloc_jac *J)
+{
+  double mx = 0.0;
+  size_t len[4] = {(size_t)J->ntst * J->coll_stride, (size_t)J->nbc * (size_t)(2 * J->ndim + J->nfpr),
+                   (size_t)J->ntst * J->dense_stride, (size_t)J->ndense * (size_t)J->nfpr};
+  const double *v[4] = {J->coll, J->bc, J->dense, J->dense_par};
+  for (int b = 0; b < 4; b++)
+    for (size_t i = 0; i < len[b]; i++) {
+      if (!isfinite(v[b][i])) return NAN;
+      double x = fabs(v[b][i]);
+      if (x > mx) mx = x;
+    }
+  return mx;
+}
+
+/* Interval j's local block (r x (nI+nO), ld r) from J. */
+static void local_fill(const abd_solver *s, const colloc_jac *J, int j, double *L)
+{
+  const int nd = s->nd, nc = s->nc, nr = s->nr, r = s->r, nI = s->nI, nq = s->nq;
+  const int oU0 = nI, oU1 = nI + nd, oQ = nI + 2 * nd, oS0 = oQ + s->nf, oS1 = oS0 + nq;
+  const double *C = colloc_jac_coll_block(J, j);
+  const double *D = colloc_jac_dense_block(J, j);
+  memset(L, 0, s->loc_size * sizeof(double));
+  for (int k = 0; k <= nc; k++)
+    for (int i = 0; i < nd; i++) {
+      int src = k * nd + i;
+      int dst = k == 0 ? oU0 + i : k == nc ? oU1 + i : (k - 1) * nd + i;
+      double *Lc = L + (size_t)dst * (size_t)r;
+      memcpy(Lc, C + (size_t)src * (size_t)nr, (size_t)nr * sizeof(double));
+      for (int d = 0; d < nq; d++) Lc[nr + d] = -D[(size_t)src * (size_t)nq + (size_t)d];
+    }
+  for (int p = 0; p < s->nf; p++)
+    memcpy(L + (size_t)(oQ + p) * (size_t)r, C + (size_t)((nc + 1) * nd + p) * (size_t)nr, (size_t)nr * sizeof(double));
+  for (int d = 0; d < nq; d++) {
+    L[(size_t)(oS0 + d) * (size_t)r + (size_t)(nr + d)] = -1.0;
+    L[(size_t)(oS1 + d) * (size_t)r + (size_t)(nr + d)] = 1.0;
+  }
+}
+
+static void det_accumulate(double pivot, int *sign, double *logabs)
+{
+  if (pivot == 0.0) {
+    *sign = 0;
+    return;
+  }
+  if (pivot < 0.0) *sign = -*sign;
+  *logabs += log(fabs(pivot));
+}
+
+int abd_solver_factor(abd_solver *s, const colloc_jac *J)
+{
+  if (!s) return ABD_ERR_SIZE;
+  s->state = STATE_NONE;
+  s->det_sign = 0;
+  s->det_log = -INFINITY;
+  if (!J || !jac_matches(s, J)) return ABD_ERR_SIZE;
+  double amax = jac_maxabs(J);
+  if (isnan(amax)) return ABD_ERR_NONFINITE;
+  if (amax < 1.0) amax = 1.0; /* the identity copy entries */
+
+  const int nd = s->nd, nf = s->nf, nq = s->nq, nI = s->nI, r = s->r, nO = s->nO, N = s->N;
+  int sign = s->perm_sign, singular = 0;
+  double logabs = 0.0, umax = 0.0;
+
+  memset(s->ab, 0, (size_t)s->ldab * (size_t)s->nband * sizeof(double));
+  s->band_overflow = 0;
+  for (int i = 0; i < nd; i++) {
+    band_put(s, i, zcol(s, 0, s->off_c, i), 1.0);
+    band_put(s, i, zcol(s, 0, s->off_u, i), -1.0);
+  }
+  for (int d = 0; d < nq; d++) band_put(s, nd + d, zcol(s, 0, s->off_s, d), 1.0);
+
+  for (int j = 0; j < N; j++) {
+    double *L = loc_block(s, j);
+    double *O = L + (size_t)nI * (size_t)r;
+    lapack_int *piv = s->loc_piv + (size_t)j * (size_t)nI;
+    local_fill(s, J, j, L);
+    if (nI > 0) {
+      lapack_int info = LAPACKE_dgetrf_work(LAPACK_COL_MAJOR, r, nI, L, r, piv);
+      if (info < 0) return ABD_ERR_LAPACK;
+      if (info > 0) singular = 1;
+      for (int i = 0; i < nI; i++) {
+        if (piv[i] != i + 1) sign = -sign;
+        det_accumulate(L[(size_t)i * (size_t)r + (size_t)i], &sign, &logabs);
+      }
+      if (LAPACKE_dlaswp_work(LAPACK_COL_MAJOR, nO, O, r, 1, nI, piv, 1) < 0) return ABD_ERR_LAPACK;
+      cblas_dtrsm(CblasColMajor, CblasLeft, CblasLower, CblasNoTrans, CblasUnit, nI, nO, 1.0, L, r, O, r);
+      cblas_dgemm(CblasColMajor, CblasNoTrans, CblasNoTrans, r - nI, nO, nI, -1.0, L + nI, r, O, r, 1.0, O + nI, r);
+      /* growth: the U rows of this stage and the condensed rows passed on */
+      for (int c = 0; c < nI + nO; c++) {
+        int top = c < nI ? c + 1 : r;
+        for (int i = 0; i < top; i++) {
+          double x = fabs(L[(size_t)c * (size_t)r + (size_t)i]);
+          if (x > umax) umax = x;
+        }
+      }
+    }
+    int g = grow_base(s, j);
+    for (int k = 0; k < r - nI; k++)
+      for (int o = 0; o < nO; o++)
+        band_put(s, g + nd + nf + k, j * s->m + s->omap[o], O[(size_t)o * (size_t)r + (size_t)(nI + k)]);
+    for (int i = 0; i < nd; i++) {
+      band_put(s, g + i, zcol(s, j, s->off_c, i), -1.0);
+      band_put(s, g + i, zcol(s, j + 1, s->off_c, i), 1.0);
+    }
+    for (int p = 0; p < nf; p++) {
+      band_put(s, g + nd + p, zcol(s, j, s->off_q, p), -1.0);
+      band_put(s, g + nd + p, zcol(s, j + 1, s->off_q, p), 1.0);
+    }
+  }
+
+  const int e = end_base(s), nb = s->nb;
+  for (int b = 0; b < nb; b++) {
+    for (int i = 0; i < nd; i++) {
+      band_put(s, e + b, zcol(s, N, s->off_c, i), J->bc[(size_t)i * (size_t)nb + (size_t)b]);
+      band_put(s, e + b, zcol(s, N, s->off_u, i), J->bc[(size_t)(nd + i) * (size_t)nb + (size_t)b]);
+    }
+    for (int p = 0; p < nf; p++)
+      band_put(s, e + b, zcol(s, N, s->off_q, p), J->bc[(size_t)(2 * nd + p) * (size_t)nb + (size_t)b]);
+  }
+  for (int d = 0; d < nq; d++) {
+    for (int p = 0; p < nf; p++)
+      band_put(s, e + nb + d, zcol(s, N, s->off_q, p), J->dense_par[(size_t)p * (size_t)nq + (size_t)d]);
+    band_put(s, e + nb + d, zcol(s, N, s->off_s, d), 1.0);
+  }
+  if (s->band_overflow) return ABD_ERR_LAPACK;
+
+  lapack_int info = LAPACKE_dgbtrf_work(LAPACK_COL_MAJOR, s->nband, s->nband, s->kl, s->ku, s->ab, s->ldab, s->band_piv);
+  if (info < 0) return ABD_ERR_LAPACK;
+  if (info > 0) singular = 1;
+  const int diag = s->kl + s->ku;
+  for (int i = 0; i < s->nband; i++) {
+    const double *col = s->ab + (size_t)i * (size_t)s->ldab;
+    if (s->band_piv[i] != i + 1) sign = -sign;
+    det_accumulate(col[diag], &sign, &logabs);
+    for (int k = 0; k <= diag; k++) { /* U occupies rows 0..kl+ku of the band storage */
+      double x = fabs(col[k]);
+      if (x > umax) umax = x;
+    }
+  }
+
+  s->growth = umax / amax;
+  if (singular || sign == 0) {
+    s->state = STATE_SINGULAR;
+    s->det_sign = 0;
+    s->det_log = -INFINITY;
+    return ABD_SINGULAR;
+  }
+  s->state = STATE_OK;
+  s->det_sign = sign;
+  s->det_log = logabs;
+  return ABD_OK;
+}
+
+static int solve_state(const abd_solver *s)
+{
+  if (!s || s->state == STATE_NONE) return ABD_ERR_NOT_FACTORED;
+  if (s->state == STATE_SINGULAR) return ABD_SINGULAR;
+  return ABD_OK;
+}
+
+int abd_solver_solve(const abd_solver *s, double *x)
+{
+  int st = solve_state(s);
+  if (st != ABD_OK) return st;
+  const int nd = s->nd, nf = s->nf, nq = s->nq, nI = s->nI, r = s->r, nr = s->nr, nO = s->nO, N = s->N;
+  double *rhs = s->w_rhs, *g = s->w_loc;
+
+  memset(rhs, 0, (size_t)s->nband * sizeof(double));
+  /* Apply each interval's L^{-1} P to its rows' right-hand side. */
+  for (int j = 0; j < N; j++) {
+    const double *L = loc_block(s, j);
+    const lapack_int *piv = s->loc_piv + (size_t)j * (size_t)nI;
+    memcpy(g, x + (size_t)j * (size_t)nr, (size_t)nr * sizeof(double));
+    for (int d = 0; d < nq; d++) g[nr + d] = 0.0;
+    if (nI > 0) {
+      for (int i = 0; i < nI; i++) {
+        int ip = (int)piv[i] - 1;
+        if (ip != i) {
+          double t = g[i];
+          g[i] = g[ip];
+          g[ip] = t;
+        }
+      }
+      cblas_dtrsv(CblasColMajor, CblasLower, CblasNoTrans, CblasUnit, nI, L, r, g, 1);
+      cblas_dgemv(CblasColMajor, CblasNoTrans, r - nI, nI, -1.0, L + nI, r, g, 1, 1.0, g + nI, 1);
+      memcpy(s->w_piv + (size_t)j * (size_t)nI, g, (size_t)nI * sizeof(double));
+    }
+    memcpy(rhs + grow_base(s, j) + nd + nf, g + nI, (size_t)(r - nI) * sizeof(double));
+  }
+  const int e = end_base(s);
+  memcpy(rhs + e, x + (size_t)N * (size_t)nr, (size_t)(s->nb + nq) * sizeof(double));
+
+  if (LAPACKE_dgbtrs_work(LAPACK_COL_MAJOR, 'N', s->nband, s->kl, s->ku, 1, s->ab, s->ldab, s->band_piv, rhs,
+                          s->nband) < 0)
+    return ABD_ERR_LAPACK;
+
+  /* Interior unknowns: U_j x_I = g_j - X_j x_O. */
+  for (int j = 0; j < N; j++) {
+    if (nI == 0) break;
+    const double *L = loc_block(s, j);
+    double *t = s->w_piv + (size_t)j * (size_t)nI;
+    for (int o = 0; o < nO; o++) s->w_o[o] = rhs[j * s->m + s->omap[o]];
+    cblas_dgemv(CblasColMajor, CblasNoTrans, nI, nO, -1.0, L + (size_t)nI * (size_t)r, r, s->w_o, 1, 1.0, t, 1);
+    cblas_dtrsv(CblasColMajor, CblasUpper, CblasNoTrans, CblasNonUnit, nI, L, r, t, 1);
+    memcpy(x + (size_t)j * (size_t)nr + (size_t)nd, t, (size_t)nI * sizeof(double));
+  }
+  for (int j = 0; j <= N; j++)
+    memcpy(x + (size_t)j * (size_t)nr, rhs + zcol(s, j, s->off_u, 0), (size_t)nd * sizeof(double));
+  memcpy(x + s->n - nf, rhs + zcol(s, 0, s->off_q, 0), (size_t)nf * sizeof(double));
+  return ABD_OK;
+}
+
+/* J^T y = c through the augmented matrix M (det M = det J): M^T (y, w) =
+ * (c, 0) gives J^T y = c.  With M_final = [[U, X], [0, B]] (interior pivot
+ * rows first), solve U^T w_I = c_I, B^T w_B = c_B - X^T w_I, then undo the
+ * local row operations: rows of interval j get P_j^T L_j^{-T} (w_I, w_B). */
+int abd_solver_solve_transpose(const abd_solver *s, double *x)
+{
+  int st = solve_state(s);
+  if (st != ABD_OK) return st;
+  const int nd = s->nd, nf = s->nf, nq = s->nq, nI = s->nI, r = s->r, nr = s->nr, nO = s->nO, N = s->N;
+  double *rhs = s->w_rhs, *g = s->w_loc;
+
+  memset(rhs, 0, (size_t)s->nband * sizeof(double));
+  for (int j = 0; j <= N; j++)
+    memcpy(rhs + zcol(s, j, s->off_u, 0), x + (size_t)j * (size_t)nr, (size_t)nd * sizeof(double));
+  memcpy(rhs + zcol(s, 0, s->off_q, 0), x + s->n - nf, (size_t)nf * sizeof(double));
+  for (int j = 0; j < N; j++) {
+    if (nI == 0) break;
+    const double *L = loc_block(s, j);
+    double *wI = s->w_piv + (size_t)j * (size_t)nI;
+    memcpy(wI, x + (size_t)j * (size_t)nr + (size_t)nd, (size_t)nI * sizeof(double));
+    cblas_dtrsv(CblasColMajor, CblasUpper, CblasTrans, CblasNonUnit, nI, L, r, wI, 1);
+    cblas_dgemv(CblasColMajor, CblasTrans, nI, nO, 1.0, L + (size_t)nI * (size_t)r, r, wI, 1, 0.0, s->w_o, 1);
+    for (int o = 0; o < nO; o++) rhs[j * s->m + s->omap[o]] -= s->w_o[o];
+  }
+
+  if (LAPACKE_dgbtrs_work(LAPACK_COL_MAJOR, 'T', s->nband, s->kl, s->ku, 1, s->ab, s->ldab, s->band_piv, rhs,
+                          s->nband) < 0)
+    return ABD_ERR_LAPACK;
+
+  for (int j = 0; j < N; j++) {
+    const double *L = loc_block(s, j);
+    const lapack_int *piv = s->loc_piv + (size_t)j * (size_t)nI;
+    if (nI > 0) memcpy(g, s->w_piv + (size_t)j * (size_t)nI, (size_t)nI * sizeof(double));
+    memcpy(g + nI, rhs + grow_base(s, j) + nd + nf, (size_t)(r - nI) * sizeof(double));
+    if (nI > 0) {
+      cblas_dgemv(CblasColMajor, CblasTrans, r - nI, nI, -1.0, L + nI, r, g + nI, 1, 1.0, g, 1);
+      cblas_dtrsv(CblasColMajor, CblasLower, CblasTrans, CblasUnit, nI, L, r, g, 1);
+      for (int i = nI - 1; i >= 0; i--) {
+        int ip = (int)piv[i] - 1;
+        if (ip != i) {
+          double t = g[i];
+          g[i] = g[ip];
+          g[ip] = t;
+        }
+      }
+    }
+    /* slots nr.. are the running-sum definitions: not equations of J */
+    memcpy(x + (size_t)j * (size_t)nr, g, (size_t)nr * sizeof(double));
+  }
+  memcpy(x + (size_t)N * (size_t)nr, rhs + end_base(s), (size_t)(s->nb + nq) * sizeof(double));
+  return ABD_OK;
+}
+
+void abd_solver_det(const abd_solver *s, int *sign, double *logabs)
+{
+  if (!s || s->state == STATE_NONE) {
+    *sign = 0;
+    *logabs = -INFINITY;
+    return;
+  }
+  *sign = s->det_sign;
+  *logabs = s->det_log;
+}
+
+double abd_solver_growth(const abd_solver *s) { return s->state == STATE_NONE ? (double)NAN : s->growth; }
+
+/* ---- smallest singular values ----------------------------------------- */
+
+/* Frobenius norm of J (contributions of two intervals to a mesh point in a
+ * dense row add before squaring). */
+static double jac_frobenius(const colloc_jac *J)
+{
+  const int nd = J->ndim, nc = J->ncol, nq = J->ndense;
+  double sum = 0.0;
+  size_t ncoll = (size_t)J->ntst * J->coll_stride, nbcv = (size_t)J->nbc * (size_t)(2 * nd + J->nfpr);
+  for (size_t i = 0; i < ncoll; i++) sum += J->coll[i] * J->coll[i];
+  for (size_t i = 0; i < nbcv; i++) sum += J->bc[i] * J->bc[i];
+  for (size_t i = 0; i < (size_t)nq * (size_t)J->nfpr; i++) sum += J->dense_par[i] * J->dense_par[i];
+  for (int j = 0; j <= J->ntst; j++)
+    for (int k = 0; k < (j < J->ntst ? nc : 1); k++)
+      for (int i = 0; i < nd; i++)
+        for (int d = 0; d < nq; d++) {
+          double v = 0.0;
+          if (j < J->ntst) v += colloc_jac_dense_block(J, j)[(size_t)(k * nd + i) * (size_t)nq + (size_t)d];
+          if (k == 0 && j > 0) v += colloc_jac_dense_block(J, j - 1)[(size_t)(nc * nd + i) * (size_t)nq + (size_t)d];
+          sum += v * v;
+        }
+  return sqrt(sum);
+}
+
+/* Orthonormalise the k columns of A (n x k) by Gram-Schmidt with one
+ * reorthogonalisation pass ("twice is enough"); R (k x k, may be NULL)
+ * receives the triangular factor.  Returns -1 if a column vanishes. */
+static int orthonormalise(int n, int k, double *A, double *R)
+{
+  if (R) memset(R, 0, (size_t)k * (size_t)k * sizeof(double));
+  for (int i = 0; i < k; i++) {
+    double *ai = A + (size_t)i * (size_t)n;
+    for (int pass = 0; pass < 2; pass++)
+      for (int l = 0; l < i; l++) {
+        const double *al = A + (size_t)l * (size_t)n;
+        double h = cblas_ddot(n, al, 1, ai, 1);
+        cblas_daxpy(n, -h, al, 1, ai, 1);
+        if (R) R[(size_t)i * (size_t)k + (size_t)l] += h;
+      }
+    double nrm = cblas_dnrm2(n, ai, 1);
+    if (!(nrm > 0.0) || !isfinite(nrm)) return -1;
+    cblas_dscal(n, 1.0 / nrm, ai, 1);
+    if (R) R[(size_t)i * (size_t)k + (size_t)i] = nrm;
+  }
+  return 0;
+}
+
+static int sv_reserve(abd_solver *s, int k)
+{
+  if (s->sv_k >= k) return 0;
+  sv_free(s);
+  size_t nk = (size_t)s->n * (size_t)k, kk = (size_t)k * (size_t)k;
+  s->sv_v = malloc(nk * sizeof(double));
+  s->sv_w = malloc(nk * sizeof(double));
+  s->sv_b = malloc(nk * sizeof(double));
+  s->sv_r = malloc(kk * sizeof(double));
+  s->sv_x = malloc(kk * sizeof(double));
+  s->sv_yt = malloc(kk * sizeof(double));
+  s->sv_s = malloc((size_t)k * sizeof(double));
+  s->sv_vec = malloc((size_t)s->n * sizeof(double));
+  s->sv_res = malloc((size_t)s->n * sizeof(double));
+  if (!s->sv_v || !s->sv_w || !s->sv_b || !s->sv_r || !s->sv_x || !s->sv_yt || !s->sv_s || !s->sv_vec || !s->sv_res) {
+    sv_free(s);
+    return -1;
+  }
+  double q;
+  if (LAPACKE_dgesvd_work(LAPACK_COL_MAJOR, 'A', 'A', k, k, s->sv_r, k, s->sv_s, s->sv_x, k, s->sv_yt, k, &q, -1) != 0) {
+    sv_free(s);
+    return -1;
+  }
+  s->sv_lwork = (lapack_int)q;
+  s->sv_work = malloc((size_t)s->sv_lwork * sizeof(double));
+  if (!s->sv_work) {
+    sv_free(s);
+    return -1;
+  }
+  s->sv_k = k;
+  return 0;
+}
+
+/* Deterministic start block: the iteration must not depend on a global
+ * random state, and any block with a component along the wanted singular
+ * subspace converges. */
+static void sv_start(int n, int k, double *V)
+{
+  uint64_t st = UINT64_C(0x9E3779B97F4A7C15);
+  for (size_t i = 0; i < (size_t)n * (size_t)k; i++) {
+    st = st * UINT64_C(6364136223846793005) + UINT64_C(1442695040888963407);
+    V[i] = (double)(st >> 11) * 0x1.0p-53 - 0.5;
+  }
+}
+
+int abd_solver_smallest_sv(abd_solver *s, const colloc_jac *J, int k, double *sv, double *vecs, int maxit, double tol)
+{
+  if (!s || !J || !jac_matches(s, J) || k < 1 || k > s->n || maxit < 1 || !(tol > 0.0)) return ABD_ERR_SIZE;
+  if (s->state != STATE_OK) return s->state == STATE_SINGULAR ? ABD_SINGULAR : ABD_ERR_NOT_FACTORED;
+  if (sv_reserve(s, k) != 0) return ABD_ERR_MEM;
+  const int n = s->n;
+  double *V = s->sv_v, *W = s->sv_w, *QL = s->sv_b, *R = s->sv_r, *X = s->sv_x, *YT = s->sv_yt, *S = s->sv_s;
+  double *u = s->sv_vec, *res = s->sv_res;
+  const double normF = jac_frobenius(J);
+
+  sv_start(n, k, V);
+  if (orthonormalise(n, k, V, NULL) != 0) return ABD_ERR_LAPACK;
+  int status = ABD_NOT_CONVERGED;
+  for (int it = 0; it < maxit && status != ABD_OK; it++) {
+    /* Left block QL = orth(J^{-T} V), right block W R = J^{-1} QL.  Then
+     * J W = QL R^{-1} up to the solves' backward error, so the projection
+     * QL^T J W is R^{-1}: with R = X S Y^T, the Ritz triplets are
+     * sigma_i = 1/S_i, v_i = W X e_i, u_i = QL Y e_i.  Taking sigma from R
+     * rather than from J W keeps the relative accuracy of tiny sigma, and
+     * u_i from J^{-T} rather than J v_i / sigma_i keeps u_i accurate. */
+    memcpy(QL, V, (size_t)n * (size_t)k * sizeof(double));
+    for (int i = 0; i < k; i++)
+      if (abd_solver_solve_transpose(s, QL + (size_t)i * (size_t)n) != ABD_OK) return ABD_ERR_LAPACK;
+    if (orthonormalise(n, k, QL, NULL) != 0) return ABD_ERR_LAPACK;
+    memcpy(W, QL, (size_t)n * (size_t)k * sizeof(double));
+    for (int i = 0; i < k; i++)
+      if (abd_solver_solve(s, W + (size_t)i * (size_t)n) != ABD_OK) return ABD_ERR_LAPACK;
+    if (orthonormalise(n, k, W, R) != 0) return ABD_ERR_LAPACK;
+    if (LAPACKE_dgesvd_work(LAPACK_COL_MAJOR, 'A', 'A', k, k, R, k, S, X, k, YT, k, s->sv_work, s->sv_lwork) != 0)
+      return ABD_ERR_LAPACK;
+    /* S is descending, so sigma_i = 1/S_i is ascending. */
+    status = ABD_OK;
+    for (int i = 0; i < k; i++) {
+      double *vi = V + (size_t)i * (size_t)n;
+      memset(vi, 0, (size_t)n * sizeof(double));
+      memset(u, 0, (size_t)n * sizeof(double));
+      for (int l = 0; l < k; l++) {
+        cblas_daxpy(n, X[(size_t)i * (size_t)k + (size_t)l], W + (size_t)l * (size_t)n, 1, vi, 1);
+        cblas_daxpy(n, YT[(size_t)l * (size_t)k + (size_t)i], QL + (size_t)l * (size_t)n, 1, u, 1);
+      }
+      sv[i] = 1.0 / S[i];
+      colloc_jac_matvec(J, vi, res); /* J v - sigma u */
+      cblas_daxpy(n, -sv[i], u, 1, res, 1);
+      double r1 = cblas_dnrm2(n, res, 1);
+      colloc_jac_matvec_transpose(J, u, res); /* J^T u - sigma v */
+      cblas_daxpy(n, -sv[i], vi, 1, res, 1);
+      double r2 = cblas_dnrm2(n, res, 1);
+      if (!(fmax(r1, r2) <= tol * normF)) status = ABD_NOT_CONVERGED;
+    }
+  }
+  memcpy(vecs, V, (size_t)n * (size_t)k * sizeof(double));
+  return status;
+}
