@@ -1,0 +1,54 @@
+/* Block storage of the Newton matrix of the collocation system, as assembled by
+ * the collocation code and consumed by the structured solver (abd_solver) or,
+ * after conversion, by KLU.
+ *
+ * Unknowns (global order, n = ndim*(ntst*ncol+1) + nfpr):
+ *   u at node k (0..ncol) of interval j, component i:  (j*ncol + k)*ndim + i
+ *     (node ncol of interval j is node 0 of interval j+1: the mesh point)
+ *   free parameter p:                                   ndim*(ntst*ncol+1) + p
+ * Equations (global order, same count n):
+ *   collocation row r (0..ncol*ndim-1) of interval j:  j*ncol*ndim + r
+ *   boundary condition b (0..nbc-1):                   ntst*ncol*ndim + b
+ *   dense row d (0..nint): integral conditions, then the arclength equation last:
+ *                                                      ntst*ncol*ndim + nbc + d
+ * Blocks (all column-major):
+ *   coll  interval j: (ncol*ndim) x ((ncol+1)*ndim + nfpr), ld = ncol*ndim;
+ *         columns: the ncol+1 nodes of the interval, then the free parameters
+ *   bc    nbc x (2*ndim + nfpr), ld = nbc; columns: u(0), u(1), parameters
+ *   dense interval j: (nint+1) x ((ncol+1)*ndim), ld = nint+1: the contribution
+ *         of interval j's nodes; contributions of two intervals to a shared
+ *         mesh point add up
+ *   dense_par (nint+1) x nfpr, ld = nint+1
+ */
+#ifndef CABLE_COLLOC_JAC_H
+#define CABLE_COLLOC_JAC_H
+
+#include <stddef.h>
+
+typedef struct colloc_jac {
+  int ndim, ntst, ncol, nfpr, nbc, nint;
+  int n;                 /* unknowns = equations */
+  int ndense;            /* nint + 1 */
+  size_t coll_stride;    /* doubles between consecutive coll blocks */
+  size_t dense_stride;   /* doubles between consecutive dense blocks */
+  double *coll;
+  double *bc;
+  double *dense;
+  double *dense_par;
+} colloc_jac;
+
+colloc_jac *colloc_jac_alloc(int ndim, int ntst, int ncol, int nfpr, int nbc, int nint);
+void colloc_jac_free(colloc_jac *J);                 /* NULL is a no-op */
+void colloc_jac_zero(colloc_jac *J);
+
+static inline double *colloc_jac_coll_block(const colloc_jac *J, int j) { return J->coll + (size_t)j * J->coll_stride; }
+static inline double *colloc_jac_dense_block(const colloc_jac *J, int j) { return J->dense + (size_t)j * J->dense_stride; }
+
+/* y = J x (length n each). */
+void colloc_jac_matvec(const colloc_jac *J, const double *x, double *y);
+/* y = J^T x. */
+void colloc_jac_matvec_transpose(const colloc_jac *J, const double *x, double *y);
+/* Dense n x n column-major copy (tests and small problems). */
+void colloc_jac_to_dense(const colloc_jac *J, double *A);
+
+#endif
