@@ -43,6 +43,10 @@ const cable_solution *cable_cont_solution(const cable_cont *cc);
 int cable_cont_run(cable_cont *cc, const cable_sink *sink, int ibr, int first_label,
                    int *next_label);
 
+/* Test functions at the current point: sign of det of the extended Newton
+ * matrix and its smallest singular values (0 when not computed). */
+void cable_cont_test_functions(const cable_cont *cc, int *det_sign, double *sv1, double *sv2);
+
 /* Human-readable account of the last error (never NULL). */
 const char *cable_cont_error(const cable_cont *cc);
 

@@ -1,0 +1,180 @@
+#include "colloc_newton.h"
+
+#include <kinsol/kinsol.h>
+#include <math.h>
+#include <nvector/nvector_serial.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sundials/sundials_context.h>
+#include <sunlinsol/sunlinsol_klu.h>
+
+#include "cable_status.h"
+#include "colloc_jac.h"
+#include "colloc_sparse.h"
+#include "sunlinsol_colloc.h"
+#include "sunmatrix_colloc.h"
+
+/* Residual level (max-norm, relative to 1 + max|x|) below which KINSOL's
+ * function-norm test alone declares convergence: far below what a step of
+ * relative size EPSU leaves behind, so the step test normally decides. */
+#define COLLOC_NEWTON_FNORM_REL 1.0e-13
+/* After KINSOL's small-step exit the residual must be this small relative to
+ * 1 + max|x|: a small step with a large residual is stagnation, not convergence. */
+#define COLLOC_NEWTON_RES_ACCEPT 1.0e-6
+
+struct colloc_newton {
+  colloc_system *sys;            /* not owned */
+  SUNContext ctx;
+  void *kin;
+  N_Vector x, uscale, fscale;
+  colloc_jac *J;
+  SUNMatrix A;
+  SUNLinearSolver LS;
+  cable_linsolver kind;
+  int itnw, nwtn;
+  double eps;
+  int iters;
+  double resnorm;
+  double *F;                     /* residual work vector */
+  char msg[256];
+};
+
+static int kin_sysfn(N_Vector x, N_Vector F, void *data)
+{
+  colloc_newton *nw = data;
+  int rc = colloc_system_residual(nw->sys, N_VGetArrayPointer(x), N_VGetArrayPointer(F));
+  return rc == 0 ? 0 : (rc > 0 ? 1 : -1);
+}
+
+static int kin_jacfn(N_Vector x, N_Vector fx, SUNMatrix A, void *data, N_Vector t1, N_Vector t2)
+{
+  (void)fx; (void)t1; (void)t2;
+  colloc_newton *nw = data;
+  int rc = colloc_system_jacobian(nw->sys, N_VGetArrayPointer(x), nw->J);
+  if (rc != 0) return rc > 0 ? 1 : -1;
+  if (nw->kind == CABLE_LINSOLVER_KLU) return colloc_sparse_fill(nw->J, A) == 0 ? 0 : -1;
+  return 0;
+}
+
+static void kin_errfn(int code, const char *module, const char *function, char *msg, void *data)
+{
+  colloc_newton *nw = data;
+  snprintf(nw->msg, sizeof nw->msg, "%s %s (%d): %s", module, function, code, msg);
+}
+
+void colloc_newton_free(colloc_newton *nw)
+{
+  if (!nw) return;
+  if (nw->kin) KINFree(&nw->kin);
+  if (nw->LS) SUNLinSolFree(nw->LS);
+  if (nw->A) SUNMatDestroy(nw->A);
+  colloc_jac_free(nw->J);
+  if (nw->x) N_VDestroy(nw->x);
+  if (nw->uscale) N_VDestroy(nw->uscale);
+  if (nw->fscale) N_VDestroy(nw->fscale);
+  free(nw->F);
+  if (nw->ctx) SUNContext_Free(&nw->ctx);
+  free(nw);
+}
+
+colloc_newton *colloc_newton_alloc(colloc_system *sys, const cable_constants *c, int *status)
+{
+  *status = CABLE_ERR_ALLOC;
+  colloc_newton *nw = calloc(1, sizeof *nw);
+  if (!nw) return NULL;
+  nw->sys = sys;
+  nw->kind = c->linsolver;
+  nw->itnw = c->itnw > 0 ? c->itnw : 1;
+  nw->nwtn = c->nwtn > 0 ? c->nwtn : nw->itnw;
+  nw->eps = fmin(c->epsu, c->epsl);
+  sunindextype n = sys->n;
+  if (SUNContext_Create(NULL, &nw->ctx) != 0) goto fail;
+  nw->x = N_VNew_Serial(n, nw->ctx);
+  nw->uscale = N_VNew_Serial(n, nw->ctx);
+  nw->fscale = N_VNew_Serial(n, nw->ctx);
+  nw->F = malloc((size_t)n * sizeof *nw->F);
+  nw->J = colloc_jac_alloc(sys->ndim, sys->ntst, sys->ncol, sys->nfpr, sys->nbc, sys->nint);
+  if (!nw->x || !nw->uscale || !nw->fscale || !nw->F || !nw->J) goto fail;
+  N_VConst(1.0, nw->fscale);
+  if (nw->kind == CABLE_LINSOLVER_KLU) {
+    nw->A = colloc_sparse_alloc(nw->J, nw->ctx);
+    if (nw->A) nw->LS = SUNLinSol_KLU(nw->x, nw->A, nw->ctx);
+  } else {
+    nw->A = SUNMat_Colloc(nw->J, nw->ctx);
+    if (nw->A) nw->LS = SUNLinSol_Colloc(nw->x, nw->A, nw->ctx);
+  }
+  if (!nw->A || !nw->LS) goto fail;
+  nw->kin = KINCreate(nw->ctx);
+  if (!nw->kin) goto fail;
+  *status = CABLE_ERR_KINSOL;
+  if (KINInit(nw->kin, kin_sysfn, nw->x) != KIN_SUCCESS) goto fail;
+  if (KINSetUserData(nw->kin, nw) != KIN_SUCCESS) goto fail;
+  if (KINSetErrHandlerFn(nw->kin, kin_errfn, nw) != KIN_SUCCESS) goto fail;
+  if (KINSetLinearSolver(nw->kin, nw->LS, nw->A) != KIN_SUCCESS) goto fail;
+  if (KINSetJacFn(nw->kin, kin_jacfn) != KIN_SUCCESS) goto fail;
+  if (KINSetScaledStepTol(nw->kin, nw->eps) != KIN_SUCCESS) goto fail;
+  /* the Newton step is limited by ITNW and DS control, not by KINSOL's step cap */
+  if (KINSetMaxNewtonStep(nw->kin, 1e300) != KIN_SUCCESS) goto fail;
+  *status = CABLE_SUCCESS;
+  return nw;
+fail:
+  colloc_newton_free(nw);
+  return NULL;
+}
+
+static double max_abs(const double *v, int n)
+{
+  double m = 0.0;
+  for (int i = 0; i < n; i++) m = fmax(m, fabs(v[i]));
+  return m;
+}
+
+/* One KINSol call: at most maxit iterations, a new factorisation every msbset. */
+static int kin_phase(colloc_newton *nw, int maxit, long msbset, int *iters)
+{
+  long nni = 0;
+  KINSetNumMaxIters(nw->kin, maxit);
+  KINSetMaxSetupCalls(nw->kin, msbset);
+  int flag = KINSol(nw->kin, nw->x, KIN_NONE, nw->uscale, nw->fscale);
+  KINGetNumNonlinSolvIters(nw->kin, &nni);
+  *iters += (int)nni;
+  return flag;
+}
+
+int colloc_newton_solve(colloc_newton *nw, double *x)
+{
+  colloc_system *sys = nw->sys;
+  int n = sys->n;
+  double *xv = N_VGetArrayPointer(nw->x), *us = N_VGetArrayPointer(nw->uscale);
+  memcpy(xv, x, (size_t)n * sizeof *x);
+  for (int i = 0; i < n; i++) us[i] = 1.0 / (1.0 + fabs(x[i]));
+  double scale = 1.0 + max_abs(x, n);
+  KINSetFuncNormTol(nw->kin, COLLOC_NEWTON_FNORM_REL * scale);
+  nw->msg[0] = '\0';
+  nw->iters = 0;
+  sys->last_callback = 0;
+  int full = nw->nwtn < nw->itnw ? nw->nwtn : nw->itnw;
+  int flag = kin_phase(nw, full, 1, &nw->iters);
+  if (flag == KIN_MAXITER_REACHED && nw->itnw > full)
+    flag = kin_phase(nw, nw->itnw - full, nw->itnw, &nw->iters);
+  int rc = colloc_system_residual(sys, xv, nw->F);
+  nw->resnorm = rc == 0 ? max_abs(nw->F, n) : HUGE_VAL;
+  if (flag < 0 || rc != 0) {
+    if (sys->last_callback < 0) return CABLE_ERR_CALLBACK;
+    if (sys->last_callback > 0) return CABLE_ERR_RECOVERABLE;
+    if (!nw->msg[0]) snprintf(nw->msg, sizeof nw->msg, "KINSOL flag %d", flag);
+    return CABLE_ERR_NEWTON;
+  }
+  if (nw->resnorm > COLLOC_NEWTON_RES_ACCEPT * (1.0 + max_abs(xv, n))) {
+    snprintf(nw->msg, sizeof nw->msg, "Newton stagnated: residual %.3e after %d iterations",
+             nw->resnorm, nw->iters);
+    return CABLE_ERR_NEWTON;
+  }
+  memcpy(x, xv, (size_t)n * sizeof *x);
+  return CABLE_SUCCESS;
+}
+
+int colloc_newton_iterations(const colloc_newton *nw) { return nw->iters; }
+double colloc_newton_residual(const colloc_newton *nw) { return nw->resnorm; }
+const char *colloc_newton_message(const colloc_newton *nw) { return nw->msg; }

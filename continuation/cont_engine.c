@@ -1,0 +1,302 @@
+/* Continuation driver: start, predictor-corrector steps, step control, limits. */
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cont_impl.h"
+
+/* Step-size control (IADS): Newton iteration counts at or below
+ * CONT_FAST_ITERS mean the predictor was excellent (grow by CONT_GROW_FAST);
+ * up to half of ITNW is comfortable (grow by CONT_GROW); at ITNW - 1 or more
+ * the step was too ambitious (shrink by CONT_SHRINK).  A failed corrector
+ * halves the step (AUTO's rule) until DSMIN. */
+#define CONT_FAST_ITERS 2
+#define CONT_GROW_FAST 2.0
+#define CONT_GROW 1.3
+#define CONT_SHRINK 0.5
+
+void cont_set_error(cable_cont *cc, const char *fmt, ...)
+{
+  va_list ap;
+  va_start(ap, fmt);
+  vsnprintf(cc->err, sizeof cc->err, fmt, ap);
+  va_end(ap);
+}
+
+const char *cable_cont_error(const cable_cont *cc) { return cc->err; }
+
+void cable_cont_free(cable_cont *cc)
+{
+  if (!cc) return;
+  colloc_newton_free(cc->nw);
+  colloc_system_free(cc->sys);
+  colloc_jac_free(cc->J);
+  abd_solver_free(cc->abd);
+  double *v[] = {cc->x, cc->xdot, cc->xp, cc->xdotp, cc->xt, cc->xdott, cc->w1, cc->w2, cc->w3,
+                 cc->svec, cc->umax};
+  for (size_t i = 0; i < sizeof v / sizeof v[0]; i++) free(v[i]);
+  cable_solution_free(cc->sol);
+  free(cc);
+}
+
+static int check_input(const cable_problem *pb, const cable_constants *c, char *msg, size_t len)
+{
+  if (!pb || !pb->func) return snprintf(msg, len, "the problem has no FUNC"), CABLE_ERR_INPUT;
+  if (pb->abi_version != CABLE_PROBLEM_ABI)
+    return snprintf(msg, len, "problem ABI %d, cable expects %d", pb->abi_version, CABLE_PROBLEM_ABI),
+           CABLE_ERR_INPUT;
+  if (c->ips != 4) return snprintf(msg, len, "IPS=%d: cable solves IPS=4 problems only", c->ips), CABLE_ERR_UNSUPPORTED;
+  if (c->ndim && c->ndim != pb->ndim)
+    return snprintf(msg, len, "NDIM=%d but problem '%s' has %d equations", c->ndim, pb->name, pb->ndim),
+           CABLE_ERR_INPUT;
+  if (pb->nbc > 0 && !pb->bcnd) return snprintf(msg, len, "NBC=%d but no BCND", pb->nbc), CABLE_ERR_INPUT;
+  if (pb->nint > 0 && !pb->icnd) return snprintf(msg, len, "NINT=%d but no ICND", pb->nint), CABLE_ERR_INPUT;
+  int nfpr = pb->nbc + pb->nint - pb->ndim + 1;
+  if (nfpr < 1) return snprintf(msg, len, "NBC+NINT-NDIM+1 = %d: need at least one free parameter", nfpr), CABLE_ERR_INPUT;
+  if (c->nicp < nfpr)
+    return snprintf(msg, len, "ICP lists %d parameter(s); this problem needs %d free parameters (NBC+NINT-NDIM+1)",
+                    c->nicp, nfpr), CABLE_ERR_INPUT;
+  int npar = c->npar > pb->npar ? c->npar : pb->npar;
+  for (int k = 0; k < c->nicp; k++)
+    if (c->icp[k] < 0 || c->icp[k] >= npar)
+      return snprintf(msg, len, "ICP entry %d is outside 1..NPAR=%d", c->icp[k] + 1, npar), CABLE_ERR_INPUT;
+  if (c->ncol < COLLOC_NCOL_MIN || c->ncol > COLLOC_NCOL_MAX)
+    return snprintf(msg, len, "NCOL=%d outside %d..%d", c->ncol, COLLOC_NCOL_MIN, COLLOC_NCOL_MAX), CABLE_ERR_INPUT;
+  if (c->ntst < 1) return snprintf(msg, len, "NTST=%d must be positive", c->ntst), CABLE_ERR_INPUT;
+  if (!(c->dsmin > 0) || !(c->dsmax >= c->dsmin) || !(fabs(c->ds) > 0))
+    return snprintf(msg, len, "need 0 < DSMIN <= DSMAX and DS != 0"), CABLE_ERR_INPUT;
+  if (c->epsl <= 0 || c->epsu <= 0 || c->epss <= 0) return snprintf(msg, len, "EPSL, EPSU, EPSS must be positive"), CABLE_ERR_INPUT;
+  return CABLE_SUCCESS;
+}
+
+cable_cont *cable_cont_alloc(const cable_problem *pb, const cable_constants *c, int *status)
+{
+  char msg[512];
+  int rc = check_input(pb, c, msg, sizeof msg);
+  cable_cont *cc = calloc(1, sizeof *cc);
+  if (!cc) {
+    *status = CABLE_ERR_ALLOC;
+    return NULL;
+  }
+  snprintf(cc->err, sizeof cc->err, "%s", rc ? msg : "");
+  if (rc) {
+    *status = rc;
+    return cc; /* the caller reads the message, then frees */
+  }
+  cc->pb = pb;
+  cc->c = *c;
+  cc->ndim = pb->ndim;
+  cc->npar = c->npar > pb->npar ? c->npar : pb->npar;
+  cc->nfpr = pb->nbc + pb->nint - pb->ndim + 1;
+  cc->ntst = c->ntst;
+  cc->ncol = c->ncol;
+  cc->sys = colloc_system_alloc(pb, c, c->ntst, c->ncol, c->icp, cc->nfpr, &rc);
+  if (!cc->sys) goto fail;
+  cc->n = cc->sys->n;
+  cc->nw = colloc_newton_alloc(cc->sys, c, &rc);
+  if (!cc->nw) goto fail;
+  rc = CABLE_ERR_ALLOC;
+  cc->J = colloc_jac_alloc(cc->ndim, cc->ntst, cc->ncol, cc->nfpr, pb->nbc, pb->nint);
+  cc->abd = abd_solver_alloc(cc->ndim, cc->ntst, cc->ncol, cc->nfpr, pb->nbc, pb->nint);
+  size_t n = (size_t)cc->n;
+  cc->x = calloc(n, sizeof(double)); cc->xdot = calloc(n, sizeof(double));
+  cc->xp = calloc(n, sizeof(double)); cc->xdotp = calloc(n, sizeof(double));
+  cc->xt = calloc(n, sizeof(double)); cc->xdott = calloc(n, sizeof(double));
+  cc->w1 = calloc(n, sizeof(double)); cc->w2 = calloc(n, sizeof(double)); cc->w3 = calloc(n, sizeof(double));
+  cc->svec = calloc(2 * n, sizeof(double));
+  cc->umax = calloc((size_t)cc->ndim, sizeof(double));
+  cc->sol = cable_solution_alloc(cc->ndim, cc->ntst, cc->ncol, cc->npar, cc->nfpr);
+  if (!cc->J || !cc->abd || !cc->x || !cc->xdot || !cc->xp || !cc->xdotp || !cc->xt || !cc->xdott ||
+      !cc->w1 || !cc->w2 || !cc->w3 || !cc->svec || !cc->umax || !cc->sol)
+    goto fail;
+  cc->ds = c->ds;
+  cc->uz_hit = -1;
+  *status = CABLE_SUCCESS;
+  return cc;
+fail:
+  *status = rc ? rc : CABLE_ERR_ALLOC;
+  snprintf(cc->err, sizeof cc->err, "could not set up the solver: %s", cable_status_message(*status));
+  cc->ended = 1;
+  cc->end_status = *status;
+  return cc;
+}
+
+/* Predictor x0 + ds xdot0, then Newton on the collocation system closed by the
+ * pseudo-arclength equation <x - x0, xdot0> = ds. */
+int cont_correct(cable_cont *cc, const double *x0, const double *xdot0, double ds, double *x)
+{
+  colloc_system *s = cc->sys;
+  size_t n = (size_t)cc->n;
+  memcpy(s->x0, x0, n * sizeof *x0);
+  memcpy(s->xdot0, xdot0, n * sizeof *xdot0);
+  s->ds = ds;
+  s->closing = COLLOC_CLOSE_ARCLENGTH;
+  for (size_t i = 0; i < n; i++) x[i] = x0[i] + ds * xdot0[i];
+  int rc = colloc_newton_solve(cc->nw, x);
+  cc->newton_iters = colloc_newton_iterations(cc->nw);
+  return rc;
+}
+
+static double principal(const cable_cont *cc, const double *x)
+{
+  return x[cc->n - cc->nfpr];
+}
+
+/* The first point: converge a STPNT start at fixed principal parameter, or
+ * take a stored solution as it is; then its tangent and test functions. */
+static int first_point(cable_cont *cc)
+{
+  colloc_system *s = cc->sys;
+  int rc;
+  cc->started = 1;
+  if (!cc->restart) {
+    s->closing = COLLOC_CLOSE_FIXPAR;
+    s->fixval = principal(cc, cc->x);
+    rc = colloc_newton_solve(cc->nw, cc->x);
+    cc->newton_iters = colloc_newton_iterations(cc->nw);
+    if (rc != CABLE_SUCCESS) {
+      cont_set_error(cc, "the starting solution did not converge (%s; %s)", cable_status_message(rc),
+                     colloc_newton_message(cc->nw));
+      cc->ended = 1;
+      return cc->end_status = rc == CABLE_ERR_CALLBACK ? rc : CABLE_ERR_NEWTON;
+    }
+  }
+  int have_dir = 0;
+  for (int i = 0; i < cc->n; i++)
+    if (cc->xdot[i] != 0.0) have_dir = 1;
+  if (cc->switch_pending) {
+    rc = cont_switch_direction(cc);
+    if (rc != CABLE_SUCCESS) {
+      cc->ended = 1;
+      return cc->end_status = rc;
+    }
+  } else if (!have_dir) {
+    /* tangent at fixed principal parameter: the closing row is e_p0, rhs e_last */
+    s->closing = COLLOC_CLOSE_FIXPAR;
+    rc = cont_factor_at(cc, cc->x, NULL, NULL);
+    if (rc != CABLE_SUCCESS) {
+      cont_set_error(cc, "the Jacobian at the starting point is singular: cannot compute a direction");
+      cc->ended = 1;
+      return cc->end_status = CABLE_ERR_LINSOLVE;
+    }
+    memset(cc->xdot, 0, (size_t)cc->n * sizeof *cc->xdot);
+    cc->xdot[cc->n - 1] = 1.0; /* rhs: last equation is the closing row */
+    abd_solver_solve(cc->abd, cc->xdot);
+    cont_normalize(cc, cc->xdot);
+    if (cc->c.ds < 0) for (int i = 0; i < cc->n; i++) cc->xdot[i] = -cc->xdot[i];
+    cc->ds = fabs(cc->c.ds);
+  } else {
+    /* a stored direction; DS < 0 reverses it (AUTO) */
+    cont_normalize(cc, cc->xdot);
+    if (cc->c.ds < 0) for (int i = 0; i < cc->n; i++) cc->xdot[i] = -cc->xdot[i];
+    cc->ds = fabs(cc->c.ds);
+  }
+  /* test functions with the tangent itself as closing row */
+  rc = cont_tangent(cc, cc->x, cc->xdot, cc->w3, &cc->tf);
+  if (rc != CABLE_SUCCESS) {
+    cont_set_error(cc, "the extended Jacobian at the starting point is singular");
+    cc->ended = 1;
+    return cc->end_status = CABLE_ERR_LINSOLVE;
+  }
+  cc->npt = 1;
+  cc->ds_used = 0.0;
+  cc->itp = (!cc->restart || cc->switch_pending) ? CABLE_TY_EP : CABLE_TY_NONE;
+  cc->switch_pending = 0;
+  cont_store_solution(cc, cc->itp, 0);
+  return CABLE_SUCCESS;
+}
+
+/* After a point is accepted: end the branch at NMX, outside RL0..RL1 or
+ * A0..A1 (AUTO's limits), or at a user zero with UZSTOP.  The point itself
+ * stays valid; the next step returns the end status. */
+static void check_limits(cable_cont *cc)
+{
+  double p0 = principal(cc, cc->x), l2 = cc->pt.l2norm;
+  int end = 0;
+  if (cc->uz_stop) end = CABLE_END_UZSTOP;
+  else if (p0 < cc->c.rl0 || p0 > cc->c.rl1 || l2 < cc->c.a0 || l2 > cc->c.a1) end = CABLE_END_BOUNDS;
+  else if (cc->c.nmx > 0 && cc->npt >= cc->c.nmx) end = CABLE_END_NMX;
+  if (!end) return;
+  if (end != CABLE_END_UZSTOP && cc->itp == CABLE_TY_NONE) {
+    cc->itp = CABLE_TY_EP;
+    cc->pt.itp = CABLE_TY_EP;
+    cc->sol->itp = CABLE_TY_EP;
+  }
+  cc->ended = 1;
+  cc->end_status = end;
+}
+
+static void swap_ptr(double **a, double **b)
+{
+  double *t = *a;
+  *a = *b;
+  *b = t;
+}
+
+static void control_step(cable_cont *cc)
+{
+  if (cc->c.iads <= 0 || cc->npt % cc->c.iads != 0) return;
+  int it = cc->newton_iters, itnw = cc->c.itnw;
+  double a = fabs(cc->ds_used) > 0 ? fabs(cc->ds_used) : fabs(cc->ds);
+  if (it <= CONT_FAST_ITERS) a *= CONT_GROW_FAST;
+  else if (it <= itnw / 2) a *= CONT_GROW;
+  else if (it >= itnw - 1) a *= CONT_SHRINK;
+  a = fmin(fmax(a, cc->c.dsmin), cc->c.dsmax);
+  cc->ds = copysign(a, cc->ds);
+}
+
+int cable_cont_step(cable_cont *cc)
+{
+  if (cc->ended) return cc->end_status;
+  if (!cc->started) return first_point(cc);
+  int rc;
+  for (;;) {
+    rc = cont_correct(cc, cc->x, cc->xdot, cc->ds, cc->xt);
+    if (rc == CABLE_SUCCESS) rc = cont_tangent(cc, cc->xt, cc->xdot, cc->xdott, &cc->tft);
+    if (rc == CABLE_SUCCESS) break;
+    if (rc == CABLE_ERR_CALLBACK) {
+      cont_set_error(cc, "a problem callback failed fatally (status %d) at step size %g",
+                     cc->sys->last_callback, cc->ds);
+      cc->ended = 1;
+      return cc->end_status = rc;
+    }
+    if (fabs(cc->ds) <= cc->c.dsmin * (1.0 + 1e-12)) {
+      cont_set_error(cc, "no convergence with DSMIN = %g after point %d (%s)", cc->c.dsmin, cc->npt,
+                     colloc_newton_message(cc->nw));
+      cc->ended = 1;
+      cc->itp = CABLE_TY_MX;
+      return cc->end_status = CABLE_ERR_DSMIN;
+    }
+    cc->ds = copysign(fmax(fabs(cc->ds) * 0.5, cc->c.dsmin), cc->ds);
+  }
+  cc->ds_used = cc->ds;
+  cc->itp = CABLE_TY_NONE;
+  cc->uz_hit = -1;
+  int which = -1, type = cont_find_event(cc, &cc->tf, &cc->tft, &which);
+  if (type != CABLE_TY_NONE) {
+    rc = cont_locate(cc, type, which); /* replaces the trial point by the located one */
+    if (rc == CABLE_SUCCESS) cc->itp = type;
+  }
+  swap_ptr(&cc->xp, &cc->x);
+  swap_ptr(&cc->x, &cc->xt);
+  swap_ptr(&cc->xdotp, &cc->xdot);
+  swap_ptr(&cc->xdot, &cc->xdott);
+  cc->tf = cc->tft;
+  cc->npt++;
+  control_step(cc);
+  if (cc->c.iad > 0 && ++cc->nstep_adapt >= cc->c.iad) {
+    cc->nstep_adapt = 0;
+    if ((rc = cont_adapt_mesh(cc)) != CABLE_SUCCESS) {
+      cc->ended = 1;
+      return cc->end_status = rc;
+    }
+  }
+  cont_store_solution(cc, cc->itp, 0);
+  check_limits(cc);
+  return CABLE_SUCCESS;
+}
+
+const cable_solution *cable_cont_solution(const cable_cont *cc) { return cc->sol; }
+const cable_point *cable_cont_point(const cable_cont *cc) { return &cc->pt; }

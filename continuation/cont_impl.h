@@ -1,0 +1,83 @@
+/* Private: the continuation engine's state.  Only continuation/cont_*.c
+ * include this header; users see the opaque cable_cont. */
+#ifndef CABLE_CONT_IMPL_H
+#define CABLE_CONT_IMPL_H
+
+#include "abd_solver.h"
+#include "cable_cont.h"
+#include "colloc_jac.h"
+#include "colloc_newton.h"
+#include "colloc_system.h"
+
+/* Sign-change test functions at one accepted point. */
+typedef struct cont_tests {
+  int det_sign;                 /* sign of det of the extended Newton matrix */
+  double det_log;               /* log |det| */
+  double lp;                    /* principal-parameter component of the unit tangent */
+  double uz[CABLE_MAX_UZR];     /* par[uzr.par] - uzr.value */
+  double sv1;                   /* smallest singular value of the extended matrix (NSV > 0) */
+  double sv2;                   /* second smallest (NSV > 1) */
+} cont_tests;
+
+struct cable_cont {
+  const cable_problem *pb;      /* not owned */
+  cable_constants c;            /* copy of the constants */
+  int ndim, npar, nfpr, n;
+  int ntst, ncol;
+  colloc_system *sys;           /* discretisation (mesh, closing equation) */
+  colloc_newton *nw;            /* KINSOL Newton solver */
+  colloc_jac *J;                /* Newton matrix for tangents and test functions */
+  abd_solver *abd;              /* its factorisation */
+  double *x, *xdot;             /* current accepted point and its unit tangent */
+  double *xp, *xdotp;           /* previous accepted point and tangent */
+  double *xt, *xdott;           /* trial point and tangent */
+  double *w1, *w2, *w3;         /* work vectors of length n */
+  double *svec;                 /* [n * 2] singular-vector work */
+  double ds;                    /* signed step size for the next step */
+  double ds_used;               /* step size that produced the current point */
+  int started;                  /* the start has been processed */
+  int restart;                  /* start came from a stored solution */
+  int switch_pending;           /* ISW = -1 from a BP: first step along the kernel */
+  int npt;                      /* points accepted on this branch */
+  int nstep_adapt;              /* steps since the last mesh adaptation */
+  int newton_iters;             /* iterations of the last corrector */
+  int ended;                    /* the branch has ended (status in end_status) */
+  int end_status;
+  cont_tests tf;                /* test functions at x */
+  cont_tests tft;               /* at the trial point */
+  int itp;                      /* type of the current point (0 regular) */
+  int uz_hit;                   /* index of the user zero located at x, or -1 */
+  int uz_stop;                  /* the located user zero asks to stop */
+  /* output */
+  cable_point pt;               /* row of the current point */
+  double *umax;                 /* [ndim] */
+  cable_solution *sol;          /* current solution in s-file form */
+  char err[512];                /* last error message */
+};
+
+/* cont_tangent.c */
+int cont_factor_at(cable_cont *cc, const double *x, double *logdet, int *sign);
+int cont_tangent(cable_cont *cc, const double *x, const double *xdot_old, double *xdot_new,
+                 cont_tests *tf);
+void cont_normalize(cable_cont *cc, double *v);
+int cont_smallest_sv(cable_cont *cc, int k, double *sv, double *vecs);
+
+/* cont_special.c */
+void cont_tests_fill(cable_cont *cc, const double *x, const double *xdot, cont_tests *tf);
+int cont_find_event(const cable_cont *cc, const cont_tests *a, const cont_tests *b, int *which);
+int cont_locate(cable_cont *cc, int type, int which);
+
+/* cont_mesh.c */
+int cont_adapt_mesh(cable_cont *cc);
+double cont_error_estimate(const cable_cont *cc, const double *x);
+int cont_load_solution(cable_cont *cc, const cable_solution *s);
+void cont_store_solution(cable_cont *cc, int itp, int lab);
+
+/* cont_switch.c: the direction of the bifurcating branch at a BP start */
+int cont_switch_direction(cable_cont *cc);
+
+/* cont_engine.c */
+int cont_correct(cable_cont *cc, const double *x0, const double *xdot0, double ds, double *x);
+void cont_set_error(cable_cont *cc, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+
+#endif

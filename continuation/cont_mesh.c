@@ -1,0 +1,228 @@
+/* Mesh adaptation, re-interpolation, restarts and the error estimate.
+ *
+ * Error monitor (AUTO's idea): on interval j the collocation polynomial's
+ * NCOL-th derivative D_j is constant; divided differences of D between
+ * neighbouring intervals estimate u^(NCOL+1).  The local error between mesh
+ * points is about  kappa * h_j^(NCOL+1) * |u^(NCOL+1)|,  kappa the
+ * interpolation-error constant of the equally spaced nodes.  Adaptation
+ * equidistributes |u^(NCOL+1)|^(1/(NCOL+1)) over [0,1], which equalises
+ * that local error. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cont_impl.h"
+
+/* The monitor is floored at this fraction of its maximum so that smooth parts
+ * keep some resolution and the mesh ratio stays bounded. */
+#define CONT_MONITOR_FLOOR 1.0e-3
+
+/* max over components of |u^(ncol+1)| estimated on each interval, into e[ntst] */
+static void high_derivative(const colloc_system *s, const double *x, double *e, double *dn)
+{
+  int nd = s->ndim, nc = s->ncol, nt = s->ntst;
+  for (int j = 0; j < nt; j++) {
+    double h = s->mesh[j + 1] - s->mesh[j], hp = pow(h, nc);
+    const double *uj = x + (size_t)(j * nc) * (size_t)nd;
+    for (int i = 0; i < nd; i++) {
+      double v = 0.0;
+      for (int k = 0; k <= nc; k++) v += s->basis.dnl[k] * uj[k * nd + i];
+      dn[(size_t)j * nd + i] = v / hp;
+    }
+  }
+  for (int j = 0; j < nt; j++) {
+    int a = j > 0 ? j - 1 : j, b = j < nt - 1 ? j + 1 : j;
+    if (a == b) {
+      e[j] = 0.0;
+      continue;
+    }
+    double ta = 0.5 * (s->mesh[a] + s->mesh[a + 1]), tb = 0.5 * (s->mesh[b] + s->mesh[b + 1]);
+    double m = 0.0;
+    for (int i = 0; i < nd; i++)
+      m = fmax(m, fabs(dn[(size_t)b * nd + i] - dn[(size_t)a * nd + i]) / (tb - ta));
+    e[j] = m;
+  }
+}
+
+static double kappa(int ncol)
+{
+  /* max over [0,1] of |prod_k (x - k/ncol)| / (ncol+1)!, sampled finely */
+  double best = 0.0, fact = 1.0;
+  for (int i = 2; i <= ncol + 1; i++) fact *= i;
+  for (int q = 0; q <= 2000; q++) {
+    double x = q / 2000.0, p = 1.0;
+    for (int k = 0; k <= ncol; k++) p *= x - (double)k / ncol;
+    best = fmax(best, fabs(p));
+  }
+  return best / fact;
+}
+
+double cont_error_estimate(const cable_cont *cc, const double *x)
+{
+  const colloc_system *s = cc->sys;
+  double *e = malloc((size_t)s->ntst * sizeof *e);
+  double *dn = malloc((size_t)s->ntst * (size_t)s->ndim * sizeof *dn);
+  if (!e || !dn) {
+    free(e); free(dn);
+    return -1.0;
+  }
+  high_derivative(s, x, e, dn);
+  double k = kappa(s->ncol), err = 0.0;
+  for (int j = 0; j < s->ntst; j++) {
+    double h = s->mesh[j + 1] - s->mesh[j];
+    err = fmax(err, k * pow(h, s->ncol + 1) * e[j]);
+  }
+  free(e); free(dn);
+  return err;
+}
+
+/* Re-interpolate v (on the old mesh, values at nodes) onto the new mesh. */
+static void remap(const colloc_system *s, const double *told, const double *v, double *out, int ntst_old,
+                  int ncol_old)
+{
+  int nd = s->ndim, nc = s->ncol;
+  for (int j = 0; j < s->ntst; j++) {
+    double h = s->mesh[j + 1] - s->mesh[j];
+    for (int k = 0; k < nc; k++)
+      colloc_interp(nd, ntst_old, ncol_old, told, v, s->mesh[j] + h * k / nc,
+                    out + (size_t)(j * nc + k) * (size_t)nd);
+  }
+  colloc_interp(nd, ntst_old, ncol_old, told, v, 1.0, out + (size_t)(s->ntst * nc) * (size_t)nd);
+}
+
+int cont_adapt_mesh(cable_cont *cc)
+{
+  colloc_system *s = cc->sys;
+  int nt = s->ntst, nc = s->ncol, nd = s->ndim;
+  size_t npts = (size_t)(nt * nc + 1);
+  double *e = malloc((size_t)nt * sizeof *e);
+  double *dn = malloc((size_t)nt * (size_t)nd * sizeof *dn);
+  double *cum = malloc(((size_t)nt + 1) * sizeof *cum);
+  double *told = malloc(npts * sizeof *told);
+  double *newmesh = malloc(((size_t)nt + 1) * sizeof *newmesh);
+  double *tmp = malloc((size_t)cc->n * sizeof *tmp);
+  int rc = CABLE_ERR_ALLOC;
+  if (!e || !dn || !cum || !told || !newmesh || !tmp) goto done;
+  high_derivative(s, cc->x, e, dn);
+  double emax = 0.0;
+  for (int j = 0; j < nt; j++) {
+    e[j] = pow(e[j], 1.0 / (nc + 1));
+    emax = fmax(emax, e[j]);
+  }
+  rc = CABLE_SUCCESS;
+  if (!(emax > 0) || !isfinite(emax)) goto done; /* nothing to equidistribute */
+  cum[0] = 0.0;
+  for (int j = 0; j < nt; j++)
+    cum[j + 1] = cum[j] + fmax(e[j], CONT_MONITOR_FLOOR * emax) * (s->mesh[j + 1] - s->mesh[j]);
+  newmesh[0] = 0.0;
+  newmesh[nt] = 1.0;
+  int j = 0;
+  for (int i = 1; i < nt; i++) {
+    double target = cum[nt] * i / nt;
+    while (j < nt - 1 && cum[j + 1] < target) j++;
+    double frac = (target - cum[j]) / (cum[j + 1] - cum[j]);
+    newmesh[i] = s->mesh[j] + frac * (s->mesh[j + 1] - s->mesh[j]);
+  }
+  colloc_system_times(s, told);
+  memcpy(s->mesh, newmesh, ((size_t)nt + 1) * sizeof *newmesh);
+  double *vecs[] = {cc->x, cc->xdot, cc->xp, cc->xdotp};
+  size_t nu = npts * (size_t)nd;
+  for (int v = 0; v < 4; v++) {
+    remap(s, told, vecs[v], tmp, nt, nc);
+    memcpy(vecs[v], tmp, nu * sizeof *tmp);
+  }
+  cont_normalize(cc, cc->xdot);
+  /* test functions of the current point on the new mesh, for the next comparison */
+  rc = cont_tangent(cc, cc->x, cc->xdotp, tmp, &cc->tf);
+  if (rc == CABLE_SUCCESS) cont_tests_fill(cc, cc->x, cc->xdot, &cc->tf);
+done:
+  free(e); free(dn); free(cum); free(told); free(newmesh); free(tmp);
+  return rc;
+}
+
+int cont_load_solution(cable_cont *cc, const cable_solution *src)
+{
+  colloc_system *s = cc->sys;
+  int nd = s->ndim;
+  if (src->ndim != nd) {
+    cont_set_error(cc, "the stored solution has NDIM=%d, the problem %d", src->ndim, nd);
+    return CABLE_ERR_INPUT;
+  }
+  int nt = s->ntst, ntold = src->ntst, ncold = src->ncol;
+  /* new mesh: the old mesh's density, resampled to NTST intervals */
+  for (int j = 0; j <= nt; j++) {
+    double q = (double)j * ntold / nt;
+    int a = (int)q;
+    if (a >= ntold) a = ntold - 1;
+    double f = q - a;
+    s->mesh[j] = (1 - f) * src->t[a * ncold] + f * src->t[(a + 1) * ncold];
+  }
+  s->mesh[0] = 0.0;
+  s->mesh[nt] = 1.0;
+  remap(s, src->t, src->u, cc->x, ntold, ncold);
+  int np = src->npar < cc->npar ? src->npar : cc->npar;
+  for (int k = 0; k < np; k++) s->par[k] = src->par[k];
+  double *p = cc->x + (cc->n - cc->nfpr), *pd = cc->xdot + (cc->n - cc->nfpr);
+  for (int q = 0; q < cc->nfpr; q++) p[q] = s->par[s->icp[q]];
+  /* a stored direction is used when it belongs to the same free parameters */
+  int same = src->udot != NULL && src->nfpr == cc->nfpr;
+  for (int q = 0; same && q < cc->nfpr; q++) same = src->icp[q] == s->icp[q];
+  memset(cc->xdot, 0, (size_t)cc->n * sizeof *cc->xdot);
+  if (same) {
+    remap(s, src->t, src->udot, cc->xdot, ntold, ncold);
+    for (int q = 0; q < cc->nfpr; q++) pd[q] = src->pardot[q];
+  }
+  return CABLE_SUCCESS;
+}
+
+void cont_store_solution(cable_cont *cc, int itp, int lab)
+{
+  colloc_system *s = cc->sys;
+  cable_solution *sol = cc->sol;
+  int nd = s->ndim, npts = s->ntst * s->ncol + 1;
+  colloc_system_times(s, sol->t);
+  memcpy(sol->u, cc->x, (size_t)npts * (size_t)nd * sizeof *sol->u);
+  memcpy(sol->udot, cc->xdot, (size_t)npts * (size_t)nd * sizeof *sol->udot);
+  const double *p = cc->x + (cc->n - cc->nfpr), *pd = cc->xdot + (cc->n - cc->nfpr);
+  for (int q = 0; q < cc->nfpr; q++) s->par[s->icp[q]] = p[q];
+  memcpy(sol->par, s->par, (size_t)cc->npar * sizeof *sol->par);
+  for (int q = 0; q < cc->nfpr; q++) {
+    sol->icp[q] = s->icp[q];
+    sol->pardot[q] = pd[q];
+  }
+  sol->ntot = cc->npt;
+  sol->itp = itp;
+  sol->lab = lab;
+  sol->isw = cc->c.isw;
+  sol->err_est = cont_error_estimate(cc, cc->x);
+  if (cc->pb->pvls) cc->pb->pvls(sol, sol->par, cc->pb->params);
+  /* L2-NORM: sqrt of the integral of |u|^2 (unweighted); MAX U: max |u_i| over t */
+  double l2 = 0.0;
+  for (int i = 0; i < nd; i++) cc->umax[i] = 0.0;
+  for (int j = 0; j < s->ntst; j++) {
+    double h = s->mesh[j + 1] - s->mesh[j];
+    for (int k = 0; k <= s->ncol; k++) {
+      const double *u = sol->u + (size_t)(j * s->ncol + k) * (size_t)nd;
+      double sq = 0.0;
+      for (int i = 0; i < nd; i++) {
+        sq += u[i] * u[i];
+        cc->umax[i] = fmax(cc->umax[i], fabs(u[i]));
+      }
+      l2 += h * s->basis.wn[k] * sq;
+    }
+  }
+  cable_point *pt = &cc->pt;
+  pt->pt = cc->npt;
+  pt->itp = itp;
+  pt->lab = lab;
+  pt->ndim = nd;
+  pt->npar = cc->npar;
+  pt->nicp = cc->c.nicp;
+  pt->icp = cc->c.icp;
+  pt->par = sol->par;
+  pt->l2norm = sqrt(l2);
+  pt->umax = cc->umax;
+  pt->newton_iters = cc->newton_iters;
+  pt->ds = cc->ds_used;
+  pt->err_est = sol->err_est;
+}

@@ -1,0 +1,114 @@
+/* Starting a branch and the driver loop that hands points to a sink. */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "cont_impl.h"
+
+int cable_cont_set_start(cable_cont *cc, const cable_solution *start)
+{
+  if (cc->ended) return cc->end_status;
+  colloc_system *s = cc->sys;
+  int rc;
+  memset(cc->xdot, 0, (size_t)cc->n * sizeof *cc->xdot);
+  if (!start) {
+    if (!cc->pb->stpnt) {
+      cont_set_error(cc, "problem '%s' has no STPNT: give a restart label (IRS)", cc->pb->name);
+      return CABLE_ERR_INPUT;
+    }
+    double *t = cc->w1; /* npts <= n */
+    colloc_system_times(s, t);
+    int npts = s->ntst * s->ncol + 1;
+    for (int k = 0; k < npts; k++) {
+      rc = cc->pb->stpnt(cc->ndim, t[k], cc->x + (size_t)k * (size_t)cc->ndim, s->par, cc->pb->params);
+      if (rc != 0) {
+        cont_set_error(cc, "STPNT failed (status %d) at t = %g", rc, t[k]);
+        return CABLE_ERR_CALLBACK;
+      }
+    }
+    cc->restart = 0;
+  } else {
+    if ((rc = cont_load_solution(cc, start)) != CABLE_SUCCESS) return rc;
+    cc->restart = 1;
+    if (cc->c.isw == -1) {
+      if (start->itp % 10 != CABLE_TY_BP) {
+        cont_set_error(cc, "ISW=-1 needs a branch point (BP) to start from; label %d has type %d",
+                       start->lab, start->itp);
+        return CABLE_ERR_SWITCH;
+      }
+      cc->switch_pending = 1;
+    }
+  }
+  for (int k = 0; k < cc->c.npar_override; k++) s->par[cc->c.par_override[k].index] = cc->c.par_override[k].value;
+  double *p = cc->x + (cc->n - cc->nfpr);
+  for (int q = 0; q < cc->nfpr; q++) p[q] = s->par[s->icp[q]];
+  for (int i = 0; i < cc->n; i++)
+    if (!isfinite(cc->x[i])) {
+      cont_set_error(cc, "the starting solution contains NaN or Inf");
+      return CABLE_ERR_NONFINITE;
+    }
+  cc->started = 0;
+  return CABLE_SUCCESS;
+}
+
+static const char *type_name(int itp)
+{
+  switch (itp) {
+  case CABLE_TY_BP: return "BP";
+  case CABLE_TY_LP: return "LP";
+  case CABLE_TY_UZ: return "UZ";
+  case CABLE_TY_EP: return "EP";
+  case CABLE_TY_MX: return "MX";
+  case CABLE_TY_RG: return "RG";
+  default: return "  ";
+  }
+}
+
+static void emit(cable_cont *cc, const cable_sink *sink, int ibr, int *lab)
+{
+  cable_point *pt = &cc->pt;
+  int labelled = pt->itp != CABLE_TY_NONE;
+  if (!labelled && cc->c.npr > 0 && pt->pt % cc->c.npr == 0) {
+    pt->itp = CABLE_TY_RG;
+    labelled = 1;
+  }
+  pt->ibr = ibr;
+  pt->lab = labelled ? (*lab)++ : 0;
+  cc->sol->ibr = ibr;
+  cc->sol->lab = pt->lab;
+  cc->sol->itp = pt->itp;
+  if (sink && sink->point) sink->point(sink->ctx, pt);
+  if (labelled && sink && sink->solution) sink->solution(sink->ctx, pt, cc->sol);
+  if (sink && sink->diag) {
+    char line[256];
+    snprintf(line, sizeof line, "BR %d PT %d TY %s LAB %d PAR(%d)=%.10g ds=%.4g newton=%d err=%.3g", ibr,
+             pt->pt, type_name(pt->itp), pt->lab, cc->c.icp[0] + 1, pt->par[cc->c.icp[0]], pt->ds,
+             pt->newton_iters, pt->err_est);
+    sink->diag(sink->ctx, line);
+  }
+}
+
+int cable_cont_run(cable_cont *cc, const cable_sink *sink, int ibr, int first_label, int *next_label)
+{
+  int lab = first_label, rc;
+  while ((rc = cable_cont_step(cc)) == CABLE_SUCCESS) emit(cc, sink, ibr, &lab);
+  if (rc < 0 && cc->npt > 0) {
+    /* the branch ends abnormally: the last good point is stored as MX */
+    cc->pt.itp = CABLE_TY_MX;
+    emit(cc, sink, ibr, &lab);
+  }
+  if (rc < 0 && sink && sink->diag) {
+    char line[640];
+    snprintf(line, sizeof line, "branch %d ended: %s: %s", ibr, cable_status_message(rc), cc->err);
+    sink->diag(sink->ctx, line);
+  }
+  if (next_label) *next_label = lab;
+  return rc;
+}
+
+void cable_cont_test_functions(const cable_cont *cc, int *det_sign, double *sv1, double *sv2)
+{
+  if (det_sign) *det_sign = cc->tf.det_sign;
+  if (sv1) *sv1 = cc->tf.sv1;
+  if (sv2) *sv2 = cc->tf.sv2;
+}

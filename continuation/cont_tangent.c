@@ -1,0 +1,64 @@
+/* Tangents, determinant signs and singular values of the extended Newton matrix. */
+#include <math.h>
+#include <string.h>
+
+#include "cont_impl.h"
+
+/* Inverse iteration for the smallest singular values: at most this many
+ * sweeps, stopping when the estimates change by less than CONT_SV_RTOL
+ * relative.  Convergence is linear with ratio sigma_k / sigma_{k+1}, fast
+ * near a branch point where the ratio is small. */
+#define CONT_SV_MAXIT 12
+#define CONT_SV_RTOL 1.0e-6
+
+int cont_factor_at(cable_cont *cc, const double *x, double *logdet, int *sign)
+{
+  int rc = colloc_system_jacobian(cc->sys, x, cc->J);
+  if (rc != 0) return rc > 0 ? CABLE_ERR_RECOVERABLE : CABLE_ERR_CALLBACK;
+  rc = abd_solver_factor(cc->abd, cc->J);
+  if (rc != 0) return CABLE_ERR_LINSOLVE;
+  if (sign) abd_solver_det(cc->abd, sign, logdet);
+  return CABLE_SUCCESS;
+}
+
+void cont_normalize(cable_cont *cc, double *v)
+{
+  double nrm = sqrt(colloc_system_inner(cc->sys, v, v));
+  if (nrm > 0)
+    for (int i = 0; i < cc->n; i++) v[i] /= nrm;
+}
+
+int cont_smallest_sv(cable_cont *cc, int k, double *sv, double *vecs)
+{
+  return abd_solver_smallest_sv(cc->abd, cc->J, k, sv, vecs, CONT_SV_MAXIT, CONT_SV_RTOL);
+}
+
+int cont_tangent(cable_cont *cc, const double *x, const double *xdot_old, double *xdot_new,
+                 cont_tests *tf)
+{
+  colloc_system *s = cc->sys;
+  memcpy(s->xdot0, xdot_old, (size_t)cc->n * sizeof *xdot_old);
+  s->closing = COLLOC_CLOSE_ARCLENGTH;
+  int sign = 0;
+  double logdet = 0;
+  int rc = cont_factor_at(cc, x, &logdet, &sign);
+  if (rc != CABLE_SUCCESS) return rc;
+  /* [F_x; theta xdot_old^T] xdot_new = e_last keeps the orientation: <xdot_new, xdot_old> > 0 */
+  memset(xdot_new, 0, (size_t)cc->n * sizeof *xdot_new);
+  xdot_new[cc->n - 1] = 1.0;
+  if (abd_solver_solve(cc->abd, xdot_new) != 0) return CABLE_ERR_LINSOLVE;
+  cont_normalize(cc, xdot_new);
+  tf->det_sign = sign;
+  tf->det_log = logdet;
+  tf->sv1 = tf->sv2 = 0.0;
+  if (cc->c.nsv > 0 || cc->c.isp > 0) {
+    double sv[2] = {0, 0};
+    int k = cc->c.nsv > 1 ? 2 : 1;
+    if (cont_smallest_sv(cc, k, sv, cc->svec) == 0) {
+      tf->sv1 = sv[0];
+      tf->sv2 = k > 1 ? sv[1] : 0.0;
+    }
+  }
+  cont_tests_fill(cc, x, xdot_new, tf);
+  return CABLE_SUCCESS;
+}

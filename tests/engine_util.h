@@ -1,0 +1,87 @@
+/* Test helper: run the engine on a problem and keep every point and every
+ * labelled solution in memory. */
+#ifndef CABLE_TEST_ENGINE_UTIL_H
+#define CABLE_TEST_ENGINE_UTIL_H
+
+#include <stdio.h>
+#include <string.h>
+
+#include "cable_cont.h"
+
+#define MEMRUN_MAX 2000
+#define MEMRUN_NPAR 36
+
+typedef struct {
+  int n;
+  int itp[MEMRUN_MAX], lab[MEMRUN_MAX], newton[MEMRUN_MAX];
+  double par[MEMRUN_MAX][MEMRUN_NPAR];
+  double l2[MEMRUN_MAX];
+  int nsol;
+  cable_solution *sol[MEMRUN_MAX];
+  int status;
+  char err[512];
+} memrun;
+
+
+
+static inline int memrun_point(void *ctx, const cable_point *pt)
+{
+  memrun *r = ctx;
+  if (r->n >= MEMRUN_MAX) return 0;
+  r->itp[r->n] = pt->itp;
+  r->lab[r->n] = pt->lab;
+  r->newton[r->n] = pt->newton_iters;
+  r->l2[r->n] = pt->l2norm;
+  for (int k = 0; k < MEMRUN_NPAR && k < pt->npar; k++) r->par[r->n][k] = pt->par[k];
+  r->n++;
+  return 0;
+}
+
+static inline int memrun_solution(void *ctx, const cable_point *pt, const cable_solution *sol)
+{
+  (void)pt;
+  memrun *r = ctx;
+  if (r->nsol < MEMRUN_MAX) r->sol[r->nsol++] = cable_solution_clone(sol);
+  return 0;
+}
+
+static inline void memrun_free(memrun *r)
+{
+  for (int i = 0; i < r->nsol; i++) cable_solution_free(r->sol[i]);
+  memset(r, 0, sizeof *r);
+}
+
+static inline int memrun_run(const cable_problem *pb, const cable_constants *c, const cable_solution *start, memrun *r)
+{
+  memset(r, 0, sizeof *r);
+  int st;
+  cable_cont *cc = cable_cont_alloc(pb, c, &st);
+  if (st == CABLE_SUCCESS) st = cable_cont_set_start(cc, start);
+  if (st == CABLE_SUCCESS) {
+    cable_sink sink = {r, memrun_point, memrun_solution, NULL};
+    st = cable_cont_run(cc, &sink, 1, 1, NULL);
+  }
+  r->status = st;
+  if (cc) snprintf(r->err, sizeof r->err, "%s", cable_cont_error(cc));
+  cable_cont_free(cc);
+  return st;
+}
+
+static inline const cable_solution *memrun_find(const memrun *r, int itp, int skip)
+{
+  for (int i = 0; i < r->nsol; i++)
+    if (itp == 0 || r->sol[i]->itp % 10 == itp || r->sol[i]->itp == itp) {
+      if (skip-- == 0) return r->sol[i];
+    }
+  return NULL;
+}
+
+static inline int memrun_count(const memrun *r, int itp)
+{
+  int n = 0;
+  for (int i = 0; i < r->nsol; i++)
+    if (r->sol[i]->itp == itp) n++;
+  return n;
+}
+
+#endif

@@ -1,0 +1,148 @@
+/* Engine validation on problems with known answers:
+ *  - Bratu: the fold lambda* = 3.513830719125162 (NTST=20, NCOL=4) to 1e-9;
+ *  - elastica: branch points of the trivial branch at (n pi)^2, n = 1,2,3, to
+ *    relative 1e-8; after switching at the first, lambda = 4 K(sin(theta(0)/2))^2
+ *    on the buckled branch to relative 1e-8, in both directions;
+ *  - Bratu at lambda = 1 against its closed form: mesh-point errors decay like
+ *    h^(2 NCOL) (superconvergence), slope fitted for NCOL = 2..5. */
+#include <gsl/gsl_math.h>
+#include <gsl/gsl_sf_ellint.h>
+#include <math.h>
+#include <stdlib.h>
+
+#include "cable_constants.h"
+#include "engine_util.h"
+#include "harness.h"
+#include "test_problems.h"
+
+static void base_constants(cable_constants *c, int ntst, int ncol)
+{
+  cable_constants_init(c);
+  c->ntst = ntst;
+  c->ncol = ncol;
+  c->icp[0] = 0;
+  c->nicp = 1;
+  c->jac = 1;
+  c->iad = 0;
+}
+
+static void test_bratu_fold(memrun *r)
+{
+  cable_constants c;
+  base_constants(&c, 20, 4);
+  c.ds = 0.1; c.dsmin = 1e-6; c.dsmax = 0.5; c.nmx = 60;
+  c.rl1 = 10.0;
+  c.ilp = 1; c.isp = 0;
+  c.epss = 1e-7;
+  c.iad = 3;
+  memrun_run(cable_testproblem_bratu(), &c, NULL, r);
+  test_true("bratu run ends normally", r->status > 0);
+  const cable_solution *lp = memrun_find(r, CABLE_TY_LP, 0);
+  test_true("bratu fold found", lp != NULL);
+  /* discretisation error of the fold at NTST=20, NCOL=4: O(h^8) ~ 1e-11;
+     location to EPSS in arclength: O((EPSS ds)^2) in lambda */
+  if (lp) test_abs("bratu fold lambda*", lp->par[0], 3.513830719125162, 1e-9);
+  test_int("bratu: exactly one fold", memrun_count(r, CABLE_TY_LP), 1);
+  memrun_free(r);
+}
+
+static void test_elastica(memrun *r)
+{
+  cable_constants c;
+  base_constants(&c, 50, 5);
+  c.ds = 0.5; c.dsmin = 1e-6; c.dsmax = 4.0; c.nmx = 200;
+  c.rl1 = 100.0;
+  c.isp = 2; c.ilp = 0;
+  c.epss = 1e-10;
+  memrun_run(cable_testproblem_elastica(), &c, NULL, r);
+  test_true("elastica trivial branch ends at RL1", r->status == CABLE_END_BOUNDS);
+  test_int("elastica: three branch points below lambda = 100", memrun_count(r, CABLE_TY_BP), 3);
+  cable_solution *bp1 = NULL;
+  for (int n = 1; n <= 3; n++) {
+    const cable_solution *bp = memrun_find(r, CABLE_TY_BP, n - 1);
+    char what[64];
+    snprintf(what, sizeof what, "elastica BP%d at (%d pi)^2", n, n);
+    /* eigenvalue error of Gauss collocation: O(h^(2 NCOL)) = (0.02)^10 times (n pi)^12: < 1e-9 */
+    if (bp) test_rel(what, bp->par[0], (n * M_PI) * (n * M_PI), 1e-8);
+    if (n == 1 && bp) bp1 = cable_solution_clone(bp);
+  }
+  memrun_free(r);
+  if (!bp1) return;
+  for (int dir = -1; dir <= 1; dir += 2) {
+    base_constants(&c, 50, 5);
+    c.isw = -1;
+    c.ds = 0.05 * dir; c.dsmin = 1e-6; c.dsmax = 0.2; c.nmx = 25; c.npr = 5;
+    c.isp = 0; c.ilp = 0;
+    memrun_run(cable_testproblem_elastica(), &c, bp1, r);
+    test_true("elastica buckled branch computed", r->nsol >= 4);
+    double worst = 0, amp = 0;
+    for (int i = 1; i < r->nsol; i++) {
+      const cable_solution *s = r->sol[i];
+      double th0 = s->u[0], lam = s->par[0];
+      double K = gsl_sf_ellint_Kcomp(sin(fabs(th0) / 2), GSL_PREC_DOUBLE);
+      worst = fmax(worst, fabs(lam - 4 * K * K) / lam);
+      amp = fmax(amp, fabs(th0));
+    }
+    char what[96];
+    snprintf(what, sizeof what, "elastica branch (DS sign %+d) leaves the trivial branch", dir);
+    test_true(what, amp > 0.3);
+    snprintf(what, sizeof what, "elastica: lambda = 4 K(sin(theta0/2))^2 on the branch (DS %+d)", dir);
+    test_le(what, worst, 1e-8);
+    memrun_free(r);
+  }
+  cable_solution_free(bp1);
+}
+
+/* max mesh-point error of the Bratu solution at lambda ~ 1 */
+static double bratu_error(memrun *r, int ntst, int ncol)
+{
+  cable_constants c;
+  base_constants(&c, ntst, ncol);
+  c.ds = 0.1; c.dsmin = 1e-6; c.dsmax = 0.2; c.nmx = 100;
+  c.isp = 0; c.ilp = 0;
+  c.nuzr = 1;
+  c.uzr[0].par = 0; c.uzr[0].value = 1.0; c.uzr[0].stop = 1;
+  c.epss = 1e-10;
+  memrun_run(cable_testproblem_bratu(), &c, NULL, r);
+  const cable_solution *s = memrun_find(r, CABLE_TY_UZ, 0);
+  double err = INFINITY;
+  if (s) {
+    double lam = s->par[0], th = cable_bratu_theta(lam);
+    err = 0;
+    for (int j = 0; j <= ntst; j++) {
+      double t = s->t[j * ncol];
+      err = fmax(err, fabs(s->u[(size_t)(j * ncol) * 2] - cable_bratu_exact(lam, th, t)));
+    }
+  }
+  memrun_free(r);
+  return err;
+}
+
+static void test_superconvergence(memrun *r)
+{
+  /* mesh sizes chosen so that errors stay well above round-off (1e-14) */
+  static const int meshes[4][3] = {{8, 16, 32}, {4, 8, 16}, {4, 6, 8}, {2, 3, 4}};
+  for (int ncol = 2; ncol <= 5; ncol++) {
+    double sx = 0, sy = 0, sxx = 0, sxy = 0;
+    for (int k = 0; k < 3; k++) {
+      int ntst = meshes[ncol - 2][k];
+      double e = bratu_error(r, ntst, ncol), x = log(1.0 / ntst), y = log(e);
+      sx += x; sy += y; sxx += x * x; sxy += x * y;
+    }
+    double slope = (3 * sxy - sx * sy) / (3 * sxx - sx * sx);
+    char what[80];
+    snprintf(what, sizeof what, "superconvergence NCOL=%d: slope %.2f vs 2 NCOL = %d", ncol, slope, 2 * ncol);
+    /* the asymptotic rate is approached from either side on coarse meshes */
+    test_abs(what, slope, 2.0 * ncol, 0.6);
+  }
+}
+
+int main(void)
+{
+  memrun *r = calloc(1, sizeof *r);
+  test_bratu_fold(r);
+  test_elastica(r);
+  test_superconvergence(r);
+  free(r);
+  return test_summary();
+}

@@ -1,0 +1,237 @@
+/* Engine behaviour beyond the known answers:
+ *  - mesh adaptation reduces the error of a boundary-layer solution at equal NTST;
+ *  - the stiff dichotomy u'' = k^2 u (k up to 60) is solved to 1e-10 relative at
+ *    NTST = 50, and the determinant sign stays constant along the k continuation;
+ *  - condensation vs KLU, analytic vs finite-difference Jacobians: same points;
+ *  - restart from a stored label reproduces the next points;
+ *  - failures: a fatal callback, a recoverable one down to DSMIN, a
+ *    non-converging start: clean stop, status, message, last good point kept. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cable_constants.h"
+#include "engine_util.h"
+#include "harness.h"
+#include "test_problems.h"
+
+static void base_constants(cable_constants *c, int ntst, int ncol)
+{
+  cable_constants_init(c);
+  c->ntst = ntst;
+  c->ncol = ncol;
+  c->icp[0] = 0;
+  c->nicp = 1;
+  c->jac = 1;
+  c->iad = 0;
+  c->isp = 0;
+  c->ilp = 0;
+}
+
+static double layer_error(const cable_solution *s)
+{
+  double p = s->par[0], eps = s->par[1], den = -expm1(-1.0 / eps), err = 0;
+  for (int k = 0; k < s->ntst * s->ncol + 1; k++) {
+    double exact = p * -expm1(-s->t[k] / eps) / den;
+    err = fmax(err, fabs(s->u[2 * k] - exact));
+  }
+  return err;
+}
+
+static void test_adaptation(memrun *r)
+{
+  double err[2];
+  for (int iad = 0; iad <= 1; iad++) {
+    cable_constants c;
+    base_constants(&c, 12, 3);
+    c.iad = iad;
+    c.ds = 0.05; c.dsmin = 1e-4; c.dsmax = 0.05; c.nmx = 8; c.iads = 0;
+    memrun_run(cable_testproblem_layer(), &c, NULL, r);
+    const cable_solution *last = r->nsol ? r->sol[r->nsol - 1] : NULL;
+    err[iad] = last ? layer_error(last) : HUGE_VAL;
+    memrun_free(r);
+  }
+  char what[128];
+  snprintf(what, sizeof what, "boundary layer: adapted error %.3g < uniform error %.3g / 10", err[1], err[0]);
+  test_true(what, err[1] < err[0] / 10);
+}
+
+static void test_stiff(void)
+{
+  /* iad = 0: uniform mesh; iad = 1: adapted every step */
+  for (int iad = 0; iad <= 1; iad++) {
+    cable_constants c;
+    base_constants(&c, 50, 7);
+    c.iad = iad;
+    c.ds = 1.0; c.dsmin = 1e-4; c.dsmax = 2.0; c.nmx = 100;
+    c.nuzr = 1; c.uzr[0].par = 0; c.uzr[0].value = 60.0; c.uzr[0].stop = 1;
+    c.epss = 1e-10;
+    int st;
+    cable_cont *cc = cable_cont_alloc(cable_testproblem_stiff(), &c, &st);
+    if (st == 0) st = cable_cont_set_start(cc, NULL);
+    int sign0 = 0, same = 1, npts = 0;
+    while (st == 0 && (st = cable_cont_step(cc)) == 0) {
+      int sg;
+      cable_cont_test_functions(cc, &sg, NULL, NULL);
+      if (npts++ == 0) sign0 = sg;
+      else if (sg != sign0) same = 0;
+    }
+    char what[128];
+    snprintf(what, sizeof what, "stiff IAD=%d: branch ends at the user zero k = 60", iad);
+    test_int(what, st, CABLE_END_UZSTOP);
+    snprintf(what, sizeof what, "stiff IAD=%d: determinant sign constant along k = 40..60", iad);
+    test_true(what, same && npts > 5);
+    const cable_solution *s = cable_cont_solution(cc);
+    double k = s->par[0], err = 0, umax = 0, errmesh = 0;
+    for (int i = 0; i < s->ntst * s->ncol + 1; i++) {
+      double t = s->t[i], a = exp(-k * t), b = exp(-k * (1 - t)), e = exp(-k);
+      double exact = (a - b * e + 2 * (b - a * e)) / (1 - e * e);
+      err = fmax(err, fabs(s->u[2 * i] - exact));
+      if (i % s->ncol == 0) errmesh = fmax(errmesh, fabs(s->u[2 * i] - exact));
+      umax = fmax(umax, fabs(exact));
+    }
+    snprintf(what, sizeof what, "stiff IAD=%d: reached k = 60", iad);
+    test_abs(what, k, 60.0, 1e-8);
+    /* Gauss collocation with 7 points is the 14th-order Gauss RK method: at mesh
+       points the per-step error is ~2e-16 (kh)^15 = 3e-15 for kh = 1.2.  Between
+       mesh points the error is O((kh)^8) on a uniform mesh (~1e-9), so the
+       all-node check is made on the adapted mesh. */
+    if (iad == 0) {
+      snprintf(what, sizeof what, "stiff uniform mesh: max relative error at mesh points, NTST=50, NCOL=7");
+      test_le(what, errmesh / umax, 1e-10);
+    } else {
+      snprintf(what, sizeof what, "stiff adapted mesh: max relative error at all nodes, NTST=50, NCOL=7");
+      test_le(what, err / umax, 1e-10);
+    }
+    cable_cont_free(cc);
+  }
+}
+
+/* the points of two runs agree to tol (relative to 1 + |value|) */
+static double compare_runs(const memrun *a, const memrun *b)
+{
+  if (a->n != b->n) return INFINITY;
+  double d = 0;
+  for (int i = 0; i < a->n; i++) {
+    d = fmax(d, fabs(a->par[i][0] - b->par[i][0]) / (1 + fabs(a->par[i][0])));
+    d = fmax(d, fabs(a->l2[i] - b->l2[i]) / (1 + fabs(a->l2[i])));
+  }
+  return d;
+}
+
+static void test_variants(void)
+{
+  memrun *a = calloc(1, sizeof *a), *b = calloc(1, sizeof *b);
+  cable_constants c;
+  base_constants(&c, 20, 4);
+  c.ds = 0.1; c.dsmin = 1e-5; c.dsmax = 0.3; c.nmx = 20; c.ilp = 1;
+  memrun_run(cable_testproblem_bratu(), &c, NULL, a);
+  c.linsolver = CABLE_LINSOLVER_KLU;
+  memrun_run(cable_testproblem_bratu(), &c, NULL, b);
+  /* same Newton iterates up to round-off in two different factorisations,
+     amplified by the condition number (~1e3 here): 1e-11 */
+  test_le("condensation vs KLU: same points", compare_runs(a, b), 1e-11);
+  memrun_free(b);
+  c.linsolver = CABLE_LINSOLVER_CONDENSE;
+  c.jac = 0;
+  memrun_run(cable_testproblem_bratu(), &c, NULL, b);
+  /* FD Jacobians change only the Newton path, not the converged points: the
+     points agree to the Newton tolerance EPSU = 1e-7 (quadratic convergence
+     leaves far less) */
+  test_le("analytic vs finite-difference Jacobian: same points", compare_runs(a, b), 1e-7);
+  test_int("both runs converge", a->status > 0 && b->status > 0, 1);
+  memrun_free(b);
+
+  /* restart from label 3 with fixed steps reproduces the following points */
+  memrun_free(a);
+  c.jac = 1; c.iads = 0; c.npr = 3; c.nmx = 12; c.ilp = 0;
+  memrun_run(cable_testproblem_bratu(), &c, NULL, a);
+  const cable_solution *s3 = NULL;
+  int at = -1;
+  for (int i = 0; i < a->nsol; i++)
+    if (a->sol[i]->lab == 3) s3 = a->sol[i];
+  for (int i = 0; i < a->n; i++)
+    if (a->lab[i] == 3) at = i;
+  test_true("label 3 stored", s3 != NULL && at >= 0);
+  if (s3) {
+    c.nmx = 4;
+    memrun_run(cable_testproblem_bratu(), &c, s3, b);
+    double d = 0;
+    for (int i = 1; i < b->n && at + i < a->n; i++)
+      d = fmax(d, fabs(b->par[i][0] - a->par[at + i][0]) + fabs(b->l2[i] - a->l2[at + i]));
+    test_le("restart from label 3 reproduces the next points", d, 1e-10);
+  }
+  memrun_free(a);
+  memrun_free(b);
+  free(a);
+  free(b);
+}
+
+/* Bratu, but FUNC fails beyond lambda = limit: fatal (< 0) or recoverable (> 0). */
+typedef struct {
+  double limit;
+  int code;
+} failing_params;
+
+static int failing_func(int ndim, const double *u, const int *icp, const double *par, int ijac,
+                        double *f, double *dfdu, double *dfdp, void *params)
+{
+  const failing_params *fp = params;
+  if (par[0] > fp->limit) return fp->code;
+  return cable_testproblem_bratu()->func(ndim, u, icp, par, ijac, f, dfdu, dfdp, NULL);
+}
+
+static void test_failures(memrun *r)
+{
+  cable_problem pb = *cable_testproblem_bratu();
+  failing_params fp = {1.0, -1};
+  pb.func = failing_func;
+  pb.params = &fp;
+  cable_constants c;
+  base_constants(&c, 10, 3);
+  c.ds = 0.1; c.dsmin = 1e-3; c.dsmax = 0.1; c.nmx = 50;
+  memrun_run(&pb, &c, NULL, r);
+  test_int("fatal callback: status CABLE_ERR_CALLBACK", r->status, CABLE_ERR_CALLBACK);
+  test_true("fatal callback: message names the callback", strstr(r->err, "callback") != NULL);
+  test_true("fatal callback: last good point kept as MX", r->nsol >= 2 && r->sol[r->nsol - 1]->itp == CABLE_TY_MX &&
+                                                           r->sol[r->nsol - 1]->par[0] <= 1.0);
+  memrun_free(r);
+  fp.code = 1;
+  memrun_run(&pb, &c, NULL, r);
+  test_int("recoverable callback: ends at DSMIN", r->status, CABLE_ERR_DSMIN);
+  test_true("DSMIN: message", strstr(r->err, "DSMIN") != NULL);
+  int finite = 1;
+  for (int i = 0; i < r->n; i++)
+    if (!isfinite(r->par[i][0]) || !isfinite(r->l2[i])) finite = 0;
+  test_true("DSMIN: no NaN or Inf in the output", finite);
+  test_true("DSMIN: last good point below the limit", r->n > 0 && r->par[r->n - 1][0] <= 1.0);
+  memrun_free(r);
+  /* a start that cannot converge: lambda = 5 has no Bratu solution */
+  base_constants(&c, 10, 3);
+  c.npar_override = 1;
+  c.par_override[0].index = 0;
+  c.par_override[0].value = 5.0;
+  c.itnw = 6;
+  memrun_run(cable_testproblem_bratu(), &c, NULL, r);
+  test_int("no solution at the start: CABLE_ERR_NEWTON", r->status, CABLE_ERR_NEWTON);
+  test_int("no solution at the start: nothing stored", r->nsol, 0);
+  memrun_free(r);
+  /* bad input is refused before any work */
+  base_constants(&c, 10, 3);
+  c.nicp = 0;
+  memrun_run(cable_testproblem_bratu(), &c, NULL, r);
+  test_int("ICP missing: CABLE_ERR_INPUT", r->status, CABLE_ERR_INPUT);
+  test_true("ICP missing: message", strstr(r->err, "ICP") != NULL);
+  memrun_free(r);
+}
+
+int main(void)
+{
+  memrun *r = calloc(1, sizeof *r);
+  test_adaptation(r);
+  test_stiff();
+  test_variants();
+  test_failures(r);
+  free(r);
+  return test_summary();
+}
