@@ -1,0 +1,202 @@
+/* Plug-in loader: dlopen, the fixed entry symbol, and the checks that make a
+ * module safe to call (Lua's loadlib is the model: one entry name, version
+ * and size checks before trusting the module, and a reason for every
+ * rejection). */
+#include "plugin_loader.h"
+
+#include <ctype.h>
+#include <dlfcn.h>
+#include <errno.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include "cable_status.h"
+
+/* Longest parameter or variable name: names become constants-file keys and
+ * error keys (cable_error.key holds 63 characters). */
+#define CABLE_PLUGIN_NAME_MAX 63
+
+struct cable_plugin {
+  void *handle;               /* from dlopen */
+  const cable_problem *pb;    /* inside the module */
+  char path[512];
+};
+
+static int reject(cable_error *err, const char *origin, const char *key, const char *fmt, ...)
+  __attribute__((format(printf, 4, 5)));
+static int reject(cable_error *err, const char *origin, const char *key, const char *fmt, ...)
+{
+  char msg[512];
+  va_list ap;
+  va_start(ap, fmt);
+  vsnprintf(msg, sizeof msg, fmt, ap);
+  va_end(ap);
+  return cable_error_set(err, CABLE_ERR_PLUGIN, origin, 0, key, "%s", msg);
+}
+
+/* A name usable in constants files and scripts (ICP=['lambda'], sol['T']):
+ * printable, no blanks, quotes, brackets, commas or '=' and not a number. */
+static const char *name_problem(const char *s)
+{
+  size_t n = strlen(s);
+  if (n == 0) return "is empty";
+  if (n > CABLE_PLUGIN_NAME_MAX) return "is longer than 63 characters";
+  if (isdigit((unsigned char)s[0]) || s[0] == '-' || s[0] == '+' || s[0] == '.')
+    return "starts like a number";
+  for (size_t i = 0; i < n; i++) {
+    unsigned char c = (unsigned char)s[i];
+    if (!isgraph(c) || strchr("'\"=,()[]{}#:;\\", c)) return "contains a blank or one of '\"=,()[]{}#:;\\";
+  }
+  return NULL;
+}
+
+static int check_names(const char *const *names, int n, const char *field, const char *origin,
+                       cable_error *err)
+{
+  char key[64];
+  for (int i = 0; i < n; i++) {
+    if (!names[i]) continue;   /* unnamed slot */
+    const char *why = name_problem(names[i]);
+    snprintf(key, sizeof key, "%s[%d]", field, i);
+    if (why) return reject(err, origin, key, "the name '%.63s' %s", names[i], why);
+    for (int j = 0; j < i; j++)
+      if (names[j] && strcmp(names[i], names[j]) == 0)
+        return reject(err, origin, key, "the name '%s' is also %s[%d]", names[i], field, j);
+  }
+  return 0;
+}
+
+int cable_problem_validate(const cable_problem *pb, int npar_max, const char *origin,
+                           cable_error *err)
+{
+  if (!origin) origin = "";
+  if (!pb) return reject(err, origin, CABLE_PROBLEM_ENTRY, "returned NULL (no problem)");
+  /* version and size first: past them the layout may not be ours */
+  if (pb->abi_version != CABLE_PROBLEM_ABI)
+    return reject(err, origin, "abi_version",
+                  "built for ABI %d, this cable expects %d (rebuild the plug-in against this "
+                  "cable's cable_problem.h)",
+                  pb->abi_version, CABLE_PROBLEM_ABI);
+  if (pb->struct_size != sizeof(cable_problem))
+    return reject(err, origin, "struct_size",
+                  "is %zu, this cable's cable_problem has %zu bytes (set it to "
+                  "sizeof(cable_problem) and rebuild against this cable's headers)",
+                  pb->struct_size, sizeof(cable_problem));
+  if (!pb->name || name_problem(pb->name))
+    return reject(err, origin, "name", "the problem needs a name usable as e=NAME (%s)",
+                  pb->name ? name_problem(pb->name) : "it is NULL");
+  if (pb->ndim <= 0) return reject(err, origin, "ndim", "must be positive, got %d", pb->ndim);
+  if (pb->nbc < 0) return reject(err, origin, "nbc", "must not be negative, got %d", pb->nbc);
+  if (pb->nint < 0) return reject(err, origin, "nint", "must not be negative, got %d", pb->nint);
+  if (pb->npar < 0 || pb->npar > npar_max)
+    return reject(err, origin, "npar", "must be between 0 and NPAR = %d, got %d", npar_max, pb->npar);
+  if (!pb->func) return reject(err, origin, "func", "is NULL (FUNC is required)");
+  if (pb->nbc > 0 && !pb->bcnd)
+    return reject(err, origin, "bcnd", "is NULL but nbc = %d (BCND is required when nbc > 0)", pb->nbc);
+  if (pb->nint > 0 && !pb->icnd)
+    return reject(err, origin, "icnd", "is NULL but nint = %d (ICND is required when nint > 0)", pb->nint);
+  const struct {
+    const char *field;
+    int value;
+  } flags[] = {{"func_has_jac", pb->func_has_jac},
+               {"bcnd_has_jac", pb->bcnd_has_jac},
+               {"icnd_has_jac", pb->icnd_has_jac}};
+  for (size_t i = 0; i < sizeof flags / sizeof flags[0]; i++)
+    if (flags[i].value != 0 && flags[i].value != 1)
+      return reject(err, origin, flags[i].field, "must be 0 or 1, got %d", flags[i].value);
+  if (pb->parnames && pb->npar == 0)
+    return reject(err, origin, "parnames", "names are given but npar is 0");
+  if (pb->parnames && check_names(pb->parnames, pb->npar, "parnames", origin, err)) return CABLE_ERR_PLUGIN;
+  if (pb->unames && check_names(pb->unames, pb->ndim, "unames", origin, err)) return CABLE_ERR_PLUGIN;
+  return 0;
+}
+
+cable_plugin *cable_plugin_open_npar(const char *path, int npar_max, const cable_problem **pb,
+                                     cable_error *err)
+{
+  if (pb) *pb = NULL;
+  if (!path || !path[0]) {
+    cable_error_set(err, CABLE_ERR_IO, "", 0, "", "no plug-in file given");
+    return NULL;
+  }
+  struct stat st;
+  if (stat(path, &st) != 0) {
+    cable_error_set(err, CABLE_ERR_IO, path, 0, "", "cannot open the plug-in: %s", strerror(errno));
+    return NULL;
+  }
+  if (!S_ISREG(st.st_mode)) {
+    cable_error_set(err, CABLE_ERR_IO, path, 0, "", "cannot open the plug-in: not a regular file");
+    return NULL;
+  }
+  cable_plugin *p = calloc(1, sizeof *p);
+  if (!p) {
+    cable_error_set(err, CABLE_ERR_ALLOC, path, 0, "", "out of memory");
+    return NULL;
+  }
+  /* dlopen searches the library path for names without '/'; a user's file is
+   * meant relative to the current directory */
+  int n = snprintf(p->path, sizeof p->path, "%s%s", strchr(path, '/') ? "" : "./", path);
+  if (n < 0 || (size_t)n >= sizeof p->path) {
+    free(p);
+    cable_error_set(err, CABLE_ERR_IO, path, 0, "", "the plug-in path is too long");
+    return NULL;
+  }
+  dlerror();
+  /* RTLD_NOW: unresolved symbols are reported here, not at the first call;
+   * RTLD_LOCAL: one plug-in's symbols never satisfy another's */
+  p->handle = dlopen(p->path, RTLD_NOW | RTLD_LOCAL);
+  if (!p->handle) {
+    const char *why = dlerror();
+    cable_error_set(err, CABLE_ERR_PLUGIN, path, 0, "", "not a loadable shared object: %s",
+                    why ? why : "unknown reason");
+    free(p);
+    return NULL;
+  }
+  dlerror();
+  void *sym = dlsym(p->handle, CABLE_PROBLEM_ENTRY);
+  if (!sym) {
+    reject(err, path, CABLE_PROBLEM_ENTRY,
+           "the plug-in does not export it (define `const cable_problem *%s(void)` with external "
+           "linkage)",
+           CABLE_PROBLEM_ENTRY);
+    cable_plugin_close(p);
+    return NULL;
+  }
+  /* ISO C has no object-to-function pointer conversion; POSIX guarantees
+   * that dlsym's result has the function's representation */
+  cable_problem_entry_fn *entry;
+  _Static_assert(sizeof entry == sizeof sym, "function and object pointers differ in size");
+  memcpy(&entry, &sym, sizeof entry);
+  p->pb = entry();
+  if (cable_problem_validate(p->pb, npar_max, path, err)) {
+    cable_plugin_close(p);
+    return NULL;
+  }
+  if (pb) *pb = p->pb;
+  return p;
+}
+
+cable_plugin *cable_plugin_open(const char *path, const cable_problem **pb, cable_error *err)
+{
+  return cable_plugin_open_npar(path, CABLE_NPAR_DEFAULT, pb, err);
+}
+
+void cable_plugin_close(cable_plugin *p)
+{
+  if (!p) return;
+  if (p->handle) dlclose(p->handle);
+  free(p);
+}
+
+const cable_problem *cable_plugin_problem(const cable_plugin *p)
+{
+  return p ? p->pb : NULL;
+}
+
+const char *cable_plugin_path(const cable_plugin *p)
+{
+  return p ? p->path : NULL;
+}

@@ -1,0 +1,4 @@
+/* Broken on purpose: the entry returns no problem. */
+#include "broken_common.h"
+
+const cable_problem *cable_problem_entry(void) { return NULL; }
