@@ -35,8 +35,8 @@ struct cable_aufile {
   /* current section */
   int in_section, sec_ibr, sec_ndim, sec_nicp, sec_icp[CABLE_MAX_ICP], sec_n2;
   int last_lab_point;          /* label of the last point (for the solution that follows) */
-  /* d-file block state */
-  int d_pending_sep, d_empty;
+  /* d-file: 1 once the file has content (the next point's block needs a divider) */
+  int d_started;
   /* label bookkeeping: labels with a b-row / with an s-block */
   int *blab, nblab, blabcap;
   int *slab, nslab, slabcap;
@@ -204,9 +204,28 @@ static int section_ncol(const cable_aufile *w)
   return 2 + w->sec_n2 + (w->sec_nicp - 1);
 }
 
+/* A name as a quoted string both AUTO's parseC and cable's parser read:
+ * 'T'; "theta'" when the name holds a single quote (Python's repr does the
+ * same); doubled quotes when it holds both kinds. */
+static void put_name(FILE *f, const char *name)
+{
+  if (!strchr(name, '\'')) {
+    fprintf(f, "'%s'", name);
+  } else if (!strchr(name, '"')) {
+    fprintf(f, "\"%s\"", name);
+  } else {
+    fputc('\'', f);
+    for (; *name; name++) {
+      if (*name == '\'') fputc('\'', f);
+      fputc(*name, f);
+    }
+    fputc('\'', f);
+  }
+}
+
 static void quoted_par(const cable_aufile *w, FILE *f, int idx)
 {
-  if (idx >= 0 && idx < CABLE_NAMES_MAX && w->names.par[idx][0]) fprintf(f, "'%s'", w->names.par[idx]);
+  if (idx >= 0 && idx < CABLE_NAMES_MAX && w->names.par[idx][0]) put_name(f, w->names.par[idx]);
   else fprintf(f, "%d", idx + 1);
 }
 
@@ -260,7 +279,8 @@ static void write_names_dict(FILE *f, const char *label, char tab[][CABLE_NAME_L
   int first = 1;
   for (int k = 0; k < CABLE_NAMES_MAX; k++) {
     if (!tab[k][0]) continue;
-    fprintf(f, "%s%d: '%s'", first ? "" : ", ", k + 1, tab[k]);
+    fprintf(f, "%s%d: ", first ? "" : ", ", k + 1);
+    put_name(f, tab[k]);
     first = 0;
   }
   fputs("}\n", f);
@@ -336,15 +356,15 @@ static void write_b_header(cable_aufile *w, const cable_point *pt)
   fprintf(f, "   0   User-specified parameter%s", nicp == 1 ? ":       " : "s:      ");
   for (int k = 0; k < nicp; k++) {
     int idx = pt->icp[k];
-    if (idx < CABLE_NAMES_MAX && w->names.par[idx][0]) fprintf(f, " '%s'", w->names.par[idx]);
-    else fprintf(f, "   %d", idx + 1);
+    fputs(idx < CABLE_NAMES_MAX && w->names.par[idx][0] ? " " : "   ", f);
+    quoted_par(w, f, idx);
   }
   int nfpr = n_free(w, pt->ndim, nicp);
   fprintf(f, "\n   0   Active continuation parameter%s", nfpr == 1 ? ":  " : "s: ");
   for (int k = 0; k < nfpr; k++) {
     int idx = pt->icp[k];
-    if (idx < CABLE_NAMES_MAX && w->names.par[idx][0]) fprintf(f, " '%s'", w->names.par[idx]);
-    else fprintf(f, "   %d", idx + 1);
+    fputs(idx < CABLE_NAMES_MAX && w->names.par[idx][0] ? " " : "   ", f);
+    quoted_par(w, f, idx);
   }
   fputc('\n', f);
   /* AUTO's HEADNG: a lone "   0" line, then the column headings */
@@ -413,20 +433,21 @@ static int csv_open_section(cable_aufile *w)
 
 /* ---------------------------------------------------------------- d-file */
 
+/* One d-file block per point, as AUTO's fort.9: it starts with the divider
+ * parseD splits on and the point's lines; the solution note and the
+ * engine's diagnostics that follow (until the next point) stay in it. */
 static void d_begin_block(cable_aufile *w)
 {
-  FILE *f = cable_atomic_stream(w->d);
-  if (w->d_pending_sep) fputs(DSEP, f);
-  w->d_pending_sep = 0;
-  w->d_empty = 0;
+  if (w->d_started) fputs(DSEP, cable_atomic_stream(w->d));
+  w->d_started = 1;
 }
 
 static void d_diag(void *ctx, const char *line)
 {
   cable_aufile *w = ctx;
   if (!w || !w->d) return;
-  d_begin_block(w);
   fprintf(cable_atomic_stream(w->d), " %s\n", line ? line : "");
+  w->d_started = 1;
 }
 
 /* ---------------------------------------------------------------- points */
@@ -452,7 +473,6 @@ static int start_section(cable_aufile *w, const cable_point *pt)
   w->nsections++;
   write_b_header(w, pt);
   FILE *d = cable_atomic_stream(w->d);
-  d_begin_block(w);
   fprintf(d, " cable: branch %d, section %d of %s\n", pt->ibr, w->nsections, w->bpath);
   fprintf(d, " NDIM=%d NTST=%d NCOL=%d ISW=%d IRS=%d%s%s DS=%g DSMIN=%g DSMAX=%g NMX=%d NPR=%d IIS=%d\n",
           pt->ndim, w->c.ntst, w->c.ncol, w->c.isw, w->c.irs, w->c.irs_name[0] ? " " : "", w->c.irs_name,
@@ -480,6 +500,7 @@ static int point_cb(void *ctx, const cable_point *pt)
       return w_fail(w, CABLE_ERR_INPUT, w->bpath, "point lists PAR(%d) beyond NPAR=%d", pt->icp[k] + 1, pt->npar);
   if (w->c.iplt > pt->ndim)
     return w_fail(w, CABLE_ERR_INPUT, w->bpath, "IPLT=%d exceeds NDIM=%d", w->c.iplt, pt->ndim);
+  d_begin_block(w);
   if (!same_section(w, pt)) {
     int st = start_section(w, pt);
     if (st) return st;
@@ -507,7 +528,6 @@ static int point_cb(void *ctx, const cable_point *pt)
   w->last_lab_point = pt->lab;
   /* d-file: AUTO's WRTBV9 line plus step size and error estimate */
   FILE *d = cable_atomic_stream(w->d);
-  d_begin_block(w);
   fputs("  BR    PT  IT         PAR           L2-NORM          DS        ERR-EST\n", d);
   char e1[64], e2[64], e3[64], e4[64];
   fprintf(d, "%4d%6d%4d   %s%s%s%s\n", pt->ibr, mtot, pt->newton_iters, fmt_es2(e1, val[0], 14, 5),
@@ -526,7 +546,6 @@ static int point_cb(void *ctx, const cable_point *pt)
     for (int j = 0; j < n && j < 2 + SCREEN_MAX; j++) fputs(fmt_es2(e1, val[j], 14, 5), d);
     fputc('\n', d);
   }
-  w->d_pending_sep = 1;
   if (w->opt.write_csv && w->ncsv > 0) {
     FILE *cf = cable_atomic_stream(w->csv[w->ncsv - 1]);
     const char *ty = pt->itp == 0 ? "" : cable_type_name(pt->itp);
@@ -624,7 +643,6 @@ static int solution_cb(void *ctx, const cable_point *pt, const cable_solution *s
   fprintf(d, " Solution label %d (%s) stored: NTST=%d NCOL=%d NDIM=%d, error estimate %s\n", pt->lab,
           cable_type_name(pt->itp)[0] ? cable_type_name(pt->itp) : "regular", sol->ntst, sol->ncol, ndim,
           sol->err_est >= 0 ? trim(fmt_es2(e1, sol->err_est, 12, 4)) : "unknown");
-  w->d_pending_sep = 1;
   int st = w_check_stream(w, w->s);
   if (st == 0) st = w_check_stream(w, w->d);
   return st;
@@ -727,7 +745,7 @@ cable_aufile *cable_aufile_open(const char *dir, const char *name, const cable_c
     return NULL;
   }
   /* a d-file being appended to gets a divider before this session */
-  w->d_pending_sep = w->opt.append && ftell(cable_atomic_stream(w->d)) > 0;
+  w->d_started = w->opt.append && ftell(cable_atomic_stream(w->d)) > 0;
   return w;
 }
 

@@ -16,11 +16,15 @@
 #include "atomic_file.h"
 #include "aufile.h"
 #include "cable_constants.h"
+#include "cable_cont.h"
+#include "constants_parse.h"
+#include "test_problems.h"
 #include "cable_status.h"
 #include "harness.h"
 #include "names.h"
 
 #define OUTDIR "tests/tmp/aufiles"
+#define PI 3.14159265358979323846
 #define REL_TOL 1e-10      /* ES19.10: 11 significant digits, rounding error <= 5e-11 relative */
 #define NPAR1 12
 #define ERR_SLOT 11        /* PAR(12) is named "err" */
@@ -171,9 +175,9 @@ static int emit_branch(cable_sink *sink, int ibr, int ndim, int ntst, int ncol, 
     for (int k = 1; k < nicp; k++) r->vals[r->nval++] = s->par[icp[k]];
     char line[128];
     snprintf(line, sizeof line, "Newton iteration %d: residual %.3e", 1, 1e-9 * (p + 1));
-    sink->diag(sink->ctx, line);
     st = sink->point(sink->ctx, &pt);
     if (st == 0 && lab[p] != 0) st = sink->solution(sink->ctx, &pt, s);
+    sink->diag(sink->ctx, line);   /* the engine reports after the point, as here */
     if (keep && lab[p] != 0) keep[p] = s;
     else cable_solution_free(s);
   }
@@ -415,6 +419,181 @@ static void check_solution(const char *tag, const cable_solution *got, const cab
     snprintf(what, sizeof what, "%s: no direction stored (IIS=0): udot 0, icp -1", tag);
     test_true(what, zero);
   }
+}
+
+
+/* ---------------------------------------------------------------- with the engine */
+
+/* Forwards to the writer and keeps what the engine handed out. */
+typedef struct {
+  cable_sink out;
+  int n, nsol;
+  int lab[256], pt[256];
+  double p0[256], l2[256];
+  cable_solution *sol[64];
+} tee;
+
+static int tee_point(void *ctx, const cable_point *pt)
+{
+  tee *t = ctx;
+  if (t->n < 256) {
+    t->lab[t->n] = pt->lab;
+    t->pt[t->n] = pt->pt;
+    t->p0[t->n] = pt->par[pt->icp[0]];
+    t->l2[t->n] = pt->l2norm;
+    t->n++;
+  }
+  return t->out.point(t->out.ctx, pt);
+}
+
+static int tee_solution(void *ctx, const cable_point *pt, const cable_solution *sol)
+{
+  tee *t = ctx;
+  if (t->nsol < 64) t->sol[t->nsol++] = cable_solution_clone(sol);
+  return t->out.solution(t->out.ctx, pt, sol);
+}
+
+static void tee_diag(void *ctx, const char *line)
+{
+  tee *t = ctx;
+  t->out.diag(t->out.ctx, line);
+}
+
+static void tee_free(tee *t)
+{
+  for (int i = 0; i < t->nsol; i++) cable_solution_free(t->sol[i]);
+  t->nsol = 0;
+  t->n = 0;
+}
+
+/* Constants file -> engine -> b./s./d. -> s-file lookup 'BP1' -> ISW=-1 run
+ * appended -> every stored number re-read within the ES19.10 rounding. */
+static void test_with_engine(void)
+{
+  const cable_problem *pb = cable_testproblem_elastica();
+  static const char ctext[] =
+    "e = 'elastica', NDIM = 2, NBC = 2, NINT = 0, ICP = ['lambda']\n"
+    "NTST = 50, NCOL = 5, JAC = 1, IAD = 0\n"
+    "DS = 0.5, DSMIN = 1e-6, DSMAX = 4.0, NMX = 200, RL1 = 100\n"
+    "ISP = 2, ILP = 0, EPSS = 1e-10\n";
+  cable_constants c;
+  cable_names names;
+  cable_error err;
+  char msg[1024];
+  int st = cable_constants_parse_string("c.elastica", ctext, &c, &names, pb->parnames, pb->npar, &err);
+  test_int("engine run: constants parse (ICP by the problem's name 'lambda')", st, 0);
+  if (st) return;
+  cable_names_fill(&names, pb->parnames, pb->npar, pb->unames, pb->ndim);
+  int status = 0;
+  cable_cont *cc = cable_cont_alloc(pb, &c, &status);
+  test_true("engine run: cable_cont_alloc", cc != NULL);
+  if (!cc) return;
+  cable_cont_set_start(cc, NULL);
+  cable_aufile *w = cable_aufile_open(OUTDIR, "ela", &c, &names, NULL, &err);
+  tee t;
+  memset(&t, 0, sizeof t);
+  t.out = cable_aufile_sink(w);
+  cable_sink sink = {&t, tee_point, tee_solution, tee_diag};
+  int next = 0;
+  int rc = cable_cont_run(cc, &sink, 1, 1, &next);
+  cable_cont_free(cc);
+  test_true("engine run 1 ends normally (RL1)", rc > 0);
+  test_int("engine run 1: writer closes cleanly", cable_aufile_close(w, &err), 0);
+  cable_sfile *sf = cable_sfile_read(OUTDIR "/s.ela", &err);
+  test_true("engine run 1: s.ela reads back", sf != NULL);
+  if (!sf) {
+    tee_free(&t);
+    return;
+  }
+  test_int("engine run 1: one s-file solution per labelled point", cable_sfile_count(sf), t.nsol);
+  double emax = 0;
+  int labs_ok = 1;
+  for (int i = 0; i < t.nsol && i < cable_sfile_count(sf); i++) {
+    const cable_solution *g = cable_sfile_get(sf, i), *x = t.sol[i];
+    labs_ok &= g->lab == x->lab && g->itp == x->itp && g->ntst == x->ntst;
+    for (int m = 0; m < cable_solution_npts(x) * x->ndim; m++) emax = fmax(emax, fabs(g->u[m] - x->u[m]) / fmax(fabs(x->u[m]), 1e-300));
+    for (int k = 0; k < x->npar; k++) emax = fmax(emax, relerr(g->par[k], x->par[k]));
+  }
+  test_true("engine run 1: labels, types and sizes match the engine's", labs_ok);
+  test_le("engine run 1: every u and PAR re-read, max rel. error", emax, REL_TOL);
+  cable_bfile *bf = cable_bfile_read(OUTDIR "/b.ela", &err);
+  int rows_ok = bf && bf->nbranch == 1 && bf->branch[0].nrow == t.n;
+  const double *lam = bf ? cable_bfile_column(&bf->branch[0], "lambda") : NULL;
+  const double *l2 = bf ? cable_bfile_column(&bf->branch[0], "L2-NORM") : NULL;
+  emax = 0;
+  for (int r = 0; rows_ok && lam && l2 && r < t.n; r++) {
+    rows_ok &= bf->branch[0].lab[r] == t.lab[r] && bf->branch[0].pt[r] == t.pt[r];
+    emax = fmax(emax, fmax(relerr(lam[r], t.p0[r]), relerr(l2[r], t.l2[r])));
+  }
+  test_true("engine run 1: b.ela has every point with its label, column 'lambda'", rows_ok && lam && l2);
+  test_le("engine run 1: lambda and L2-NORM columns, max rel. error", emax, REL_TOL);
+  cable_bfile_free(bf);
+  tee_free(&t);
+  /* the header's names lines are constants syntax: cable's parser reads them back */
+  char *btext = slurp(OUTDIR "/b.ela", NULL);
+  char *un = btext ? strstr(btext, "unames   = ") : NULL;
+  cable_constants hc;
+  cable_names hn;
+  if (un) *strchr(un, '\n') = '\0';
+  st = un ? cable_constants_parse_string("b.ela header", un, &hc, &hn, NULL, 0, &err) : -1;
+  test_true("b.ela header line unames = {1: 'theta', 2: \"theta'\"} parses back", st == 0 &&
+            strcmp(hn.u[0], "theta") == 0 && strcmp(hn.u[1], "theta'") == 0);
+  free(btext);
+
+  /* restart at the first BP on the bifurcating branch, appended (AUTO's ap) */
+  st = cable_constants_parse_override("IRS='BP1', ISW=-1, DS=0.05, DSMAX=0.2, NMX=12, NPR=5", &c, &names, pb->parnames,
+                                      pb->npar, &err);
+  if (st == 0) st = cable_constants_parse_override("ISP=0", &c, &names, pb->parnames, pb->npar, &err);
+  test_int("engine run 2: overrides IRS='BP1', ISW=-1, ...", st, 0);
+  st = cable_sfile_resolve_irs(sf, &c, &err);
+  test_true("engine run 2: IRS='BP1' resolves to a label", st == 0 && c.irs > 0);
+  const cable_solution *start = cable_sfile_find_label(sf, c.irs);
+  test_true("engine run 2: BP1 at lambda = pi^2 in the s-file (collocation error < 1e-8)",
+            start && start->itp == 6 && fabs(start->par[0] - PI * PI) < 1e-8 * PI * PI);
+  if (!start) {
+    cable_sfile_free(sf);
+    return;
+  }
+  cable_aufile_options opt;
+  cable_aufile_options_init(&opt);
+  opt.append = 1;
+  w = cable_aufile_open(OUTDIR, "ela", &c, &names, &opt, &err);
+  cc = cable_cont_alloc(pb, &c, &status);
+  test_true("engine run 2: writer and engine", w && cc);
+  if (!w || !cc) {
+    cable_aufile_abort(w);
+    cable_cont_free(cc);
+    cable_sfile_free(sf);
+    return;
+  }
+  int first = cable_aufile_last_label(w) + 1, ibr = cable_aufile_last_branch(w) + 1;
+  cable_cont_set_start(cc, start);
+  memset(&t, 0, sizeof t);
+  t.out = cable_aufile_sink(w);
+  rc = cable_cont_run(cc, &sink, ibr, first, &next);
+  cable_cont_free(cc);
+  st = cable_aufile_close(w, &err);
+  if (st) printf("  %s\n", cable_error_format(&err, msg, sizeof msg));
+  test_int("engine run 2: appending writer closes cleanly", st, 0);
+  cable_sfile_free(sf);
+  sf = cable_sfile_read(OUTDIR "/s.ela", &err);
+  bf = cable_bfile_read(OUTDIR "/b.ela", &err);
+  test_true("engine run 2: b.ela has 2 sections, the second on branch 2",
+            bf && bf->nbranch == 2 && bf->branch[1].br[0] == 2);
+  int uniq = sf != NULL, nlab = sf ? cable_sfile_count(sf) : 0;
+  for (int i = 0; uniq && i < nlab; i++)
+    for (int j = i + 1; j < nlab; j++) uniq &= cable_sfile_get(sf, i)->lab != cable_sfile_get(sf, j)->lab;
+  test_true("engine run 2: labels unique across both runs, new ones continue the old", uniq && t.nsol > 0 &&
+                                                                                          t.sol[0]->lab == first);
+  double amp = 0;
+  for (int i = 0; sf && i < nlab; i++) {
+    const cable_solution *g = cable_sfile_get(sf, i);
+    if (g->ibr == 2) amp = fmax(amp, fabs(g->u[0]));
+  }
+  test_true("engine run 2: the stored branch-2 solutions are buckled (|theta(0)| > 0.3)", amp > 0.3);
+  cable_bfile_free(bf);
+  cable_sfile_free(sf);
+  tee_free(&t);
 }
 
 int main(void)
@@ -860,5 +1039,6 @@ int main(void)
 
   for (int p = 0; p < 10; p++) cable_solution_free(keep1[p]);
   for (int p = 0; p < 4; p++) cable_solution_free(keep2[p]);
+  test_with_engine();
   return test_summary();
 }
