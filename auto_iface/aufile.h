@@ -40,7 +40,9 @@ void cable_aufile_options_init(cable_aufile_options *o);
 typedef struct cable_aufile cable_aufile;
 
 /* Open b.NAME, s.NAME, d.NAME in directory dir ("" or NULL: current).
- * c: the run's constants (headers, NPR/IIS choices, ICP names); names: the
+ * c: the run's constants (headers, IIS, IPLT), with NDIM, NBC and NINT
+ * filled from the problem (cable_constants_take_problem_dims): the header's
+ * free-parameter count is NBC+NINT-NDIM+1 as in AUTO; names: the
  * parameter/component names for column headings (may be NULL; fill it from
  * the problem with cable_names_fill first).  opt NULL: defaults. */
 cable_aufile *cable_aufile_open(const char *dir, const char *name, const cable_constants *c,

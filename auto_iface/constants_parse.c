@@ -942,6 +942,13 @@ static const key_desc *key_find(const char *key)
   return NULL;
 }
 
+void cable_constants_take_problem_dims(cable_constants *c, int ndim, int nbc, int nint)
+{
+  if (c->ndim == 0) c->ndim = ndim;
+  if (c->nbc == 0) c->nbc = nbc;
+  if (c->nint == 0) c->nint = nint;
+}
+
 int cable_constants_key_known(const char *key)
 {
   return key && key_find(key) != NULL;

@@ -45,6 +45,11 @@ int cable_constants_parse_string(const char *name, const char *text, cable_const
 int cable_constants_parse_override(const char *keyvalue, cable_constants *c, cable_names *names,
                                    const char *const *parnames, int npar, cable_error *err);
 
+/* NDIM, NBC and NINT left at 0 ("take them from the problem") get the
+ * problem's values; the run driver calls this before the engine and the
+ * output writer (whose header and free-parameter count need them). */
+void cable_constants_take_problem_dims(cable_constants *c, int ndim, int nbc, int nint);
+
 /* 1 when `key` is a key cable accepts (case-sensitive, as in AUTO). */
 int cable_constants_key_known(const char *key);
 

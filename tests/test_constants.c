@@ -265,6 +265,10 @@ static void test_bad_cases(void)
   }
   st = cable_constants_parse_file(CASEDIR "/c.binary", &c, NULL, NULL, 0, &e);
   test_true("binary file refused", st == CABLE_ERR_PARSE && strstr(e.msg, "NUL"));
+  cable_constants_init(&c);
+  c.nbc = 5;
+  cable_constants_take_problem_dims(&c, 21, 16, 2);
+  test_true("take_problem_dims fills NDIM and NINT, keeps the file's NBC", c.ndim == 21 && c.nbc == 5 && c.nint == 2);
   test_true("cable_constants_key_known: NTST yes, MXBF no", cable_constants_key_known("NTST") &&
                                                              !cable_constants_key_known("MXBF"));
 }
