@@ -301,6 +301,12 @@ void abd_solver_free(abd_solver *s)
 
 int abd_solver_size(const abd_solver *s) { return s->n; }
 
+void abd_solver_bandwidths(const abd_solver *s, int *kl, int *ku)
+{
+  *kl = s->kl;
+  *ku = s->ku;
+}
+
 void abd_solver_space(const abd_solver *s, long *ndoubles, long *nints)
 {
   long nIt = (long)s->N * s->nI;

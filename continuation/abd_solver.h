@@ -67,6 +67,9 @@ double abd_solver_growth(const abd_solver *s);
 /* Unknowns n of the original system. */
 int abd_solver_size(const abd_solver *s);
 
+/* Lower and upper bandwidths of the reduced, augmented banded system. */
+void abd_solver_bandwidths(const abd_solver *s, int *kl, int *ku);
+
 /* Memory held by the solver, in doubles and in ints. */
 void abd_solver_space(const abd_solver *s, long *ndoubles, long *nints);
 
