@@ -1,0 +1,82 @@
+/* Self-distance of tubes: the closest approach of non-adjacent parts of one or
+ * more polylines (strand centrelines, braid axis), with the parts closer than
+ * a given distance (overlapping tubes) marked.
+ *
+ * "Adjacent" is decided by a position along the rod attached to every vertex
+ * (for the braid: arclength along the braid axis at that braid position):
+ * two segments whose midpoint positions differ by less than `window` (modulo
+ * the period of a closed axis) are neighbours and never compared.
+ *
+ * Method: segments are grouped in chunks of consecutive segments with a
+ * bounding sphere; chunk pairs are visited in order of their distance lower
+ * bound and the exact segment-segment distances computed until the bound
+ * exceeds both the best distance found and the overlap distance.  Typical cost
+ * O(n log n) for smooth curves (2 x 10^4 segments: a few tens of ms). */
+#ifndef CABLE_TUBE_DISTANCE_H
+#define CABLE_TUBE_DISTANCE_H
+
+#include "braid_geometry.h"
+
+typedef struct tube_polyline {
+  int n;                        /* vertices, n >= 2 (n - 1 segments) */
+  const double *xyz;            /* [3n] */
+  const double *pos;            /* [n] nondecreasing position along the rod */
+} tube_polyline;
+
+typedef struct tube_closest {
+  double dist;                  /* INFINITY when no admissible pair exists */
+  int curve_a, seg_a;           /* segment seg_a (vertices seg_a, seg_a+1) of curve_a */
+  double u_a;                   /* closest point at parameter u_a in [0,1] */
+  int curve_b, seg_b;
+  double u_b;
+} tube_closest;
+
+typedef struct tube_workspace tube_workspace;
+/* For up to nseg segments in all polylines together; NULL on failure. */
+tube_workspace *tube_workspace_alloc(int nseg);
+void tube_workspace_free(tube_workspace *w);          /* NULL is a no-op */
+
+/* Closest admissible pair of segments among the ncurve polylines (pairs within
+ * one polyline included).  period > 0: positions are periodic (closed rod),
+ * 0: open.  window > 0 must exceed every segment's position increment
+ * (CABLE_ERR_INPUT otherwise: sample more finely).  flags (may be NULL):
+ * flags[k][i] is set to 1 for segment i of curve k when it lies closer than
+ * `overlap` to an admissible partner, else 0. */
+int tube_polylines_distance(tube_workspace *w, int ncurve, const tube_polyline *c, double period,
+                            double window, double overlap, tube_closest *out,
+                            unsigned char *const *flags);
+
+/* ---- braid solutions ---- */
+
+/* Neighbour window along the braid axis, in units of Delta.  The braid lies in
+ * a tube of radius Delta about its axis.  For a curve whose radius of
+ * curvature is at least rho, points closer than 2 rho in space must be at
+ * least pi rho apart along the curve to belong to different parts of it
+ * (Schur's comparison: chord >= 2 rho sin(l / 2 rho) for l <= pi rho).  With
+ * rho = Delta for the braid (and rho = Delta/2 for a strand, whose arclength
+ * is at least the axial one) a window of pi Delta separates local neighbours
+ * from distinct parts.  Consequence: for a braid without distant approaches
+ * dmin is set by the window edge, about pi; overlap means dmin < 1. */
+#define TUBE_WINDOW_FACTOR 3.14159265358979323846
+/* Overlap intervals reported (the count of all is kept). */
+#define TUBE_MAX_INTERVALS 64
+/* Axis treated as closed when |c(L) - c(0)| <= this times its length. */
+#define TUBE_CLOSURE_TOL 1e-3
+
+typedef struct tube_distance_result {
+  double dmin;                  /* closest non-adjacent strand centrelines / Delta (tubes overlap if < 1) */
+  int strand_a, strand_b;       /* 1 or 2 */
+  double s_a, s_b;              /* braid positions (arclength s of strand 1) of that pair */
+  double axis_dmin;             /* closest non-adjacent points of the contact curve / Delta */
+  double axis_s_a, axis_s_b;
+  int noverlap;                 /* overlap intervals found (may exceed TUBE_MAX_INTERVALS) */
+  double overlap[TUBE_MAX_INTERVALS][2]; /* [s_lo, s_hi] where a strand tube overlaps another part */
+  double overlap_length;        /* total length in s of all intervals */
+  int closed;                   /* 1: the axis closes and positions are periodic */
+} tube_distance_result;
+
+/* Uses braid_curves' samples (bc->n points; their spacing must be below
+ * pi Delta).  Returns 0, CABLE_ERR_INPUT, CABLE_ERR_NONFINITE or CABLE_ERR_ALLOC. */
+int braid_tube_distance(const braid_curves *bc, tube_distance_result *out);
+
+#endif
