@@ -2,15 +2,23 @@
  * tests check the exact sequence of AUTO commands and arguments a script
  * produces, the label selection, iteration, '+', save/load, the Python
  * subset's semantics, handle lifetimes (every handle released exactly once)
- * and every error path (message, line, status). */
+ * and every error path (message, line, status).  The last part runs scripts
+ * on the engine host (script_host_cable.h): Bratu's fold through a script,
+ * through the template plug-in, files written and read back, and the host's
+ * errors. */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
+#include "aufile.h"
 #include "cable_error.h"
 #include "cable_status.h"
 #include "harness.h"
 #include "script.h"
+#include "script_host_cable.h"
 
 /* ---- the mock host ----------------------------------------------------------- */
 
@@ -883,12 +891,242 @@ static void test_value_api(void)
   test_true("kwargs_find", script_kwargs_find(&kw, "DS") && script_kwargs_find(&kw, "NMX") == NULL);
 }
 
-int main(void)
+
+/* ---- the engine host ------------------------------------------------------------------ */
+
+#define REPLAY_DIR "tests/tmp/replay"
+
+/* Bratu's fold: lambda* = th^2 / (2 cosh^2(th/4)) with (th/4) tanh(th/4) = 1,
+ * and there max u = u(1/2) = 2 ln cosh(th/4) (30-digit mpmath values). */
+#define BRATU_FOLD_LAMBDA 3.5138307191251612062
+#define BRATU_FOLD_UMAX 1.1868421686343890972
+/* c.bratu has the engine test's constants (NTST=20, NCOL=4, EPSS=1e-7), for
+ * which tests/test_engine_bvp.c bounds the fold's lambda by 1e-9
+ * (discretisation O(h^8) ~ 1e-11, location to EPSS in arclength). */
+#define BRATU_FOLD_TOL 1e-9
+/* u at the fold moves linearly along the branch (lambda only quadratically),
+ * so it inherits the location error itself: EPSS * DSMAX = 1e-7 * 0.5. */
+#define BRATU_UMAX_TOL 5e-8
+/* Numbers re-read from b./s.-files: ES19.10, 11 significant digits. */
+#define FILE_REL_TOL 1e-10
+
+static char plugin_dir[2048] = "build/release/plugins";
+
+static int copy_file(const char *from, const char *to)
 {
+  FILE *a = fopen(from, "rb"), *b = a ? fopen(to, "wb") : NULL;
+  char buf[4096];
+  size_t n;
+  int ok = a && b;
+  while (ok && (n = fread(buf, 1, sizeof buf, a)) > 0) ok = fwrite(buf, 1, n, b) == n;
+  if (a) fclose(a);
+  if (b && fclose(b) != 0) ok = 0;
+  return ok;
+}
+
+static void replay_prepare(void)
+{
+  mkdir("tests/tmp", 0777);
+  mkdir(REPLAY_DIR, 0777);
+  const char *gone[] = {"b.bratu", "s.bratu", "d.bratu", "b.upper", "s.upper", "d.upper"};
+  char path[256];
+  for (size_t i = 0; i < sizeof gone / sizeof gone[0]; i++) {
+    snprintf(path, sizeof path, REPLAY_DIR "/%s", gone[i]);
+    remove(path);
+  }
+  test_true("copy c.bratu into " REPLAY_DIR, copy_file("tests/data/scripts/c.bratu", REPLAY_DIR "/c.bratu"));
+}
+
+/* Runs a script (a file, or text) on a fresh engine-host session; the log
+ * (labelled points, print output) comes back in *log (free it). */
+static int replay(const char *path, const char *text, char **log, cable_error *err)
+{
+  size_t len;
+  FILE *f = open_memstream(log, &len);
+  cable_replay_options o;
+  cable_replay_options_init(&o);
+  o.dir = REPLAY_DIR;
+  o.log = f;
+  int rc;
+  if (path) {
+    rc = cable_replay_run_file(path, &o, err);
+  } else {
+    cable_replay *r = cable_replay_alloc(&o);
+    rc = script_run_string("t.auto", text, cable_replay_host(r), err);
+    cable_replay_free(r);
+  }
+  fclose(f);
+  return rc;
+}
+
+static const char *log_line(const char *log, const char *prefix)
+{
+  for (const char *p = log; p && *p; p = strchr(p, '\n') ? strchr(p, '\n') + 1 : NULL)
+    if (strncmp(p, prefix, strlen(prefix)) == 0) return p + strlen(prefix);
+  return NULL;
+}
+
+static void test_engine_script(void)
+{
+  replay_prepare();
+  char *log = NULL, buf[1200];
+  cable_error err;
+  int rc = replay("tests/data/scripts/bratu_replay.auto", NULL, &log, &err);
+  if (rc) printf("  error: %s\n", cable_error_format(&err, buf, sizeof buf));
+  test_int("bratu_replay.auto on the engine: status", rc, 0);
+  double fold = 0, reloaded = 0, restart = 0;
+  int lab = 0, ty_ok = 0, nbr = 0, nmerged = 0, nlp = 0, rlab = 0;
+  const char *l = log_line(log, "fold ");
+  ty_ok = l && sscanf(l, "%lf LP %d", &fold, &lab) == 2;
+  test_true("the script prints the fold (type LP)", ty_ok);
+  test_abs("fold lambda through a script vs closed form", fold, BRATU_FOLD_LAMBDA, BRATU_FOLD_TOL);
+  test_int("the fold is label 2 (after the start EP1)", lab, 2);
+  l = log_line(log, "branches ");
+  test_true("both directions give 2 branches, merge joins them into 1",
+            l && sscanf(l, "%d %d", &nbr, &nmerged) == 2 && nbr == 2 && nmerged == 1);
+  l = log_line(log, "reloaded ");
+  test_true("loadbd finds the one fold again", l && sscanf(l, "%d %lf", &nlp, &reloaded) == 2 && nlp == 1);
+  test_rel("reloaded fold lambda (s-file rounding)", reloaded, fold, FILE_REL_TOL);
+  l = log_line(log, "restart ");
+  test_true("the restart from the reloaded fold ends (EP1)", l && sscanf(l, "%lf %d", &restart, &rlab) == 2);
+  test_true("the restart runs onto the upper branch (lambda below the fold)", restart < fold);
+  /* labels continue across runs and files: run 1 has 1-3, the backward run 4 */
+  test_int("the restart's end point is label 6", rlab, 6);
+  free(log);
+
+  cable_sfile *sf = cable_sfile_read(REPLAY_DIR "/s.upper", &err);
+  test_true("sv='upper' wrote s.upper", sf != NULL);
+  if (sf) {
+    test_int("s.upper: 2 labelled solutions", cable_sfile_count(sf), 2);
+    test_true("s.upper: labels 5 and 6", cable_sfile_count(sf) == 2 && cable_sfile_get(sf, 0)->lab == 5 &&
+                                            cable_sfile_get(sf, 1)->lab == 6);
+    cable_sfile_free(sf);
+  }
+  cable_bfile *bf = cable_bfile_read(REPLAY_DIR "/b.bratu", &err);
+  test_true("save(b, 'bratu') wrote b.bratu: one branch of NMX = 60 rows",
+            bf && bf->nbranch == 1 && bf->branch[0].nrow == 60);
+  const double *lam = bf ? cable_bfile_column(&bf->branch[0], "lambda") : NULL;
+  double lp_row = NAN;
+  for (int i = 0; lam && i < bf->branch[0].nrow; i++)
+    if (bf->branch[0].lab[i] == 2) lp_row = lam[i];
+  test_rel("b.bratu: the fold's row (label 2)", lp_row, fold, FILE_REL_TOL);
+  cable_bfile_free(bf);
+
+  /* the template plug-in, run by the engine through a script (PVLS: umax) */
+  char text[4096];
+  snprintf(text, sizeof text,
+           "r = run(e='%s/bratu_plugin.so', c='bratu')\n"
+           "lp = r('LP1')\n"
+           "print('plugin', lp['lambda'], lp['umax'])\n",
+           plugin_dir);
+  rc = replay(NULL, text, &log, &err);
+  if (rc) printf("  error: %s\n", cable_error_format(&err, buf, sizeof buf));
+  test_int("the template plug-in through a script: status", rc, 0);
+  double pl = 0, um = 0;
+  l = log_line(log, "plugin ");
+  test_true("the plug-in's fold is printed", l && sscanf(l, "%lf %lf", &pl, &um) == 2);
+  test_abs("plug-in fold lambda vs closed form", pl, BRATU_FOLD_LAMBDA, BRATU_FOLD_TOL);
+  test_abs("plug-in PVLS umax at the fold vs closed form", um, BRATU_FOLD_UMAX, BRATU_UMAX_TOL);
+  free(log);
+
+  /* user zeros by parameter name, and e= from the constants file */
+  rc = replay(NULL,
+              "r = run(c='bratu', UZR={'lambda': [1, 2]}, NMX=20)\n"
+              "print('uz', len(r('UZ')), r('UZ2')['lambda'], r('UZ1')['PAR(1)'])\n",
+              &log, &err);
+  test_int("UZR by name, e from c.bratu: status", rc, 0);
+  double u2 = 0, u1 = 0;
+  int nuz = 0;
+  l = log_line(log, "uz ");
+  test_true("two user zeros", l && sscanf(l, "%d %lf %lf", &nuz, &u2, &u1) == 3 && nuz == 2);
+  /* a user zero is located to Newton accuracy in lambda (EPSL = 1e-7 on the
+   * step: the zero of lambda - value converges quadratically far below) */
+  test_abs("UZ2 at lambda = 2", u2, 2, 1e-9);
+  test_abs("UZ1 at lambda = 1", u1, 1, 1e-9);
+  free(log);
+}
+
+static void expect_replay_error(const char *what, const char *text, int status, const char *want)
+{
+  char *log = NULL, buf[1200], d[200];
+  cable_error err;
+  int rc = replay(NULL, text, &log, &err);
+  free(log);
+  snprintf(d, sizeof d, "engine host, %s: status %s", what, cable_status_name(status));
+  test_int(d, rc, status);
+  snprintf(d, sizeof d, "engine host, %s: message", what);
+  check_text(d, cable_error_format(&err, buf, sizeof buf), want);
+}
+
+static void test_engine_errors(void)
+{
+  char text[4096], want[4096];
+  expect_replay_error("unknown problem", "r = run(e='nosuch', c='bratu')\n", CABLE_ERR_NOTFOUND,
+                      "t.auto:1: run: e: unknown problem 'nosuch' (not a built-in problem, and no nosuch.so plug-in)");
+  snprintf(text, sizeof text, "r = run(e='%s/broken_abi.so', c='bratu')\n", plugin_dir);
+  snprintf(want, sizeof want,
+           "t.auto:1: run: %s/broken_abi.so: abi_version: built for ABI 99, this cable expects 1 (rebuild the "
+           "plug-in against this cable's cable_problem.h)",
+           plugin_dir);
+  expect_replay_error("rejected plug-in", text, CABLE_ERR_PLUGIN, want);
+  expect_replay_error("braid from STPNT", "r = run(e='braid_knot')\n", CABLE_ERR_UNSUPPORTED,
+                      "t.auto:1: run: e: 'braid_knot' from STPNT needs prepared starting parameters, which this "
+                      "host does not have: restart from a stored solution (run(sol) or IRS with s=)");
+  expect_replay_error("missing label", "r = run(c='bratu')\nbp = r('BP1')\n", CABLE_ERR_NOTFOUND,
+                      "t.auto:2: r: BP1: no such label in the result");
+  expect_replay_error("IRS without solutions", "r = run(c='bratu', IRS=3)\n", CABLE_ERR_INPUT,
+                      "t.auto:1: run: IRS: a restart needs solutions: give a result, a solution, a name or s='NAME'");
+  expect_replay_error("unknown parameter name", "r = run(c='bratu')\nx = r('LP1')['mu']\n", CABLE_ERR_NOTFOUND,
+                      "t.auto:2: [: mu: no such parameter (names: the problem's parnames, PAR(k), LAB, BR, PT, TY)");
+  expect_replay_error("solution plus result", "r = run(c='bratu')\nx = r('LP1') + r\n", CABLE_ERR_INPUT,
+                      "t.auto:2: +: '+' needs a result, got a solution");
+  expect_replay_error("None as a constant", "r = run(c='bratu', DS=None)\n", CABLE_ERR_INPUT,
+                      "t.auto:1: run: DS: a None is not a constants value");
+  /* errors of the constants parser and the engine come through with the
+   * script line and the key; their wording is theirs (tests/test_constants.c) */
+  const struct {
+    const char *what, *text, *head;
+    int status;
+  } theirs[] = {
+    {"unknown keyword", "r = run(c='bratu', NMXX=3)\n", "t.auto:1: run: NMXX: ", CABLE_ERR_INPUT},
+    {"bad value", "r = run(c='bratu', NTST=-5)\n", "t.auto:1: run: NTST: ", CABLE_ERR_INPUT},
+    {"engine check", "r = run(c='bratu', NCOL=9)\n", "t.auto:1: run: NCOL", CABLE_ERR_INPUT},
+    {"missing constants file", "r = run(e='bratu', c='missing')\n", "t.auto:1: run: " REPLAY_DIR "/c.missing: ", CABLE_ERR_IO},
+    {"missing files for loadbd", "x = loadbd('nothing')\n", "t.auto:1: loadbd: " REPLAY_DIR "/s.nothing: ", CABLE_ERR_IO},
+  };
+  for (size_t i = 0; i < sizeof theirs / sizeof theirs[0]; i++) {
+    char *log = NULL, buf[1200], d[200];
+    cable_error err;
+    int rc = replay(NULL, theirs[i].text, &log, &err);
+    free(log);
+    cable_error_format(&err, buf, sizeof buf);
+    snprintf(d, sizeof d, "engine host, %s: status %s", theirs[i].what, cable_status_name(theirs[i].status));
+    test_int(d, rc, theirs[i].status);
+    int ok = strncmp(buf, theirs[i].head, strlen(theirs[i].head)) == 0;
+    if (!ok) printf("  got: %s\n", buf);
+    snprintf(d, sizeof d, "engine host, %s: '%s...'", theirs[i].what, theirs[i].head);
+    test_true(d, ok);
+  }
+}
+
+int main(int argc, char **argv)
+{
+  (void)argc;
+  /* BUILD/tests/test_script: plug-ins are in BUILD/plugins */
+  const char *t = strstr(argv[0], "/tests/");
+  if (t && t > argv[0]) snprintf(plugin_dir, sizeof plugin_dir, "%.*s/plugins", (int)(t - argv[0]), argv[0]);
+  /* e='path.so' is relative to the run directory, like c=: use an absolute path */
+  char cwd[1024], joined[sizeof cwd + sizeof plugin_dir + 2];
+  if (plugin_dir[0] != '/' && getcwd(cwd, sizeof cwd)) {
+    snprintf(joined, sizeof joined, "%s/%s", cwd, plugin_dir + (strncmp(plugin_dir, "./", 2) == 0 ? 2 : 0));
+    if (strlen(joined) < sizeof plugin_dir) memcpy(plugin_dir, joined, strlen(joined) + 1);
+  }
   test_knot_script();
   test_selection_and_iteration();
   test_python_subset();
   test_errors();
   test_value_api();
+  test_engine_script();
+  test_engine_errors();
   return test_summary();
 }

@@ -1,0 +1,853 @@
+/* The engine host: AUTO-07p's script commands on cable's continuation engine,
+ * constants parser and b./s./d. files.  Results live in memory
+ * (script_host_store.c); files are written only by sv=, ap=, save, and
+ * merge/relabel of file names. */
+#include "script_host_cable.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include "aufile.h"
+#include "braid_problems.h"
+#include "cable_cont.h"
+#include "cable_status.h"
+#include "constants_parse.h"
+#include "script_host_impl.h"
+#include "test_problems.h"
+
+void cable_replay_options_init(cable_replay_options *o)
+{
+  memset(o, 0, sizeof *o);
+}
+
+static FILE *rp_log(const cable_replay *r) { return r->opt.log ? r->opt.log : stdout; }
+
+static int file_exists(const char *path)
+{
+  struct stat st;
+  return stat(path, &st) == 0 && S_ISREG(st.st_mode);
+}
+
+/* ---- problems ---------------------------------------------------------------- */
+
+typedef struct rp_problem {
+  const cable_problem *pb;
+  int user;   /* from opt.problems: released after use */
+} rp_problem;
+
+static void problem_release(cable_replay *r, rp_problem *p)
+{
+  if (p->user && r->opt.problems && r->opt.problems->release)
+    r->opt.problems->release(r->opt.problems->ctx, p->pb);
+  p->pb = NULL;
+  p->user = 0;
+}
+
+/* A plug-in for e=NAME: NAME.so (or NAME itself when it ends in .so), opened
+ * once per session. */
+static int plugin_problem(cable_replay *r, const char *e, const cable_problem **pb, cable_error *err)
+{
+  for (int i = 0; i < r->nplugins; i++)
+    if (strcmp(r->plugin_name[i], e) == 0) {
+      *pb = cable_plugin_problem(r->plugin[i]);
+      return 0;
+    }
+  char path[1024];
+  size_t n = strlen(e);
+  const char *dir = r->opt.dir && r->opt.dir[0] ? r->opt.dir : NULL;
+  int has_so = n > 3 && strcmp(e + n - 3, ".so") == 0;
+  if (dir && e[0] != '/') snprintf(path, sizeof path, "%s/%s%s", dir, e, has_so ? "" : ".so");
+  else snprintf(path, sizeof path, "%s%s", e, has_so ? "" : ".so");
+  if (!has_so && !file_exists(path)) return CABLE_ERR_NOTFOUND;
+  if (r->nplugins == RP_MAX_PLUGINS)
+    return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, e, "more than %d plug-ins in one session", RP_MAX_PLUGINS);
+  cable_plugin *p = cable_plugin_open(path, pb, err);
+  if (!p) return err && err->status ? err->status : CABLE_ERR_PLUGIN;
+  snprintf(r->plugin_name[r->nplugins], sizeof r->plugin_name[0], "%s", e);
+  r->plugin[r->nplugins++] = p;
+  return 0;
+}
+
+/* The problem for e=NAME.  c NULL: only its names are needed. */
+static int find_problem(cable_replay *r, const char *e, const cable_constants *c, int from_stpnt,
+                        rp_problem *out, cable_error *err)
+{
+  out->pb = NULL;
+  out->user = 0;
+  if (!e[0])
+    return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, "e", "no problem given (e='NAME' in the call or the constants file)");
+  const cable_replay_problems *up = r->opt.problems;
+  if (up && up->find) {
+    int rc = up->find(up->ctx, e, c, from_stpnt, &out->pb, err);
+    if (rc == 0) {
+      out->user = 1;
+      return 0;
+    }
+    if (rc != CABLE_ERR_NOTFOUND) return rc;
+  }
+  static const struct {
+    const char *name;
+    const cable_problem *(*get)(void);
+  } tests[] = {{"bratu", cable_testproblem_bratu},
+               {"elastica", cable_testproblem_elastica},
+               {"layer", cable_testproblem_layer},
+               {"stiff", cable_testproblem_stiff}};
+  for (size_t i = 0; i < sizeof tests / sizeof tests[0]; i++)
+    if (strcmp(e, tests[i].name) == 0) {
+      out->pb = tests[i].get();
+      return 0;
+    }
+  const cable_problem *braid = braid_problem_find(e);
+  if (braid) {
+    if (c && from_stpnt)
+      return cable_error_set(err, CABLE_ERR_UNSUPPORTED, NULL, 0, "e",
+                             "'%s' from STPNT needs prepared starting parameters, which this host does not "
+                             "have: restart from a stored solution (run(sol) or IRS with s=)",
+                             e);
+    out->pb = braid;   /* params NULL: valid for restarts (braid_problems.h) */
+    return 0;
+  }
+  int rc = plugin_problem(r, e, &out->pb, err);
+  if (rc == CABLE_ERR_NOTFOUND)
+    return cable_error_set(err, CABLE_ERR_NOTFOUND, NULL, 0, "e",
+                           "unknown problem '%s' (not a built-in problem, and no %s.so plug-in)", e, e);
+  return rc;
+}
+
+/* ---- handles ------------------------------------------------------------------- */
+
+static int wrap_result(cable_replay *r, rp_result *res, script_value *out, cable_error *err)
+{
+  if (!res) return cable_error_set(err, CABLE_ERR_ALLOC, NULL, 0, NULL, "out of memory");
+  int rc = script_handle_new(out, &r->host, SCRIPT_HANDLE_RESULT, res);
+  return rc ? cable_error_set(err, rc, NULL, 0, NULL, "out of memory") : 0;
+}
+
+static int wrap_solution(cable_replay *r, rp_branch *b, int isol, script_value *out, cable_error *err)
+{
+  rp_sol *s = malloc(sizeof *s);
+  if (!s) return cable_error_set(err, CABLE_ERR_ALLOC, NULL, 0, NULL, "out of memory");
+  b->refs++;
+  s->br = b;
+  s->isol = isol;
+  int rc = script_handle_new(out, &r->host, SCRIPT_HANDLE_SOLUTION, s);
+  return rc ? cable_error_set(err, rc, NULL, 0, NULL, "out of memory") : 0;
+}
+
+static void rp_release(void *ctx, void *ptr, int kind)
+{
+  (void)ctx;
+  if (kind == SCRIPT_HANDLE_RESULT) {
+    rp_result_free(ptr);
+  } else {
+    rp_sol *s = ptr;
+    rp_branch_decref(s->br);
+    free(s);
+  }
+}
+
+/* The handle's result, or NULL (with err) when it is something else. */
+static const rp_result *as_result(const script_value *v, const char *what, cable_error *err)
+{
+  if (script_handle_kind(v) == SCRIPT_HANDLE_RESULT) return script_handle_ptr(v);
+  cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, NULL, "%s needs a result, got a %s", what, script_type_name(v));
+  return NULL;
+}
+
+/* ---- run setup: constants, problem, start ----------------------------------------- */
+
+typedef struct rp_setup {
+  cable_constants c;
+  cable_names names;
+  char e[CABLE_NAME_MAX];
+  const cable_solution *start;   /* borrowed from a branch or from sf */
+  cable_sfile *sf;               /* owned: s.NAME of a string start or s= */
+  char sv[CABLE_NAME_MAX], ap[CABLE_NAME_MAX];
+} rp_setup;
+
+static void setup_free(rp_setup *s)
+{
+  cable_sfile_free(s->sf);
+  s->sf = NULL;
+}
+
+/* The problem's parameter names, for constants that name parameters.  A
+ * problem that cannot be had (unknown name, rejected plug-in) is reported
+ * here, before its constants are read.  Release p after use. */
+static int problem_names(cable_replay *r, const char *e, rp_problem *p, const char *const **parnames,
+                         int *npar, cable_error *err)
+{
+  *parnames = NULL;
+  *npar = 0;
+  p->pb = NULL;
+  p->user = 0;
+  if (!e[0]) return 0;
+  int rc = find_problem(r, e, NULL, 0, p, err);
+  if (rc) return rc;
+  *parnames = p->pb->parnames;
+  *npar = p->pb->npar;
+  return 0;
+}
+
+/* The problem a constants file names (e = 'NAME'), found before parsing it,
+ * because the parser needs the problem's parameter names to read ICP=['T'].
+ * A light scan: statements start a line or follow ',' or ';'; comments are
+ * skipped.  Leaves e unchanged when there is none (the parser then says what
+ * it cannot resolve). */
+static void peek_problem_name(const char *path, char *e, size_t len)
+{
+  FILE *f = fopen(path, "r");
+  if (!f) return;
+  char line[1024];
+  while (fgets(line, sizeof line, f)) {
+    char *hash = strpbrk(line, "#!");
+    if (hash) *hash = '\0';
+    for (char *p = line; *p; p++) {
+      if (p != line && p[-1] != ',' && p[-1] != ';' && p[-1] != ' ' && p[-1] != '\t') continue;
+      if (*p != 'e') continue;
+      char *q = p + 1;
+      while (*q == ' ' || *q == '\t') q++;
+      if (*q != '=') continue;
+      q++;
+      while (*q == ' ' || *q == '\t') q++;
+      if (*q != '\'' && *q != '"') continue;
+      char quote = *q++, *end = strchr(q, quote);
+      if (!end || end == q || (size_t)(end - q) >= len) continue;
+      snprintf(e, len, "%.*s", (int)(end - q), q);
+      fclose(f);
+      return;
+    }
+  }
+  fclose(f);
+}
+
+static int read_constants_file(cable_replay *r, const char *name, rp_setup *s, int required,
+                               cable_error *err)
+{
+  char path[1024];
+  rp_path(r, "c", name, path, sizeof path);
+  if (!required && !file_exists(path)) return 0;
+  if (!s->e[0]) peek_problem_name(path, s->e, sizeof s->e);
+  const char *const *parnames;
+  int npar;
+  rp_problem p;
+  int rc = problem_names(r, s->e, &p, &parnames, &npar, err);
+  if (rc) return rc;
+  rc = cable_constants_parse_file(path, &s->c, &s->names, parnames, npar, err);
+  /* the file's names win; the problem names the rest (sol['lambda']) */
+  if (!rc && p.pb) cable_names_fill(&s->names, p.pb->parnames, p.pb->npar, p.pb->unames, p.pb->ndim);
+  problem_release(r, &p);
+  if (!rc && s->c.e[0] && !s->e[0]) {
+    snprintf(s->e, sizeof s->e, "%s", s->c.e);
+    rc = problem_names(r, s->e, &p, &parnames, &npar, err);
+    if (!rc) cable_names_fill(&s->names, p.pb->parnames, p.pb->npar, p.pb->unames, p.pb->ndim);
+    problem_release(r, &p);
+  }
+  return rc;
+}
+
+static int read_solutions_file(cable_replay *r, const char *name, rp_setup *s, cable_error *err)
+{
+  char path[1024];
+  rp_path(r, "s", name, path, sizeof path);
+  cable_sfile_free(s->sf);
+  s->sf = cable_sfile_read(path, err);
+  return s->sf ? 0 : (err && err->status ? err->status : CABLE_ERR_IO);
+}
+
+/* KEY=VALUE text for the constants parser: Python's repr is its syntax. */
+static int kw_text(const script_kwarg *k, char *buf, size_t len, cable_error *err)
+{
+  const script_value *v = &k->value;
+  char val[4096];
+  switch (v->type) {
+  case SCRIPT_BOOL: snprintf(val, sizeof val, "%d", v->num != 0); break;
+  case SCRIPT_NUMBER:
+  case SCRIPT_LIST:
+  case SCRIPT_DICT: script_value_format(v, NULL, val, sizeof val); break;
+  case SCRIPT_STRING: {
+    const char *s = script_string_chars(v);
+    char q = strchr(s, '\'') ? '"' : '\'';
+    if (strchr(s, '\'') && strchr(s, '"'))
+      return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, k->name, "a value cannot contain both quote characters");
+    snprintf(val, sizeof val, "%c%s%c", q, s, q);
+    break;
+  }
+  default:
+    return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, k->name, "a %s is not a constants value",
+                           script_type_name(v));
+  }
+  if ((size_t)snprintf(buf, len, "%s=%s", k->name, val) >= len)
+    return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, k->name, "value too long");
+  return 0;
+}
+
+static int kw_string(const script_kwarg *k, char *dst, size_t len, cable_error *err)
+{
+  if (k->value.type != SCRIPT_STRING || script_string_len(&k->value) == 0 ||
+      script_string_len(&k->value) >= len)
+    return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, k->name, "must be a non-empty name, got a %s",
+                           script_type_name(&k->value));
+  snprintf(dst, len, "%s", script_string_chars(&k->value));
+  return 0;
+}
+
+/* The last labelled solution of a result. */
+static const cable_solution *result_last(const rp_result *res)
+{
+  for (int k = res->nbr - 1; k >= 0; k--)
+    if (res->br[k]->nsol > 0) return res->br[k]->sol[res->br[k]->nsol - 1];
+  return NULL;
+}
+
+/* A solution of a result by IRS (a label, or 'BP1'-style in irs_name). */
+static const cable_solution *result_irs(const rp_result *res, const cable_constants *c)
+{
+  int type = 0, nth = 0;
+  if (c->irs_name[0] && cable_label_spec_parse(c->irs_name, &type, &nth) != 0) return NULL;
+  for (int k = 0; k < res->nbr; k++)
+    for (int i = 0; i < res->br[k]->nsol; i++) {
+      const cable_solution *s = res->br[k]->sol[i];
+      if (c->irs_name[0] ? (cable_type_base(s->itp) == type && --nth == 0) : s->lab == c->irs) return s;
+    }
+  return NULL;
+}
+
+/* AUTO's load/run argument handling: the base constants from the data (or
+ * the runner), then c=, e=, s=, sv=, ap=, then every other keyword as an
+ * override, then the start. */
+static int build_setup(cable_replay *r, const script_value *data, const script_kwargs *kw,
+                       rp_setup *s, cable_error *err)
+{
+  memset(s, 0, sizeof *s);
+  const rp_result *res = NULL;
+  int rc = 0;
+  if (data && data->type == SCRIPT_HANDLE) {
+    const rp_branch *b;
+    if (script_handle_kind(data) == SCRIPT_HANDLE_SOLUTION) {
+      const rp_sol *so = script_handle_ptr(data);
+      b = so->br;
+      s->start = b->sol[so->isol];
+    } else {
+      res = script_handle_ptr(data);
+      if (res->nbr == 0) return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, NULL, "the result is empty");
+      b = res->br[res->nbr - 1];
+    }
+    s->c = b->c;
+    s->names = b->names;
+    snprintf(s->e, sizeof s->e, "%s", b->e);
+    /* a stored solution's IRS is history: AUTO resets it */
+    s->c.irs = 0;
+    s->c.irs_name[0] = '\0';
+  } else {
+    s->c = r->cur;
+    s->names = r->cur_names;
+    snprintf(s->e, sizeof s->e, "%s", r->cur_e);
+  }
+  const script_kwarg *ke = NULL, *kc = NULL, *ks = NULL;
+  for (int i = 0; kw && i < kw->n && !rc; i++) {
+    const script_kwarg *k = &kw->items[i];
+    if (strcmp(k->name, "e") == 0) ke = k;
+    else if (strcmp(k->name, "c") == 0) kc = k;
+    else if (strcmp(k->name, "s") == 0) ks = k;
+    else if (strcmp(k->name, "sv") == 0) rc = kw_string(k, s->sv, sizeof s->sv, err);
+    else if (strcmp(k->name, "ap") == 0) rc = kw_string(k, s->ap, sizeof s->ap, err);
+  }
+  if (!rc && ke) rc = kw_string(ke, s->e, sizeof s->e, err);
+  if (!rc && data && data->type == SCRIPT_STRING) {
+    /* run('name'): c.NAME (when present) and s.NAME, as AUTO */
+    const char *name = script_string_chars(data);
+    if (!ke) s->e[0] = '\0';
+    rc = read_constants_file(r, name, s, 0, err);
+    if (!rc) rc = read_solutions_file(r, name, s, err);
+    if (!rc && !s->e[0]) snprintf(s->e, sizeof s->e, "%s", name);
+  }
+  if (!rc && kc) {
+    char name[CABLE_NAME_MAX];
+    rc = kw_string(kc, name, sizeof name, err);
+    if (!rc) rc = read_constants_file(r, name, s, 1, err);
+    if (!rc && ke) snprintf(s->e, sizeof s->e, "%s", script_string_chars(&ke->value));
+  }
+  if (!rc && ks) {
+    char name[CABLE_NAME_MAX];
+    rc = kw_string(ks, name, sizeof name, err);
+    if (!rc) rc = read_solutions_file(r, name, s, err);
+  }
+  if (rc) return rc;
+  const char *const *parnames;
+  int npar;
+  rp_problem p;
+  rc = problem_names(r, s->e, &p, &parnames, &npar, err);
+  for (int i = 0; kw && i < kw->n && !rc; i++) {
+    const script_kwarg *k = &kw->items[i];
+    if (k == ke || k == kc || k == ks || strcmp(k->name, "sv") == 0 || strcmp(k->name, "ap") == 0) continue;
+    char text[4200];
+    rc = kw_text(k, text, sizeof text, err);
+    if (!rc) rc = cable_constants_parse_override(text, &s->c, &s->names, parnames, npar, err);
+  }
+  problem_release(r, &p);
+  if (rc) return rc;
+  snprintf(s->c.e, sizeof s->c.e, "%s", s->e);
+  int irs_given = s->c.irs != 0 || s->c.irs_name[0];
+  if (res) {
+    s->start = irs_given ? result_irs(res, &s->c) : result_last(res);
+    if (!s->start)
+      return cable_error_set(err, CABLE_ERR_NOTFOUND, NULL, 0, "IRS",
+                             irs_given ? "no such label in the result" : "the result has no labelled solution");
+  } else if (!s->start && s->sf && irs_given) {
+    if ((rc = cable_sfile_resolve_irs(s->sf, &s->c, err))) return rc;
+    s->start = cable_sfile_find_label(s->sf, s->c.irs);
+  } else if (!s->start && irs_given) {
+    return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, "IRS",
+                           "a restart needs solutions: give a result, a solution, a name or s='NAME'");
+  }
+  return 0;
+}
+
+/* ---- run ------------------------------------------------------------------------- */
+
+typedef struct collector {
+  rp_branch *b;
+  FILE *diag;
+  int rc;
+} collector;
+
+static int collect_point(void *ctx, const cable_point *pt)
+{
+  collector *c = ctx;
+  /* a labelled point's solution comes next, with the same point: add both then */
+  if (pt->lab > 0) return 0;
+  if (!c->rc) c->rc = rp_branch_add(c->b, pt, NULL);
+  return c->rc;
+}
+
+static int collect_solution(void *ctx, const cable_point *pt, const cable_solution *sol)
+{
+  collector *c = ctx;
+  if (!c->rc) c->rc = rp_branch_add(c->b, pt, sol);
+  return c->rc;
+}
+
+static void collect_diag(void *ctx, const char *line)
+{
+  collector *c = ctx;
+  if (c->diag) fprintf(c->diag, "%s\n", line);
+}
+
+static const char *par_name(const cable_names *n, int k, char *buf, size_t len)
+{
+  if (k >= 0 && k < CABLE_NAMES_MAX && n->par[k][0]) snprintf(buf, len, "%s", n->par[k]);
+  else snprintf(buf, len, "PAR(%d)", k + 1);
+  return buf;
+}
+
+/* AUTO prints every labelled point of a run; so does the host. */
+static void log_branch(const cable_replay *r, const rp_branch *b, int status, const char *why)
+{
+  FILE *f = rp_log(r);
+  char nm[64];
+  for (int i = 0; i < b->npt; i++) {
+    const cable_point *p = &b->pts[i].pt;
+    if (p->lab <= 0) continue;
+    int k = p->nicp > 0 ? p->icp[0] : 0;
+    const char *ty = cable_type_name(p->itp);
+    fprintf(f, "  BR %4d  PT %5d  TY %-2s  LAB %4d  %s = %.10g  L2-NORM = %.10g\n", p->ibr, p->pt,
+            ty[0] ? ty : "-", p->lab, par_name(&b->names, k, nm, sizeof nm), p->par[k], p->l2norm);
+  }
+  fprintf(f, "  branch %d: %d points, %d labelled; end: %s%s%s\n", b->ibr, b->npt, b->nsol,
+          cable_status_message(status), why && why[0] ? ": " : "", why ? why : "");
+}
+
+static int engine_run(cable_replay *r, rp_setup *s, rp_branch **out, cable_error *err)
+{
+  *out = NULL;
+  rp_problem prob;
+  int rc = find_problem(r, s->e, &s->c, s->start == NULL, &prob, err);
+  if (rc) return rc;
+  const cable_problem *pb = prob.pb;
+  cable_names_fill(&s->names, pb->parnames, pb->npar, pb->unames, pb->ndim);
+  int st = 0;
+  cable_cont *cc = cable_cont_alloc(pb, &s->c, &st);
+  if (!cc) {
+    problem_release(r, &prob);
+    return cable_error_set(err, CABLE_ERR_ALLOC, NULL, 0, NULL, "out of memory");
+  }
+  if (st == 0) st = cable_cont_set_start(cc, s->start);
+  if (st) {
+    cable_error_set(err, st, NULL, 0, NULL, "%s", cable_cont_error(cc)[0] ? cable_cont_error(cc) : cable_status_message(st));
+    cable_cont_free(cc);
+    problem_release(r, &prob);
+    return st;
+  }
+  int ibr = ++r->next_branch;
+  collector col = {rp_branch_alloc(ibr, &s->c, &s->names, s->e), r->opt.diag, 0};
+  if (!col.b) {
+    cable_cont_free(cc);
+    problem_release(r, &prob);
+    return cable_error_set(err, CABLE_ERR_ALLOC, NULL, 0, NULL, "out of memory");
+  }
+  cable_sink sink = {&col, collect_point, collect_solution, collect_diag};
+  int next = r->last_label + 1;
+  st = cable_cont_run(cc, &sink, ibr, r->last_label + 1, &next);
+  if (next - 1 > r->last_label) r->last_label = next - 1;
+  char why[512];
+  snprintf(why, sizeof why, "%s", st < 0 ? cable_cont_error(cc) : "");
+  cable_cont_free(cc);
+  problem_release(r, &prob);
+  if (col.rc) {
+    rp_branch_decref(col.b);
+    return cable_error_set(err, CABLE_ERR_ALLOC, NULL, 0, NULL, "out of memory keeping the branch");
+  }
+  if (st < 0 && col.b->npt == 0) {
+    rp_branch_decref(col.b);
+    return cable_error_set(err, st, NULL, 0, NULL, "no point converged: %s", why[0] ? why : cable_status_message(st));
+  }
+  /* like AUTO, a branch that ends abnormally (MX) is still a result */
+  log_branch(r, col.b, st, why);
+  *out = col.b;
+  return 0;
+}
+
+/* AUTO's runner keeps the constants of the last run, except the one-off
+ * start and save settings. */
+static void remember(cable_replay *r, const rp_setup *s)
+{
+  r->cur = s->c;
+  r->cur.irs = 0;
+  r->cur.irs_name[0] = '\0';
+  r->cur_names = s->names;
+  snprintf(r->cur_e, sizeof r->cur_e, "%s", s->e);
+}
+
+static int rp_run(void *ctx, const script_value *start, const script_kwargs *kw, script_value *out,
+                  cable_error *err)
+{
+  cable_replay *r = ctx;
+  rp_setup s;
+  rp_branch *b = NULL;
+  int rc = build_setup(r, start, kw, &s, err);
+  if (!rc) rc = engine_run(r, &s, &b, err);
+  rp_result *res = NULL;
+  if (!rc) {
+    remember(r, &s);
+    res = rp_result_alloc(1);
+    if (res) res->br[0] = b;
+    else rp_branch_decref(b);
+    rc = wrap_result(r, res, out, err);
+  }
+  if (!rc && s.sv[0]) rc = rp_result_write(r, res, s.sv, 0, err);
+  if (!rc && s.ap[0]) rc = rp_result_write(r, res, s.ap, 1, err);
+  if (!rc && (s.sv[0] || s.ap[0]))
+    fprintf(rp_log(r), "  %s b.%s, s.%s, d.%s\n", s.sv[0] ? "saved to" : "appended to", s.sv[0] ? s.sv : s.ap,
+            s.sv[0] ? s.sv : s.ap, s.sv[0] ? s.sv : s.ap);
+  setup_free(&s);
+  return rc;
+}
+
+/* ---- label selection, iteration, '+' ---------------------------------------------- */
+
+static int rp_select(void *ctx, const script_value *result, const script_value *spec, script_value *out,
+                     cable_error *err)
+{
+  cable_replay *r = ctx;
+  const rp_result *res = as_result(result, "label selection", err);
+  if (!res) return CABLE_ERR_INPUT;
+  long lab = 0;
+  int type = 0, nth = 0, list = 0;
+  char key[64] = "";
+  if (!spec) {
+    list = 1;
+  } else if (spec->type == SCRIPT_NUMBER) {
+    if (script_value_to_long(spec, &lab) || lab <= 0)
+      return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, NULL, "a label number must be a positive integer");
+    snprintf(key, sizeof key, "%ld", lab);
+  } else {
+    const char *t = script_string_chars(spec);
+    snprintf(key, sizeof key, "%s", t);
+    if (cable_label_spec_parse(t, &type, &nth) != 0) {
+      type = cable_type_code(t);
+      list = 1;
+      if (!type)
+        return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, key,
+                               "not a label: use a number, a type (BP, LP, UZ, EP, MX) or a type and count (BP1)");
+    }
+  }
+  int rc = list ? script_list_new(out) : 0;
+  for (int k = 0; k < res->nbr && !rc; k++)
+    for (int i = 0; i < res->br[k]->nsol && !rc; i++) {
+      const cable_solution *s = res->br[k]->sol[i];
+      int match = !spec || (lab ? s->lab == lab : cable_type_base(s->itp) == type);
+      if (!match || (!list && nth > 1 && --nth > 0)) continue;
+      if (!list) return wrap_solution(r, res->br[k], i, out, err);
+      script_value v;
+      rc = wrap_solution(r, res->br[k], i, &v, err);
+      if (!rc && script_list_append(out, v)) rc = cable_error_set(err, CABLE_ERR_ALLOC, NULL, 0, NULL, "out of memory");
+    }
+  if (!list && !rc) return cable_error_set(err, CABLE_ERR_NOTFOUND, NULL, 0, key, "no such label in the result");
+  return rc;
+}
+
+static int rp_add(void *ctx, const script_value *a, const script_value *b, script_value *out, cable_error *err)
+{
+  cable_replay *r = ctx;
+  const rp_result *x = as_result(a, "'+'", err), *y = x ? as_result(b, "'+'", err) : NULL;
+  if (!x || !y) return CABLE_ERR_INPUT;
+  rp_result *res = rp_result_alloc(x->nbr + y->nbr);
+  if (!res) return cable_error_set(err, CABLE_ERR_ALLOC, NULL, 0, NULL, "out of memory");
+  for (int k = 0; k < x->nbr + y->nbr; k++) {
+    rp_branch *br = k < x->nbr ? x->br[k] : y->br[k - x->nbr];
+    br->refs++;
+    res->br[k] = br;
+  }
+  return wrap_result(r, res, out, err);
+}
+
+static int branch_result(cable_replay *r, rp_branch *b, script_value *out, cable_error *err)
+{
+  rp_result *res = rp_result_alloc(1);
+  if (res) {
+    b->refs++;
+    res->br[0] = b;
+  }
+  return wrap_result(r, res, out, err);
+}
+
+static int rp_items(void *ctx, const script_value *h, script_value *list, cable_error *err)
+{
+  cable_replay *r = ctx;
+  const rp_result *res = as_result(h, "iteration", err);
+  if (!res) return CABLE_ERR_INPUT;
+  int rc = script_list_new(list);
+  for (int k = 0; k < res->nbr && !rc; k++) {
+    script_value v;
+    rc = branch_result(r, res->br[k], &v, err);
+    if (!rc && script_list_append(list, v)) rc = cable_error_set(err, CABLE_ERR_ALLOC, NULL, 0, NULL, "out of memory");
+  }
+  return rc;
+}
+
+static int rp_getitem(void *ctx, const script_value *h, const script_value *key, script_value *out,
+                      cable_error *err)
+{
+  cable_replay *r = ctx;
+  long i;
+  if (script_handle_kind(h) == SCRIPT_HANDLE_RESULT) {
+    const rp_result *res = script_handle_ptr(h);
+    if (script_value_to_long(key, &i)) return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, NULL, "a branch index must be an integer");
+    if (i < 0) i += res->nbr;
+    if (i < 0 || i >= res->nbr)
+      return cable_error_set(err, CABLE_ERR_NOTFOUND, NULL, 0, NULL, "branch index out of range (the result has %d)", res->nbr);
+    return branch_result(r, res->br[i], out, err);
+  }
+  const rp_sol *so = script_handle_ptr(h);
+  const cable_solution *s = so->br->sol[so->isol];
+  const char *k = script_string_chars(key);
+  if (!k) return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, NULL, "a solution is indexed by a name ('T', 'LAB', 'PAR(3)')");
+  int idx = -1;
+  if (strcmp(k, "LAB") == 0) *out = script_integer(s->lab);
+  else if (strcmp(k, "BR") == 0) *out = script_integer(s->ibr);
+  else if (strcmp(k, "PT") == 0) *out = script_integer(s->ntot);
+  else if (strcmp(k, "TY") == 0) return script_string_new(out, cable_type_name(s->itp), strlen(cable_type_name(s->itp)));
+  else if (sscanf(k, "PAR(%d)", &idx) == 1 && idx >= 1 && idx <= s->npar) *out = script_number(s->par[idx - 1]);
+  else if ((idx = cable_names_par_index(&so->br->names, k, NULL, 0)) >= 0 && idx < s->npar) *out = script_number(s->par[idx]);
+  else return cable_error_set(err, CABLE_ERR_NOTFOUND, NULL, 0, k, "no such parameter (names: the problem's parnames, PAR(k), LAB, BR, PT, TY)");
+  return 0;
+}
+
+static void rp_describe(void *ctx, const script_value *h, char *buf, size_t len)
+{
+  (void)ctx;
+  if (script_handle_kind(h) == SCRIPT_HANDLE_RESULT) {
+    const rp_result *res = script_handle_ptr(h);
+    int nsol = 0;
+    for (int k = 0; k < res->nbr; k++) nsol += res->br[k]->nsol;
+    snprintf(buf, len, "<result: %d branch%s, %d labelled solution%s>", res->nbr, res->nbr == 1 ? "" : "es", nsol,
+             nsol == 1 ? "" : "s");
+  } else {
+    const rp_sol *so = script_handle_ptr(h);
+    const cable_solution *s = so->br->sol[so->isol];
+    const char *ty = cable_type_name(s->itp);
+    snprintf(buf, len, "<solution %s label %d, branch %d>", ty[0] ? ty : "-", s->lab, s->ibr);
+  }
+}
+
+static void rp_print(void *ctx, const char *line)
+{
+  cable_replay *r = ctx;
+  fprintf(rp_log(r), "%s\n", line);
+}
+
+/* ---- files: save, load, merge, relabel, clean ------------------------------------------ */
+
+static int rp_save(void *ctx, const script_value *data, const char *name, cable_error *err)
+{
+  cable_replay *r = ctx;
+  int rc;
+  if (script_handle_kind(data) == SCRIPT_HANDLE_SOLUTION) {
+    /* one solution: a one-point result */
+    const rp_sol *so = script_handle_ptr(data);
+    rp_branch *b = rp_branch_alloc(so->br->ibr, &so->br->c, &so->br->names, so->br->e);
+    const cable_point *pt = rp_sol_point(so->br, so->isol);
+    rp_result *res = rp_result_alloc(1);
+    rc = b && pt && res ? rp_branch_add(b, pt, so->br->sol[so->isol]) : CABLE_ERR_ALLOC;
+    if (res) res->br[0] = b;
+    else rp_branch_decref(b);
+    if (!rc) rc = rp_result_write(r, res, name, 0, err);
+    else cable_error_set(err, rc, NULL, 0, NULL, "out of memory");
+    rp_result_free(res);
+  } else {
+    rc = rp_result_write(r, script_handle_ptr(data), name, 0, err);
+  }
+  if (!rc) fprintf(rp_log(r), "  saved to b.%s, s.%s, d.%s\n", name, name, name);
+  return rc;
+}
+
+/* Branch numbers and labels of files read in: new runs continue after them. */
+static void note_result(cable_replay *r, const rp_result *res)
+{
+  for (int k = 0; k < res->nbr; k++) {
+    if (res->br[k]->ibr > r->next_branch) r->next_branch = res->br[k]->ibr;
+    for (int i = 0; i < res->br[k]->nsol; i++)
+      if (res->br[k]->sol[i]->lab > r->last_label) r->last_label = res->br[k]->sol[i]->lab;
+  }
+}
+
+static int read_named(cable_replay *r, const char *name, rp_result **res, cable_error *err)
+{
+  rp_setup s;
+  memset(&s, 0, sizeof s);
+  s.c = r->cur;
+  s.names = r->cur_names;
+  snprintf(s.e, sizeof s.e, "%s", r->cur_e);
+  int rc = read_constants_file(r, name, &s, 0, err);
+  if (!rc) rc = rp_result_read(r, name, &s.c, &s.names, s.e, res, err);
+  if (!rc) note_result(r, *res);
+  return rc;
+}
+
+static int rp_load(void *ctx, int what, const script_value *data, const script_kwargs *kw, script_value *out,
+                   cable_error *err)
+{
+  cable_replay *r = ctx;
+  if (what == SCRIPT_LOAD_RESULT) {
+    if (!data || data->type != SCRIPT_STRING)
+      return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, NULL, "loadbd needs a name (files b.NAME, s.NAME)");
+    if (kw && kw->n) return cable_error_set(err, CABLE_ERR_UNSUPPORTED, NULL, 0, kw->items[0].name, "loadbd takes no keywords");
+    rp_result *res = NULL;
+    int rc = read_named(r, script_string_chars(data), &res, err);
+    return rc ? rc : wrap_result(r, res, out, err);
+  }
+  /* load(...): a solution with its constants; also the runner's new state */
+  rp_setup s;
+  int rc = build_setup(r, data, kw, &s, err);
+  if (!rc && s.start) {
+    rp_branch *b = rp_branch_alloc(s.start->ibr, &s.c, &s.names, s.e);
+    cable_point pt;
+    memset(&pt, 0, sizeof pt);
+    pt.ibr = s.start->ibr;
+    pt.pt = s.start->ntot;
+    pt.itp = s.start->itp;
+    pt.lab = s.start->lab;
+    pt.ndim = s.start->ndim;
+    pt.npar = s.start->npar;
+    pt.nicp = s.c.nicp > 0 ? s.c.nicp : s.start->nfpr;
+    pt.icp = s.c.nicp > 0 ? s.c.icp : s.start->icp;
+    pt.par = s.start->par;
+    rc = b ? rp_branch_add(b, &pt, s.start) : CABLE_ERR_ALLOC;
+    if (!rc) rc = wrap_solution(r, b, 0, out, err);
+    else cable_error_set(err, rc, NULL, 0, NULL, "out of memory");
+    rp_branch_decref(b);
+  }
+  if (!rc) remember(r, &s);
+  setup_free(&s);
+  return rc;
+}
+
+static int transform(cable_replay *r, const script_value *data, script_value *out, cable_error *err,
+                     int (*fn)(const rp_result *, rp_result **))
+{
+  rp_result *res = NULL;
+  if (data->type == SCRIPT_STRING) {   /* files rewritten in place */
+    const char *name = script_string_chars(data);
+    int rc = read_named(r, name, &res, err);
+    rp_result *t = NULL;
+    if (!rc && (rc = fn(res, &t))) cable_error_set(err, rc, NULL, 0, NULL, "out of memory");
+    if (!rc) rc = rp_result_write(r, t, name, 0, err);
+    rp_result_free(res);
+    rp_result_free(t);
+    return rc;
+  }
+  const rp_result *in = as_result(data, "merge/relabel", err);
+  if (!in) return CABLE_ERR_INPUT;
+  int rc = fn(in, &res);
+  if (rc) return cable_error_set(err, rc, NULL, 0, NULL, "out of memory");
+  return wrap_result(r, res, out, err);
+}
+
+static int rp_merge(void *ctx, const script_value *data, script_value *out, cable_error *err)
+{
+  return transform(ctx, data, out, err, rp_result_merge);
+}
+
+static int rp_relabel(void *ctx, const script_value *data, script_value *out, cable_error *err)
+{
+  return transform(ctx, data, out, err, rp_result_relabel);
+}
+
+static int rp_clean(void *ctx, cable_error *err)
+{
+  (void)err;
+  fprintf(rp_log(ctx), "  clean: nothing to delete (cable writes no fort.* or object files)\n");
+  return 0;
+}
+
+/* ---- session ---------------------------------------------------------------------- */
+
+cable_replay *cable_replay_alloc(const cable_replay_options *opt)
+{
+  cable_replay *r = calloc(1, sizeof *r);
+  if (!r) return NULL;
+  if (opt) r->opt = *opt;
+  cable_constants_init(&r->cur);
+  cable_names_init(&r->cur_names);
+  script_host *h = &r->host;
+  h->ctx = r;
+  h->run = rp_run;
+  h->select = rp_select;
+  h->add = rp_add;
+  h->items = rp_items;
+  h->getitem = rp_getitem;
+  h->load = rp_load;
+  h->save = rp_save;
+  h->merge = rp_merge;
+  h->relabel = rp_relabel;
+  h->clean = rp_clean;
+  h->describe = rp_describe;
+  h->print = rp_print;
+  h->release = rp_release;
+  return r;
+}
+
+void cable_replay_free(cable_replay *r)
+{
+  if (!r) return;
+  for (int i = 0; i < r->nplugins; i++) cable_plugin_close(r->plugin[i]);
+  free(r);
+}
+
+const script_host *cable_replay_host(cable_replay *r)
+{
+  return &r->host;
+}
+
+int cable_replay_run_file(const char *path, const cable_replay_options *opt, cable_error *err)
+{
+  cable_replay *r = cable_replay_alloc(opt);
+  if (!r) return cable_error_set(err, CABLE_ERR_ALLOC, path, 0, "", "out of memory");
+  int rc = script_run_file(path, &r->host, err);
+  cable_replay_free(r);
+  return rc;
+}
