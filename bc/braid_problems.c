@@ -1,0 +1,92 @@
+/* The braid problem templates, their PVLS, and instances with a start. */
+#include <math.h>
+#include <string.h>
+
+#include "braid_bc.h"
+#include "braid_integrals.h"
+#include "braid_model.h"
+#include "braid_problems.h"
+#include "cable_solution.h"
+#include "cable_status.h"
+
+static const char *const braid_parnames[BP_NPAR] = {
+  "T", "L", "L2", "Ltot", "Delta", "Phi", "w2fix", "B1", "B2", "C1", "C2", "w01", "w02",
+  "eps21", "eps13", "F", "FM", "h", "qnorm", "Ham", "pmin", "dmin", "Lk", "Tw", "Wr", "err"};
+
+static const char *const braid_unames[BR_NDIM] = {
+  "F1", "F2", "F3", "M1", "M2", "M3", "eta", "w2", "w3", "xi1", "T1",
+  "xi2", "T2", "q0", "q1", "q2", "q3", "x1", "y1", "z1", "sigma"};
+
+int braid_pvls(const struct cable_solution *sol, double *par, void *params)
+{
+  (void)params;
+  if (sol == NULL || sol->ndim != BR_NDIM || sol->ntst < 1 || sol->ncol < 1) return -1;
+  braid_material m;
+  braid_material_from_par(par, &m);
+  braid_first_integrals fi;
+  const int st = braid_first_integrals_eval(sol->u, &m, &fi);
+  if (st != 0) return st;
+  const double *u1 = sol->u + (size_t)(cable_solution_npts(sol) - 1) * BR_NDIM;
+  par[BP_F] = sqrt(fi.F2);
+  par[BP_FM] = fi.FM;
+  par[BP_H] = fi.h;
+  par[BP_HAM] = fi.ham;
+  par[BP_QN] = u1[BR_Q0] * u1[BR_Q0] + u1[BR_Q1] * u1[BR_Q1] + u1[BR_Q2] * u1[BR_Q2] +
+               u1[BR_Q3] * u1[BR_Q3] - 1.0;
+  return 0;
+}
+
+#define BRAID_PROBLEM_COMMON                                                           \
+  .abi_version = CABLE_PROBLEM_ABI, .struct_size = sizeof(cable_problem), .ndim = BR_NDIM, \
+  .nint = 0, .npar = BP_NPAR, .parnames = braid_parnames, .unames = braid_unames,       \
+  .func = braid_func, .icnd = NULL, .stpnt = braid_start_stpnt, .pvls = braid_pvls,     \
+  .func_has_jac = 1, .bcnd_has_jac = 1, .icnd_has_jac = 0, .params = NULL
+
+static const cable_problem knot_template = {
+  BRAID_PROBLEM_COMMON,
+  .name = "braid_knot",
+  .description = "closed 2-braid forming a knot (12.3.1-23 + phase omega2(0) = w2fix; "
+                 "free T, L, L2, eps21)",
+  .nbc = BK_NBC,
+  .bcnd = braid_knot_bcnd,
+};
+
+static const cable_problem knot_sym_template = {
+  BRAID_PROBLEM_COMMON,
+  .name = "braid_knot_sym",
+  .description = "S0-symmetric knot: braid_knot + F2(0) = 0 (free T, L, L2, eps21, eps13)",
+  .nbc = BK_SYM_NBC,
+  .bcnd = braid_knot_sym_bcnd,
+};
+
+static const cable_problem link_template = {
+  BRAID_PROBLEM_COMMON,
+  .name = "braid_link",
+  .description = "closed 2-braid forming a two-component link (12.3.24-44; free T, Delta or Phi)",
+  .nbc = BL_NBC,
+  .bcnd = braid_link_bcnd,
+};
+
+const cable_problem *braid_knot_problem(void) { return &knot_template; }
+const cable_problem *braid_knot_sym_problem(void) { return &knot_sym_template; }
+const cable_problem *braid_link_problem(void) { return &link_template; }
+
+const cable_problem *braid_problem_find(const char *name)
+{
+  const cable_problem *const all[] = {&knot_template, &knot_sym_template, &link_template};
+  if (name == NULL) return NULL;
+  for (size_t i = 0; i < sizeof all / sizeof all[0]; i++)
+    if (strcmp(all[i]->name, name) == 0) return all[i];
+  return NULL;
+}
+
+int braid_problem_instance(const char *name, const braid_start_params *sp, cable_problem *out)
+{
+  const cable_problem *tp = braid_problem_find(name);
+  if (tp == NULL) return CABLE_ERR_NOTFOUND;
+  if (out == NULL || (sp != NULL && !sp->ready)) return CABLE_ERR_INPUT;
+  *out = *tp;
+  /* The callbacks only read *sp; params is untyped in the interface. */
+  out->params = (void *)sp;
+  return CABLE_SUCCESS;
+}

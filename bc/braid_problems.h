@@ -1,0 +1,37 @@
+/* The built-in braid problems (AUTO's FUNC/BCND/STPNT/PVLS for the closed
+ * standard 2-braid, paper Sect. 12.3):
+ *   braid_knot      NDIM 21, NBC 24, NINT 0; free T, L, L2, eps21
+ *   braid_knot_sym  NDIM 21, NBC 25, NINT 0; free T, L, L2, eps21, eps13
+ *                   (S0-symmetric knots: adds F2(0) = 0)
+ *   braid_link      NDIM 21, NBC 21, NINT 0; one free parameter: T, Delta or Phi
+ * npar = BP_NPAR; parameter and state names as in equations/braid_state.h.
+ * The templates are const and have params = NULL; a runnable instance with a
+ * starting solution comes from braid_problem_instance. */
+#ifndef CABLE_BRAID_PROBLEMS_H
+#define CABLE_BRAID_PROBLEMS_H
+
+#include "braid_start.h"
+#include "cable_problem.h"
+
+const cable_problem *braid_knot_problem(void);
+const cable_problem *braid_knot_sym_problem(void);
+const cable_problem *braid_link_problem(void);
+
+/* The template called name ("braid_knot", "braid_knot_sym", "braid_link"),
+ * or NULL. */
+const cable_problem *braid_problem_find(const char *name);
+
+/* *out = the template, with out->params = sp (the STPNT reads the prepared
+ * starting-solution parameters; sp may be NULL when the run restarts from a
+ * stored solution, and must outlive *out otherwise).  0, or
+ * CABLE_ERR_NOTFOUND for an unknown name, CABLE_ERR_INPUT when out is NULL
+ * or sp is given but not prepared. */
+int braid_problem_instance(const char *name, const braid_start_params *sp, cable_problem *out);
+
+/* PVLS of all three problems: par[BP_F] = |F|, par[BP_FM] = F.M,
+ * par[BP_H] = h, par[BP_HAM] = the Hamiltonian, all at t = 0 (they are first
+ * integrals), and par[BP_QN] = |q(1)|^2 - 1.  Returns > 0 when the state at
+ * t = 0 is outside the model's domain, -1 for a solution of the wrong size. */
+int braid_pvls(const struct cable_solution *sol, double *par, void *params);
+
+#endif
