@@ -223,13 +223,12 @@ typedef struct kt_code {
   int c;
   kt_passage *pas;             /* [2c] sorted */
   int *mo, *mu;                /* [c] passage index of the over / under passage */
-  const int *sign;             /* borrowed: [c] */
-  int *signs;
+  int *sign;                   /* [c] crossing signs */
 } kt_code;
 
 static void code_free(kt_code *g)
 {
-  free(g->pas); free(g->mo); free(g->mu); free(g->signs);
+  free(g->pas); free(g->mo); free(g->mu); free(g->sign);
 }
 
 static int code_build(const kt_diagram *d, kt_code *g)
@@ -240,12 +239,12 @@ static int code_build(const kt_diagram *d, kt_code *g)
   g->pas = malloc(2 * (size_t)c * sizeof *g->pas + 1);
   g->mo = malloc((size_t)c * sizeof *g->mo + 1);
   g->mu = malloc((size_t)c * sizeof *g->mu + 1);
-  g->signs = malloc((size_t)c * sizeof *g->signs + 1);
-  if (!g->pas || !g->mo || !g->mu || !g->signs) { code_free(g); return CABLE_ERR_ALLOC; }
+  g->sign = malloc((size_t)c * sizeof *g->sign + 1);
+  if (!g->pas || !g->mo || !g->mu || !g->sign) { code_free(g); return CABLE_ERR_ALLOC; }
   for (int k = 0; k < c; k++) {
     g->pas[2 * k] = (kt_passage){d->cr[k].seg_o, d->cr[k].par_o, k, 1};
     g->pas[2 * k + 1] = (kt_passage){d->cr[k].seg_u, d->cr[k].par_u, k, 0};
-    g->signs[k] = d->cr[k].sign;
+    g->sign[k] = d->cr[k].sign;
   }
   qsort(g->pas, 2 * (size_t)c, sizeof *g->pas, passage_cmp);
   for (int m = 0; m < 2 * c; m++) {
@@ -253,7 +252,6 @@ static int code_build(const kt_diagram *d, kt_code *g)
     if (g->pas[m].over) g->mo[g->pas[m].k] = m;
     else g->mu[g->pas[m].k] = m;
   }
-  g->sign = g->signs;
   return CABLE_SUCCESS;
 }
 

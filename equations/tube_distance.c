@@ -4,6 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "braid_state.h"
 #include "cable_status.h"
 
 /* Segments per chunk: large enough that chunk pairs are few, small enough
@@ -253,6 +254,7 @@ int braid_tube_distance(const braid_curves *bc, tube_distance_result *out)
   }
   if (!isfinite(len)) { rc = CABLE_ERR_NONFINITE; goto done; }
   out->closed = sqrt(gap2) <= TUBE_CLOSURE_TOL * len;
+  out->axis_kappa_max = NAN;
   double period = out->closed ? len : 0.0, window = TUBE_WINDOW_FACTOR * Delta;
   tube_polyline pl[2] = {{n, bc->r1, pos}, {n, bc->r2, pos}};
   unsigned char *fl[2] = {f1, f2};
@@ -288,5 +290,28 @@ int braid_tube_distance(const braid_curves *bc, tube_distance_result *out)
 done:
   free(pos); free(f1); free(f2);
   tube_workspace_free(w);
+  return rc;
+}
+
+/* Smallest sample count of the solution variant. */
+#define TUBE_MIN_SAMPLES 1001
+
+int braid_tube_distance_solution(const cable_solution *sol, int n, tube_distance_result *out)
+{
+  if (!out || n < 0 || n == 1) return CABLE_ERR_INPUT;
+  int rc = braid_geometry_check(sol);
+  if (rc != CABLE_SUCCESS) return rc;
+  if (n == 0) {
+    double m = ceil(TUBE_SAMPLES_PER_DELTA * sol->par[BP_L] / sol->par[BP_DELTA]) + 1;
+    n = m < TUBE_MIN_SAMPLES ? TUBE_MIN_SAMPLES : (m > 1e8 ? 100000000 : (int)m);
+  }
+  braid_curves *bc = braid_curves_alloc(n);
+  if (!bc) return CABLE_ERR_ALLOC;
+  rc = braid_curves_from_solution(sol, bc);
+  if (rc == CABLE_SUCCESS) rc = braid_tube_distance(bc, out);
+  braid_curves_free(bc);
+  double kmax;
+  if (rc == CABLE_SUCCESS) rc = braid_contact_curvature(sol, n, NULL, &kmax);
+  if (rc == CABLE_SUCCESS) out->axis_kappa_max = kmax;
   return rc;
 }

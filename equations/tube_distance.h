@@ -73,10 +73,21 @@ typedef struct tube_distance_result {
   double overlap[TUBE_MAX_INTERVALS][2]; /* [s_lo, s_hi] where a strand tube overlaps another part */
   double overlap_length;        /* total length in s of all intervals */
   int closed;                   /* 1: the axis closes and positions are periodic */
+  double axis_kappa_max;        /* max curvature of the contact curve (solution variant; NAN otherwise) */
 } tube_distance_result;
 
 /* Uses braid_curves' samples (bc->n points; their spacing must be below
  * pi Delta).  Returns 0, CABLE_ERR_INPUT, CABLE_ERR_NONFINITE or CABLE_ERR_ALLOC. */
 int braid_tube_distance(const braid_curves *bc, tube_distance_result *out);
+
+/* Samples per Delta of strand length for the solution variant.  Chords of
+ * the sampled strands deviate from the curves by h^2 kappa / 8; strands wound
+ * about each other have kappa <= 2/Delta, so h = Delta/10 bounds the error
+ * of dmin by Delta/400 (0.25 %). */
+#define TUBE_SAMPLES_PER_DELTA 10
+/* The same for a braid solution sampled at n points (0: default
+ * TUBE_SAMPLES_PER_DELTA * L / Delta + 1, at least 1001), plus the maximum
+ * curvature of the contact curve at those points (for PVLS output). */
+int braid_tube_distance_solution(const cable_solution *sol, int n, tube_distance_result *out);
 
 #endif

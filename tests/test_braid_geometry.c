@@ -24,6 +24,7 @@
 #include "cable_status.h"
 #include "harness.h"
 #include "ribbon.h"
+#include "tube_distance.h"
 
 static double dot(const double *a, const double *b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
@@ -194,7 +195,7 @@ static void check_curves(void)
   int ntst = 40, ncol = 5;
   double *th = malloc(((size_t)ntst * ncol + 1) * sizeof *th);
   cable_solution *sol = build_solution(&rd, delta, ntst, ncol, th);
-  int n = 201;
+  int n = 173;                        /* not aligned with the 201 stored points */
   braid_curves *bc = braid_curves_alloc(n);
   test_int("curves from solution", braid_curves_from_solution(sol, bc), CABLE_SUCCESS);
   test_abs("L copied", bc->L, sol->par[BP_L], 0);
@@ -223,11 +224,16 @@ static void check_curves(void)
   }
   test_le("frame orthonormal, u1 = t1 x d1 (round-off)", e_orth, 1e-13);
   test_le("|r2 - r1| = Delta (round-off)", e_dist, 1e-15);
-  /* positions: interpolation O(h^(ncol+1)) with h = L/ntst ~ 0.16 and a
-   * scale set by the twist rate 3.5: ~ (0.16*3.5)^6/720 * Delta ~ 1e-6 Delta */
-  test_le("contact curve on the circle |c| = R (interpolation)", e_circ, 1e-6);
-  test_le("contact curve in the plane z = 0 (interpolation)", e_plane, 1e-6);
-  test_le("t1 matches dr1/ds (difference quotient, O(h^2) with h = 2L/200)", e_tan, 2e-3);
+  /* positions: the degree-5 interpolant on intervals h = L/40 = 0.158 with 6
+   * equally spaced nodes errs by <= |f^(6)| max|prod(x - x_i)| / 6! with
+   * max|prod| ~ 17 (h/5)^6; the fastest part is (Delta/2) d1, turning at
+   * k = 3.5/R: 0.025 k^6 17 (h/5)^6 / 720 ~ 1e-9; 1e-8 allows for the sum of
+   * components */
+  test_le("contact curve on the circle |c| = R (interpolation)", e_circ, 1e-8);
+  test_le("contact curve in the plane z = 0 (interpolation)", e_plane, 1e-8);
+  /* central difference over 2h (h = L/172 = 0.037): error h^2 |r1'''| / 6 with
+   * |r1'''| <= 1/R^2 + (Delta/2) k^3 = 2.07, i.e. 4.6e-4 */
+  test_le("t1 matches dr1/ds (central difference)", e_tan, 4.6e-4);
   /* knot closure: r1(L) = r2(0) */
   double gap = 0;
   for (int i = 0; i < 3; i++) gap += fabs(bc->r1[3 * (n - 1) + i] - bc->r2[i]);
@@ -241,14 +247,6 @@ static void check_curves(void)
   test_true("strands of the Lk = 3.5 braid form torus(7,2)", rc == 0 && strcmp(kt.name, "torus(7,2)") == 0);
   test_int("... right-handed", kt.handedness, 1);
   free(poly);
-  /* curvature of the contact circle is 1/R; the second derivative of the
-   * interpolant is O(h^(ncol-1)) accurate */
-  double *kap = malloc((size_t)n * sizeof *kap), kmax, ekap = 0;
-  test_int("contact curvature", braid_contact_curvature(sol, n, kap, &kmax), CABLE_SUCCESS);
-  for (int k = 0; k < n; k++) ekap = fmax(ekap, fabs(kap[k] - 1.0 / rd.R));
-  test_le("contact curvature = 1/R (interpolation, O(h^4))", ekap, 1e-4);
-  test_abs("max curvature", kmax, 1.0 / rd.R, 1e-4);
-  free(kap);
   braid_curves_free(bc);
   braid_curves_free(NULL);
   cable_solution_free(sol);
@@ -276,6 +274,31 @@ static double r1_error(int ntst, int ncol)
   cable_solution_free(fine);
   free(th);
   return err;
+}
+
+/* max |kappa - 1/R| of the contact circle at n samples */
+static double curvature_error(int ntst, int ncol, double *kmax)
+{
+  ribbon_def rd = {0, 1.0, 0, 3.5, 0, 0, 1};
+  cable_solution *sol = build_solution(&rd, 0.05, ntst, ncol, NULL);
+  int n = 201;
+  double kap[201], e = 0;
+  if (braid_contact_curvature(sol, n, kap, kmax) != CABLE_SUCCESS) e = INFINITY;
+  for (int k = 0; k < n; k++) e = fmax(e, fabs(kap[k] - 1.0 / rd.R));
+  cable_solution_free(sol);
+  return e;
+}
+
+/* the second derivative of the interpolant is O(h^(ncol-1)) accurate */
+static void check_curvature(void)
+{
+  double km1, km2;
+  double e1 = curvature_error(40, 5, &km1), e2 = curvature_error(80, 5, &km2);
+  printf("     contact curvature error ntst=40: %.3e, ntst=80: %.3e, observed order %.2f\n", e1, e2, log2(e1 / e2));
+  test_true("contact curvature converges with order >= ncol - 1.5 = 3.5", log2(e1 / e2) >= 3.5);
+  /* from the observed order, ntst = 80 is 16x below the ntst = 40 error (~1e-4) */
+  test_le("contact curvature = 1/R at ntst=80", e2, 1e-5);
+  test_abs("max curvature at ntst=80", km2, 1.0, 1e-5);
 }
 
 static void check_interp_order(void)
@@ -382,6 +405,24 @@ static void check_braid_ribbon(void)
   cable_solution_free(sol);
 }
 
+/* tube distance of a solution: the (7,2) braid on a circle of radius 1 has no
+ * distant approach; the axis curvature is 1/R (interpolation, O(h^4)) */
+static void check_tube_solution(void)
+{
+  ribbon_def rd = {0, 1.0, 0, 3.5, 0, 0, 1};
+  cable_solution *sol = build_solution(&rd, 0.05, 80, 5, NULL);
+  tube_distance_result r;
+  test_int("tube distance of a solution", braid_tube_distance_solution(sol, 0, &r), CABLE_SUCCESS);
+  printf("     (7,2) braid, Delta = 0.05: dmin %.4f, axis dmin %.4f, kappa max %.8f\n", r.dmin, r.axis_dmin,
+         r.axis_kappa_max);
+  test_int("no overlap", r.noverlap, 0);
+  test_true("dmin above the window-edge bound pi - 1", r.dmin > M_PI - 1);
+  test_abs("contact curvature max = 1/R (ntst=80, see above)", r.axis_kappa_max, 1.0, 1e-5);
+  test_int("tube distance: n = 1 refused", braid_tube_distance_solution(sol, 1, &r), CABLE_ERR_INPUT);
+  test_int("tube distance: NULL output", braid_tube_distance_solution(sol, 0, NULL), CABLE_ERR_INPUT);
+  cable_solution_free(sol);
+}
+
 static void check_errors(void)
 {
   ribbon_def rd = {0, 1.0, 0, 3.5, 0, 0, 1};
@@ -433,7 +474,9 @@ int main(void)
   gsl_set_error_handler_off();
   check_curves();
   check_interp_order();
+  check_curvature();
   check_braid_ribbon();
+  check_tube_solution();
   check_errors();
   return test_summary();
 }

@@ -157,22 +157,45 @@ static void check_torus(int p, int q, double hand, int n)
   ribbon_workspace_free(w2);
 }
 
-/* the plain trapezoidal rule on the diagonal kink is only O(h^2); Romberg is what buys accuracy */
+/* The plain trapezoidal rule on the diagonal kink is only O(h^2); Romberg is
+ * what buys the accuracy.  Reference: Lk - Tw from the push-off (independent
+ * of the writhe quadrature). */
+static double trapezoid_writhe(int n, const double *r, const double *dr)
+{
+  double s = 0;
+  for (int i = 0; i < n; i++)
+    for (int k = 0; k < n; k++) {
+      if (i == k) continue;
+      double x[3] = {r[3 * i] - r[3 * k], r[3 * i + 1] - r[3 * k + 1], r[3 * i + 2] - r[3 * k + 2]}, c[3];
+      cross(dr + 3 * i, dr + 3 * k, c);
+      double d2 = x[0] * x[0] + x[1] * x[1] + x[2] * x[2];
+      s += (c[0] * x[0] + c[1] * x[1] + c[2] * x[2]) / (d2 * sqrt(d2));
+    }
+  return s * (2 * M_PI / n) * (2 * M_PI / n) / (4 * M_PI);
+}
+
 static void check_romberg_needed(void)
 {
   torus_par tp = {3, 2, 2.0, 1.0, 1.0};
-  int n = 256;
-  double r[3 * 256], dr[3 * 256], wr, err, ref;
-  for (int i = 0; i < n; i++) torus_eval(2 * M_PI * i / n, r + 3 * i, dr + 3 * i, NULL, NULL, &tp);
-  test_int("samples API", ribbon_writhe_samples(n, 2 * M_PI, r, dr, &wr, &err), CABLE_SUCCESS);
   ribbon_workspace *w = ribbon_workspace_alloc(2048);
   ribbon_curve c = {torus_eval, 2 * M_PI, 0, &tp};
-  ribbon_writhe(w, &c, &ref, NULL);
+  ribbon_result res;
+  double lk;
+  ribbon_compute(w, &c, &res);
+  ribbon_pushoff_linking(w, &c, 0.25, &lk);
   ribbon_workspace_free(w);
-  printf("     trefoil n=256: Wr = %.12f, reference (n=2048) %.12f, Romberg correction %.3g\n", wr, ref, err);
-  test_abs("trefoil: Wr with 256 samples within 1e-6 of 2048 samples", wr, ref, 1e-6);
-  test_true("Romberg correction larger than the remaining error (h^2 term was real)",
-            err > fabs(wr - ref));
+  double ref = round(lk) - res.tw;
+  enum { N = 1024 };
+  static double r[3 * N], dr[3 * N];
+  double wr, err;
+  for (int i = 0; i < N; i++) torus_eval(2 * M_PI * i / N, r + 3 * i, dr + 3 * i, NULL, NULL, &tp);
+  test_int("samples API", ribbon_writhe_samples(N, 2 * M_PI, r, dr, &wr, &err), CABLE_SUCCESS);
+  double tr = trapezoid_writhe(N, r, dr);
+  printf("     trefoil n=%d: Romberg error %.2e (estimate %.2e), plain trapezoid error %.2e\n", N, wr - ref, err,
+         tr - ref);
+  test_abs("trefoil n=1024: Romberg writhe = Lk - Tw", wr, ref, 1e-12);
+  test_true("trefoil n=1024: plain trapezoid error above 1e-7 (the O(h^2) kink term)", fabs(tr - ref) > 1e-7);
+  test_true("trefoil n=1024: the error estimate bounds the error", err >= fabs(wr - ref));
 }
 
 static void check_errors(void)
