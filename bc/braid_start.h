@@ -44,7 +44,9 @@ typedef struct braid_start_params {
   double torque;    /* T: T1 = T, T2 = -T */
   double b1, b2, c1, c2, w01, w02; /* material (defaults B = 1, C = 1/1.3, w0 = 0) */
   double ring_dm3;  /* rings: M3 - (B1/R + B2/(R - Delta)), the free constant of
-                       the exact ring family (contact load); default 0 = no load */
+                       the exact ring family (contact load); default 0 = no load.
+                       dm3 = 0 is a degenerate point of braid_link; to continue
+                       from the rings use dm3 != 0 with Delta free (doc, 4.1) */
   /* ---- prepared (braid_start_prepare); read-only afterwards */
   int ready;
   double l, l2;     /* strand lengths of the guess */
