@@ -35,7 +35,7 @@ void cable_cont_free(cable_cont *cc)
   colloc_jac_free(cc->J);
   abd_solver_free(cc->abd);
   double *v[] = {cc->x, cc->xdot, cc->xp, cc->xdotp, cc->xt, cc->xdott, cc->w1, cc->w2, cc->w3,
-                 cc->svec, cc->umax};
+                 cc->svec, cc->umax, cc->xq, cc->xdotq};
   for (size_t i = 0; i < sizeof v / sizeof v[0]; i++) free(v[i]);
   cable_solution_free(cc->sol);
   free(cc);
@@ -106,10 +106,11 @@ cable_cont *cable_cont_alloc(const cable_problem *pb, const cable_constants *c, 
   cc->xt = calloc(n, sizeof(double)); cc->xdott = calloc(n, sizeof(double));
   cc->w1 = calloc(n, sizeof(double)); cc->w2 = calloc(n, sizeof(double)); cc->w3 = calloc(n, sizeof(double));
   cc->svec = calloc(2 * n, sizeof(double));
+  cc->xq = calloc(n, sizeof(double)); cc->xdotq = calloc(n, sizeof(double));
   cc->umax = calloc((size_t)cc->ndim, sizeof(double));
   cc->sol = cable_solution_alloc(cc->ndim, cc->ntst, cc->ncol, cc->npar, cc->nfpr);
   if (!cc->J || !cc->abd || !cc->x || !cc->xdot || !cc->xp || !cc->xdotp || !cc->xt || !cc->xdott ||
-      !cc->w1 || !cc->w2 || !cc->w3 || !cc->svec || !cc->umax || !cc->sol)
+      !cc->w1 || !cc->w2 || !cc->w3 || !cc->svec || !cc->umax || !cc->sol || !cc->xq || !cc->xdotq)
     goto fail;
   cc->ds = c->ds;
   cc->uz_hit = -1;
@@ -146,6 +147,8 @@ static double principal(const cable_cont *cc, const double *x)
 
 /* The first point: converge a STPNT start at fixed principal parameter, or
  * take a stored solution as it is; then its tangent and test functions. */
+static void check_limits(cable_cont *cc);
+
 static int first_point(cable_cont *cc)
 {
   colloc_system *s = cc->sys;
@@ -247,11 +250,37 @@ static void control_step(cable_cont *cc)
   cc->ds = copysign(a, cc->ds);
 }
 
+/* Make the trial point (xt, xdott, tft) the current point. */
+static void accept_trial(cable_cont *cc)
+{
+  swap_ptr(&cc->xp, &cc->x);
+  swap_ptr(&cc->x, &cc->xt);
+  swap_ptr(&cc->xdotp, &cc->xdot);
+  swap_ptr(&cc->xdot, &cc->xdott);
+  cc->tfp = cc->tf;
+  cc->tf = cc->tft;
+  cc->npt++;
+}
+
 int cable_cont_step(cable_cont *cc)
 {
   if (cc->ended) return cc->end_status;
   if (!cc->started) return first_point(cc);
   int rc;
+  cc->note[0] = '\0';
+  if (cc->queued) {
+    /* the point computed before a located dip */
+    swap_ptr(&cc->xt, &cc->xq);
+    swap_ptr(&cc->xdott, &cc->xdotq);
+    cc->tft = cc->tfq;
+    cc->queued = 0;
+    cc->itp = cc->itp_x = CABLE_TY_NONE;
+    cc->dip_at_x = 0;
+    accept_trial(cc);
+    cont_store_solution(cc, cc->itp, 0);
+    check_limits(cc);
+    return CABLE_SUCCESS;
+  }
   for (;;) {
     rc = cont_correct(cc, cc->x, cc->xdot, cc->ds, cc->xt);
     if (rc == CABLE_SUCCESS) rc = cont_tangent(cc, cc->xt, cc->xdot, cc->xdott, &cc->tft);
@@ -271,22 +300,27 @@ int cable_cont_step(cable_cont *cc)
     }
     cc->ds = copysign(fmax(fabs(cc->ds) * 0.5, cc->c.dsmin), cc->ds);
   }
+  cc->ds_prev = cc->ds_used;
   cc->ds_used = cc->ds;
   cc->itp = CABLE_TY_NONE;
   cc->uz_hit = -1;
   int which = -1, type = cont_find_event(cc, &cc->tf, &cc->tft, &which);
+  /* a located special point sits at a zero of a test function: a dip of the
+     singular value there is the point itself, not a new one */
+  int was_dip = cc->dip_at_x || cc->itp_x != CABLE_TY_NONE;
+  cc->dip_at_x = 0;
   if (type != CABLE_TY_NONE) {
     rc = cont_locate(cc, type, which); /* replaces the trial point by the located one */
     if (rc == CABLE_SUCCESS) cc->itp = type;
+    else snprintf(cc->note, sizeof cc->note, "%s", cc->err);
+  } else if (!was_dip && cont_check_dip(cc) == CABLE_SUCCESS && cc->queued) {
+    cc->itp = CABLE_TY_BP;
+    cc->dip_at_x = 1;
   }
-  swap_ptr(&cc->xp, &cc->x);
-  swap_ptr(&cc->x, &cc->xt);
-  swap_ptr(&cc->xdotp, &cc->xdot);
-  swap_ptr(&cc->xdot, &cc->xdott);
-  cc->tf = cc->tft;
-  cc->npt++;
+  accept_trial(cc);
+  cc->itp_x = cc->itp;
   control_step(cc);
-  if (cc->c.iad > 0 && ++cc->nstep_adapt >= cc->c.iad) {
+  if (cc->c.iad > 0 && !cc->queued && ++cc->nstep_adapt >= cc->c.iad) {
     cc->nstep_adapt = 0;
     if ((rc = cont_adapt_mesh(cc)) != CABLE_SUCCESS) {
       cc->ended = 1;

@@ -35,6 +35,7 @@ struct cable_cont {
   double *svec;                 /* [n * 2] singular-vector work */
   double ds;                    /* signed step size for the next step */
   double ds_used;               /* step size that produced the current point */
+  double ds_prev;               /* step size that produced the previous point */
   int started;                  /* the start has been processed */
   int restart;                  /* start came from a stored solution */
   int switch_pending;           /* ISW = -1 from a BP: first step along the kernel */
@@ -45,7 +46,16 @@ struct cable_cont {
   int end_status;
   cont_tests tf;                /* test functions at x */
   cont_tests tft;               /* at the trial point */
+  cont_tests tfp;               /* at the previous point xp */
+  /* a located singular-value dip (double BP or a pair of BPs in one step) is
+     emitted before the trial point, which waits in the queue */
+  int queued;                   /* 1: xq/xdotq/tfq is the next point to accept */
+  double *xq, *xdotq;
+  cont_tests tfq;
+  int dip_at_x;                 /* the current point is a located dip */
+  char note[600];               /* remark on the current point for the d-file ("" none) */
   int itp;                      /* type of the current point (0 regular) */
+  int itp_x;                    /* type found for x when it was accepted (located points) */
   int uz_hit;                   /* index of the user zero located at x, or -1 */
   int uz_stop;                  /* the located user zero asks to stop */
   /* output */
@@ -66,6 +76,7 @@ int cont_smallest_sv(cable_cont *cc, int k, double *sv, double *vecs);
 void cont_tests_fill(cable_cont *cc, const double *x, const double *xdot, cont_tests *tf);
 int cont_find_event(const cable_cont *cc, const cont_tests *a, const cont_tests *b, int *which);
 int cont_locate(cable_cont *cc, int type, int which);
+int cont_check_dip(cable_cont *cc);
 
 /* cont_mesh.c */
 int cont_adapt_mesh(cable_cont *cc);

@@ -85,6 +85,7 @@ static void emit(cable_cont *cc, const cable_sink *sink, int ibr, int *lab)
              pt->pt, type_name(pt->itp), pt->lab, cc->c.icp[0] + 1, pt->par[cc->c.icp[0]], pt->ds,
              pt->newton_iters, pt->err_est);
     sink->diag(sink->ctx, line);
+    if (cc->note[0]) sink->diag(sink->ctx, cc->note);
   }
 }
 

@@ -7,8 +7,18 @@
  *   UZ: PAR(k) - value.
  * A sign change between two accepted points is located by regula falsi
  * with the Illinois modification on the arclength from the first point,
- * until the arclength correction is below EPSS * |ds| (AUTO's EPSS). */
+ * until the arclength correction is below EPSS * |ds| (AUTO's EPSS).
+ *
+ * Second test (cont_check_dip): a branch point where two singular values
+ * vanish together (a double BP, e.g. from a symmetry), or two simple BPs
+ * inside one step, leaves the determinant's sign unchanged.  Both show as a
+ * dip of the smallest singular value sigma_1 between three consecutive
+ * points; the dip is located by Brent minimisation of sigma_1 along the
+ * branch and labelled BP when sigma_1 nearly vanishes there. */
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_min.h>
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 
 #include "cont_impl.h"
@@ -109,4 +119,77 @@ int cont_locate(cable_cont *cc, int type, int which)
                  type == CABLE_TY_LP ? "fold" : type == CABLE_TY_BP ? "branch point" : "user zero",
                  cc->c.itmx);
   return CABLE_ERR_NEWTON;
+}
+
+/* A dip counts when sigma_1 at the middle point is below this fraction of
+ * its neighbours' (with steps of any size the samples can straddle a zero of
+ * sigma_1 unevenly: at ratios 1/3 : 1 the middle value is 0.7 of the smaller
+ * neighbour); it is a branch point when the located minimum is below
+ * CONT_SV_ZERO_REL of the neighbours' values (sigma_1 vanishes to
+ * discretisation accuracy at a branch point of the discrete problem, while a
+ * near miss keeps a minimum of the order of the neighbours' values).  A
+ * false alarm costs one minimisation (about 10-20 corrector solves). */
+#define CONT_DIP_RATIO 0.9
+#define CONT_SV_ZERO_REL 1.0e-2
+#define CONT_DIP_MAXIT 60
+
+typedef struct {
+  cable_cont *cc;
+  cont_tests t;
+  double penalty;
+} dip_ctx;
+
+static double dip_fn(double s, void *p)
+{
+  dip_ctx *d = p;
+  cable_cont *cc = d->cc;
+  if (cont_correct(cc, cc->x, cc->xdot, s, cc->w1) != CABLE_SUCCESS ||
+      cont_tangent(cc, cc->w1, cc->xdot, cc->w2, &d->t) != CABLE_SUCCESS)
+    return d->penalty; /* steer the search away from points that do not converge */
+  return d->t.sv1;
+}
+
+int cont_check_dip(cable_cont *cc)
+{
+  double a = cc->tfp.sv1, m = cc->tf.sv1, b = cc->tft.sv1;
+  if (cc->c.isp <= 0 || cc->npt < 2 || !(a > 0 && m > 0 && b > 0)) return CABLE_TY_NONE;
+  if (!(m < a && m < b && m < CONT_DIP_RATIO * fmin(a, b))) return CABLE_TY_NONE;
+  double lo = -fabs(cc->ds_prev), hi = fabs(cc->ds_used);
+  dip_ctx ctx = {cc, cc->tf, fmax(a, b)};
+  gsl_function F = {dip_fn, &ctx};
+  gsl_min_fminimizer *mz = gsl_min_fminimizer_alloc(gsl_min_fminimizer_brent);
+  if (!mz) return CABLE_ERR_ALLOC;
+  gsl_error_handler_t *old = gsl_set_error_handler_off();
+  int st = gsl_min_fminimizer_set_with_values(mz, &F, 0.0, m, lo, a, hi, b);
+  for (int it = 0; st == GSL_SUCCESS && it < CONT_DIP_MAXIT; it++) {
+    if (gsl_min_fminimizer_iterate(mz) != GSL_SUCCESS) break;
+    double l = gsl_min_fminimizer_x_lower(mz), u = gsl_min_fminimizer_x_upper(mz);
+    if (gsl_min_test_interval(l, u, cc->c.epss * fabs(cc->ds_used), 0.0) == GSL_SUCCESS) break;
+  }
+  double smin = gsl_min_fminimizer_x_minimum(mz);
+  gsl_min_fminimizer_free(mz);
+  gsl_set_error_handler(old);
+  double fmin_val = dip_fn(smin, &ctx); /* leaves the point in w1, w2 and ctx.t */
+  if (!(fmin_val < CONT_SV_ZERO_REL * fmin(a, b))) {
+    snprintf(cc->note, sizeof cc->note,
+             "smallest singular value dips to %.3e (neighbours %.3e, %.3e): no branch point", fmin_val, a, b);
+    return CABLE_TY_NONE;
+  }
+  /* queue the trial point; the located point goes first */
+  memcpy(cc->xq, cc->xt, (size_t)cc->n * sizeof *cc->xt);
+  memcpy(cc->xdotq, cc->xdott, (size_t)cc->n * sizeof *cc->xdott);
+  cc->tfq = cc->tft;
+  cc->queued = 1;
+  memcpy(cc->xt, cc->w1, (size_t)cc->n * sizeof *cc->w1);
+  memcpy(cc->xdott, cc->w2, (size_t)cc->n * sizeof *cc->w2);
+  cc->tft = ctx.t;
+  cc->tft.det_sign = cc->tfq.det_sign; /* no sign change is counted across the dip */
+  cc->ds_used = smin;
+  int dbl = ctx.t.sv2 > 0 && ctx.t.sv2 < CONT_SV_ZERO_REL * fmin(a, b);
+  snprintf(cc->note, sizeof cc->note,
+           "%s: det keeps its sign, sigma1 = %.3e, sigma2 = %.3e (neighbours %.3e, %.3e)%s",
+           dbl ? "double branch point" : "branch point without a sign change (a pair of BPs in one step?)",
+           ctx.t.sv1, ctx.t.sv2, a, b,
+           smin < 0 ? "; located before the previous output point" : "");
+  return CABLE_SUCCESS;
 }

@@ -32,9 +32,10 @@ int cont_switch_direction(cable_cont *cc)
     return CABLE_ERR_SWITCH;
   }
   if (rc != CABLE_SUCCESS) return rc;
-  int want = cc->c.bpsym > 0 ? 2 : 2;
+  int want = 2;
   double sv[2] = {0, 0};
-  if (cont_smallest_sv(cc, want, sv, cc->svec) != 0) {
+  int svrc = cont_smallest_sv(cc, want, sv, cc->svec);
+  if (svrc != 0 && svrc != 2) {
     cont_set_error(cc, "ISW=-1: singular vectors did not converge");
     return CABLE_ERR_SWITCH;
   }

@@ -4,7 +4,10 @@
  *    relative 1e-8; after switching at the first, lambda = 4 K(sin(theta(0)/2))^2
  *    on the buckled branch to relative 1e-8, in both directions;
  *  - Bratu at lambda = 1 against its closed form: mesh-point errors decay like
- *    h^(2 NCOL) (superconvergence), slope fitted for NCOL = 2..5. */
+ *    h^(2 NCOL) (superconvergence), slope fitted for NCOL = 2..5;
+ *  - two uncoupled elasticas: every branch point is double (two singular values
+ *    vanish, the determinant keeps its sign); the singular-value test finds and
+ *    locates them at (n pi)^2. */
 #include <gsl/gsl_math.h>
 #include <gsl/gsl_sf_ellint.h>
 #include <math.h>
@@ -137,12 +140,67 @@ static void test_superconvergence(memrun *r)
   }
 }
 
+/* theta1'' + lambda sin theta1 = 0 and theta2'' + lambda sin theta2 = 0,
+   theta_i'(0) = theta_i'(1) = 0: the trivial branch has double branch points. */
+static int double_func(int ndim, const double *u, const int *icp, const double *par, int ijac,
+                       double *f, double *dfdu, double *dfdp, void *params)
+{
+  const cable_problem *e = cable_testproblem_elastica();
+  int rc = e->func(2, u, icp, par, 0, f, NULL, NULL, params);
+  rc |= e->func(2, u + 2, icp, par, 0, f + 2, NULL, NULL, params);
+  (void)ndim; (void)ijac; (void)dfdu; (void)dfdp;
+  return rc;
+}
+
+static int double_bcnd(int ndim, const double *par, const int *icp, int nbc, const double *u0,
+                       const double *u1, int ijac, double *fb, double *dbc, void *params)
+{
+  (void)ndim; (void)par; (void)icp; (void)nbc; (void)ijac; (void)dbc; (void)params;
+  fb[0] = u0[1]; fb[1] = u1[1]; fb[2] = u0[3]; fb[3] = u1[3];
+  return 0;
+}
+
+static int double_stpnt(int ndim, double t, double *u, double *par, void *params)
+{
+  (void)t; (void)params;
+  for (int i = 0; i < ndim; i++) u[i] = 0.0;
+  par[0] = 1.0;
+  return 0;
+}
+
+static void test_double_bp(memrun *r)
+{
+  cable_problem pb = {.abi_version = CABLE_PROBLEM_ABI, .struct_size = sizeof(cable_problem),
+                      .name = "double-elastica", .ndim = 4, .nbc = 4, .npar = 1,
+                      .func = double_func, .bcnd = double_bcnd, .stpnt = double_stpnt};
+  cable_constants c;
+  base_constants(&c, 40, 4);
+  c.jac = 0; /* finite-difference Jacobians: the problem provides none */
+  c.ds = 0.5; c.dsmin = 1e-6; c.dsmax = 3.0; c.nmx = 200;
+  c.rl1 = 45.0;
+  c.isp = 2;
+  c.epss = 1e-9;
+  memrun_run(&pb, &c, NULL, r);
+  test_true("double elastica: branch ends at RL1", r->status == CABLE_END_BOUNDS);
+  test_int("double elastica: two double branch points below lambda = 45", memrun_count(r, CABLE_TY_BP), 2);
+  for (int n = 1; n <= 2; n++) {
+    const cable_solution *bp = memrun_find(r, CABLE_TY_BP, n - 1);
+    char what[80];
+    snprintf(what, sizeof what, "double elastica BP%d at (%d pi)^2 (det keeps its sign)", n, n);
+    /* located by minimising sigma_1 to EPSS in arclength; discretisation error
+       (0.025)^8 (n pi)^10 < 1e-8 */
+    if (bp) test_rel(what, bp->par[0], (n * M_PI) * (n * M_PI), 1e-7);
+  }
+  memrun_free(r);
+}
+
 int main(void)
 {
   memrun *r = calloc(1, sizeof *r);
   test_bratu_fold(r);
   test_elastica(r);
   test_superconvergence(r);
+  test_double_bp(r);
   free(r);
   return test_summary();
 }
