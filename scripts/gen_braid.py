@@ -362,8 +362,10 @@ def emit_function(signature, comment, outputs, inputs, zero_fill=None):
     if zero_fill:
         for arr, n in zero_fill:
             lines.append("  for (int i = 0; i < %d; i++) %s[i] = 0.0;" % (n, arr))
+    zeroed = {arr for arr, _ in (zero_fill or [])}
     for (lv, _), e in zip(outputs, red):
-        if e == 0 and zero_fill:
+        # a zero entry may be skipped only in an array that was zero-filled above
+        if e == 0 and lv.split("[")[0] in zeroed:
             continue
         lines.append("  %s = %s;" % (lv, ccode(e)))
     lines.append("}")
