@@ -894,7 +894,10 @@ static void test_value_api(void)
 
 /* ---- the engine host ------------------------------------------------------------------ */
 
-#define REPLAY_DIR "tests/tmp/replay"
+/* One directory per test process: runs of the suite may overlap. */
+static char replay_dir[64] = "tests/tmp/replay";
+static const char *const replay_files[] = {"c.bratu", "b.bratu", "s.bratu", "d.bratu",
+                                           "b.upper", "s.upper", "d.upper"};
 
 /* Bratu's fold: lambda* = th^2 / (2 cosh^2(th/4)) with (th/4) tanh(th/4) = 1,
  * and there max u = u(1/2) = 2 ln cosh(th/4) (30-digit mpmath values). */
@@ -924,17 +927,30 @@ static int copy_file(const char *from, const char *to)
   return ok;
 }
 
-static void replay_prepare(void)
+static void replay_files_remove(void)
 {
-  mkdir("tests/tmp", 0777);
-  mkdir(REPLAY_DIR, 0777);
-  const char *gone[] = {"b.bratu", "s.bratu", "d.bratu", "b.upper", "s.upper", "d.upper"};
   char path[256];
-  for (size_t i = 0; i < sizeof gone / sizeof gone[0]; i++) {
-    snprintf(path, sizeof path, REPLAY_DIR "/%s", gone[i]);
+  for (size_t i = 0; i < sizeof replay_files / sizeof replay_files[0]; i++) {
+    snprintf(path, sizeof path, "%s/%s", replay_dir, replay_files[i]);
     remove(path);
   }
-  test_true("copy c.bratu into " REPLAY_DIR, copy_file("tests/data/scripts/c.bratu", REPLAY_DIR "/c.bratu"));
+}
+
+static void replay_prepare(void)
+{
+  snprintf(replay_dir, sizeof replay_dir, "tests/tmp/replay.%ld", (long)getpid());
+  mkdir("tests/tmp", 0777);
+  mkdir(replay_dir, 0777);
+  replay_files_remove();
+  char to[256];
+  snprintf(to, sizeof to, "%s/c.bratu", replay_dir);
+  test_true("copy c.bratu into the run directory", copy_file("tests/data/scripts/c.bratu", to));
+}
+
+static void replay_cleanup(void)
+{
+  replay_files_remove();
+  rmdir(replay_dir);
 }
 
 /* Runs a script (a file, or text) on a fresh engine-host session; the log
@@ -945,7 +961,7 @@ static int replay(const char *path, const char *text, char **log, cable_error *e
   FILE *f = open_memstream(log, &len);
   cable_replay_options o;
   cable_replay_options_init(&o);
-  o.dir = REPLAY_DIR;
+  o.dir = replay_dir;
   o.log = f;
   int rc;
   if (path) {
@@ -994,7 +1010,9 @@ static void test_engine_script(void)
   test_int("the restart's end point is label 6", rlab, 6);
   free(log);
 
-  cable_sfile *sf = cable_sfile_read(REPLAY_DIR "/s.upper", &err);
+  char path[256];
+  snprintf(path, sizeof path, "%s/s.upper", replay_dir);
+  cable_sfile *sf = cable_sfile_read(path, &err);
   test_true("sv='upper' wrote s.upper", sf != NULL);
   if (sf) {
     test_int("s.upper: 2 labelled solutions", cable_sfile_count(sf), 2);
@@ -1002,7 +1020,8 @@ static void test_engine_script(void)
                                             cable_sfile_get(sf, 1)->lab == 6);
     cable_sfile_free(sf);
   }
-  cable_bfile *bf = cable_bfile_read(REPLAY_DIR "/b.bratu", &err);
+  snprintf(path, sizeof path, "%s/b.bratu", replay_dir);
+  cable_bfile *bf = cable_bfile_read(path, &err);
   test_true("save(b, 'bratu') wrote b.bratu: one branch of NMX = 60 rows",
             bf && bf->nbranch == 1 && bf->branch[0].nrow == 60);
   const double *lam = bf ? cable_bfile_column(&bf->branch[0], "lambda") : NULL;
@@ -1091,20 +1110,24 @@ static void test_engine_errors(void)
     {"unknown keyword", "r = run(c='bratu', NMXX=3)\n", "t.auto:1: run: NMXX: ", CABLE_ERR_INPUT},
     {"bad value", "r = run(c='bratu', NTST=-5)\n", "t.auto:1: run: NTST: ", CABLE_ERR_INPUT},
     {"engine check", "r = run(c='bratu', NCOL=9)\n", "t.auto:1: run: NCOL", CABLE_ERR_INPUT},
-    {"missing constants file", "r = run(e='bratu', c='missing')\n", "t.auto:1: run: " REPLAY_DIR "/c.missing: ", CABLE_ERR_IO},
-    {"missing files for loadbd", "x = loadbd('nothing')\n", "t.auto:1: loadbd: " REPLAY_DIR "/s.nothing: ", CABLE_ERR_IO},
+    {"missing constants file", "r = run(e='bratu', c='missing')\n", "t.auto:1: run: %s/c.missing: ", CABLE_ERR_IO},
+    {"missing files for loadbd", "x = loadbd('nothing')\n", "t.auto:1: loadbd: %s/s.nothing: ", CABLE_ERR_IO},
   };
   for (size_t i = 0; i < sizeof theirs / sizeof theirs[0]; i++) {
-    char *log = NULL, buf[1200], d[200];
+    char *log = NULL, buf[1200], d[400], head[256];
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wformat-nonliteral"
+    snprintf(head, sizeof head, theirs[i].head, replay_dir);   /* "%s" only in the last two */
+#pragma GCC diagnostic pop
     cable_error err;
     int rc = replay(NULL, theirs[i].text, &log, &err);
     free(log);
     cable_error_format(&err, buf, sizeof buf);
     snprintf(d, sizeof d, "engine host, %s: status %s", theirs[i].what, cable_status_name(theirs[i].status));
     test_int(d, rc, theirs[i].status);
-    int ok = strncmp(buf, theirs[i].head, strlen(theirs[i].head)) == 0;
+    int ok = strncmp(buf, head, strlen(head)) == 0;
     if (!ok) printf("  got: %s\n", buf);
-    snprintf(d, sizeof d, "engine host, %s: '%s...'", theirs[i].what, theirs[i].head);
+    snprintf(d, sizeof d, "engine host, %s: '%s...'", theirs[i].what, head);
     test_true(d, ok);
   }
 }
@@ -1128,5 +1151,6 @@ int main(int argc, char **argv)
   test_value_api();
   test_engine_script();
   test_engine_errors();
+  replay_cleanup();
   return test_summary();
 }
