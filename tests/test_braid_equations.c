@@ -139,6 +139,7 @@ static void test_jacobians(gsl_rng *r)
     double u[N], f[N], ju[N * N], jm[N * NM], scale[N], p[NM], pscale[NM];
     braid_material m;
     random_state(r, u, &m);
+    for (int i = 0; i < N; i++) f[i] = NAN; /* every entry must be written */
     int st = braid_rhs(u, &m, f, ju, jm);
     test_int("braid_rhs status at a random state", st, 0);
     double f2[N];
