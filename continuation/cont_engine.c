@@ -180,7 +180,7 @@ static int first_point(cable_cont *cc)
     s->closing = COLLOC_CLOSE_FIXPAR;
     rc = cont_factor_at(cc, cc->x, NULL, NULL);
     if (rc != CABLE_SUCCESS) {
-      cont_set_error(cc, "the Jacobian at the starting point is singular: cannot compute a direction");
+      cont_set_error(cc, "cannot compute a direction at the starting point: %s", cable_status_message(rc));
       cc->ended = 1;
       return cc->end_status = CABLE_ERR_LINSOLVE;
     }
@@ -199,7 +199,7 @@ static int first_point(cable_cont *cc)
   /* test functions with the tangent itself as closing row */
   rc = cont_tangent(cc, cc->x, cc->xdot, cc->w3, &cc->tf);
   if (rc != CABLE_SUCCESS) {
-    cont_set_error(cc, "the extended Jacobian at the starting point is singular");
+    cont_set_error(cc, "no test functions at the starting point: %s", cable_status_message(rc));
     cc->ended = 1;
     return cc->end_status = CABLE_ERR_LINSOLVE;
   }

@@ -164,13 +164,22 @@ int cont_load_solution(cable_cont *cc, const cable_solution *src)
   for (int k = 0; k < np; k++) s->par[k] = src->par[k];
   double *p = cc->x + (cc->n - cc->nfpr), *pd = cc->xdot + (cc->n - cc->nfpr);
   for (int q = 0; q < cc->nfpr; q++) p[q] = s->par[s->icp[q]];
-  /* a stored direction is used when it belongs to the same free parameters */
-  int same = src->udot != NULL && src->nfpr == cc->nfpr;
-  for (int q = 0; same && q < cc->nfpr; q++) same = src->icp[q] == s->icp[q];
+  /* A stored direction is used when every free parameter that moves along it
+     is free here too (the restart may free more parameters, e.g. an unfolding
+     parameter that is zero along the old branch); its components are mapped by
+     parameter index. */
+  int usable = src->udot != NULL && src->nfpr > 0;
+  for (int k = 0; usable && k < src->nfpr; k++) {
+    int found = 0;
+    for (int q = 0; q < cc->nfpr; q++) found |= s->icp[q] == src->icp[k];
+    if (!found && src->pardot[k] != 0.0) usable = 0;
+  }
   memset(cc->xdot, 0, (size_t)cc->n * sizeof *cc->xdot);
-  if (same) {
+  if (usable) {
     remap(s, src->t, src->udot, cc->xdot, ntold, ncold);
-    for (int q = 0; q < cc->nfpr; q++) pd[q] = src->pardot[q];
+    for (int q = 0; q < cc->nfpr; q++)
+      for (int k = 0; k < src->nfpr; k++)
+        if (src->icp[k] == s->icp[q]) pd[q] = src->pardot[k];
   }
   return CABLE_SUCCESS;
 }

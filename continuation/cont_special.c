@@ -73,6 +73,17 @@ int cont_find_event(const cable_cont *cc, const cont_tests *a, const cont_tests 
   return best;
 }
 
+/* At a branch point the extended matrix is singular, so the tangent computed
+ * there is dominated by its kernel, not the branch direction: take the
+ * branch tangent from the regular neighbours instead, interpolated at
+ * fraction theta of the step from x (tangent xdot) to the trial point
+ * (tangent xdott), into out (which may be xdott). */
+static void branch_tangent(cable_cont *cc, double theta, double *out)
+{
+  for (int i = 0; i < cc->n; i++) out[i] = (1.0 - theta) * cc->xdot[i] + theta * cc->xdott[i];
+  cont_normalize(cc, out);
+}
+
 int cont_locate(cable_cont *cc, int type, int which)
 {
   double s0 = 0.0, f0 = test_value(&cc->tf, type, which);
@@ -92,7 +103,11 @@ int cont_locate(cable_cont *cc, int type, int which)
     sprev = s;
     if (done) {
       memcpy(cc->xt, xs, (size_t)cc->n * sizeof *xs);
-      memcpy(cc->xdott, xds, (size_t)cc->n * sizeof *xds);
+      if (type == CABLE_TY_BP)
+        branch_tangent(cc, s / cc->ds_used, cc->xdott); /* the matrix is singular here */
+      else
+        memcpy(cc->xdott, xds, (size_t)cc->n * sizeof *xds);
+      cont_tests_fill(cc, cc->xt, cc->xdott, &ts);
       /* count the located point as past the event, so that it is not found again */
       if (type == CABLE_TY_LP) ts.lp = copysign(fabs(ts.lp), far);
       else if (type == CABLE_TY_BP) ts.det_sign = cc->tft.det_sign;
@@ -181,8 +196,10 @@ int cont_check_dip(cable_cont *cc)
   cc->tfq = cc->tft;
   cc->queued = 1;
   memcpy(cc->xt, cc->w1, (size_t)cc->n * sizeof *cc->w1);
-  memcpy(cc->xdott, cc->w2, (size_t)cc->n * sizeof *cc->w2);
+  /* tangent from the regular neighbours: x's for a dip behind x, else interpolated */
+  branch_tangent(cc, smin > 0 ? smin / cc->ds_used : 0.0, cc->xdott);
   cc->tft = ctx.t;
+  cont_tests_fill(cc, cc->xt, cc->xdott, &cc->tft);
   cc->tft.det_sign = cc->tfq.det_sign; /* no sign change is counted across the dip */
   cc->ds_used = smin;
   int dbl = ctx.t.sv2 > 0 && ctx.t.sv2 < CONT_SV_ZERO_REL * fmin(a, b);

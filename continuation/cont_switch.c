@@ -7,6 +7,7 @@
  * and a two-dimensional kernel (a double BP), BPDIR picks the kernel vector
  * (0: smallest singular value, 1: the next). */
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 
 #include "cont_impl.h"
@@ -43,6 +44,7 @@ int cont_switch_direction(cable_cont *cc)
     cont_set_error(cc, "ISW=-1: not a branch point (smallest singular values %.3e, %.3e)", sv[0], sv[1]);
     return CABLE_ERR_SWITCH;
   }
+  snprintf(cc->note, sizeof cc->note, "switching: smallest singular values %.3e, %.3e", sv[0], sv[1]);
   int pick = cc->c.bpsym == 1 ? 1 : 0;
   const double *phi = cc->svec + (size_t)pick * (size_t)n;
   memcpy(cc->xdot, phi, (size_t)n * sizeof *phi);
