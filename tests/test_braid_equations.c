@@ -28,6 +28,17 @@
 /* Identities that hold exactly in exact arithmetic, evaluated with a few
  * hundred flops: 1e3 DBL_EPSILON relative to the scale of the terms. */
 #define ROUND_TOL (1e3 * DBL_EPSILON)
+/* The same for identities that chain two generated expressions (a rate into
+ * a partial of g), each with its own rounding: one more factor 10. */
+#define ROUND_TOL2 (1e4 * DBL_EPSILON)
+/* q.q' is a sum of 4 products of 4 terms that cancel exactly: a few ulps of
+ * the sum of their magnitudes. */
+#define QQ_TOL (4 * DBL_EPSILON)
+/* d/ds of h and Ham along f by central differences with step ALONG_F_STEP:
+ * truncation ~ step^2 |I'''| ~ 1e-12, round-off ~ DBL_EPSILON |I|/step ~ 2e-10
+ * (relative); 1e-7 leaves a factor 500.  A wrong rate gives O(1). */
+#define ALONG_F_STEP 1e-6
+#define ALONG_F_TOL 1e-7
 
 static double uniform(gsl_rng *r, double a, double b) { return a + (b - a) * gsl_rng_uniform(r); }
 
@@ -279,14 +290,14 @@ static void test_consistency(gsl_rng *r)
             ROUND_TOL);
     sc = fabs(M3) + fabs(te * M1) + fabs(gp.dw3) + fabs(a.h * m.Delta / cos(eta));
     test_le("(12.2.20) M3 + tan(eta) M1 = dg/domega3 (rel.)",
-            fabs(gp.dw3 - (M3 + te * M1)) / sc, ROUND_TOL * 10);
+            fabs(gp.dw3 - (M3 + te * M1)) / sc, ROUND_TOL2);
     /* (12.2.18): M1 = Delta cos^2/(Delta w3 - 1) [dg/deta - (M2' - B1 w2')] */
     const double c2 = cos(eta) * cos(eta);
     const double el = gp.deta - (f[BR_M2] - m.B1 * f[BR_W2]);
     const double rhs18 = m.Delta * c2 / (m.Delta * w3 - 1.0) * el;
     sc = fabs(M1) + m.Delta * c2 / fabs(m.Delta * w3 - 1.0)
          * (fabs(gp.deta) + fabs(f[BR_M2]) + fabs(m.B1 * f[BR_W2]));
-    test_le("(12.2.18) with the rhs's M2' and omega2' (rel.)", fabs(rhs18 - M1) / sc, ROUND_TOL * 10);
+    test_le("(12.2.18) with the rhs's M2' and omega2' (rel.)", fabs(rhs18 - M1) / sc, ROUND_TOL2);
     /* omega1 and sigma' */
     test_le("(12.2.8) omega1 = (omega3 - 1/Delta) tan(eta) (rel.)",
             fabs(a.w1 - (w3 - 1.0 / m.Delta) * te) / fabs(a.w1), ROUND_TOL);
@@ -303,7 +314,7 @@ static void test_consistency(gsl_rng *r)
     test_rel("omega3' denominator = (cos eta/Delta)(B1 + B2 cos^3/(1-Delta w3)^3)", den, den_closed,
              ROUND_TOL);
     /* h is a first integral by construction: its derivative along f vanishes */
-    const double eps = 1e-6;
+    const double eps = ALONG_F_STEP;
     double up[N], um[N];
     for (int i = 0; i < N; i++) {
       up[i] = u[i] + eps * f[i];
@@ -313,11 +324,10 @@ static void test_consistency(gsl_rng *r)
     braid_first_integrals_eval(up, &m, &ip);
     braid_first_integrals_eval(um, &m, &im);
     const double dh = (ip.h - im.h) / (2 * eps), dH = (ip.ham - im.ham) / (2 * eps);
-    /* central difference along f: error ~ eps^2 |h'''| + DBL_EPSILON |h|/eps ~ 1e-10 |h| */
     test_le("dh/ds along the rhs (central difference, rel. to |h|+1)", fabs(dh) / (fabs(a.h) + 1.0),
-            1e-7);
+            ALONG_F_TOL);
     test_le("dHam/ds along the rhs (central difference, rel. to |Ham|+1)",
-            fabs(dH) / (fabs(ip.ham) + 1.0), 1e-7);
+            fabs(dH) / (fabs(ip.ham) + 1.0), ALONG_F_TOL);
   }
 }
 
@@ -354,7 +364,7 @@ static void test_symmetry(gsl_rng *r)
       qq += u[i] * f[i];
       qs += fabs(u[i] * f[i]);
     }
-    test_le("q . q' = 0 (rel. to sum |q_i q_i'|)", fabs(qq) / qs, 4 * DBL_EPSILON);
+    test_le("q . q' = 0 (rel. to sum |q_i q_i'|)", fabs(qq) / qs, QQ_TOL);
     braid_first_integrals a, b;
     braid_first_integrals_eval(u, &m, &a);
     braid_first_integrals_eval(v, &mm, &b);
