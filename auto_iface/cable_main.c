@@ -1,17 +1,43 @@
 /* The `cable` command line: uses only the public API and reports every error
- * on one line with file, line and key. */
+ * on one line with file, line and key, exiting non-zero. */
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
+#include "aufile.h"
+#include "braid_resolver.h"
+#include "cable_commands.h"
+#include "cable_status.h"
 #include "cable_version.h"
+#include "script.h"
+#include "script_host_cable.h"
 
 static void usage(FILE *out)
 {
   fputs("usage: cable COMMAND [ARGS]\n"
         "commands:\n"
-        "  --version          print cable's version and the library versions\n"
-        "  --help             this text\n",
+        "  run [c=NAME] [e=PROBLEM] [s=NAME] [sv=NAME] [KEY=VALUE ...]\n"
+        "                     one continuation run, AUTO's run(...) semantics; KEY=VALUE\n"
+        "                     overrides the constants file c.NAME\n"
+        "  replay SCRIPT      replay a run script (a subset of AUTO's Python CLI); output\n"
+        "                     files go to the script's directory\n"
+        "  table b.NAME       the branch table of a b-file\n"
+        "  list s.NAME        the labelled solutions of an s-file\n"
+        "  analyze s.NAME LABEL...\n"
+        "                     derived quantities of braid solutions (Lk, Tw, Wr, knot type,\n"
+        "                     contact pressure, tube overlap, first integrals)\n"
+        "  --version          cable's version and the library versions\n"
+        "  --help             this text\n"
+        "See README.md and doc/ for constants keys, scripts and file formats.\n",
         out);
+}
+
+static int report(int rc, const cable_error *err)
+{
+  char buf[1400];
+  if (rc == 0) return 0;
+  fprintf(stderr, "cable: %s\n", err->msg[0] ? cable_error_format(err, buf, sizeof buf) : cable_status_message(rc));
+  return 1;
 }
 
 int main(int argc, char **argv)
@@ -20,15 +46,47 @@ int main(int argc, char **argv)
     usage(stderr);
     return 2;
   }
-  if (strcmp(argv[1], "--version") == 0) {
+  const char *cmd = argv[1];
+  cable_error err;
+  cable_error_clear(&err);
+  if (strcmp(cmd, "--version") == 0) {
     char buf[256];
     puts(cable_version_string(buf, sizeof buf));
     return 0;
   }
-  if (strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0) {
+  if (strcmp(cmd, "--help") == 0 || strcmp(cmd, "-h") == 0 || strcmp(cmd, "help") == 0) {
     usage(stdout);
     return 0;
   }
-  fprintf(stderr, "cable: unknown command '%s' (see cable --help)\n", argv[1]);
+  if (strcmp(cmd, "run") == 0) return report(cable_cmd_run(argc - 2, argv + 2, &err), &err);
+  if (strcmp(cmd, "replay") == 0) {
+    if (argc != 3) {
+      fprintf(stderr, "cable: usage: cable replay SCRIPT\n");
+      return 2;
+    }
+    return report(cable_cmd_replay(argv[2], &err), &err);
+  }
+  if (strcmp(cmd, "table") == 0) {
+    if (argc != 3) {
+      fprintf(stderr, "cable: usage: cable table b.NAME\n");
+      return 2;
+    }
+    return report(cable_cmd_table(argv[2], stdout, &err), &err);
+  }
+  if (strcmp(cmd, "list") == 0) {
+    if (argc != 3) {
+      fprintf(stderr, "cable: usage: cable list s.NAME\n");
+      return 2;
+    }
+    return report(cable_cmd_list(argv[2], stdout, &err), &err);
+  }
+  if (strcmp(cmd, "analyze") == 0) {
+    if (argc < 4) {
+      fprintf(stderr, "cable: usage: cable analyze s.NAME LABEL...\n");
+      return 2;
+    }
+    return report(cable_cmd_analyze(argv[2], argc - 3, argv + 3, stdout, &err), &err);
+  }
+  fprintf(stderr, "cable: unknown command '%s' (see cable --help)\n", cmd);
   return 2;
 }

@@ -726,6 +726,46 @@ static int apply_thl(pctx *x, const key_desc *d, const stmt *s)
   return 0;
 }
 
+/* PAR={'Delta': 0.005, 4: 1.98889}: starting values that override STPNT or
+ * the restart solution (AUTO-07p's PAR constant). */
+static int apply_par(pctx *x, const key_desc *d, const stmt *s)
+{
+  (void)d;
+  int st = check_dict(x, s, "{'T': 0.0, 5: 0.01}");
+  if (st) return st;
+  const cv *v = s->value;
+  if (v->n / 2 > CABLE_MAX_THL)
+    return perr(x, CABLE_ERR_INPUT, s->line, s->key, "at most %d values", CABLE_MAX_THL);
+  cable_parval pv[CABLE_MAX_THL];
+  int n = 0;
+  for (int k = 0; k < v->n; k += 2) {
+    int par, neg;
+    st = resolve_par(x, s->key, v->item[k], 0, &par, &neg);
+    if (st == 0) st = real_value(x, s->key, v->item[k + 1], v->item[k + 1]->line, &pv[n].value);
+    if (st) return st;
+    pv[n].index = par;
+    n++;
+  }
+  memcpy(x->c.par_override, pv, (size_t)n * sizeof pv[0]);
+  x->c.npar_override = n;
+  return 0;
+}
+
+/* HAND = 1 | -1 | 'right' | 'left' */
+static int apply_hand(pctx *x, const key_desc *d, const stmt *s)
+{
+  (void)d;
+  const cv *v = s->value;
+  char b[160];
+  if (v->kind == CV_INT && (v->i == 1 || v->i == -1)) x->c.hand = (int)v->i;
+  else if (v->kind == CV_STR && strcasecmp(v->text, "right") == 0) x->c.hand = 1;
+  else if (v->kind == CV_STR && strcasecmp(v->text, "left") == 0) x->c.hand = -1;
+  else
+    return perr(x, CABLE_ERR_INPUT, s->line, s->key, "must be 1, -1, 'right' or 'left', got %s",
+                describe(v, b, sizeof b));
+  return 0;
+}
+
 /* THU is kept raw and checked at the end, when NDIM is known. */
 static int apply_thu(pctx *x, const key_desc *d, const stmt *s)
 {
@@ -908,6 +948,9 @@ static const key_desc key_table[] = {
   {"LINSOLVER", apply_linsolver, 0, 0, 0, 2, KI_NONE},
   {"NSV", apply_int, OFF(nsv), 0, BIG, 2, KI_NONE},
   {"BPDIR", apply_int, OFF(bpsym), 0, 1, 2, KI_NONE},
+  {"PAR", apply_par, 0, 0, 0, 2, KI_NONE},
+  {"TORUS", apply_int, OFF(torus_p), 0, 1001, 2, KI_NONE},
+  {"HAND", apply_hand, 0, 0, 0, 2, KI_NONE},
 };
 #define KEY_TABLE_N ((int)(sizeof key_table / sizeof key_table[0]))
 
@@ -922,7 +965,6 @@ static const struct {
   {"TY", "branch types (TY) are not used by cable's IPS=4 runs"},
   {"SP", "use ILP and ISP to switch fold and branch-point detection on or off"},
   {"U", "starting values (U) belong in the problem's STPNT or a restart solution"},
-  {"PAR", "starting parameter values (PAR) belong in the problem's STPNT or a restart solution"},
   {"NUNSTAB", "a HomCont (IPS=9) constant; cable solves IPS=4 problems"},
   {"NSTAB", "a HomCont (IPS=9) constant; cable solves IPS=4 problems"},
   {"IEQUIB", "a HomCont (IPS=9) constant; cable solves IPS=4 problems"},

@@ -17,4 +17,5 @@ void cable_constants_init(cable_constants *c)
   c->iid = 2; c->iis = 3;
   c->linsolver = CABLE_LINSOLVER_CONDENSE;
   c->nsv = 0; c->bpsym = 0;
+  c->torus_p = 0; c->hand = 1;
 }

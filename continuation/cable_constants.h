@@ -60,6 +60,9 @@ typedef struct cable_constants {
   cable_linsolver linsolver;              /* LINSOLVER = condense | klu */
   int nsv;                                /* NSV: singular values tracked for BP test (0: off) */
   int bpsym;                              /* BPDIR: kernel vector index for 2-d kernels */
+  int torus_p;                            /* TORUS: braid start, (p,2) torus knot (odd p) or
+                                             link (even p); 0: the two-ring start */
+  int hand;                               /* HAND: +1 right-handed, -1 left-handed */
   /* names */
   char e[CABLE_NAME_MAX], s[CABLE_NAME_MAX], sv[CABLE_NAME_MAX], dat[CABLE_NAME_MAX];
   int stop_on[8]; int nstop;              /* STOP=['BP1'...] parsed by type code and count */

@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "blas_threads.h"
 #include "cont_impl.h"
 
 /* Step-size control (IADS): Newton iteration counts at or below
@@ -74,6 +75,7 @@ static int check_input(const cable_problem *pb, const cable_constants *c, char *
 cable_cont *cable_cont_alloc(const cable_problem *pb, const cable_constants *c, int *status)
 {
   char msg[512];
+  cable_blas_single_thread();
   int rc = check_input(pb, c, msg, sizeof msg);
   cable_cont *cc = calloc(1, sizeof *cc);
   if (!cc) {

@@ -1,0 +1,14 @@
+/* Braid problems started from STPNT for the run host: the starting geometry
+ * comes from the constants: TORUS=p ((p,2) torus knot for odd p, link for even
+ * p; 0 or absent: the two-ring start), HAND=1|-1, and PAR={...} values of
+ * Delta, Ltot (knots) or L (links), T and the material constants. */
+#ifndef CABLE_BRAID_RESOLVER_H
+#define CABLE_BRAID_RESOLVER_H
+
+#include "script_host_cable.h"
+
+/* A resolver object for cable_replay_options.problems (no state of its own:
+ * each problem it hands out owns its prepared starting parameters). */
+const cable_replay_problems *cable_braid_resolver(void);
+
+#endif

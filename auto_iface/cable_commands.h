@@ -1,0 +1,21 @@
+/* The `cable` subcommands (auto_iface/cable_main.c dispatches to these).
+ * Each returns 0 or a negative cable_status with err filled. */
+#ifndef CABLE_COMMANDS_H
+#define CABLE_COMMANDS_H
+
+#include <stdio.h>
+
+#include "cable_error.h"
+
+/* cable run KEY=VALUE ...: one run(...) of the script host in the current directory. */
+int cable_cmd_run(int argc, char **argv, cable_error *err);
+/* cable replay SCRIPT: output in the script's directory. */
+int cable_cmd_replay(const char *script, cable_error *err);
+/* cable table b.NAME */
+int cable_cmd_table(const char *bfile, FILE *out, cable_error *err);
+/* cable list s.NAME (error estimates from d.NAME when present) */
+int cable_cmd_list(const char *sfile, FILE *out, cable_error *err);
+/* cable analyze s.NAME LABEL... */
+int cable_cmd_analyze(const char *sfile, int nlab, char **labels, FILE *out, cable_error *err);
+
+#endif
