@@ -828,6 +828,7 @@ cable_replay *cable_replay_alloc(const cable_replay_options *opt)
   h->describe = rp_describe;
   h->print = rp_print;
   h->release = rp_release;
+  h->call = rp_call;
   return r;
 }
 

@@ -56,6 +56,10 @@ struct cable_replay {
   cable_plugin *plugin[RP_MAX_PLUGINS];
 };
 
+/* ---- scene functions (script_host_analysis.c): analyze(), compare() ---------------- */
+int rp_call(void *ctx, const char *name, int nargs, const script_value *args, const script_kwargs *kw,
+            script_value *out, cable_error *err);
+
 /* ---- store (script_host_store.c) ------------------------------------------------- */
 
 rp_branch *rp_branch_alloc(int ibr, const cable_constants *c, const cable_names *names, const char *e);

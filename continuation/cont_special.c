@@ -136,10 +136,10 @@ int cont_locate(cable_cont *cc, int type, int which)
   return CABLE_ERR_NEWTON;
 }
 
-/* A dip counts when sigma_1 at the middle point is below this fraction of
- * its neighbours' (with steps of any size the samples can straddle a zero of
- * sigma_1 unevenly: at ratios 1/3 : 1 the middle value is 0.7 of the smaller
- * neighbour); it is a branch point when the located minimum is below
+/* A dip counts when sigma_1 at the middle point is a local minimum below
+ * this fraction of the larger neighbour (two samples can straddle a zero of
+ * sigma_1 almost symmetrically, so the smaller neighbour may be as small as
+ * the middle value); it is a branch point when the located minimum is below
  * CONT_SV_ZERO_REL of the neighbours' values (sigma_1 vanishes to
  * discretisation accuracy at a branch point of the discrete problem, while a
  * near miss keeps a minimum of the order of the neighbours' values).  A
@@ -168,7 +168,7 @@ int cont_check_dip(cable_cont *cc)
 {
   double a = cc->tfp.sv1, m = cc->tf.sv1, b = cc->tft.sv1;
   if (cc->c.isp <= 0 || cc->npt < 2 || !(a > 0 && m > 0 && b > 0)) return CABLE_TY_NONE;
-  if (!(m < a && m < b && m < CONT_DIP_RATIO * fmin(a, b))) return CABLE_TY_NONE;
+  if (!(m < a && m < b && m < CONT_DIP_RATIO * fmax(a, b))) return CABLE_TY_NONE;
   double lo = -fabs(cc->ds_prev), hi = fabs(cc->ds_used);
   dip_ctx ctx = {cc, cc->tf, fmax(a, b)};
   gsl_function F = {dip_fn, &ctx};
