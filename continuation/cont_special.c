@@ -111,13 +111,21 @@ int cont_locate(cable_cont *cc, int type, int which)
       /* count the located point as past the event, so that it is not found again */
       if (type == CABLE_TY_LP) ts.lp = copysign(fabs(ts.lp), far);
       else if (type == CABLE_TY_BP) ts.det_sign = cc->tft.det_sign;
-      else ts.uz[which] = copysign(fabs(ts.uz[which]), far);
-      cc->tft = ts;
       cc->ds_used = s;
       if (type == CABLE_TY_UZ) {
+        /* every user zero at this parameter value (UZR and UZSTOP may both
+           list it) is passed, and any of them may ask to stop */
         cc->uz_hit = which;
-        cc->uz_stop = cc->c.uzr[which].stop;
+        cc->uz_stop = 0;
+        const cable_uzr *z = &cc->c.uzr[which];
+        for (int k = 0; k < cc->c.nuzr; k++) {
+          const cable_uzr *y = &cc->c.uzr[k];
+          if (y->par != z->par || y->value != z->value) continue;
+          ts.uz[k] = copysign(fabs(ts.uz[k]), test_value(&cc->tft, CABLE_TY_UZ, k));
+          cc->uz_stop |= y->stop;
+        }
       }
+      cc->tft = ts;
       return CABLE_SUCCESS;
     }
     if ((f > 0) == (f1 > 0)) {

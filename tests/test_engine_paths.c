@@ -216,6 +216,16 @@ static void test_failures(memrun *r)
   test_int("no solution at the start: CABLE_ERR_NEWTON", r->status, CABLE_ERR_NEWTON);
   test_int("no solution at the start: nothing stored", r->nsol, 0);
   memrun_free(r);
+  /* the same value in UZR and UZSTOP: one located user zero, and the branch stops there */
+  base_constants(&c, 10, 3);
+  c.ds = 0.1; c.dsmax = 0.3; c.nmx = 100;
+  c.nuzr = 2;
+  c.uzr[0].par = 0; c.uzr[0].value = 2.0; c.uzr[0].stop = 0;
+  c.uzr[1].par = 0; c.uzr[1].value = 2.0; c.uzr[1].stop = 1;
+  memrun_run(cable_testproblem_bratu(), &c, NULL, r);
+  test_int("UZR and UZSTOP at one value: stops there", r->status, CABLE_END_UZSTOP);
+  test_int("UZR and UZSTOP at one value: one UZ point", memrun_count(r, CABLE_TY_UZ), 1);
+  memrun_free(r);
   /* bad input is refused before any work */
   base_constants(&c, 10, 3);
   c.nicp = 0;
