@@ -693,22 +693,7 @@ static void sv_start(int n, int k, double *V)
   }
 }
 
-static int smallest_sv(abd_solver *s, const colloc_jac *J, int k, double *sv, double *vecs, int maxit, double tol,
-                       int warm);
-
 int abd_solver_smallest_sv(abd_solver *s, const colloc_jac *J, int k, double *sv, double *vecs, int maxit, double tol)
-{
-  return smallest_sv(s, J, k, sv, vecs, maxit, tol, 0);
-}
-
-int abd_solver_smallest_sv_warm(abd_solver *s, const colloc_jac *J, int k, double *sv, double *vecs, int maxit,
-                                double tol)
-{
-  return smallest_sv(s, J, k, sv, vecs, maxit, tol, 1);
-}
-
-static int smallest_sv(abd_solver *s, const colloc_jac *J, int k, double *sv, double *vecs, int maxit, double tol,
-                       int warm)
 {
   if (!s || !J || !jac_matches(s, J) || k < 1 || k > s->n || maxit < 1 || !(tol > 0.0)) return ABD_ERR_SIZE;
   if (s->state != STATE_OK) return s->state == STATE_SINGULAR ? ABD_SINGULAR : ABD_ERR_NOT_FACTORED;
@@ -718,18 +703,8 @@ static int smallest_sv(abd_solver *s, const colloc_jac *J, int k, double *sv, do
   double *u = s->sv_vec, *res = s->sv_res;
   const double normF = jac_frobenius(J);
 
-  /* a warm start from the caller's vectors (the previous point's, along a
-     branch) needs one or two sweeps; a zero or unusable block falls back to
-     the deterministic start */
-  int have = 0;
-  if (warm) {
-    memcpy(V, vecs, (size_t)n * (size_t)k * sizeof(double));
-    have = cblas_dnrm2(n * k, V, 1) > 0 && orthonormalise(n, k, V, NULL) == 0;
-  }
-  if (!have) {
-    sv_start(n, k, V);
-    if (orthonormalise(n, k, V, NULL) != 0) return ABD_ERR_LAPACK;
-  }
+  sv_start(n, k, V);
+  if (orthonormalise(n, k, V, NULL) != 0) return ABD_ERR_LAPACK;
   int status = ABD_NOT_CONVERGED;
   for (int it = 0; it < maxit && status != ABD_OK; it++) {
     /* Left block QL = orth(J^{-T} V), right block W R = J^{-1} QL.  Then

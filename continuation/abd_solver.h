@@ -93,10 +93,5 @@ void abd_solver_space(const abd_solver *s, long *ndoubles, long *nints);
  * first use (and when k grows); it is not a hot-loop routine. */
 int abd_solver_smallest_sv(abd_solver *s, const colloc_jac *J, int k, double *sv, double *vecs, int maxit,
                            double tol);
-/* The same, starting the iteration from the k columns of vecs (for example
- * the vectors of the previous point of a branch); a zero block starts like
- * abd_solver_smallest_sv. */
-int abd_solver_smallest_sv_warm(abd_solver *s, const colloc_jac *J, int k, double *sv, double *vecs, int maxit,
-                                double tol);
 
 #endif

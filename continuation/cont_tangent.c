@@ -32,8 +32,7 @@ void cont_normalize(cable_cont *cc, double *v)
 
 int cont_smallest_sv(cable_cont *cc, int k, double *sv, double *vecs)
 {
-  /* vecs holds the previous point's singular vectors: a warm start */
-  return abd_solver_smallest_sv_warm(cc->abd, cc->J, k, sv, vecs, CONT_SV_MAXIT, CONT_SV_RTOL);
+  return abd_solver_smallest_sv(cc->abd, cc->J, k, sv, vecs, CONT_SV_MAXIT, CONT_SV_RTOL);
 }
 
 int cont_tangent(cable_cont *cc, const double *x, const double *xdot_old, double *xdot_new,
