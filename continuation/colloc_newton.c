@@ -178,3 +178,11 @@ int colloc_newton_solve(colloc_newton *nw, double *x)
 int colloc_newton_iterations(const colloc_newton *nw) { return nw->iters; }
 double colloc_newton_residual(const colloc_newton *nw) { return nw->resnorm; }
 const char *colloc_newton_message(const colloc_newton *nw) { return nw->msg; }
+
+int colloc_newton_factorization(colloc_newton *nw, struct abd_solver **abd, colloc_jac **J)
+{
+  if (nw->kind != CABLE_LINSOLVER_CONDENSE || nw->iters < 1) return -1;
+  *abd = SUNLinSol_Colloc_Solver(nw->LS);
+  *J = nw->J;
+  return *abd ? 0 : -1;
+}

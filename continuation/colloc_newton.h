@@ -29,4 +29,11 @@ int colloc_newton_iterations(const colloc_newton *nw);  /* of the last solve */
 double colloc_newton_residual(const colloc_newton *nw); /* max-norm of F at the last iterate */
 const char *colloc_newton_message(const colloc_newton *nw);
 
+struct abd_solver;
+/* The structured factorisation KINSOL used in the last solve, and the matrix
+ * it factored (at the last iterate but one): the continuation reuses it for
+ * the tangent, whose system is exactly that Newton matrix.  0 when available
+ * (LINSOLVER=condense and at least one iteration), -1 otherwise. */
+int colloc_newton_factorization(colloc_newton *nw, struct abd_solver **abd, colloc_jac **J);
+
 #endif

@@ -285,7 +285,7 @@ int cable_cont_step(cable_cont *cc)
   }
   for (;;) {
     rc = cont_correct(cc, cc->x, cc->xdot, cc->ds, cc->xt);
-    if (rc == CABLE_SUCCESS) rc = cont_tangent(cc, cc->xt, cc->xdot, cc->xdott, &cc->tft);
+    if (rc == CABLE_SUCCESS) rc = cont_tangent_after_newton(cc, cc->xt, cc->xdot, cc->xdott, &cc->tft);
     if (rc == CABLE_SUCCESS) break;
     if (rc == CABLE_ERR_CALLBACK) {
       cont_set_error(cc, "a problem callback failed fatally (status %d) at step size %g",

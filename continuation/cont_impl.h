@@ -69,6 +69,10 @@ struct cable_cont {
 int cont_factor_at(cable_cont *cc, const double *x, double *logdet, int *sign);
 int cont_tangent(cable_cont *cc, const double *x, const double *xdot_old, double *xdot_new,
                  cont_tests *tf);
+/* The same right after a successful corrector from the point with tangent
+ * xdot_old: reuses the corrector's factorisation when it has one. */
+int cont_tangent_after_newton(cable_cont *cc, const double *x, const double *xdot_old, double *xdot_new,
+                              cont_tests *tf);
 void cont_normalize(cable_cont *cc, double *v);
 int cont_smallest_sv(cable_cont *cc, int k, double *sv, double *vecs);
 

@@ -35,35 +35,54 @@ int cont_smallest_sv(cable_cont *cc, int k, double *sv, double *vecs)
   return abd_solver_smallest_sv(cc->abd, cc->J, k, sv, vecs, CONT_SV_MAXIT, CONT_SV_RTOL);
 }
 
-int cont_tangent(cable_cont *cc, const double *x, const double *xdot_old, double *xdot_new,
-                 cont_tests *tf)
+/* Tangent and test functions from a factorisation of the extended matrix
+ * [F_x; theta xdot_old^T] (abd, with its matrix J). */
+static int tangent_from(cable_cont *cc, abd_solver *abd, colloc_jac *J, const double *x, double *xdot_new,
+                        cont_tests *tf)
 {
-  colloc_system *s = cc->sys;
-  memcpy(s->xdot0, xdot_old, (size_t)cc->n * sizeof *xdot_old);
-  s->closing = COLLOC_CLOSE_ARCLENGTH;
   int sign = 0;
   double logdet = 0;
-  int rc = cont_factor_at(cc, x, &logdet, &sign);
-  if (rc != CABLE_SUCCESS) return rc;
+  abd_solver_det(abd, &sign, &logdet);
   /* [F_x; theta xdot_old^T] xdot_new = e_last keeps the orientation: <xdot_new, xdot_old> > 0 */
   memset(xdot_new, 0, (size_t)cc->n * sizeof *xdot_new);
   xdot_new[cc->n - 1] = 1.0;
-  if (abd_solver_solve(cc->abd, xdot_new) != 0) return CABLE_ERR_LINSOLVE;
+  if (abd_solver_solve(abd, xdot_new) != 0) return CABLE_ERR_LINSOLVE;
   cont_normalize(cc, xdot_new);
   tf->det_sign = sign;
   tf->det_log = logdet;
   tf->sv1 = tf->sv2 = 0.0;
   if (cc->c.nsv > 0 || cc->c.isp > 0) {
     double sv[2] = {0, 0};
-    /* two values: the second tells a double branch point from a simple one */
-    int k = 2;
-    /* ABD_NOT_CONVERGED (2) still leaves usable estimates */
-    int src = cont_smallest_sv(cc, k, sv, cc->svec);
+    /* two values: the second tells a double branch point from a simple one;
+       ABD_NOT_CONVERGED (2) still leaves usable estimates */
+    int src = abd_solver_smallest_sv(abd, J, 2, sv, cc->svec, CONT_SV_MAXIT, CONT_SV_RTOL);
     if (src == 0 || src == 2) {
       tf->sv1 = sv[0];
-      tf->sv2 = k > 1 ? sv[1] : 0.0;
+      tf->sv2 = sv[1];
     }
   }
   cont_tests_fill(cc, x, xdot_new, tf);
   return CABLE_SUCCESS;
+}
+
+int cont_tangent(cable_cont *cc, const double *x, const double *xdot_old, double *xdot_new,
+                 cont_tests *tf)
+{
+  colloc_system *s = cc->sys;
+  memcpy(s->xdot0, xdot_old, (size_t)cc->n * sizeof *xdot_old);
+  s->closing = COLLOC_CLOSE_ARCLENGTH;
+  int rc = cont_factor_at(cc, x, NULL, NULL);
+  if (rc != CABLE_SUCCESS) return rc;
+  return tangent_from(cc, cc->abd, cc->J, x, xdot_new, tf);
+}
+
+int cont_tangent_after_newton(cable_cont *cc, const double *x, const double *xdot_old, double *xdot_new,
+                              cont_tests *tf)
+{
+  abd_solver *abd;
+  colloc_jac *J;
+  /* the corrector's last matrix is [F_x; theta xdot_old^T] at the last iterate
+     but one, which differs from x by less than the convergence tolerance */
+  if (colloc_newton_factorization(cc->nw, &abd, &J) == 0) return tangent_from(cc, abd, J, x, xdot_new, tf);
+  return cont_tangent(cc, x, xdot_old, xdot_new, tf);
 }
