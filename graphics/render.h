@@ -57,7 +57,9 @@ typedef struct {
 /* A tube drawn narrower than this many pixels in radius breaks up into
  * dashes after supersampling; automatic thickening keeps it at this size. */
 #define RENDER_MIN_RADIUS_PX 1.5
-#define RENDER_MAX_SIZE 8192
+/* The supersampled buffer takes 7 bytes per sample, 4 samples per pixel:
+ * 4096 x 4096 pixels need 470 MB, the most a workstation should be asked. */
+#define RENDER_MAX_SIZE 4096
 /* Samples per pixel along each axis (anti-aliasing). */
 #define RENDER_SUPERSAMPLE 2
 

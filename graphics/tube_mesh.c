@@ -7,6 +7,11 @@
 #include "cable_status.h"
 #include "graphics_vec.h"
 
+/* A vector keeping less than this fraction of its length after removing its
+ * tangential part is too close to the tangent to define a normal reliably
+ * (the normalised rest would carry round-off of relative size 1e-16 / 1e-3). */
+#define TUBE_PERP_MIN 1e-3
+
 int tube_points_count(int n, const double *xyz, int closed)
 {
   if (n < 2 || xyz == NULL) return 0;
@@ -52,7 +57,7 @@ static int tube_tangents(int n, const double *xyz, int closed, double *t)
   /* points with no usable chord inherit the nearest earlier tangent */
   for (int i = 0; i < n; i++) {
     double *ti = t + 3 * i;
-    if (gvec_norm(ti) > 0.5) continue;
+    if (gvec_norm(ti) > 0.5) continue; /* unit, i.e. set above */
     const double *src = t + 3 * (i == 0 ? have : i - 1);
     ti[0] = src[0], ti[1] = src[1], ti[2] = src[2];
   }
@@ -64,7 +69,7 @@ static int tube_tangents(int n, const double *xyz, int closed, double *t)
 static void tube_perp(const double t[3], double r[3])
 {
   gvec_axpy(r, -gvec_dot(r, t), t, r);
-  if (gvec_normalize(r) > 1e-3) return;
+  if (gvec_normalize(r) > TUBE_PERP_MIN) return;
   /* the axis least aligned with t */
   int k = fabs(t[0]) <= fabs(t[1]) && fabs(t[0]) <= fabs(t[2]) ? 0 : fabs(t[1]) <= fabs(t[2]) ? 1 : 2;
   r[0] = r[1] = r[2] = 0;

@@ -445,6 +445,12 @@ static void test_frames(void)
   test_int("frames: n < 2 rejected", tube_frames_compute(1, xyz, 0, t, r, NULL), CABLE_ERR_INPUT);
 }
 
+static int cmp_long(const void *a, const void *b)
+{
+  long x = *(const long *)a, y = *(const long *)b;
+  return (x > y) - (x < y);
+}
+
 static void test_mesh(void)
 {
   enum { N = 50, S = 12 };
@@ -486,6 +492,32 @@ static void test_mesh(void)
   }
   test_int("mesh: triangles oriented outwards (count inward)", inward, 0);
   test_abs("mesh: end cap carries the end scalar", m->scalar[m->nv - 1], N - 1, 0);
+  tube_mesh_free(m);
+
+  /* a closed tube is a closed, consistently oriented surface: every directed
+   * edge occurs once and its reverse occurs once */
+  enum { NK = 120 };
+  double k[3 * NK];
+  for (int i = 0; i < NK; i++) {
+    double u = 2 * PI * i / NK;
+    k[3 * i] = 0.1 * cos(u), k[3 * i + 1] = 0.1 * sin(u), k[3 * i + 2] = 0.02 * sin(3 * u);
+  }
+  m = tube_mesh_alloc(NK, S, 1);
+  tube_mesh_build(m, k, NULL, 0.001);
+  long ne = 3L * m->ntri, *edge = malloc(sizeof *edge * (size_t)ne);
+  for (long e = 0; e < ne; e++) {
+    long t = e / 3, a = m->tri[3 * t + e % 3], b = m->tri[3 * t + (e + 1) % 3];
+    edge[e] = a * m->nv + b;
+  }
+  qsort(edge, (size_t)ne, sizeof *edge, cmp_long);
+  long bad = 0;
+  for (long e = 0; e < ne; e++) {
+    long a = edge[e] / m->nv, b = edge[e] % m->nv, rev = b * m->nv + a;
+    bad += (e > 0 && edge[e] == edge[e - 1]) ||
+           bsearch(&rev, edge, (size_t)ne, sizeof *edge, cmp_long) == NULL;
+  }
+  test_int("mesh: closed tube is a closed oriented surface (bad edges)", bad, 0);
+  free(edge);
   tube_mesh_free(m);
   tube_mesh_free(NULL);
   test_true("mesh: alloc rejects 2 sides", tube_mesh_alloc(N, 2, 0) == NULL);
