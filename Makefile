@@ -25,6 +25,8 @@ LIB_SRCS := $(filter-out auto_iface/cable_main.c,$(wildcard $(addsuffix /*.c,$(M
 LIB_OBJS := $(LIB_SRCS:%.c=$(BUILD)/%.o)
 TEST_SRCS := $(wildcard tests/test_*.c)
 TEST_BINS := $(TEST_SRCS:tests/%.c=$(BUILD)/tests/%)
+BENCH_SRCS := $(wildcard tests/bench_*.c)
+BENCH_BINS := $(BENCH_SRCS:tests/%.c=$(BUILD)/tests/%)
 PLUGIN_SRCS := $(wildcard tests/plugins/*.c)
 PLUGINS  := $(PLUGIN_SRCS:tests/plugins/%.c=$(BUILD)/plugins/%.so)
 LIBCABLE := $(BUILD)/libcable.a
@@ -83,7 +85,7 @@ demo: cable
 scenes: cable
 	@bash scripts/scenes.sh
 
-bench: cable tests-build
+bench: cable $(BENCH_BINS)
 	@bash scripts/bench.sh $(BUILD)
 
 clean:
@@ -99,4 +101,4 @@ help:
 	@echo "make bench      benchmarks, tables in doc/benchmarks.md"
 
 .PRECIOUS: $(BUILD)/%.o $(BUILD)/tests/%.o
--include $(LIB_OBJS:.o=.d) $(TEST_BINS:=.d) $(BUILD)/auto_iface/cable_main.d
+-include $(LIB_OBJS:.o=.d) $(TEST_BINS:=.d) $(BENCH_BINS:=.d) $(PLUGINS:.so=.d) $(BUILD)/auto_iface/cable_main.d

@@ -107,7 +107,7 @@ cable_cont *cable_cont_alloc(const cable_problem *pb, const cable_constants *c, 
   cc->xp = calloc(n, sizeof(double)); cc->xdotp = calloc(n, sizeof(double));
   cc->xt = calloc(n, sizeof(double)); cc->xdott = calloc(n, sizeof(double));
   cc->w1 = calloc(n, sizeof(double)); cc->w2 = calloc(n, sizeof(double)); cc->w3 = calloc(n, sizeof(double));
-  cc->svec = calloc(2 * n, sizeof(double));
+  cc->svec = calloc(3 * n, sizeof(double)); /* up to three singular vectors (switching) */
   cc->xq = calloc(n, sizeof(double)); cc->xdotq = calloc(n, sizeof(double));
   cc->umax = calloc((size_t)cc->ndim, sizeof(double));
   cc->sol = cable_solution_alloc(cc->ndim, cc->ntst, cc->ncol, cc->npar, cc->nfpr);

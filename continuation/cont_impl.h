@@ -32,7 +32,7 @@ struct cable_cont {
   double *xp, *xdotp;           /* previous accepted point and tangent */
   double *xt, *xdott;           /* trial point and tangent */
   double *w1, *w2, *w3;         /* work vectors of length n */
-  double *svec;                 /* [n * 2] singular-vector work */
+  double *svec;                 /* [n * 3] singular-vector work */
   double ds;                    /* signed step size for the next step */
   double ds_used;               /* step size that produced the current point */
   double ds_prev;               /* step size that produced the previous point */

@@ -33,19 +33,27 @@ int cont_switch_direction(cable_cont *cc)
     return CABLE_ERR_SWITCH;
   }
   if (rc != CABLE_SUCCESS) return rc;
-  int want = 2;
-  double sv[2] = {0, 0};
-  int svrc = cont_smallest_sv(cc, want, sv, cc->svec);
+  /* three values tell a simple kernel (sigma1 << sigma2) from a
+     two-dimensional one (sigma2 << sigma3) */
+  double sv[3] = {0, 0, 0};
+  int svrc = cont_smallest_sv(cc, 3, sv, cc->svec);
   if (svrc != 0 && svrc != 2) {
     cont_set_error(cc, "ISW=-1: singular vectors did not converge");
     return CABLE_ERR_SWITCH;
   }
-  if (sv[0] > CONT_SWITCH_SV_RATIO * sv[1]) {
-    cont_set_error(cc, "ISW=-1: not a branch point (smallest singular values %.3e, %.3e)", sv[0], sv[1]);
+  int dim = sv[0] <= CONT_SWITCH_SV_RATIO * sv[1] ? 1 : sv[1] <= CONT_SWITCH_SV_RATIO * sv[2] ? 2 : 0;
+  if (dim == 0) {
+    cont_set_error(cc, "ISW=-1: not a branch point (smallest singular values %.3e, %.3e, %.3e)", sv[0], sv[1],
+                   sv[2]);
     return CABLE_ERR_SWITCH;
   }
-  snprintf(cc->note, sizeof cc->note, "switching: smallest singular values %.3e, %.3e", sv[0], sv[1]);
-  int pick = cc->c.bpsym == 1 ? 1 : 0;
+  if (cc->c.bpsym >= dim) {
+    cont_set_error(cc, "ISW=-1: BPDIR=%d but the kernel at this branch point is %d-dimensional", cc->c.bpsym, dim);
+    return CABLE_ERR_SWITCH;
+  }
+  snprintf(cc->note, sizeof cc->note, "switching at a %s branch point: singular values %.3e, %.3e, %.3e",
+           dim == 1 ? "simple" : "double", sv[0], sv[1], sv[2]);
+  int pick = cc->c.bpsym;
   const double *phi = cc->svec + (size_t)pick * (size_t)n;
   memcpy(cc->xdot, phi, (size_t)n * sizeof *phi);
   cont_normalize(cc, cc->xdot);

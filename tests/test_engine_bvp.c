@@ -191,7 +191,39 @@ static void test_double_bp(memrun *r)
        (0.025)^8 (n pi)^10 < 1e-8 */
     if (bp) test_rel(what, bp->par[0], (n * M_PI) * (n * M_PI), 1e-7);
   }
+  const cable_solution *bp1 = memrun_find(r, CABLE_TY_BP, 0);
+  cable_solution *start = bp1 ? cable_solution_clone(bp1) : NULL;
   memrun_free(r);
+  if (!start) return;
+  /* switching at the double BP along either kernel vector (BPDIR = 0, 1):
+     every solution of the uncoupled pair has each theta_i either 0 or a
+     buckled elastica at the same lambda, lambda = 4 K(sin(theta_i(0)/2))^2 */
+  for (int dir = 0; dir <= 1; dir++) {
+    base_constants(&c, 40, 4);
+    c.jac = 0; c.isw = -1; c.bpsym = dir; c.isp = 0;
+    c.ds = 0.05; c.dsmin = 1e-6; c.dsmax = 0.2; c.nmx = 30; c.npr = 10;
+    memrun_run(&pb, &c, start, r);
+    double worst = 0, amp = 0;
+    for (int i = 1; i < r->nsol; i++) {
+      const cable_solution *s = r->sol[i];
+      double lam = s->par[0];
+      for (int comp = 0; comp < 4; comp += 2) {
+        double th0 = fabs(s->u[comp]);
+        amp = fmax(amp, th0);
+        if (th0 < 1e-6) continue; /* this elastica stays straight */
+        double K = gsl_sf_ellint_Kcomp(sin(th0 / 2), GSL_PREC_DOUBLE);
+        worst = fmax(worst, fabs(lam - 4 * K * K) / lam);
+      }
+    }
+    char what[96];
+    snprintf(what, sizeof what, "double BP, BPDIR=%d: the branch buckles", dir);
+    test_true(what, r->status > 0 && amp > 0.3);
+    /* FD Jacobians and NTST=40, NCOL=4: discretisation error (0.025)^8 pi^10 ~ 1e-8 */
+    snprintf(what, sizeof what, "double BP, BPDIR=%d: each buckled component on lambda = 4K^2", dir);
+    test_le(what, worst, 1e-6);
+    memrun_free(r);
+  }
+  cable_solution_free(start);
 }
 
 int main(void)
