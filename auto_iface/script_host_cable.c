@@ -9,8 +9,11 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <time.h>
+#include <unistd.h>
 
 #include "aufile.h"
+#include "braid_analysis.h"
 #include "braid_problems.h"
 #include "cable_cont.h"
 #include "cable_status.h"
@@ -413,11 +416,30 @@ typedef struct collector {
   rp_branch *b;
   FILE *diag;
   int rc;
+  int tty;          /* stderr is a terminal: show the progress line */
 } collector;
+
+static double now_seconds(void)
+{
+  struct timespec ts;
+  clock_gettime(CLOCK_MONOTONIC, &ts);
+  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+/* One-line live progress on a terminal (stderr), rewritten in place. */
+static void progress(const collector *c, const cable_point *pt)
+{
+  if (!c->tty) return;
+  int k = pt->nicp > 0 ? pt->icp[0] : 0;
+  fprintf(stderr, "\r  branch %d  point %5d  PAR(%d) = %-14.8g ds = %-9.3g Newton %d   ", pt->ibr, pt->pt, k + 1,
+          pt->par[k], pt->ds, pt->newton_iters);
+  fflush(stderr);
+}
 
 static int collect_point(void *ctx, const cable_point *pt)
 {
   collector *c = ctx;
+  progress(c, pt);
   /* a labelled point's solution comes next, with the same point: add both then */
   if (pt->lab > 0) return 0;
   if (!c->rc) c->rc = rp_branch_add(c->b, pt, NULL);
@@ -445,7 +467,7 @@ static const char *par_name(const cable_names *n, int k, char *buf, size_t len)
 }
 
 /* AUTO prints every labelled point of a run; so does the host. */
-static void log_branch(const cable_replay *r, const rp_branch *b, int status, const char *why)
+static void log_branch(const cable_replay *r, const rp_branch *b, int status, const char *why, double seconds)
 {
   FILE *f = rp_log(r);
   char nm[64];
@@ -459,6 +481,20 @@ static void log_branch(const cable_replay *r, const rp_branch *b, int status, co
   }
   fprintf(f, "  branch %d: %d points, %d labelled; end: %s%s%s\n", b->ibr, b->npt, b->nsol,
           cable_status_message(status), why && why[0] ? ": " : "", why ? why : "");
+  /* summary: special points, time, the worst first-integral drift of the
+     stored solutions (braid problems: |F|^2, F.M, h, Hamiltonian along s) */
+  int nbp = 0, nlp = 0, nuz = 0;
+  double drift = -1;
+  for (int i = 0; i < b->nsol; i++) {
+    int ty = cable_type_base(b->sol[i]->itp);
+    nbp += ty == 6;
+    nlp += ty == 5;
+    nuz += ty == -4;
+    drift = fmax(drift, braid_first_integral_drift(b->sol[i]));
+  }
+  fprintf(f, "  summary: %d BP, %d LP, %d UZ; %.1f s", nbp, nlp, nuz, seconds);
+  if (drift >= 0) fprintf(f, "; worst first-integral drift %.2e", drift);
+  fprintf(f, "\n");
 }
 
 static int engine_run(cable_replay *r, rp_setup *s, rp_branch **out, cable_error *err)
@@ -483,7 +519,8 @@ static int engine_run(cable_replay *r, rp_setup *s, rp_branch **out, cable_error
     return st;
   }
   int ibr = ++r->next_branch;
-  collector col = {rp_branch_alloc(ibr, &s->c, &s->names, s->e), r->opt.diag, 0};
+  double t_start = now_seconds();
+  collector col = {rp_branch_alloc(ibr, &s->c, &s->names, s->e), r->opt.diag, 0, isatty(fileno(stderr))};
   if (!col.b) {
     cable_cont_free(cc);
     problem_release(r, &prob);
@@ -506,7 +543,8 @@ static int engine_run(cable_replay *r, rp_setup *s, rp_branch **out, cable_error
     return cable_error_set(err, st, NULL, 0, NULL, "no point converged: %s", why[0] ? why : cable_status_message(st));
   }
   /* like AUTO, a branch that ends abnormally (MX) is still a result */
-  log_branch(r, col.b, st, why);
+  if (col.tty) fprintf(stderr, "\r%*s\r", 100, "");
+  log_branch(r, col.b, st, why, now_seconds() - t_start);
   *out = col.b;
   return 0;
 }

@@ -119,8 +119,10 @@ int main(void)
     phase_times(&pb, ntst, &tj, &tf);
     /* KLU becomes very slow beyond NTST ~ 100 at NDIM = 21 (doc/linear-algebra.md) */
     double tk = ntst <= 100 ? step_time(&pb, ntst, CABLE_LINSOLVER_KLU, &nitk) : (double)NAN;
-    printf("| %d | %.4f | %.1f | %.4f | %.4f | %s%.4f | %s%.1f |\n", ntst, tc, nit, tj, tf, isnan(tk) ? "(skipped) " : "",
-           isnan(tk) ? 0.0 : tk, isnan(tk) ? "- " : "", isnan(tk) ? 0.0 : tk / tc);
+    if (isnan(tk))
+      printf("| %d | %.4f | %.1f | %.4f | %.4f | not run | - |\n", ntst, tc, nit, tj, tf);
+    else
+      printf("| %d | %.4f | %.1f | %.4f | %.4f | %.4f | %.1f |\n", ntst, tc, nit, tj, tf, tk, tk / tc);
     fflush(stdout);
   }
   return 0;
