@@ -32,7 +32,7 @@ PLUGINS  := $(PLUGIN_SRCS:tests/plugins/%.c=$(BUILD)/plugins/%.so)
 LIBCABLE := $(BUILD)/libcable.a
 DEPS_OK  := build/.deps-ok
 
-.PHONY: all check asan valgrind demo scenes bench stress fuzz clean help deps
+.PHONY: all check asan valgrind demo scenes bench stress fuzz clean help deps tests-build
 
 all: cable
 
@@ -88,6 +88,14 @@ scenes: cable
 bench: cable $(BENCH_BINS)
 	@bash scripts/bench.sh $(BUILD)
 
+# Stress grid (scripts/stress.sh, table in doc/stress.md); a quick subset runs in make check.
+stress: cable tests-build
+	@bash scripts/stress.sh $(BUILD)
+
+# Fuzzing of the constants, script and s-file parsers (clang's libFuzzer).
+fuzz:
+	@bash scripts/fuzz.sh
+
 clean:
 	rm -rf build cable
 
@@ -99,6 +107,8 @@ help:
 	@echo "make valgrind   tests under valgrind memcheck"
 	@echo "make scenes     replay every scene in runs/"
 	@echo "make bench      benchmarks, tables in doc/benchmarks.md"
+	@echo "make stress     stress grid, table in doc/stress.md"
+	@echo "make fuzz       fuzz the parsers (libFuzzer, 10 minutes)"
 
 .PRECIOUS: $(BUILD)/%.o $(BUILD)/tests/%.o
 -include $(LIB_OBJS:.o=.d) $(TEST_BINS:=.d) $(BENCH_BINS:=.d) $(PLUGINS:.so=.d) $(BUILD)/auto_iface/cable_main.d
