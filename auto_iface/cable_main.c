@@ -7,6 +7,8 @@
 #include "aufile.h"
 #include "braid_resolver.h"
 #include "cable_commands.h"
+#include "cable_pictures.h"
+#include "graphics_text.h"
 #include "cable_status.h"
 #include "cable_version.h"
 #include "script.h"
@@ -26,6 +28,12 @@ static void usage(FILE *out)
         "  analyze s.NAME LABEL...\n"
         "                     derived quantities of braid solutions (Lk, Tw, Wr, knot type,\n"
         "                     contact pressure, tube overlap, first integrals)\n"
+        "  plot [x=COL] [y=COL] [o=FILE.png|.svg] b.NAME ...\n"
+        "                     bifurcation diagram (default: T against F) of b-files\n"
+        "  render s.NAME LABEL [o=FILE.png] [view=X,Y,Z] [size=N] [thicken=K]\n"
+        "                     [color=pressure] [vtp=FILE.vtp] [ply=FILE.ply]\n"
+        "                     shaded 3-D picture of a braid solution with its contact\n"
+        "                     pressure profiles; exports for ParaView and Blender\n"
         "  --version          cable's version and the library versions\n"
         "  --help             this text\n"
         "See README.md and doc/ for constants keys, scripts and file formats.\n",
@@ -80,6 +88,12 @@ int main(int argc, char **argv)
     }
     return report(cable_cmd_list(argv[2], stdout, &err), &err);
   }
+  if (strcmp(cmd, "plot") == 0) {
+    int rc = report(cable_cmd_plot(argc - 2, argv + 2, &err), &err);
+    graphics_text_cleanup(); /* fontconfig's caches, for leak checkers */
+    return rc;
+  }
+  if (strcmp(cmd, "render") == 0) return report(cable_cmd_render(argc - 2, argv + 2, &err), &err);
   if (strcmp(cmd, "analyze") == 0) {
     if (argc < 4) {
       fprintf(stderr, "cable: usage: cable analyze s.NAME LABEL...\n");

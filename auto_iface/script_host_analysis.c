@@ -8,7 +8,13 @@
  *       rows: [[name, sol, F_target, Lk_target], ...]; writes the comparison
  *       table (atomically, in the run directory) and prints it.  ref: a
  *       solution of the unbuckled branch; (Lk - Lk_ref)/2 counts the
- *       self-crossing passages of the braid axis since then. */
+ *       self-crossing passages of the braid axis since then.
+ *   plot('fig.png', ['flat', 'mode1', ...], marks=[[sol, '(a)'], ...],
+ *        x='T', y='F', title='...')
+ *       a bifurcation diagram of the saved b-files b.flat, b.mode1, ... in the
+ *       run directory, with the marked solutions as open circles
+ *   render(sol, 'fig.png', view=[x, y, z], size=600, thicken=0, vtp='f.vtp', ply='f.ply')
+ *       a shaded picture of a braid solution with its pressure profiles */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -16,6 +22,7 @@
 #include "atomic_file.h"
 #include "braid_analysis.h"
 #include "braid_state.h"
+#include "cable_pictures.h"
 #include "cable_status.h"
 #include "script_host_impl.h"
 
@@ -157,11 +164,93 @@ static int fn_compare(cable_replay *r, int nargs, const script_value *args, cons
   return 0;
 }
 
+static void run_path(const cable_replay *r, const char *file, char *buf, size_t len)
+{
+  int rel = file[0] != '/' && r->opt.dir && r->opt.dir[0];
+  snprintf(buf, len, "%s%s%s", rel ? r->opt.dir : "", rel ? "/" : "", file);
+}
+
+static const char *kw_str(const script_kwargs *kw, const char *name)
+{
+  const script_value *v = script_kwargs_find(kw, name);
+  return v ? script_string_chars(v) : NULL;
+}
+
+#define PLOT_MAX_FILES 64
+#define PLOT_MAX_MARKS 64
+
+static int fn_plot(cable_replay *r, int nargs, const script_value *args, const script_kwargs *kw, cable_error *err)
+{
+  const char *file = nargs == 2 ? script_string_chars(&args[0]) : NULL;
+  const script_value *names = nargs == 2 ? &args[1] : NULL;
+  if (!file || !names || names->type != SCRIPT_LIST || script_list_len(names) < 1 ||
+      script_list_len(names) > PLOT_MAX_FILES)
+    return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, NULL,
+                           "plot('fig.png', ['name', ...] (1 to %d saved results), marks=[[sol, 'text'], ...])",
+                           PLOT_MAX_FILES);
+  char bnames[PLOT_MAX_FILES][CABLE_NAME_MAX + 3];
+  const char *bf[PLOT_MAX_FILES];
+  int nf = (int)script_list_len(names);
+  for (int i = 0; i < nf; i++) {
+    const char *nm = script_string_chars(script_list_get(names, (size_t)i));
+    if (!nm) return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, NULL, "plot: result names must be strings");
+    snprintf(bnames[i], sizeof bnames[i], "b.%s", nm);
+    bf[i] = bnames[i];
+  }
+  plot_annotation marks[PLOT_MAX_MARKS];
+  int nm = 0;
+  const script_value *mv = script_kwargs_find(kw, "marks");
+  const char *xc = kw_str(kw, "x"), *yc = kw_str(kw, "y");
+  for (size_t i = 0; mv && i < script_list_len(mv) && nm < PLOT_MAX_MARKS; i++) {
+    const script_value *m = script_list_get(mv, i);
+    const cable_solution *s = m && script_list_len(m) == 2 ? handle_solution(script_list_get(m, 0)) : NULL;
+    const char *text = s ? script_string_chars(script_list_get(m, 1)) : NULL;
+    if (!s || !text)
+      return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, "marks", "marks are [solution, 'text'] pairs");
+    /* marks sit at (T, F) of the solution: the default axes of braid diagrams */
+    if ((xc && strcmp(xc, "T") != 0) || (yc && strcmp(yc, "F") != 0))
+      return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, "marks", "marks are drawn on the default (T, F) axes only");
+    marks[nm++] = (plot_annotation){s->par[BP_T], s->par[BP_F], text, 0};
+  }
+  char out[1200];
+  run_path(r, file, out, sizeof out);
+  int rc = cable_plot_files(r->opt.dir, bf, nf, xc, yc, marks, nm, kw_str(kw, "title"), out, err);
+  if (!rc) fprintf(r->opt.log ? r->opt.log : stdout, "  diagram written to %s\n", out);
+  return rc;
+}
+
+static int fn_render(cable_replay *r, int nargs, const script_value *args, const script_kwargs *kw,
+                     cable_error *err)
+{
+  const cable_solution *s = nargs == 2 ? handle_solution(&args[0]) : NULL;
+  const char *file = nargs == 2 ? script_string_chars(&args[1]) : NULL;
+  if (!s || !file) return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, NULL, "render(sol, 'fig.png', view=[x, y, z], ...)");
+  render_options o;
+  memset(&o, 0, sizeof o);
+  const script_value *v;
+  if ((v = script_kwargs_find(kw, "view"))) {
+    if (script_list_len(v) != 3) return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, "view", "view=[x, y, z]");
+    for (size_t i = 0; i < 3; i++) o.view_dir[i] = script_list_get(v, i)->num;
+  }
+  if ((v = script_kwargs_find(kw, "size"))) o.width = o.height = (int)v->num;
+  if ((v = script_kwargs_find(kw, "thicken"))) o.thicken = v->num;
+  char out[1200], vtp[1200], ply[1200];
+  run_path(r, file, out, sizeof out);
+  const char *vn = kw_str(kw, "vtp"), *pn = kw_str(kw, "ply");
+  if (vn) run_path(r, vn, vtp, sizeof vtp);
+  if (pn) run_path(r, pn, ply, sizeof ply);
+  int rc = cable_render_solution(s, &o, out, vn ? vtp : NULL, pn ? ply : NULL, err);
+  if (!rc) fprintf(r->opt.log ? r->opt.log : stdout, "  label %d rendered to %s\n", s->lab, out);
+  return rc;
+}
+
 int rp_call(void *ctx, const char *name, int nargs, const script_value *args, const script_kwargs *kw,
             script_value *out, cable_error *err)
 {
   cable_replay *r = ctx;
   if (strcmp(name, "analyze") == 0) return fn_analyze(nargs, args, out, err);
   if (strcmp(name, "compare") == 0) return fn_compare(r, nargs, args, kw, err);
+  if (strcmp(name, "plot") == 0) return fn_plot(r, nargs, args, kw, err);
+  if (strcmp(name, "render") == 0) return fn_render(r, nargs, args, kw, err);
   return CABLE_ERR_NOTFOUND;
 }

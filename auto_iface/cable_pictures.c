@@ -1,0 +1,264 @@
+#include "cable_pictures.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "aufile.h"
+#include "names.h"
+#include "braid_model.h"
+#include "braid_pressure.h"
+#include "braid_state.h"
+#include "cable_status.h"
+#include "export.h"
+#include "plot.h"
+#include "render.h"
+
+#define PLOT_MAX_BRANCHES 256
+
+/* KEY=VALUE option or NULL */
+static const char *option(const char *arg, const char *key)
+{
+  size_t n = strlen(key);
+  return strncmp(arg, key, n) == 0 && arg[n] == '=' ? arg + n + 1 : NULL;
+}
+
+static int has_suffix(const char *s, const char *suf)
+{
+  size_t a = strlen(s), b = strlen(suf);
+  return a >= b && strcmp(s + a - b, suf) == 0;
+}
+
+static int same_point(double x1, double y1, double x2, double y2)
+{
+  return fabs(x1 - x2) <= 1e-9 * (1 + fabs(x1)) && fabs(y1 - y2) <= 1e-9 * (1 + fabs(y1));
+}
+
+int cable_plot_files(const char *dir, const char *const *bfiles, int nfiles, const char *xcol, const char *ycol,
+                     const plot_annotation *marks, int nmarks, const char *title, const char *out,
+                     cable_error *err)
+{
+  if (nfiles < 1 || nfiles > 64) return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, "", "give 1 to 64 b-files");
+  cable_bfile *files[64] = {NULL};
+  plot_branch br[PLOT_MAX_BRANCHES];
+  char names[PLOT_MAX_BRANCHES][64];
+  int *labels[PLOT_MAX_BRANCHES], *types[PLOT_MAX_BRANCHES];
+  int nb = 0, rc = 0;
+  const char *xl = xcol, *yl = ycol;
+  for (int f = 0; f < nfiles && !rc; f++) {
+    char path[1200];
+    snprintf(path, sizeof path, "%s%s%s", dir && dir[0] ? dir : "", dir && dir[0] ? "/" : "", bfiles[f]);
+    if (!(files[f] = cable_bfile_read(path, err))) {
+      rc = err->status ? err->status : CABLE_ERR_IO;
+      break;
+    }
+    const char *base = strrchr(bfiles[f], '/');
+    base = base ? base + 1 : bfiles[f];
+    if (strncmp(base, "b.", 2) == 0) base += 2;
+    for (int s = 0; s < files[f]->nbranch && nb < PLOT_MAX_BRANCHES; s++) {
+      const cable_bfile_branch *b = &files[f]->branch[s];
+      if (b->nrow < 1) continue;
+      /* defaults: the principal parameter against F when present, else L2-NORM */
+      const char *xc = xcol ? xcol : b->colname[0];
+      const char *yc = ycol ? ycol : cable_bfile_column(b, "F") ? "F" : "L2-NORM";
+      const double *x = cable_bfile_column(b, xc), *y = cable_bfile_column(b, yc);
+      if (!x || !y) {
+        rc = cable_error_set(err, CABLE_ERR_NOTFOUND, path, b->first_line, !x ? xc : yc,
+                             "no such column in branch %d of this b-file", abs(b->br[0]));
+        break;
+      }
+      labels[nb] = malloc(2 * (size_t)b->nrow * sizeof(int));
+      if (!labels[nb]) {
+        rc = cable_error_set(err, CABLE_ERR_ALLOC, NULL, 0, "", "out of memory");
+        break;
+      }
+      types[nb] = labels[nb] + b->nrow;
+      for (int i = 0; i < b->nrow; i++) {
+        labels[nb][i] = cable_type_base(b->ty[i]) == 4 ? 0 : b->lab[i];
+        types[nb][i] = b->ty[i];
+      }
+      xl = xc;
+      yl = yc;
+      if (files[f]->nbranch > 1) snprintf(names[nb], sizeof names[nb], "%s (%d)", base, s + 1);
+      else snprintf(names[nb], sizeof names[nb], "%s", base);
+      br[nb] = (plot_branch){names[nb], b->nrow, x, y, types[nb], labels[nb]};
+      nb++;
+    }
+  }
+  /* a point that sits on a branch point of another branch (a branch's start
+     at the BP it was switched from) or on a mark is drawn only once: as the
+     BP or the mark */
+  for (int i = 0; !rc && i < nb; i++)
+    for (int k = 0; k < br[i].n; k++) {
+      if (cable_type_base(types[i][k]) == 6 || !labels[i][k]) continue;
+      int hidden = 0;
+      for (int m = 0; m < nmarks; m++) hidden |= same_point(br[i].x[k], br[i].y[k], marks[m].x, marks[m].y);
+      for (int j = 0; !hidden && j < nb; j++)
+        for (int q = 0; !hidden && q < br[j].n; q++)
+          hidden = cable_type_base(types[j][q]) == 6 && same_point(br[i].x[k], br[i].y[k], br[j].x[q], br[j].y[q]);
+      if (hidden) {
+        labels[i][k] = 0;
+        types[i][k] = 0;
+      }
+    }
+  if (!rc && nb == 0) rc = cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, "", "the b-files hold no points");
+  if (!rc) {
+    plot_options o = {xl, yl, title, 0, 0, has_suffix(out, ".svg") ? PLOT_FORMAT_SVG : PLOT_FORMAT_PNG};
+    rc = plot_bifurcation_annotated(br, nb, marks, nmarks, &o, out);
+    if (rc) cable_error_set(err, rc, out, 0, "o", "cannot write the diagram: %s", cable_status_message(rc));
+  }
+  for (int i = 0; i < nb; i++) free(labels[i]);
+  for (int f = 0; f < nfiles; f++) cable_bfile_free(files[f]);
+  return rc;
+}
+
+int cable_cmd_plot(int argc, char **argv, cable_error *err)
+{
+  const char *xcol = NULL, *ycol = NULL, *out = "diagram.png", *title = NULL;
+  const char *files[64];
+  int nfiles = 0;
+  for (int i = 0; i < argc; i++) {
+    const char *v;
+    if ((v = option(argv[i], "x"))) xcol = v;
+    else if ((v = option(argv[i], "y"))) ycol = v;
+    else if ((v = option(argv[i], "o"))) out = v;
+    else if ((v = option(argv[i], "title"))) title = v;
+    else if (strchr(argv[i], '='))
+      return cable_error_set(err, CABLE_ERR_INPUT, "<command line>", 0, argv[i], "unknown option (x=, y=, o=, title=)");
+    else if (nfiles >= 64)
+      return cable_error_set(err, CABLE_ERR_INPUT, "<command line>", 0, argv[i], "at most 64 b-files");
+    else files[nfiles++] = argv[i];
+  }
+  int rc = cable_plot_files(NULL, files, nfiles, xcol, ycol, NULL, 0, title, out, err);
+  if (!rc) printf("cable: diagram written to %s\n", out);
+  return rc;
+}
+
+/* Strands, contact curve and pressures of a braid solution at its nodes. */
+typedef struct {
+  int n;
+  double *r1, *r2, *c, *p1, *p2;
+} braid_picture;
+
+static void picture_free(braid_picture *bp)
+{
+  free(bp->r1); free(bp->r2); free(bp->c); free(bp->p1); free(bp->p2);
+}
+
+static int picture_build(const cable_solution *s, braid_picture *bp)
+{
+  int n = cable_solution_npts(s);
+  memset(bp, 0, sizeof *bp);
+  bp->n = n;
+  bp->r1 = malloc(3 * (size_t)n * sizeof(double));
+  bp->r2 = malloc(3 * (size_t)n * sizeof(double));
+  bp->c = malloc(3 * (size_t)n * sizeof(double));
+  bp->p1 = malloc((size_t)n * sizeof(double));
+  bp->p2 = malloc((size_t)n * sizeof(double));
+  if (!bp->r1 || !bp->r2 || !bp->c || !bp->p1 || !bp->p2) return CABLE_ERR_ALLOC;
+  braid_material m;
+  braid_material_from_par(s->par, &m);
+  double delta = s->par[BP_DELTA];
+  for (int k = 0; k < n; k++) {
+    const double *u = s->u + (size_t)k * BR_NDIM;
+    double q0 = u[BR_Q0], q1 = u[BR_Q1], q2 = u[BR_Q2], q3 = u[BR_Q3];
+    double qq = q0 * q0 + q1 * q1 + q2 * q2 + q3 * q3;
+    /* d1 from the Euler parameters (paper, Sect. 12.2.3), normalised by |q|^2 */
+    double d1[3] = {(2 * q1 * q2 - 2 * q0 * q3) / qq, (q0 * q0 - q1 * q1 + q2 * q2 - q3 * q3) / qq,
+                    (2 * q2 * q3 + 2 * q0 * q1) / qq};
+    for (int i = 0; i < 3; i++) {
+      bp->r1[3 * k + i] = u[BR_X1 + i];
+      bp->r2[3 * k + i] = u[BR_X1 + i] + delta * d1[i];
+      bp->c[3 * k + i] = u[BR_X1 + i] + 0.5 * delta * d1[i];
+    }
+    double f[BR_NDIM];
+    if (braid_rhs(u, &m, f, NULL, NULL) != 0 || braid_contact_pressure(u, f, &m, &bp->p1[k], &bp->p2[k]) != 0)
+      return CABLE_ERR_NONFINITE;
+  }
+  return CABLE_SUCCESS;
+}
+
+int cable_render_solution(const cable_solution *s, const render_options *o, const char *out, const char *vtp,
+                          const char *ply, cable_error *err)
+{
+  if (s->ndim != BR_NDIM || s->npar <= BP_LTOT)
+    return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, "", "label %d is not a braid solution (NDIM=%d)", s->lab,
+                           s->ndim);
+  braid_picture bp;
+  int rc = picture_build(s, &bp);
+  if (rc) {
+    picture_free(&bp);
+    return cable_error_set(err, rc, NULL, 0, "", "cannot evaluate label %d: %s", s->lab, cable_status_message(rc));
+  }
+  /* a knot's strands are two open tubes that join end to end; a link's are closed */
+  int knot = s->par[BP_LTOT] > 0 && fabs(s->par[BP_L] + s->par[BP_L2] - s->par[BP_LTOT]) < 1e-6 * s->par[BP_LTOT];
+  double radius = 0.5 * s->par[BP_DELTA];
+  /* strand 1 red, strand 2 blue */
+  render_tube t[2] = {{bp.n, bp.r1, bp.p1, radius, {0.80, 0.20, 0.15}, !knot},
+                      {bp.n, bp.r2, bp.p2, radius, {0.15, 0.35, 0.80}, !knot}};
+  double pmax = 0, ext = 0;
+  for (int k = 0; k < bp.n; k++) {
+    pmax = fmax(pmax, fmax(fabs(bp.p1[k]), fabs(bp.p2[k])));
+    for (int i = 0; i < 3; i++) ext = fmax(ext, fabs(bp.c[3 * k + i] - bp.c[i]));
+  }
+  /* pressure profiles: white for strand 1, black for strand 2 (the paper's
+     convention), dark red where the pressure is negative; the largest
+     pressure is drawn 4 % of the knot's size away from the contact curve */
+  double scale = pmax > 0 ? 0.04 * ext / pmax : 0;
+  render_profile prof[2] = {{bp.c, bp.p1, bp.n, {1, 1, 1}, {0.6, 0, 0}, scale},
+                            {bp.c, bp.p2, bp.n, {0, 0, 0}, {0.6, 0, 0}, -scale}};
+  if (out) {
+    rc = render_tubes_png(t, 2, prof, 2, o, out);
+    if (rc) cable_error_set(err, rc, out, 0, "o", "cannot write the picture: %s", cable_status_message(rc));
+  }
+  export_options eo = {0, "pressure"};
+  if (!rc && vtp) {
+    rc = export_vtp_write(t, 2, prof, 1, &eo, vtp);
+    if (rc) cable_error_set(err, rc, vtp, 0, "vtp", "cannot write: %s", cable_status_message(rc));
+  }
+  if (!rc && ply) {
+    rc = export_ply_write(t, 2, &eo, ply);
+    if (rc) cable_error_set(err, rc, ply, 0, "ply", "cannot write: %s", cable_status_message(rc));
+  }
+  picture_free(&bp);
+  return rc;
+}
+
+int cable_cmd_render(int argc, char **argv, cable_error *err)
+{
+  if (argc < 2) return cable_error_set(err, CABLE_ERR_INPUT, "<command line>", 0, "", "usage: cable render s.NAME LABEL [options]");
+  const char *out = "knot.png", *vtp = NULL, *ply = NULL;
+  render_options o;
+  memset(&o, 0, sizeof o);
+  int rc = 0;
+  for (int i = 2; i < argc && !rc; i++) {
+    const char *v;
+    if ((v = option(argv[i], "o"))) out = v;
+    else if ((v = option(argv[i], "vtp"))) vtp = v;
+    else if ((v = option(argv[i], "ply"))) ply = v;
+    else if ((v = option(argv[i], "size"))) o.width = o.height = atoi(v);
+    else if ((v = option(argv[i], "thicken"))) o.thicken = atof(v);
+    else if ((v = option(argv[i], "color"))) {
+      if (strcmp(v, "pressure") == 0) o.colormap = RENDER_COLORMAP_DIVERGING;
+      else rc = cable_error_set(err, CABLE_ERR_INPUT, "<command line>", 0, argv[i], "color=pressure is the only colour map");
+    } else if ((v = option(argv[i], "view"))) {
+      if (sscanf(v, "%lf,%lf,%lf", &o.view_dir[0], &o.view_dir[1], &o.view_dir[2]) != 3)
+        rc = cable_error_set(err, CABLE_ERR_INPUT, "<command line>", 0, argv[i], "view=X,Y,Z (three numbers)");
+    } else
+      rc = cable_error_set(err, CABLE_ERR_INPUT, "<command line>", 0, argv[i],
+                           "unknown option (o=, size=, view=, thicken=, color=pressure, vtp=, ply=)");
+  }
+  if (rc) return rc;
+  cable_sfile *sf = cable_sfile_read(argv[0], err);
+  if (!sf) return err->status ? err->status : CABLE_ERR_IO;
+  const cable_solution *s = cable_sfile_find(sf, argv[1], err);
+  if (!s) rc = err->status ? err->status : CABLE_ERR_NOTFOUND;
+  else rc = cable_render_solution(s, &o, out, vtp, ply, err);
+  if (!rc) {
+    printf("cable: label %d rendered to %s\n", s->lab, out);
+    if (vtp) printf("cable: VTK PolyData written to %s\n", vtp);
+    if (ply) printf("cable: PLY mesh written to %s\n", ply);
+  }
+  cable_sfile_free(sf);
+  return rc;
+}

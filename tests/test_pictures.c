@@ -1,0 +1,112 @@
+/* cable's picture commands on real output: a bifurcation diagram from a
+ * b-file the AUTO writer produced, a rendered braid solution with its
+ * exports, and the error paths (missing file, unknown column, not a braid). */
+#include <stdio.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include "aufile.h"
+#include "braid_problems.h"
+#include "braid_start.h"
+#include "cable_cont.h"
+#include "cable_pictures.h"
+#include "constants_parse.h"
+#include "graphics_text.h"
+#include "harness.h"
+#include "test_problems.h"
+
+static long file_size(const char *path)
+{
+  struct stat st;
+  return stat(path, &st) == 0 ? (long)st.st_size : -1;
+}
+
+static int png_signature(const char *path)
+{
+  unsigned char sig[8] = {0};
+  FILE *f = fopen(path, "rb");
+  if (!f) return 0;
+  size_t n = fread(sig, 1, 8, f);
+  fclose(f);
+  return n == 8 && memcmp(sig, "\x89PNG\r\n\x1a\n", 8) == 0;
+}
+
+int main(void)
+{
+  mkdir("tests/tmp", 0755);
+  mkdir("tests/tmp/pictures", 0755);
+  cable_error err;
+  /* a b-file from a real run: the Bratu branch */
+  cable_constants c;
+  cable_constants_init(&c);
+  c.ntst = 10; c.ncol = 4; c.jac = 1; c.icp[0] = 0; c.nicp = 1;
+  c.ds = 0.2; c.dsmin = 1e-5; c.dsmax = 0.5; c.nmx = 20; c.npr = 5; c.ilp = 1;
+  cable_constants_take_problem_dims(&c, 2, 2, 0);
+  cable_names names;
+  cable_names_init(&names);
+  const cable_problem *bratu = cable_testproblem_bratu();
+  cable_names_fill(&names, bratu->parnames, bratu->npar, bratu->unames, bratu->ndim);
+  cable_error_clear(&err);
+  cable_aufile *w = cable_aufile_open("tests/tmp/pictures", "bratu", &c, &names, NULL, &err);
+  int st;
+  cable_cont *cc = cable_cont_alloc(bratu, &c, &st);
+  if (st == 0) st = cable_cont_set_start(cc, NULL);
+  cable_sink sink = cable_aufile_sink(w);
+  if (st == 0) cable_cont_run(cc, &sink, 1, 1, NULL);
+  cable_cont_free(cc);
+  test_int("b-file written", cable_aufile_close(w, &err), 0);
+  const char *files[1] = {"b.bratu"};
+  test_int("plot a b-file", cable_plot_files("tests/tmp/pictures", files, 1, NULL, NULL, NULL, 0, "Bratu",
+                                             "tests/tmp/pictures/bratu.png", &err), 0);
+  test_true("diagram is a PNG", png_signature("tests/tmp/pictures/bratu.png"));
+  test_int("plot to SVG", cable_plot_files("tests/tmp/pictures", files, 1, "lambda", "L2-NORM", NULL, 0, NULL,
+                                           "tests/tmp/pictures/bratu.svg", &err), 0);
+  test_true("SVG written", file_size("tests/tmp/pictures/bratu.svg") > 1000);
+  cable_error_clear(&err);
+  test_int("unknown column: CABLE_ERR_NOTFOUND", cable_plot_files("tests/tmp/pictures", files, 1, "nosuch", NULL,
+                                                                  NULL, 0, NULL, "tests/tmp/pictures/x.png", &err),
+           CABLE_ERR_NOTFOUND);
+  test_true("unknown column: message names the column", strcmp(err.key, "nosuch") == 0);
+  test_true("unknown column: no picture written", file_size("tests/tmp/pictures/x.png") < 0);
+  const char *missing[1] = {"b.does_not_exist"};
+  cable_error_clear(&err);
+  test_true("missing b-file: error", cable_plot_files("tests/tmp/pictures", missing, 1, NULL, NULL, NULL, 0, NULL,
+                                                      "tests/tmp/pictures/y.png", &err) != 0 &&
+                                         strstr(err.file, "b.does_not_exist") != NULL);
+
+  /* a converged flat (7,2) knot, rendered and exported */
+  braid_start_params sp;
+  braid_start_params_init(&sp, BRAID_START_TORUS, 7, +1, 0.0051364907419, 1.98889, 0.0);
+  cable_problem pb;
+  test_int("torus start", braid_start_prepare(&sp) || braid_problem_instance("braid_knot", &sp, &pb), 0);
+  cable_constants_init(&c);
+  c.ntst = 30; c.ncol = 4; c.jac = 1; c.icp[0] = BP_T; c.icp[1] = BP_L; c.icp[2] = BP_L2; c.icp[3] = BP_EPS21;
+  c.nicp = 4; c.nmx = 1;
+  cc = cable_cont_alloc(&pb, &c, &st);
+  if (st == 0) st = cable_cont_set_start(cc, NULL);
+  if (st == 0) st = cable_cont_step(cc);
+  test_int("flat knot converged", st, 0);
+  if (st == 0) {
+    render_options o;
+    memset(&o, 0, sizeof o);
+    o.width = o.height = 200;
+    test_int("render a braid solution", cable_render_solution(cable_cont_solution(cc), &o,
+                                                              "tests/tmp/pictures/knot.png",
+                                                              "tests/tmp/pictures/knot.vtp",
+                                                              "tests/tmp/pictures/knot.ply", &err), 0);
+    test_true("render: PNG", png_signature("tests/tmp/pictures/knot.png"));
+    test_true("render: VTK file", file_size("tests/tmp/pictures/knot.vtp") > 10000);
+    test_true("render: PLY file", file_size("tests/tmp/pictures/knot.ply") > 10000);
+  }
+  cable_cont_free(cc);
+  /* not a braid solution */
+  cable_sfile *sf = cable_sfile_read("tests/tmp/pictures/s.bratu", &err);
+  const cable_solution *b1 = sf ? cable_sfile_get(sf, 0) : NULL;
+  cable_error_clear(&err);
+  test_int("render a non-braid solution: CABLE_ERR_INPUT",
+           b1 ? cable_render_solution(b1, NULL, "tests/tmp/pictures/z.png", NULL, NULL, &err) : -99, CABLE_ERR_INPUT);
+  test_true("non-braid: nothing written", file_size("tests/tmp/pictures/z.png") < 0);
+  cable_sfile_free(sf);
+  graphics_text_cleanup();
+  return test_summary();
+}
