@@ -5,7 +5,7 @@
  *                                    lk_in_tube, pmin, psign, dmin, axis_dmin,
  *                                    drift, closure, err
  *   compare('table.txt', rows, ref=sol)
- *       rows: [[name, sol, F_target, Lk_target], ...]; writes the comparison
+ *       rows: [[name, sol, F_target, Lk_target(, ref)], ...]; writes the comparison
  *       table (atomically, in the run directory) and prints it.  ref: a
  *       solution of the unbuckled branch; (Lk - Lk_ref)/2 counts the
  *       self-crossing passages of the braid axis since then.
@@ -134,14 +134,24 @@ static int fn_compare(cable_replay *r, int nargs, const script_value *args, cons
           "F_cable", "rel", "Lk", "pass", "Lk_tube(paper)", "braid axis", "pmin", "dmin", "err");
   for (size_t i = 0; i < script_list_len(rows); i++) {
     const script_value *row = script_list_get(rows, i);
-    const cable_solution *s = row && row->type == SCRIPT_LIST && script_list_len(row) == 4
-                                  ? handle_solution(script_list_get(row, 1)) : NULL;
+    size_t nrow = row && row->type == SCRIPT_LIST ? script_list_len(row) : 0;
+    const cable_solution *s = nrow == 4 || nrow == 5 ? handle_solution(script_list_get(row, 1)) : NULL;
+    const cable_solution *rref = nrow == 5 ? handle_solution(script_list_get(row, 4)) : NULL;
+    double lk_row_ref = lk_ref;
     const char *name = s ? script_string_chars(script_list_get(row, 0)) : NULL;
     const script_value *fv = s ? script_list_get(row, 2) : NULL, *lv = s ? script_list_get(row, 3) : NULL;
     if (!s || !name || fv->type != SCRIPT_NUMBER || lv->type != SCRIPT_NUMBER) {
       cable_atomic_abort(af);
       return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, NULL,
-                             "compare: row %zu must be [name, solution, F_target, Lk_target]", i + 1);
+                             "compare: row %zu must be [name, solution, F_target, Lk_target(, reference solution)]",
+                             i + 1);
+    }
+    if (nrow == 5) {
+      if (!rref || (rc = analyze_solution(rref, &a, err))) {
+        cable_atomic_abort(af);
+        return rref ? rc : cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, NULL, "compare: row %zu: the reference must be a solution", i + 1);
+      }
+      lk_row_ref = a.topo.lk;
     }
     if ((rc = analyze_solution(s, &a, err))) {
       cable_atomic_abort(af);
@@ -152,7 +162,7 @@ static int fn_compare(cable_replay *r, int nargs, const script_value *args, cons
     knot_text(&a.topo.axis, kt, sizeof kt);
     snprintf(tube, sizeof tube, "%.4g (%.4g)", a.topo.lk_in_tube, lv->num);
     fprintf(f, "%-5s %4d %12.6f %12.6f %14.7f %9.2e %9.5f %4.0f %15s %-22s %11.4g %7.3f %9.2e\n", name, s->lab,
-            s->par[BP_T], Ft, F, fabs(F - Ft) / fabs(Ft), a.topo.lk, isnan(lk_ref) ? (double)NAN : (a.topo.lk - lk_ref) / 2,
+            s->par[BP_T], Ft, F, fabs(F - Ft) / fabs(Ft), a.topo.lk, isnan(lk_row_ref) ? (double)NAN : (a.topo.lk - lk_row_ref) / 2,
             tube, kt, fmin(a.pmin1, a.pmin2), a.tube.dmin, s->err_est);
   }
   rc = cable_atomic_commit(af, err);
