@@ -699,29 +699,40 @@ static int apply_uzr(pctx *x, const key_desc *d, const stmt *s)
   return 0;
 }
 
+/* A dict {parameter index or name: real} into idx[]/val[] (at most max
+ * entries); example is shown in the error for a value that is not a dict. */
+static int par_real_dict(pctx *x, const stmt *s, const char *example, int max, int *idx, double *val, int *n)
+{
+  int st = check_dict(x, s, example);
+  if (st) return st;
+  const cv *v = s->value;
+  if (v->n / 2 > max) return perr(x, CABLE_ERR_INPUT, s->line, s->key, "at most %d entries", max);
+  *n = 0;
+  for (int k = 0; k < v->n; k += 2) {
+    int neg;
+    st = resolve_par(x, s->key, v->item[k], 0, &idx[*n], &neg);
+    if (st == 0) st = real_value(x, s->key, v->item[k + 1], v->item[k + 1]->line, &val[*n]);
+    if (st) return st;
+    (*n)++;
+  }
+  return 0;
+}
+
 static int apply_thl(pctx *x, const key_desc *d, const stmt *s)
 {
   (void)d;
-  int st = check_dict(x, s, "{'T': 1.0, 11: 0.0}");
+  int idx[CABLE_MAX_THL], n;
+  double w[CABLE_MAX_THL];
+  int st = par_real_dict(x, s, "{'T': 1.0, 11: 0.0}", CABLE_MAX_THL, idx, w, &n);
   if (st) return st;
-  const cv *v = s->value;
-  if (v->n / 2 > CABLE_MAX_THL)
-    return perr(x, CABLE_ERR_INPUT, s->line, s->key, "at most %d weights", CABLE_MAX_THL);
-  cable_thl thl[CABLE_MAX_THL];
-  int n = 0;
-  memset(thl, 0, sizeof thl);
-  for (int k = 0; k < v->n; k += 2) {
-    int par, neg;
-    st = resolve_par(x, s->key, v->item[k], 0, &par, &neg);
-    if (st == 0) st = real_value(x, s->key, v->item[k + 1], v->item[k + 1]->line, &thl[n].weight);
-    if (st) return st;
-    if (thl[n].weight < 0)
-      return perr(x, CABLE_ERR_INPUT, v->item[k + 1]->line, s->key, "weights must be >= 0, got '%s'",
-                  v->item[k + 1]->text);
-    thl[n].index = par;
-    n++;
+  for (int k = 0; k < n; k++)
+    if (w[k] < 0)
+      return perr(x, CABLE_ERR_INPUT, s->value->item[2 * k + 1]->line, s->key, "weights must be >= 0, got '%s'",
+                  s->value->item[2 * k + 1]->text);
+  for (int k = 0; k < n; k++) {
+    x->c.thl[k].index = idx[k];
+    x->c.thl[k].weight = w[k];
   }
-  memcpy(x->c.thl, thl, (size_t)n * sizeof thl[0]);
   x->c.nthl = n;
   return 0;
 }
@@ -731,22 +742,14 @@ static int apply_thl(pctx *x, const key_desc *d, const stmt *s)
 static int apply_par(pctx *x, const key_desc *d, const stmt *s)
 {
   (void)d;
-  int st = check_dict(x, s, "{'T': 0.0, 5: 0.01}");
+  int idx[CABLE_MAX_THL], n;
+  double v[CABLE_MAX_THL];
+  int st = par_real_dict(x, s, "{'T': 0.0, 5: 0.01}", CABLE_MAX_THL, idx, v, &n);
   if (st) return st;
-  const cv *v = s->value;
-  if (v->n / 2 > CABLE_MAX_THL)
-    return perr(x, CABLE_ERR_INPUT, s->line, s->key, "at most %d values", CABLE_MAX_THL);
-  cable_parval pv[CABLE_MAX_THL];
-  int n = 0;
-  for (int k = 0; k < v->n; k += 2) {
-    int par, neg;
-    st = resolve_par(x, s->key, v->item[k], 0, &par, &neg);
-    if (st == 0) st = real_value(x, s->key, v->item[k + 1], v->item[k + 1]->line, &pv[n].value);
-    if (st) return st;
-    pv[n].index = par;
-    n++;
+  for (int k = 0; k < n; k++) {
+    x->c.par_override[k].index = idx[k];
+    x->c.par_override[k].value = v[k];
   }
-  memcpy(x->c.par_override, pv, (size_t)n * sizeof pv[0]);
   x->c.npar_override = n;
   return 0;
 }

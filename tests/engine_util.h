@@ -24,6 +24,19 @@ typedef struct {
 
 
 
+/* AUTO defaults with the fields every engine test sets: mesh, ICP=[PAR(1)],
+ * analytic Jacobians, no mesh adaptation. */
+static inline void engine_constants(cable_constants *c, int ntst, int ncol)
+{
+  cable_constants_init(c);
+  c->ntst = ntst;
+  c->ncol = ncol;
+  c->icp[0] = 0;
+  c->nicp = 1;
+  c->jac = 1;
+  c->iad = 0;
+}
+
 static inline int memrun_point(void *ctx, const cable_point *pt)
 {
   memrun *r = ctx;

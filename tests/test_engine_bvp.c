@@ -18,21 +18,11 @@
 #include "harness.h"
 #include "test_problems.h"
 
-static void base_constants(cable_constants *c, int ntst, int ncol)
-{
-  cable_constants_init(c);
-  c->ntst = ntst;
-  c->ncol = ncol;
-  c->icp[0] = 0;
-  c->nicp = 1;
-  c->jac = 1;
-  c->iad = 0;
-}
 
 static void test_bratu_fold(memrun *r)
 {
   cable_constants c;
-  base_constants(&c, 20, 4);
+  engine_constants(&c, 20, 4);
   c.ds = 0.1; c.dsmin = 1e-6; c.dsmax = 0.5; c.nmx = 60;
   c.rl1 = 10.0;
   c.ilp = 1; c.isp = 0;
@@ -52,7 +42,7 @@ static void test_bratu_fold(memrun *r)
 static void test_elastica(memrun *r)
 {
   cable_constants c;
-  base_constants(&c, 50, 5);
+  engine_constants(&c, 50, 5);
   c.ds = 0.5; c.dsmin = 1e-6; c.dsmax = 4.0; c.nmx = 200;
   c.rl1 = 100.0;
   c.isp = 2; c.ilp = 0;
@@ -72,7 +62,7 @@ static void test_elastica(memrun *r)
   memrun_free(r);
   if (!bp1) return;
   for (int dir = -1; dir <= 1; dir += 2) {
-    base_constants(&c, 50, 5);
+    engine_constants(&c, 50, 5);
     c.isw = -1;
     c.ds = 0.05 * dir; c.dsmin = 1e-6; c.dsmax = 0.2; c.nmx = 25; c.npr = 5;
     c.isp = 0; c.ilp = 0;
@@ -100,7 +90,7 @@ static void test_elastica(memrun *r)
 static double bratu_error(memrun *r, int ntst, int ncol)
 {
   cable_constants c;
-  base_constants(&c, ntst, ncol);
+  engine_constants(&c, ntst, ncol);
   c.ds = 0.1; c.dsmin = 1e-6; c.dsmax = 0.2; c.nmx = 100;
   c.isp = 0; c.ilp = 0;
   c.nuzr = 1;
@@ -174,7 +164,7 @@ static void test_double_bp(memrun *r)
                       .name = "double-elastica", .ndim = 4, .nbc = 4, .npar = 1,
                       .func = double_func, .bcnd = double_bcnd, .stpnt = double_stpnt};
   cable_constants c;
-  base_constants(&c, 40, 4);
+  engine_constants(&c, 40, 4);
   c.jac = 0; /* finite-difference Jacobians: the problem provides none */
   c.ds = 0.5; c.dsmin = 1e-6; c.dsmax = 3.0; c.nmx = 200;
   c.rl1 = 45.0;
@@ -199,7 +189,7 @@ static void test_double_bp(memrun *r)
      every solution of the uncoupled pair has each theta_i either 0 or a
      buckled elastica at the same lambda, lambda = 4 K(sin(theta_i(0)/2))^2 */
   for (int dir = 0; dir <= 1; dir++) {
-    base_constants(&c, 40, 4);
+    engine_constants(&c, 40, 4);
     c.jac = 0; c.isw = -1; c.bpsym = dir; c.isp = 0;
     c.ds = 0.05; c.dsmin = 1e-6; c.dsmax = 0.2; c.nmx = 30; c.npr = 10;
     memrun_run(&pb, &c, start, r);

@@ -17,18 +17,14 @@
 #include "harness.h"
 #include "test_problems.h"
 
-static void base_constants(cable_constants *c, int ntst, int ncol)
+/* no special-point detection unless a test asks */
+static void base_constants_quiet(cable_constants *c, int ntst, int ncol)
 {
-  cable_constants_init(c);
-  c->ntst = ntst;
-  c->ncol = ncol;
-  c->icp[0] = 0;
-  c->nicp = 1;
-  c->jac = 1;
-  c->iad = 0;
+  engine_constants(c, ntst, ncol);
   c->isp = 0;
   c->ilp = 0;
 }
+
 
 static double layer_error(const cable_solution *s)
 {
@@ -45,7 +41,7 @@ static void test_adaptation(memrun *r)
   double err[2];
   for (int iad = 0; iad <= 1; iad++) {
     cable_constants c;
-    base_constants(&c, 12, 3);
+    base_constants_quiet(&c, 12, 3);
     c.iad = iad;
     c.ds = 0.05; c.dsmin = 1e-4; c.dsmax = 0.05; c.nmx = 8; c.iads = 0;
     memrun_run(cable_testproblem_layer(), &c, NULL, r);
@@ -63,7 +59,7 @@ static void test_stiff(void)
   /* iad = 0: uniform mesh; iad = 1: adapted every step */
   for (int iad = 0; iad <= 1; iad++) {
     cable_constants c;
-    base_constants(&c, 50, 7);
+    base_constants_quiet(&c, 50, 7);
     c.iad = iad;
     c.ds = 1.0; c.dsmin = 1e-4; c.dsmax = 2.0; c.nmx = 100;
     c.nuzr = 1; c.uzr[0].par = 0; c.uzr[0].value = 60.0; c.uzr[0].stop = 1;
@@ -129,7 +125,7 @@ static void test_newton_solvers(void)
   int iters[2] = {0, 0}, n = 0;
   for (int k = 0; k < 2; k++) {
     cable_constants c;
-    base_constants(&c, 20, 4);
+    base_constants_quiet(&c, 20, 4);
     c.linsolver = k ? CABLE_LINSOLVER_KLU : CABLE_LINSOLVER_CONDENSE;
     c.nwtn = c.itnw = 8;
     int icp[1] = {0}, st;
@@ -164,7 +160,7 @@ static void test_variants(void)
 {
   memrun *a = calloc(1, sizeof *a), *b = calloc(1, sizeof *b);
   cable_constants c;
-  base_constants(&c, 20, 4);
+  base_constants_quiet(&c, 20, 4);
   c.ds = 0.1; c.dsmin = 1e-5; c.dsmax = 0.3; c.nmx = 20; c.ilp = 1;
   memrun_run(cable_testproblem_bratu(), &c, NULL, a);
   c.linsolver = CABLE_LINSOLVER_KLU;
@@ -232,7 +228,7 @@ static void test_failures(memrun *r)
   pb.func = failing_func;
   pb.params = &fp;
   cable_constants c;
-  base_constants(&c, 10, 3);
+  base_constants_quiet(&c, 10, 3);
   c.ds = 0.1; c.dsmin = 1e-3; c.dsmax = 0.1; c.nmx = 50;
   memrun_run(&pb, &c, NULL, r);
   test_int("fatal callback: status CABLE_ERR_CALLBACK", r->status, CABLE_ERR_CALLBACK);
@@ -251,7 +247,7 @@ static void test_failures(memrun *r)
   test_true("DSMIN: last good point below the limit", r->n > 0 && r->par[r->n - 1][0] <= 1.0);
   memrun_free(r);
   /* a start that cannot converge: lambda = 5 has no Bratu solution */
-  base_constants(&c, 10, 3);
+  base_constants_quiet(&c, 10, 3);
   c.npar_override = 1;
   c.par_override[0].index = 0;
   c.par_override[0].value = 5.0;
@@ -261,7 +257,7 @@ static void test_failures(memrun *r)
   test_int("no solution at the start: nothing stored", r->nsol, 0);
   memrun_free(r);
   /* the same value in UZR and UZSTOP: one located user zero, and the branch stops there */
-  base_constants(&c, 10, 3);
+  base_constants_quiet(&c, 10, 3);
   c.ds = 0.1; c.dsmax = 0.3; c.nmx = 100;
   c.nuzr = 2;
   c.uzr[0].par = 0; c.uzr[0].value = 2.0; c.uzr[0].stop = 0;
@@ -271,7 +267,7 @@ static void test_failures(memrun *r)
   test_int("UZR and UZSTOP at one value: one UZ point", memrun_count(r, CABLE_TY_UZ), 1);
   memrun_free(r);
   /* bad input is refused before any work */
-  base_constants(&c, 10, 3);
+  base_constants_quiet(&c, 10, 3);
   c.nicp = 0;
   memrun_run(cable_testproblem_bratu(), &c, NULL, r);
   test_int("ICP missing: CABLE_ERR_INPUT", r->status, CABLE_ERR_INPUT);
