@@ -1,0 +1,86 @@
+/* The cable program on bad input: one line on stderr naming the file, line
+ * and key, a non-zero exit, and no output file written; and a good run. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+
+#include "harness.h"
+
+#define CABLE "./build/release/cable"
+#define DIR "tests/data/cli"
+
+static int exists(const char *path)
+{
+  struct stat st;
+  return stat(path, &st) == 0;
+}
+
+/* run cmd, capture its output; returns the exit status */
+static int run(const char *cmd, char *out, size_t len)
+{
+  FILE *p = popen(cmd, "r");
+  if (!p) return -1;
+  size_t n = fread(out, 1, len - 1, p);
+  out[n] = '\0';
+  int st = pclose(p);
+  return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+}
+
+static void bad(const char *what, const char *args, const char *expect1, const char *expect2)
+{
+  char cmd[512], out[4096];
+  snprintf(cmd, sizeof cmd, "cd " DIR " && ../../../" CABLE " %s 2>&1 >/dev/null", args);
+  int rc = run(cmd, out, sizeof out);
+  int lines = 0;
+  for (const char *c = out; *c; c++) lines += *c == '\n';
+  char t[160];
+  snprintf(t, sizeof t, "%s: non-zero exit", what);
+  test_true(t, rc != 0);
+  snprintf(t, sizeof t, "%s: one line on stderr", what);
+  test_int(t, lines, 1);
+  snprintf(t, sizeof t, "%s: message names '%s' and '%s'", what, expect1, expect2);
+  test_true(t, strstr(out, expect1) && strstr(out, expect2));
+  if (!(strstr(out, expect1) && strstr(out, expect2))) printf("  message was: %s", out);
+}
+
+int main(void)
+{
+  char out[8192];
+  /* files the runs below must not create */
+  const char *outputs[] = {DIR "/b.bad", DIR "/s.bad", DIR "/d.bad"};
+  bad("constants file missing", "run c=nosuch sv=bad", "c.nosuch", "cannot open");
+  bad("NCOL out of range", "run c=ncol9 sv=bad", "c.ncol9:3", "NCOL");
+  bad("missing '='", "run c=noequals sv=bad", "c.noequals:3", "DS");
+  bad("unknown parameter name", "run c=badname sv=bad", "c.badname:2", "nosuch");
+  bad("negative NTST override", "run c=good NTST=-5 sv=bad", "NTST", "-5");
+  bad("unknown key", "run c=good FOO=1 sv=bad", "FOO", "unknown key");
+  bad("argument without '='", "run c=good NMX", "NMX", "KEY=VALUE");
+  bad("unknown label in a script", "replay badlabel.auto", "badlabel.auto:2", "BP7");
+  bad("bad indentation in a script", "replay badindent.auto", "badindent.auto:2", "indent");
+  bad("unknown problem in a script", "replay badproblem.auto", "badproblem.auto:1", "nosuch");
+  bad("missing script", "replay nosuch.auto", "nosuch.auto", "");
+  bad("table of a missing b-file", "table b.nosuch", "b.nosuch", "");
+  bad("render of a missing label", "render s.out LAB99", "LAB99", "");
+  bad("unknown command", "frobnicate", "frobnicate", "unknown command");
+  for (size_t i = 0; i < sizeof outputs / sizeof outputs[0]; i++) {
+    char t[128];
+    snprintf(t, sizeof t, "no output written: %s", outputs[i]);
+    test_true(t, !exists(outputs[i]));
+  }
+  /* a good run writes its files */
+  int rc = run("cd " DIR " && ../../../" CABLE " run c=good sv=good 2>&1", out, sizeof out);
+  test_int("good run: exit 0", rc, 0);
+  test_true("good run: b-, s-, d-files written", exists(DIR "/b.good") && exists(DIR "/s.good") && exists(DIR "/d.good"));
+  rc = run("cd " DIR " && ../../../" CABLE " list s.good 2>&1", out, sizeof out);
+  test_true("cable list reads it", rc == 0 && strstr(out, "EP") != NULL);
+  rc = run(CABLE " --version", out, sizeof out);
+  test_true("--version names SUNDIALS, GSL and LAPACK",
+            rc == 0 && strstr(out, "SUNDIALS") && strstr(out, "GSL") && strstr(out, "LAPACK"));
+  remove(DIR "/b.good"); remove(DIR "/s.good"); remove(DIR "/d.good");
+  remove(DIR "/b.out"); remove(DIR "/s.out"); remove(DIR "/d.out");
+  remove(DIR "/b.out2"); remove(DIR "/s.out2"); remove(DIR "/d.out2");
+  (void)!system("rm -f " DIR "/b.*.csv");
+  return test_summary();
+}
