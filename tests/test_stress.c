@@ -1,0 +1,362 @@
+/* Stress cases on the braid knot and link problems (issue 8, part 2).
+ *
+ *   build/release/tests/test_stress          the quick subset (make check)
+ *   build/release/tests/test_stress --full   the whole grid (make stress,
+ *                                            scripts/stress.sh; doc/stress.md)
+ *   build/release/tests/test_stress --case NAME   one case of the grid
+ *
+ * Every case runs the engine through cable_cont_run with the real output
+ * writer (b./s./d. files in a temporary directory) behind a sink that also
+ * measures the first-integral drift (braid_first_integral_drift, mesh points)
+ * of every accepted point.  A case passes when it either reaches its target
+ * (the same solution as its clean reference, for perturbed starts) or stops
+ * with a negative status and a message, and in both cases: no NaN/Inf in any
+ * point, the files read back (cable_sfile_read, cable_bfile_read) with finite
+ * numbers only.  The drift bound of the issue (DRIFT_GOAL) is measured and
+ * printed for every case; it is checked only where the mesh resolves the
+ * braid well enough to meet it (see doc/stress.md for the measured grid).
+ * The fuzz regression inputs are replayed by tests/test_fuzz_regressions.c. */
+#include <dirent.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "aufile.h"
+#include "braid_analysis.h"
+#include "braid_problems.h"
+#include "braid_start.h"
+#include "cable_cont.h"
+#include "constants_parse.h"
+#include "harness.h"
+
+/* The issue's goal for the first-integral drift on every accepted point. */
+#define DRIFT_GOAL 1e-9
+/* Perturbed starts converge to the clean run's solution on the same uniform
+ * mesh: they agree up to the Newton tolerance EPSS = 1e-9 amplified by the
+ * conditioning of the parameters (measured agreement ~1e-11; 1e-7 leaves a
+ * margin of 100 over the Newton tolerance for the condition number). */
+#define SAME_SOLUTION_TOL 1e-7
+/* Relative size of the start perturbation (issue 8). */
+#define START_NOISE 1e-3
+
+typedef struct stress_case {
+  const char *name;
+  const char *problem;   /* braid_knot / braid_link */
+  int p, hand;
+  double delta, length;  /* knot: Ltot; link: L */
+  int ntst;
+  int icp[5], nicp;
+  double ds, dsmax;
+  int nmx;
+  double target_t;       /* UZSTOP on T; 0: none (runs until NMX or failure) */
+  int noise;             /* 1: perturb the converged start by START_NOISE */
+  int isp;               /* branch-point tests (ISP) */
+  int quick;             /* 1: part of the make-check subset */
+  int drift_checked;     /* 1: every accepted point must meet DRIFT_GOAL */
+} stress_case;
+
+#define KNOT_ICP {BP_T, BP_L, BP_L2, BP_EPS21, BP_F}, 5
+#define LINK_ICP {BP_T, BP_F}, 2
+#define DELTA72 0.0051364907419
+#define LTOT72 1.98889
+#define DELTA62 0.016016913268
+
+static const stress_case cases[] = {
+  /* name                problem       p  hand delta    length  ntst icp       ds    dsmax nmx  T   noise isp quick drift */
+  {"knot72-base",        "braid_knot", 7, +1, DELTA72, LTOT72, 80, KNOT_ICP, 0.5, 2.0, 200, 2.0, 0, 0, 1, 1},
+  {"knot72-noise",       "braid_knot", 7, +1, DELTA72, LTOT72, 80, KNOT_ICP, 0.5, 2.0, 200, 2.0, 1, 0, 1, 1},
+  {"knot72-left-noise",  "braid_knot", 7, -1, DELTA72, LTOT72, 80, KNOT_ICP, -0.5, 2.0, 200, -2.0, 1, 0, 0, 1},
+  {"knot72-ntst10",      "braid_knot", 7, +1, DELTA72, LTOT72, 10, KNOT_ICP, 0.5, 2.0, 200, 2.0, 0, 0, 1, 0},
+  {"knot72-ntst40",      "braid_knot", 7, +1, DELTA72, LTOT72, 40, KNOT_ICP, 0.5, 2.0, 200, 2.0, 0, 0, 0, 0},
+  {"knot72-ntst400",     "braid_knot", 7, +1, DELTA72, LTOT72, 400, KNOT_ICP, 0.5, 2.0, 200, 2.0, 0, 0, 0, 1},
+  {"knot72-ntst2000",    "braid_knot", 7, +1, DELTA72, LTOT72, 2000, KNOT_ICP, 1.0, 2.0, 20, 2.0, 0, 0, 0, 1},
+  {"knot72-thin1e-3",    "braid_knot", 7, +1, 1e-3, 2.0, 80, KNOT_ICP, 0.5, 2.0, 200, 2.0, 0, 0, 0, 1},
+  {"knot72-thin1e-4",    "braid_knot", 7, +1, 1e-4, 2.0, 80, KNOT_ICP, 0.5, 2.0, 200, 2.0, 0, 0, 1, 1},
+  {"knot72-thin1e-4-n",  "braid_knot", 7, +1, 1e-4, 2.0, 80, KNOT_ICP, 0.5, 2.0, 200, 2.0, 1, 0, 0, 1},
+  {"knot72-thick0.02",   "braid_knot", 7, +1, 0.02, 2.0, 80, KNOT_ICP, 0.5, 2.0, 200, 2.0, 0, 0, 0, 0},
+  {"knot72-thick0.05",   "braid_knot", 7, +1, 0.05, 2.0, 80, KNOT_ICP, 0.5, 2.0, 200, 2.0, 0, 0, 1, 0},
+  {"knot72-thick0.08",   "braid_knot", 7, +1, 0.08, 2.0, 80, KNOT_ICP, 0.5, 2.0, 200, 2.0, 0, 0, 1, 0},
+  {"knot72-T50",         "braid_knot", 7, +1, DELTA72, LTOT72, 80, KNOT_ICP, 1.0, 5.0, 2000, 50.0, 0, 0, 0, 0},
+  {"knot72-T-50",        "braid_knot", 7, +1, DELTA72, LTOT72, 80, KNOT_ICP, -1.0, 5.0, 2000, -50.0, 0, 0, 0, 0},
+  {"knot72-Delta-up",    "braid_knot", 7, +1, DELTA72, LTOT72, 80, {BP_DELTA, BP_L, BP_L2, BP_EPS21, BP_F}, 5, 0.001, 0.1, 500, 0.0, 0, 0, 0, 0},
+  {"link62-Delta-up",    "braid_link", 6, -1, DELTA62, 1.0, 80, {BP_DELTA, BP_F}, 2, 0.001, 0.1, 500, 0.0, 0, 0, 0, 0},
+  {"knot72-bp",          "braid_knot", 7, +1, DELTA72, LTOT72, 80, KNOT_ICP, 0.5, 2.0, 200, 6.0, 0, 2, 0, 0},
+  {"knot52-base",        "braid_knot", 5, +1, 0.01, 2.0, 80, KNOT_ICP, 0.5, 2.0, 200, 2.0, 0, 0, 0, 1},
+  {"knot32-thick",       "braid_knot", 3, +1, 0.1, 2.0, 80, KNOT_ICP, 0.5, 2.0, 200, 2.0, 0, 0, 0, 0},
+  {"link62-base",        "braid_link", 6, -1, DELTA62, 1.0, 80, LINK_ICP, -0.5, 2.0, 200, -1.0, 0, 0, 1, 1},
+  {"link62-noise",       "braid_link", 6, -1, DELTA62, 1.0, 80, LINK_ICP, -0.5, 2.0, 200, -1.0, 1, 0, 0, 1},
+  {"link62-thin1e-4",    "braid_link", 6, -1, 1e-4, 1.0, 80, LINK_ICP, -0.5, 2.0, 200, -1.0, 0, 0, 0, 1},
+  {"link62-T50",         "braid_link", 6, -1, DELTA62, 1.0, 80, LINK_ICP, -1.0, 5.0, 2000, -50.0, 0, 0, 0, 0},
+  {"link42-thick",       "braid_link", 4, +1, 0.05, 1.0, 80, LINK_ICP, 0.5, 2.0, 200, 1.0, 0, 0, 0, 0},
+  {"knot72-nmx5000",     "braid_knot", 7, +1, DELTA72, LTOT72, 20, KNOT_ICP, 0.002, 0.002, 5000, 0.0, 0, 0, 0, 0},
+};
+#define NCASES ((int)(sizeof cases / sizeof cases[0]))
+
+/* ---- the sink: the output writer plus per-point checks ------------------- */
+
+typedef struct stress_sink {
+  const cable_cont *cc;
+  cable_sink inner;
+  int npoints, nonfinite;
+  double drift_max;      /* over accepted points; -1 when a point is not a braid */
+  int drift_bad;         /* points with drift > DRIFT_GOAL or negative */
+  double t_last;
+  double drift_start;    /* drift of an uncorrected restart point (-2: none) */
+  int verbose;           /* print every point's drift (--verbose) */
+} stress_sink;
+
+static int stress_point(void *ctx, const cable_point *pt)
+{
+  stress_sink *s = ctx;
+  s->npoints++;
+  for (int k = 0; k < pt->npar; k++)
+    if (!isfinite(pt->par[k])) s->nonfinite++;
+  if (!isfinite(pt->l2norm)) s->nonfinite++;
+  const cable_solution *sol = cable_cont_solution(s->cc);
+  int npts = cable_solution_npts(sol);
+  for (int k = 0; k < npts * sol->ndim; k++)
+    if (!isfinite(sol->u[k])) { s->nonfinite++; break; }
+  double d = braid_first_integral_drift(sol);
+  /* a restart reports its stored start as point 1 without correcting it
+     (AUTO does the same): a perturbed start's drift is the noise's, kept apart */
+  if (pt->pt == 1 && pt->newton_iters == 0) {
+    s->drift_start = d;
+  } else {
+    if (!(d >= 0) || d > DRIFT_GOAL) s->drift_bad++;
+    if (!(d >= 0)) s->drift_max = -1;
+    else if (s->drift_max >= 0 && d > s->drift_max) s->drift_max = d;
+  }
+  s->t_last = pt->par[pt->icp[0]];   /* the principal parameter */
+  if (s->verbose) printf("  point %d T = %.8g newton %d ds %.3g drift %.3g\n", pt->pt, pt->par[BP_T], pt->newton_iters, pt->ds, d);
+  return s->inner.point(s->inner.ctx, pt);
+}
+
+static int stress_solution(void *ctx, const cable_point *pt, const cable_solution *sol)
+{
+  stress_sink *s = ctx;
+  return s->inner.solution(s->inner.ctx, pt, sol);
+}
+
+static void stress_diag(void *ctx, const char *line)
+{
+  stress_sink *s = ctx;
+  if (s->inner.diag) s->inner.diag(s->inner.ctx, line);
+}
+
+/* ---- one case ---------------------------------------------------------- */
+
+typedef struct stress_outcome {
+  int status;            /* the run's end status */
+  char msg[600];         /* the engine's message on a negative status */
+  int npoints, nonfinite, files_ok, drift_bad;
+  double drift_max, drift_start, t_last, f_end, l_end;
+  double seconds;
+} stress_outcome;
+
+/* Deterministic noise in [-1, 1] (no global state: the caller owns the seed). */
+static double stress_noise(unsigned long *seed)
+{
+  *seed = *seed * 6364136223846793005UL + 1442695040888963407UL;
+  return (double)(*seed >> 11) / (double)(1UL << 53) * 2.0 - 1.0;
+}
+
+/* Every number in the files that were written reads back finite. */
+static int stress_files_ok(const char *dir, char *why, size_t len)
+{
+  char path[600];
+  cable_error err;
+  snprintf(path, sizeof path, "%s/s.stress", dir);
+  cable_sfile *s = cable_sfile_read(path, &err);
+  if (!s) { snprintf(why, len, "s-file: %s", err.msg); return 0; }
+  int ok = cable_sfile_count(s) > 0;
+  for (int i = 0; ok && i < cable_sfile_count(s); i++) {
+    const cable_solution *sol = cable_sfile_get(s, i);
+    for (int k = 0; k < cable_solution_npts(sol) * sol->ndim; k++) ok = ok && isfinite(sol->u[k]);
+    for (int k = 0; k < sol->npar; k++) ok = ok && isfinite(sol->par[k]);
+  }
+  cable_sfile_free(s);
+  if (!ok) { snprintf(why, len, "s-file: empty or not finite"); return 0; }
+  snprintf(path, sizeof path, "%s/b.stress", dir);
+  cable_bfile *b = cable_bfile_read(path, &err);
+  if (!b) { snprintf(why, len, "b-file: %s", err.msg); return 0; }
+  for (int j = 0; j < b->nbranch; j++)
+    for (int k = 0; k < b->branch[j].nrow * b->branch[j].ncol; k++) ok = ok && isfinite(b->branch[j].data[k]);
+  ok = ok && b->nbranch > 0;
+  cable_bfile_free(b);
+  if (!ok) snprintf(why, len, "b-file: empty or not finite");
+  return ok;
+}
+
+static void stress_rmdir(const char *dir)
+{
+  DIR *d = opendir(dir);
+  if (!d) return;
+  struct dirent *e;
+  char path[600];
+  while ((e = readdir(d)) != NULL) {
+    if (e->d_name[0] == '.') continue;
+    snprintf(path, sizeof path, "%s/%s", dir, e->d_name);
+    unlink(path);
+  }
+  closedir(d);
+  rmdir(dir);
+}
+
+static void stress_constants(const stress_case *k, cable_constants *c)
+{
+  cable_constants_init(c);
+  c->ntst = k->ntst; c->ncol = 4; c->jac = 1; c->iad = 0;   /* uniform mesh: clean and perturbed runs comparable */
+  for (int q = 0; q < k->nicp; q++) c->icp[q] = k->icp[q];
+  c->nicp = k->nicp;
+  c->ds = k->ds; c->dsmin = 1e-6; c->dsmax = k->dsmax; c->nmx = k->nmx;
+  c->isp = k->isp; c->ilp = 1;   /* folds are located (LP) wherever a branch turns */ c->npr = 50; c->epss = 1e-9;
+  if (k->target_t != 0.0) {
+    c->nuzr = 1; c->uzr[0].par = BP_T; c->uzr[0].value = k->target_t; c->uzr[0].stop = 1;
+  }
+}
+
+/* Run case k; noise: perturb the converged start first. */
+static int stress_run(const stress_case *k, int noise, stress_outcome *o)
+{
+  memset(o, 0, sizeof *o);
+  struct timespec t0, t1;
+  clock_gettime(CLOCK_MONOTONIC, &t0);
+  braid_start_params sp;
+  cable_problem pb;
+  braid_start_params_init(&sp, BRAID_START_TORUS, k->p, k->hand, k->delta, k->length, 0.0);
+  o->status = braid_start_prepare(&sp);
+  if (o->status == 0) o->status = braid_problem_instance(k->problem, &sp, &pb);
+  if (o->status != 0) {
+    snprintf(o->msg, sizeof o->msg, "start: %s", cable_status_message(o->status));
+    return o->status;
+  }
+  cable_constants c;
+  stress_constants(k, &c);
+  cable_constants_take_problem_dims(&c, pb.ndim, pb.nbc, pb.nint);
+  cable_solution *start = NULL;
+  if (noise) {
+    /* converge the clean start (one point), then perturb every value of u and
+       the free lengths by START_NOISE relative noise */
+    cable_constants c1 = c;
+    c1.nmx = 1; c1.nuzr = 0;
+    c.ds = fabs(c.ds);   /* the stored tangent already points towards the target */
+    int st;
+    cable_cont *cc = cable_cont_alloc(&pb, &c1, &st);
+    if (st == 0) st = cable_cont_set_start(cc, NULL);
+    if (st == 0) st = cable_cont_step(cc);
+    if (st == 0) start = cable_solution_clone(cable_cont_solution(cc));
+    cable_cont_free(cc);
+    if (!start) {
+      o->status = st ? st : CABLE_ERR_ALLOC;
+      snprintf(o->msg, sizeof o->msg, "clean start: %s", cable_status_message(o->status));
+      return o->status;
+    }
+    unsigned long seed = 12345;
+    for (int j = 0; j < cable_solution_npts(start) * start->ndim; j++)
+      start->u[j] *= 1.0 + START_NOISE * stress_noise(&seed);
+    start->par[BP_L] *= 1.0 + START_NOISE * stress_noise(&seed);
+    if (strcmp(k->problem, "braid_knot") == 0) start->par[BP_L2] = start->par[BP_LTOT] - start->par[BP_L];
+  }
+  char dir[] = "/tmp/cable-stress.XXXXXX";
+  if (!mkdtemp(dir)) { o->status = CABLE_ERR_IO; snprintf(o->msg, sizeof o->msg, "mkdtemp"); return o->status; }
+  cable_names names;
+  cable_names_init(&names);
+  cable_names_fill(&names, pb.parnames, pb.npar, pb.unames, pb.ndim);
+  cable_error err;
+  cable_aufile *w = cable_aufile_open(dir, "stress", &c, &names, NULL, &err);
+  int st = w ? 0 : err.status;
+  cable_cont *cc = NULL;
+  if (st == 0) cc = cable_cont_alloc(&pb, &c, &st);
+  if (st == 0) st = cable_cont_set_start(cc, start);
+  stress_sink sk = {cc, {0}, 0, 0, 0.0, 0, 0.0, -2.0, getenv("STRESS_VERBOSE") != NULL};
+  if (w) sk.inner = cable_aufile_sink(w);
+  if (st == 0) {
+    cable_sink sink = {&sk, stress_point, stress_solution, stress_diag};
+    st = cable_cont_run(cc, &sink, 1, 1, NULL);
+  }
+  o->status = st;
+  if (cc) snprintf(o->msg, sizeof o->msg, "%s", st < 0 ? cable_cont_error(cc) : cable_status_message(st));
+  if (cc && sk.npoints > 0) {
+    o->f_end = cable_cont_point(cc)->par[BP_F];
+    o->l_end = cable_cont_point(cc)->par[BP_L];
+  }
+  cable_cont_free(cc);
+  if (w) {
+    int cst = cable_aufile_close(w, &err);
+    char why[600] = "";
+    /* no point at all: the writer still commits (empty) files without error */
+    o->files_ok = sk.npoints == 0 ? cst == 0 : cst == 0 && stress_files_ok(dir, why, sizeof why);
+    if (!o->files_ok) snprintf(o->msg + strlen(o->msg), sizeof o->msg - strlen(o->msg), " [files: %s]", why);
+  }
+  stress_rmdir(dir);
+  cable_solution_free(start);
+  o->npoints = sk.npoints;
+  o->nonfinite = sk.nonfinite;
+  o->drift_max = sk.drift_max;
+  o->drift_bad = sk.drift_bad;
+  o->drift_start = sk.drift_start;
+  o->t_last = sk.t_last;
+  clock_gettime(CLOCK_MONOTONIC, &t1);
+  o->seconds = (double)(t1.tv_sec - t0.tv_sec) + 1e-9 * (double)(t1.tv_nsec - t0.tv_nsec);
+  return st;
+}
+
+static const char *stress_end_name(int st)
+{
+  return cable_status_name(st);
+}
+
+/* Checks and one table row for case k. */
+static void stress_case_check(const stress_case *k, FILE *table)
+{
+  stress_outcome o, ref;
+  stress_run(k, k->noise, &o);
+  char what[900];
+  int reached = k->target_t != 0.0 ? o.status == CABLE_END_UZSTOP : o.status == CABLE_END_NMX;
+  /* either the target, or a clean stop: a negative status with a message */
+  snprintf(what, sizeof what, "%s: %s after %d points, PAR(ICP(1)) = %.6g (%s)", k->name, stress_end_name(o.status),
+           o.npoints, o.t_last, o.msg);
+  test_true(what, reached || (o.status < 0 && o.msg[0] != '\0'));
+  snprintf(what, sizeof what, "%s: no NaN or Inf in %d accepted points", k->name, o.npoints);
+  test_int(what, o.nonfinite, 0);
+  snprintf(what, sizeof what, "%s: b- and s-files read back, all numbers finite", k->name);
+  test_true(what, o.files_ok || o.npoints == 0);
+  snprintf(what, sizeof what, "%s: first-integral drift measured on all %d points (max %.3g, %d above %.0e)",
+           k->name, o.npoints, o.drift_max, o.drift_bad, DRIFT_GOAL);
+  test_true(what, o.npoints == 0 || o.drift_max >= 0);
+  if (k->drift_checked) {
+    snprintf(what, sizeof what, "%s: drift below the goal on every accepted point", k->name);
+    test_le(what, o.drift_max, DRIFT_GOAL);
+  }
+  double same = NAN;
+  if (k->noise) {
+    stress_run(k, 0, &ref);
+    same = fabs(o.f_end - ref.f_end) / fabs(ref.f_end);
+    snprintf(what, sizeof what, "%s: perturbed start reaches the clean solution: |F|", k->name);
+    test_rel(what, o.f_end, ref.f_end, SAME_SOLUTION_TOL);
+    snprintf(what, sizeof what, "%s: perturbed start reaches the clean solution: L", k->name);
+    test_rel(what, o.l_end, ref.l_end, SAME_SOLUTION_TOL);
+  }
+  char same_txt[64] = "-";
+  if (k->noise) snprintf(same_txt, sizeof same_txt, "%.2g (start drift %.2g)", same, o.drift_start);
+  if (table)
+    fprintf(table, "TABLE | %s | %s | %d | %.3g | %.4g | %d | %s | %d | %.6g | %.3g | %s | %s | %.1f |\n", k->name,
+            k->problem + 6, k->p * k->hand, k->delta, k->length, k->ntst, stress_end_name(o.status), o.npoints,
+            o.t_last, o.drift_max, o.drift_bad == 0 ? "yes" : "no", same_txt, o.seconds);
+}
+
+int main(int argc, char **argv)
+{
+  int full = argc > 1 && strcmp(argv[1], "--full") == 0;
+  const char *only = argc > 2 && strcmp(argv[1], "--case") == 0 ? argv[2] : NULL;
+  FILE *table = (full || only) ? stdout : NULL;
+  for (int i = 0; i < NCASES; i++) {
+    if (only ? strcmp(cases[i].name, only) != 0 : !full && !cases[i].quick) continue;
+    stress_case_check(&cases[i], table);
+  }
+  return test_summary();
+}
