@@ -528,11 +528,12 @@ static int point_cb(void *ctx, const cable_point *pt)
   w->last_lab_point = pt->lab;
   /* d-file: AUTO's WRTBV9 line plus step size and error estimate */
   FILE *d = cable_atomic_stream(w->d);
-  fputs("  BR    PT  IT         PAR           L2-NORM          DS        ERR-EST\n", d);
-  char e1[64], e2[64], e3[64], e4[64];
-  fprintf(d, "%4d%6d%4d   %s%s%s%s\n", pt->ibr, mtot, pt->newton_iters, fmt_es2(e1, val[0], 14, 5),
+  fputs("  BR    PT  IT         PAR           L2-NORM          DS        ERR-EST  DET     SIGMA1        SIGMA2\n", d);
+  char e1[64], e2[64], e3[64], e4[64], e5[64], e6[64];
+  fprintf(d, "%4d%6d%4d   %s%s%s%s   %+d%s%s\n", pt->ibr, mtot, pt->newton_iters, fmt_es2(e1, val[0], 14, 5),
           fmt_es2(e2, pt->l2norm, 14, 5), fmt_es2(e3, pt->ds, 14, 5),
-          pt->err_est >= 0 ? fmt_es2(e4, pt->err_est, 14, 5) : "       unknown");
+          pt->err_est >= 0 ? fmt_es2(e4, pt->err_est, 14, 5) : "       unknown", pt->det_sign,
+          fmt_es2(e5, pt->sv1, 14, 5), fmt_es2(e6, pt->sv2, 14, 5));
   if (pt->lab != 0) {
     /* AUTO's screen line for labelled points (parseD finds the label here) */
     char h[BCOL + 1];

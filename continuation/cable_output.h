@@ -32,6 +32,9 @@ typedef struct cable_point {
   int newton_iters;
   double ds;            /* step size that produced the point */
   double err_est;       /* discretisation-error estimate (< 0 unknown) */
+  /* branch-point test functions at the point (0 when not computed) */
+  int det_sign;         /* sign of det of the extended Newton matrix */
+  double sv1, sv2;      /* its two smallest singular values */
 } cable_point;
 
 typedef struct cable_sink {

@@ -234,4 +234,7 @@ void cont_store_solution(cable_cont *cc, int itp, int lab)
   pt->newton_iters = cc->newton_iters;
   pt->ds = cc->ds_used;
   pt->err_est = sol->err_est;
+  pt->det_sign = cc->tf.det_sign;
+  pt->sv1 = cc->tf.sv1;
+  pt->sv2 = cc->tf.sv2;
 }
