@@ -165,8 +165,9 @@ static int read_block(lreader *r, cable_sfile *s, dvec *buf, cable_error *err)
   if (ntst < 1)
     return cable_error_set(err, CABLE_ERR_UNSUPPORTED, r->path, hline, "",
                            "label %ld has NTST=%ld: not a boundary-value (IPS=4) solution", lab, ntst);
-  if (ncol < 1 || nar < 2 || npar < 1 || nfpr < 0 || nrowpr < 1 || ntpl != ntst * ncol + 1 || ntst > 1000000 ||
-      ncol > 1000 || nar > 1000000 || npar > 1000000 || nfpr > 1000000 || nfpr > npar)
+  /* the bounds come before NTST*NCOL so that the product cannot overflow */
+  if (ncol < 1 || nar < 2 || npar < 1 || nfpr < 0 || nrowpr < 1 || ntst > 1000000 || ncol > 1000 ||
+      ntpl != ntst * ncol + 1 || nar > 1000000 || npar > 1000000 || nfpr > 1000000 || nfpr > npar)
     return cable_error_set(err, CABLE_ERR_PARSE, r->path, hline, "",
                            "inconsistent solution header for label %ld (NTPL=%ld NAR=%ld NTST=%ld NCOL=%ld "
                            "NPAR=%ld NFPR=%ld)", lab, ntpl, nar, ntst, ncol, npar, nfpr);
