@@ -94,6 +94,9 @@ run_one() {
       -print_final_stats=1 -artifact_prefix=./ "../../corpus/$t" ) > "$out/$t.log" 2>&1
   echo $? > "$out/$t.rc"
 }
+# crash files of earlier runs stay where they are; only new ones count below
+stamp="$out/.run-start"
+touch "$stamp"
 pids=()
 for t in "${targets[@]}"; do
   if [ "$jobs" -gt 1 ]; then
@@ -114,7 +117,7 @@ for t in "${targets[@]}"; do
   rate=$(sed -n 's/^stat::average_exec_per_sec: *//p' "$log" | tail -1)
   secs=$(grep -o 'Done [0-9]* runs in [0-9]* second' "$log" | awk '{print $5}' | tail -1)
   ncorp=$(ls "$out/corpus/$t" | wc -l)
-  ncrash=$(ls "$out/crashes/$t" | grep -c -E '^(crash|leak|timeout|oom)-' || true)
+  ncrash=$(find "$out/crashes/$t" -newer "$stamp" -type f \( -name 'crash-*' -o -name 'leak-*' -o -name 'timeout-*' -o -name 'oom-*' \) | wc -l)
   printf '%-10s %8s %12s %9s %8s %8s\n' "$t" "${secs:-?}" "${execs:-?}" "${rate:-?}" "$ncorp" "$ncrash"
   if [ "$(cat "$out/$t.rc")" != 0 ] || [ "$ncrash" -gt 0 ]; then
     status=1

@@ -15,8 +15,8 @@ start=$(date +%s)
 "$bin" --full | tee "$log"
 rc=${PIPESTATUS[0]}
 {
-  echo "| case | problem | p | Delta | Ltot / L | NTST | end | points | last PAR(ICP(1)) | max drift | all <= 1e-9 | perturbed vs clean (start drift) | s |"
-  echo "|---|---|---:|---:|---:|---:|---|---:|---:|---:|---|---|---:|"
+  echo "| case | problem | p | Delta | Ltot / L | NTST | end | points | LP/BP | last PAR(ICP(1)) | max abs(eta) | max drift | outside domain | all drift <= 1e-9 | perturbed vs clean: rel. diff of abs(F) (start drift) | s |"
+  echo "|---|---|---:|---:|---:|---:|---|---:|---|---:|---:|---:|---:|---|---|---:|"
   sed -n 's/^TABLE //p' "$log"
 } > "$build/stress.md"
 echo
