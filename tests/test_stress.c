@@ -57,6 +57,7 @@ typedef struct stress_case {
   int isp;               /* branch-point tests (ISP) */
   int quick;             /* 1: part of the make-check subset */
   int drift_checked;     /* 1: every accepted point must meet DRIFT_GOAL */
+  int expect_bp;         /* > 0: branch points the run must locate */
 } stress_case;
 
 #define KNOT_ICP {BP_T, BP_L, BP_L2, BP_EPS21, BP_F}, 5
@@ -67,36 +68,37 @@ typedef struct stress_case {
 
 static const stress_case cases[] = {
   /* name                problem       p  hand delta    length  ntst icp       ds    dsmax nmx  T   noise isp quick drift */
-  {"knot72-base",        "braid_knot", 7, +1, DELTA72, LTOT72, 80, KNOT_ICP, 0.5, 2.0, 200, 2.0, 0, 0, 1, 1},
-  {"knot72-noise",       "braid_knot", 7, +1, DELTA72, LTOT72, 80, KNOT_ICP, 0.5, 2.0, 200, 2.0, 1, 0, 1, 1},
-  {"knot72-left-noise",  "braid_knot", 7, -1, DELTA72, LTOT72, 80, KNOT_ICP, -0.5, 2.0, 200, -2.0, 1, 0, 0, 1},
-  {"knot72-ntst10",      "braid_knot", 7, +1, DELTA72, LTOT72, 10, KNOT_ICP, 0.5, 2.0, 200, 2.0, 0, 0, 1, 0},
-  {"knot72-ntst40",      "braid_knot", 7, +1, DELTA72, LTOT72, 40, KNOT_ICP, 0.5, 2.0, 200, 2.0, 0, 0, 0, 0},
-  {"knot72-ntst400",     "braid_knot", 7, +1, DELTA72, LTOT72, 400, KNOT_ICP, 0.5, 2.0, 200, 2.0, 0, 0, 0, 1},
-  {"knot72-ntst2000",    "braid_knot", 7, +1, DELTA72, LTOT72, 2000, KNOT_ICP, 1.0, 2.0, 20, 2.0, 0, 0, 0, 1},
-  {"knot72-thin1e-3",    "braid_knot", 7, +1, 1e-3, 2.0, 80, KNOT_ICP, 0.5, 2.0, 200, 2.0, 0, 0, 0, 1},
-  {"knot72-thin1e-4",    "braid_knot", 7, +1, 1e-4, 2.0, 80, KNOT_ICP, 0.5, 2.0, 200, 2.0, 0, 0, 1, 1},
-  {"knot72-thin1e-4-n",  "braid_knot", 7, +1, 1e-4, 2.0, 80, KNOT_ICP, 0.5, 2.0, 200, 2.0, 1, 0, 0, 1},
-  {"knot72-thick0.02",   "braid_knot", 7, +1, 0.02, 2.0, 80, KNOT_ICP, 0.5, 2.0, 200, 2.0, 0, 0, 0, 0},
-  {"knot72-thick0.05",   "braid_knot", 7, +1, 0.05, 2.0, 80, KNOT_ICP, 0.5, 2.0, 200, 2.0, 0, 0, 1, 0},
-  {"knot72-thick0.08",   "braid_knot", 7, +1, 0.08, 2.0, 80, KNOT_ICP, 0.5, 2.0, 200, 2.0, 0, 0, 1, 0},
+  {"knot72-base",        "braid_knot", 7, +1, DELTA72, LTOT72, 80, KNOT_ICP, 0.5, 2.0, 200, 2.0, 0, 0, 1, 1, 0},
+  {"knot72-noise",       "braid_knot", 7, +1, DELTA72, LTOT72, 80, KNOT_ICP, 0.5, 2.0, 200, 2.0, 1, 0, 1, 1, 0},
+  {"knot72-left-noise",  "braid_knot", 7, -1, DELTA72, LTOT72, 80, KNOT_ICP, -0.5, 2.0, 200, -2.0, 1, 0, 0, 1, 0},
+  {"knot72-ntst10",      "braid_knot", 7, +1, DELTA72, LTOT72, 10, KNOT_ICP, 0.5, 2.0, 200, 2.0, 0, 0, 1, 0, 0},
+  {"knot72-ntst40",      "braid_knot", 7, +1, DELTA72, LTOT72, 40, KNOT_ICP, 0.5, 2.0, 200, 2.0, 0, 0, 0, 0, 0},
+  {"knot72-ntst400",     "braid_knot", 7, +1, DELTA72, LTOT72, 400, KNOT_ICP, 0.5, 2.0, 200, 2.0, 0, 0, 0, 1, 0},
+  {"knot72-ntst2000",    "braid_knot", 7, +1, DELTA72, LTOT72, 2000, KNOT_ICP, 1.0, 2.0, 20, 2.0, 0, 0, 0, 1, 0},
+  {"knot72-thin1e-3",    "braid_knot", 7, +1, 1e-3, 2.0, 80, KNOT_ICP, 0.5, 2.0, 200, 2.0, 0, 0, 0, 1, 0},
+  {"knot72-thin1e-4",    "braid_knot", 7, +1, 1e-4, 2.0, 80, KNOT_ICP, 0.5, 2.0, 200, 2.0, 0, 0, 1, 1, 0},
+  {"knot72-thin1e-4-n",  "braid_knot", 7, +1, 1e-4, 2.0, 80, KNOT_ICP, 0.5, 2.0, 200, 2.0, 1, 0, 0, 1, 0},
+  {"knot72-thick0.02",   "braid_knot", 7, +1, 0.02, 2.0, 80, KNOT_ICP, 0.5, 2.0, 200, 2.0, 0, 0, 0, 0, 0},
+  {"knot72-thick0.05",   "braid_knot", 7, +1, 0.05, 2.0, 80, KNOT_ICP, 0.5, 2.0, 200, 2.0, 0, 0, 1, 0, 0},
+  {"knot72-thick0.08",   "braid_knot", 7, +1, 0.08, 2.0, 80, KNOT_ICP, 0.5, 2.0, 200, 2.0, 0, 0, 1, 0, 0},
   /* the right-handed flat branch folds at T = 43.88 and at a negative T:
      |T| = 50 is not on it, the run goes through the fold (LP) and back; NMX
      ends it */
-  {"knot72-T50-fold",    "braid_knot", 7, +1, DELTA72, LTOT72, 80, KNOT_ICP, 1.0, 5.0, 300, 0.0, 0, 0, 0, 0},
-  {"knot72-T-50-fold",   "braid_knot", 7, +1, DELTA72, LTOT72, 80, KNOT_ICP, -1.0, 5.0, 300, 0.0, 0, 0, 0, 0},
-  {"knot72-Delta-up",    "braid_knot", 7, +1, DELTA72, LTOT72, 80, {BP_DELTA, BP_L, BP_L2, BP_EPS21, BP_F}, 5, 0.001, 2.0, 2000, 0.3, 0, 0, 0, 0},
-  {"link62-Delta-up",    "braid_link", 6, -1, DELTA62, 1.0, 80, {BP_DELTA, BP_F}, 2, 0.001, 2.0, 2000, 0.3, 0, 0, 0, 0},
-  {"knot72-bp",          "braid_knot", 7, +1, DELTA72, LTOT72, 80, KNOT_ICP, 0.5, 2.0, 200, 6.0, 0, 2, 0, 0},
-  {"knot52-base",        "braid_knot", 5, +1, 0.01, 2.0, 80, KNOT_ICP, 0.5, 2.0, 200, 2.0, 0, 0, 0, 1},
-  {"knot32-thick",       "braid_knot", 3, +1, 0.1, 2.0, 80, KNOT_ICP, 0.5, 2.0, 200, 2.0, 0, 0, 0, 0},
-  {"link62-base",        "braid_link", 6, -1, DELTA62, 1.0, 80, LINK_ICP, -0.5, 2.0, 200, -1.0, 0, 0, 1, 1},
-  {"link62-noise",       "braid_link", 6, -1, DELTA62, 1.0, 80, LINK_ICP, -0.5, 2.0, 200, -1.0, 1, 0, 0, 1},
-  {"link62-thin1e-4",    "braid_link", 6, -1, 1e-4, 1.0, 80, LINK_ICP, -0.5, 2.0, 200, -1.0, 0, 0, 0, 1},
-  {"link62-T-50",        "braid_link", 6, -1, DELTA62, 1.0, 80, LINK_ICP, -1.0, 5.0, 300, -50.0, 0, 0, 0, 0},
-  {"link62-T50-fold",    "braid_link", 6, -1, DELTA62, 1.0, 80, LINK_ICP, 1.0, 5.0, 300, 0.0, 0, 0, 0, 0},
-  {"link42-thick",       "braid_link", 4, +1, 0.05, 1.0, 80, LINK_ICP, 0.5, 2.0, 200, 1.0, 0, 0, 0, 0},
-  {"knot72-nmx5000",     "braid_knot", 7, +1, DELTA72, LTOT72, 20, KNOT_ICP, 0.002, 0.002, 5000, 0.0, 0, 0, 0, 0},
+  {"knot72-T50-fold",    "braid_knot", 7, +1, DELTA72, LTOT72, 80, KNOT_ICP, 1.0, 5.0, 300, 0.0, 0, 0, 0, 0, 0},
+  {"knot72-T-50-fold",   "braid_knot", 7, +1, DELTA72, LTOT72, 80, KNOT_ICP, -1.0, 5.0, 300, 0.0, 0, 0, 0, 0, 0},
+  {"knot72-Delta-up",    "braid_knot", 7, +1, DELTA72, LTOT72, 80, {BP_DELTA, BP_L, BP_L2, BP_EPS21, BP_F}, 5, 0.001, 2.0, 2000, 0.3, 0, 0, 0, 0, 0},
+  {"link62-Delta-up",    "braid_link", 6, -1, DELTA62, 1.0, 80, {BP_DELTA, BP_F}, 2, 0.001, 2.0, 2000, 0.3, 0, 0, 0, 0, 0},
+  /* branch-point tests on: the flat branch's first two BPs (T = 11.08, 18.00 in runs/knot72) */
+  {"knot72-bp",          "braid_knot", 7, +1, DELTA72, LTOT72, 80, KNOT_ICP, 0.5, 2.0, 200, 20.0, 0, 2, 0, 1, 2},
+  {"knot52-base",        "braid_knot", 5, +1, 0.01, 2.0, 80, KNOT_ICP, 0.5, 2.0, 200, 2.0, 0, 0, 0, 1, 0},
+  {"knot32-thick",       "braid_knot", 3, +1, 0.1, 2.0, 80, KNOT_ICP, 0.5, 2.0, 200, 2.0, 0, 0, 0, 0, 0},
+  {"link62-base",        "braid_link", 6, -1, DELTA62, 1.0, 80, LINK_ICP, -0.5, 2.0, 200, -1.0, 0, 0, 1, 1, 0},
+  {"link62-noise",       "braid_link", 6, -1, DELTA62, 1.0, 80, LINK_ICP, -0.5, 2.0, 200, -1.0, 1, 0, 0, 1, 0},
+  {"link62-thin1e-4",    "braid_link", 6, -1, 1e-4, 1.0, 80, LINK_ICP, -0.5, 2.0, 200, -1.0, 0, 0, 0, 1, 0},
+  {"link62-T-50",        "braid_link", 6, -1, DELTA62, 1.0, 80, LINK_ICP, -1.0, 5.0, 300, -50.0, 0, 0, 0, 0, 0},
+  {"link62-T50-fold",    "braid_link", 6, -1, DELTA62, 1.0, 80, LINK_ICP, 1.0, 5.0, 300, 0.0, 0, 0, 0, 0, 0},
+  {"link42-thick",       "braid_link", 4, +1, 0.05, 1.0, 80, LINK_ICP, 0.5, 2.0, 200, 1.0, 0, 0, 0, 0, 0},
+  {"knot72-nmx5000",     "braid_knot", 7, +1, DELTA72, LTOT72, 20, KNOT_ICP, 0.002, 0.002, 5000, 0.0, 0, 0, 0, 0, 0},
 };
 #define NCASES ((int)(sizeof cases / sizeof cases[0]))
 
@@ -130,10 +132,9 @@ static int stress_point(void *ctx, const cable_point *pt)
   int npts = cable_solution_npts(sol);
   for (int k = 0; k < npts * sol->ndim; k++)
     if (!isfinite(sol->u[k])) { s->nonfinite++; break; }
-  for (int j = 0; j < npts; j++) {
-    double eta = fabs(sol->u[j * sol->ndim + BR_ETA]);
-    if (eta > s->eta_max) s->eta_max = eta;
-  }
+  double eta_pt = 0.0;
+  for (int j = 0; j < npts; j++) eta_pt = fmax(eta_pt, fabs(sol->u[j * sol->ndim + BR_ETA]));
+  s->eta_max = fmax(s->eta_max, eta_pt);
   double d = braid_first_integral_drift(sol);
   /* a restart reports its stored start as point 1 without correcting it
      (AUTO does the same): a perturbed start's drift is the noise's, kept apart */
@@ -145,7 +146,8 @@ static int stress_point(void *ctx, const cable_point *pt)
     else if (d > s->drift_max) s->drift_max = d;
   }
   s->t_last = pt->par[pt->icp[0]];   /* the principal parameter */
-  if (s->verbose) printf("  point %d T = %.8g newton %d ds %.3g drift %.3g\n", pt->pt, pt->par[BP_T], pt->newton_iters, pt->ds, d);
+  if (s->verbose) printf("  point %d PAR(ICP(1)) = %.8g type %d newton %d ds %.3g max|eta| %.9f drift %.3g\n", pt->pt,
+                        pt->par[pt->icp[0]], pt->itp, pt->newton_iters, pt->ds, eta_pt, d);
   return s->inner.point(s->inner.ctx, pt);
 }
 
@@ -245,7 +247,8 @@ static int stress_run(const stress_case *k, int noise, stress_outcome *o)
   o->status = braid_start_prepare(&sp);
   if (o->status == 0) o->status = braid_problem_instance(k->problem, &sp, &pb);
   if (o->status != 0) {
-    snprintf(o->msg, sizeof o->msg, "start: %s", cable_status_message(o->status));
+    snprintf(o->msg, sizeof o->msg, "torus start (braid_start_prepare): %s%s", cable_status_message(o->status),
+             o->status == CABLE_ERR_INPUT ? " (Delta at or beyond the contact-circle radius: the tubes overlap)" : "");
     return o->status;
   }
   cable_constants c;
@@ -272,8 +275,12 @@ static int stress_run(const stress_case *k, int noise, stress_outcome *o)
     unsigned long seed = 12345;
     for (int j = 0; j < cable_solution_npts(start) * start->ndim; j++)
       start->u[j] *= 1.0 + START_NOISE * stress_noise(&seed);
-    start->par[BP_L] *= 1.0 + START_NOISE * stress_noise(&seed);
-    if (strcmp(k->problem, "braid_knot") == 0) start->par[BP_L2] = start->par[BP_LTOT] - start->par[BP_L];
+    /* the knot's strand lengths are free (L2 = Ltot - L); the link's L is
+       fixed data of the problem, so perturbing it would change the problem */
+    if (strcmp(k->problem, "braid_knot") == 0) {
+      start->par[BP_L] *= 1.0 + START_NOISE * stress_noise(&seed);
+      start->par[BP_L2] = start->par[BP_LTOT] - start->par[BP_L];
+    }
   }
   char dir[] = "/tmp/cable-stress.XXXXXX";
   if (!mkdtemp(dir)) { o->status = CABLE_ERR_IO; snprintf(o->msg, sizeof o->msg, "mkdtemp"); return o->status; }
@@ -354,6 +361,10 @@ static void stress_case_check(const stress_case *k, FILE *table)
   if (k->drift_checked) {
     snprintf(what, sizeof what, "%s: drift below the goal on every accepted point", k->name);
     test_le(what, o.drift_max, DRIFT_GOAL);
+  }
+  if (k->expect_bp > 0) {
+    snprintf(what, sizeof what, "%s: branch points located", k->name);
+    test_int(what, o.nbp, k->expect_bp);
   }
   double same = NAN;
   if (k->noise) {
