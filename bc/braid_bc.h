@@ -55,7 +55,9 @@ enum braid_link_row {
   BL_W2FIX,                           /* (12.3.42) */
   BL_OMEGA2,                          /* (12.3.43) */
   BL_SIGL,                            /* (12.3.44) */
-  BL_NBC                              /* = 21 */
+  BL_NBC,                             /* = 21 */
+  BL_F20 = BL_NBC,                    /* symmetric variant: F2(0) = 0 */
+  BL_SYM_NBC                          /* = 22 */
 };
 
 /* braid_knot: nbc = BK_NBC; free parameters T, L, L2, eps21. */
@@ -67,5 +69,9 @@ int braid_knot_sym_bcnd(int ndim, const double *par, const int *icp, int nbc, co
 /* braid_link: nbc = BL_NBC; one free parameter (T, Delta or Phi). */
 int braid_link_bcnd(int ndim, const double *par, const int *icp, int nbc, const double *u0,
                     const double *u1, int ijac, double *fb, double *dbc, void *params);
+/* braid_link_sym: nbc = BL_SYM_NBC; braid_link + F2(0) = 0, with the unfolding
+ * parameter eps13 added to (12.3.36) (doc/links.md); free parameters T, eps13. */
+int braid_link_sym_bcnd(int ndim, const double *par, const int *icp, int nbc, const double *u0,
+                        const double *u1, int ijac, double *fb, double *dbc, void *params);
 
 #endif

@@ -67,13 +67,22 @@ static const cable_problem link_template = {
   .bcnd = braid_link_bcnd,
 };
 
+static const cable_problem link_sym_template = {
+  BRAID_PROBLEM_COMMON,
+  .name = "braid_link_sym",
+  .description = "S0-symmetric link: braid_link + F2(0) = 0, eps13 on (12.3.36) (free T, eps13)",
+  .nbc = BL_SYM_NBC,
+  .bcnd = braid_link_sym_bcnd,
+};
+
 const cable_problem *braid_knot_problem(void) { return &knot_template; }
 const cable_problem *braid_knot_sym_problem(void) { return &knot_sym_template; }
 const cable_problem *braid_link_problem(void) { return &link_template; }
 
 const cable_problem *braid_problem_find(const char *name)
 {
-  const cable_problem *const all[] = {&knot_template, &knot_sym_template, &link_template};
+  const cable_problem *const all[] = {&knot_template, &knot_sym_template, &link_template,
+                                     &link_sym_template};
   if (name == NULL) return NULL;
   for (size_t i = 0; i < sizeof all / sizeof all[0]; i++)
     if (strcmp(all[i]->name, name) == 0) return all[i];
