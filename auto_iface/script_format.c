@@ -68,9 +68,12 @@ int script_format_percent(script_interp *in, int line, const script_value *fmtv,
       break;
     }
     char conv = fmt[i++];
-    if (!strchr("disrgGeEfF", conv)) {
+    /* strchr finds the terminating NUL too: a NUL (from '\0' in the script)
+       must not pass as a conversion, or snprintf gets an incomplete spec */
+    if (conv == '\0' || !strchr("disrgGeEfF", conv)) {
       char what[64];
-      snprintf(what, sizeof what, "unsupported format character '%c'", conv);
+      if (conv == '\0') snprintf(what, sizeof what, "unsupported format character '\\0'");
+      else snprintf(what, sizeof what, "unsupported format character '%c'", conv);
       rc = fmt_fail(in, line, fmt, what);
       break;
     }
