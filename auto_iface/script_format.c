@@ -44,7 +44,7 @@ int script_format_percent(script_interp *in, int line, const script_value *fmtv,
     char spec[32];
     size_t sn = 0;
     spec[sn++] = '%';
-    while (i < flen && strchr("-+ #0", fmt[i]) && sn < 8) spec[sn++] = fmt[i++];
+    while (i < flen && fmt[i] != '\0' && strchr("-+ #0", fmt[i]) && sn < 8) spec[sn++] = fmt[i++];
     int width = 0, prec = -1;
     if (i < flen && (fmt[i] == '*' || fmt[i] == '(')) {
       rc = fmt_fail(in, line, fmt, fmt[i] == '*' ? "'*' widths are not supported"
