@@ -4,6 +4,7 @@ set -euo pipefail
 build=${1:?usage: bench.sh BUILD_DIR}
 cd "$(dirname "$0")/.."
 out=doc/benchmarks.md
+mkdir -p doc/img
 tmp=$(mktemp "$out.tmpXXXXXX")
 trap 'rm -f "$tmp"' EXIT
 {
@@ -22,6 +23,23 @@ trap 'rm -f "$tmp"' EXIT
   echo "(NTST=150, NCOL=4, finite-difference Jacobians) takes about 0.33 s per step here."
   echo
   "$build/tests/bench_step"
+  echo
+  echo "## Work against precision: knot72, flat -> BP1 -> mode 1 -> (a)"
+  echo
+  echo "\`$build/tests/bench_workprecision doc/img\`: the knot72 scene reduced to the path to the"
+  echo "paper's point (a): the flat (7,2) branch (\`braid_knot\`, \`runs/knot72/c.knot72\`) up to its"
+  echo "first branch point BP1, the switch in \`braid_knot_sym\` (\`c.knot72sym\`, ISW=-1) and the"
+  echo "mode-1 branch to UZSTOP at T = -2.10752, with the scenes' constants (IAD=3, EPSL = EPSU ="
+  echo "EPSS = 1e-7) and NTST, NCOL of the grid on both runs. Time = the whole scene (start"
+  echo "construction, both branches, median of 3 runs); per step = that time over the accepted"
+  echo "points. Errors are relative to a Richardson reference: at each NCOL the values at NTST = 200"
+  echo "and 400 are extrapolated with the superconvergent rate h^(2 NCOL), q* = q400 + (q400 -"
+  echo "q200)/(2^(2 NCOL) - 1) (the adaptive meshes keep their density profile as NTST doubles);"
+  echo "the NCOL = 7 value is the reference, the other NCOL check it (first table). Errors below the"
+  echo "reference's uncertainty are not measurable and are left out of the plot"
+  echo "(![work-precision](img/work-precision.png), also \`img/work-precision.svg\`; labels = NTST)."
+  echo
+  "$build/tests/bench_workprecision" doc/img
 } > "$tmp"
 mv "$tmp" "$out"
 trap - EXIT
