@@ -113,16 +113,16 @@ status=0
 printf '%-10s %8s %12s %9s %8s %8s\n' target seconds executions exec/s corpus crashes
 for t in "${targets[@]}"; do
   log="$out/$t.log"
-  execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
+  execs=$(sed -n -e 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
   rate=$(sed -n 's/^stat::average_exec_per_sec: *//p' "$log" | tail -1)
-  secs=$(grep -o 'Done [0-9]* runs in [0-9]* second' "$log" | awk '{print $5}' | tail -1)
+  secs=$(grep -a -o 'Done [0-9]* runs in [0-9]* second' "$log" | awk '{print $5}' | tail -1)
   ncorp=$(ls "$out/corpus/$t" | wc -l)
   ncrash=$(find "$out/crashes/$t" -newer "$stamp" -type f \( -name 'crash-*' -o -name 'leak-*' -o -name 'timeout-*' -o -name 'oom-*' \) | wc -l)
   printf '%-10s %8s %12s %9s %8s %8s\n' "$t" "${secs:-?}" "${execs:-?}" "${rate:-?}" "$ncorp" "$ncrash"
   if [ "$(cat "$out/$t.rc")" != 0 ] || [ "$ncrash" -gt 0 ]; then
     status=1
     echo "fuzz: $t FAILED (exit $(cat "$out/$t.rc")); see $log and $out/crashes/$t/" >&2
-    grep -m3 -E 'ERROR: |runtime error|SUMMARY' "$log" >&2
+    grep -a -m3 -E 'ERROR: |runtime error|SUMMARY' "$log" >&2
   fi
 done
 exit $status
