@@ -534,6 +534,7 @@ static int point_cb(void *ctx, const cable_point *pt)
           fmt_es2(e2, pt->l2norm, 14, 5), fmt_es2(e3, pt->ds, 14, 5),
           pt->err_est >= 0 ? fmt_es2(e4, pt->err_est, 14, 5) : "       unknown", pt->det_sign,
           fmt_es2(e5, pt->sv1, 14, 5), fmt_es2(e6, pt->sv2, 14, 5));
+  if (pt->note && pt->note[0]) fprintf(d, " NOTE: %s\n", pt->note);
   if (pt->lab != 0) {
     /* AUTO's screen line for labelled points (parseD finds the label here) */
     char h[BCOL + 1];

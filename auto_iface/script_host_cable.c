@@ -440,6 +440,7 @@ static int collect_point(void *ctx, const cable_point *pt)
 {
   collector *c = ctx;
   progress(c, pt);
+  if (c->diag && pt->note) fprintf(c->diag, "%s\n", pt->note);
   /* a labelled point's solution comes next, with the same point: add both then */
   if (pt->lab > 0) return 0;
   if (!c->rc) c->rc = rp_branch_add(c->b, pt, NULL);
@@ -473,6 +474,9 @@ static void log_branch(const cable_replay *r, const rp_branch *b, int status, co
   char nm[64];
   for (int i = 0; i < b->npt; i++) {
     const cable_point *p = &b->pts[i].pt;
+    /* the engine's remarks (special points it could not locate, rejected
+       steps, double branch points) are also in the d-file */
+    if (p->note) fprintf(f, "  PT %5d: %s\n", p->pt, p->note);
     if (p->lab <= 0) continue;
     int k = p->nicp > 0 ? p->icp[0] : 0;
     const char *ty = cable_type_name(p->itp);
@@ -530,8 +534,10 @@ static int engine_run(cable_replay *r, rp_setup *s, rp_branch **out, cable_error
   int next = r->last_label + 1;
   st = cable_cont_run(cc, &sink, ibr, r->last_label + 1, &next);
   if (next - 1 > r->last_label) r->last_label = next - 1;
-  char why[512];
+  char why[512], end_note[600];
   snprintf(why, sizeof why, "%s", st < 0 ? cable_cont_error(cc) : "");
+  snprintf(end_note, sizeof end_note, "branch %d ended: %s: %s", ibr, cable_status_message(st), why);
+  if (!col.rc && st < 0) col.rc = rp_branch_set_end_note(col.b, end_note);
   cable_cont_free(cc);
   problem_release(r, &prob);
   if (col.rc) {

@@ -11,6 +11,7 @@
 typedef struct rp_point {
   cable_point pt;   /* pt.icp, pt.par, pt.umax point into mem */
   void *mem;
+  char *note;       /* owned copy of pt.note, NULL: none */
   int sol;          /* index of its labelled solution in the branch, -1: none */
 } rp_point;
 
@@ -27,6 +28,7 @@ typedef struct rp_branch {
   rp_point *pts;
   int nsol, capsol;
   cable_solution **sol;
+  char *end_note;   /* why the branch ended abnormally (d-file), NULL: normal end */
 } rp_branch;
 
 /* A result: branches in order. */
@@ -66,6 +68,8 @@ rp_branch *rp_branch_alloc(int ibr, const cable_constants *c, const cable_names 
 void rp_branch_decref(rp_branch *b);   /* frees at zero; NULL is a no-op */
 /* Appends a copy of pt (and of sol when not NULL); 0 or CABLE_ERR_ALLOC. */
 int rp_branch_add(rp_branch *b, const cable_point *pt, const cable_solution *sol);
+/* Keep a copy of text (NULL or "": none) as the branch's end note. */
+int rp_branch_set_end_note(rp_branch *b, const char *text);
 /* A deep copy (solutions cloned); NULL when out of memory. */
 rp_branch *rp_branch_copy(const rp_branch *b);
 

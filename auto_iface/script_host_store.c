@@ -26,11 +26,31 @@ rp_branch *rp_branch_alloc(int ibr, const cable_constants *c, const cable_names 
 void rp_branch_decref(rp_branch *b)
 {
   if (!b || --b->refs > 0) return;
-  for (int i = 0; i < b->npt; i++) free(b->pts[i].mem);
+  for (int i = 0; i < b->npt; i++) {
+    free(b->pts[i].mem);
+    free(b->pts[i].note);
+  }
   for (int i = 0; i < b->nsol; i++) cable_solution_free(b->sol[i]);
+  free(b->end_note);
   free(b->pts);
   free(b->sol);
   free(b);
+}
+
+static char *copy_text(const char *text)
+{
+  size_t len = strlen(text) + 1;
+  char *c = malloc(len);
+  if (c) memcpy(c, text, len);
+  return c;
+}
+
+int rp_branch_set_end_note(rp_branch *b, const char *text)
+{
+  free(b->end_note);
+  b->end_note = NULL;
+  if (text && text[0] && !(b->end_note = copy_text(text))) return CABLE_ERR_ALLOC;
+  return 0;
 }
 
 /* A copy of *pt whose arrays live in one block. */
@@ -40,8 +60,15 @@ static int point_copy(rp_point *dst, const cable_point *pt)
   size_t nd = (size_t)(pt->ndim > 0 ? pt->ndim : 0);
   double *d = malloc((np + nd + 1) * sizeof(double) + (ni + 1) * sizeof(int));
   if (!d) return CABLE_ERR_ALLOC;
+  char *note = NULL;
+  if (pt->note && pt->note[0] && !(note = copy_text(pt->note))) {
+    free(d);
+    return CABLE_ERR_ALLOC;
+  }
   dst->pt = *pt;
   dst->mem = d;
+  dst->note = note;
+  dst->pt.note = note;
   if (pt->par) memcpy(d, pt->par, np * sizeof *d);
   else memset(d, 0, np * sizeof *d);
   if (pt->umax) memcpy(d + np, pt->umax, nd * sizeof *d);
@@ -95,6 +122,10 @@ rp_branch *rp_branch_copy(const rp_branch *b)
       rp_branch_decref(n);
       return NULL;
     }
+  }
+  if (rp_branch_set_end_note(n, b->end_note)) {
+    rp_branch_decref(n);
+    return NULL;
   }
   return n;
 }
@@ -158,6 +189,7 @@ int rp_result_write(const cable_replay *r, const rp_result *res, const char *nam
       rc = s.point(s.ctx, &p->pt);
       if (!rc && p->sol >= 0) rc = s.solution(s.ctx, &p->pt, b->sol[p->sol]);
     }
+    if (!rc && b->end_note) s.diag(s.ctx, b->end_note);
   }
   /* close reports a failed callback again, with its message */
   int rc2 = cable_aufile_close(w, err);

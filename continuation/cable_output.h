@@ -35,6 +35,8 @@ typedef struct cable_point {
   /* branch-point test functions at the point (0 when not computed) */
   int det_sign;         /* sign of det of the extended Newton matrix */
   double sv1, sv2;      /* its two smallest singular values */
+  const char *note;     /* the engine's remark on this point (special-point location,
+                           rejected steps) for the d-file; NULL: none */
 } cable_point;
 
 typedef struct cable_sink {

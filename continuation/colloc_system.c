@@ -145,6 +145,20 @@ static int call_func(colloc_system *s, const double *u, int ijac, double *f, dou
   return 0;
 }
 
+int colloc_system_check_nodes(colloc_system *s, const double *x, int *node)
+{
+  load_params(s, x);
+  const int npts = s->ntst * s->ncol + 1;
+  for (int k = 0; k < npts; k++) {
+    int rc = call_func(s, x + (size_t)k * (size_t)s->ndim, 0, s->w_f, NULL, NULL);
+    if (rc != 0) {
+      if (node) *node = k;
+      return rc;
+    }
+  }
+  return 0;
+}
+
 /* Values of the integral-condition integrand at collocation point (j, m). */
 static int call_icnd(colloc_system *s, const double *x, int j, int m, int ijac, double *fi,
                      double *dint)

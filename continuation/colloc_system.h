@@ -58,6 +58,13 @@ int colloc_system_residual(colloc_system *s, const double *x, double *F);
 /* Newton matrix at x into J (closing row included).  0 or callback status. */
 int colloc_system_jacobian(colloc_system *s, const double *x, colloc_jac *J);
 
+/* FUNC (values only) at every stored node of x, mesh points included: Gauss
+ * collocation evaluates FUNC only between the mesh points, so a converged x
+ * can hold node values outside the problem's domain that no residual saw.
+ * Returns 0, or the first nonzero callback status (1 for NaN/Inf) with the
+ * node's index in *node. */
+int colloc_system_check_nodes(colloc_system *s, const double *x, int *node);
+
 /* Weighted inner product <a, b>_theta over u (node quadrature) and free parameters. */
 double colloc_system_inner(const colloc_system *s, const double *a, const double *b);
 

@@ -126,6 +126,22 @@ fail:
   return cc;
 }
 
+/* A converged point whose stored nodes leave FUNC's domain is rejected like
+ * a failed corrector (recoverable: the step is halved), or ends the run when
+ * FUNC says the failure is fatal. */
+static int check_nodes(cable_cont *cc, const double *x)
+{
+  int node = 0;
+  int st = colloc_system_check_nodes(cc->sys, x, &node);
+  if (st == 0) return CABLE_SUCCESS;
+  const colloc_system *s = cc->sys;
+  int j = node / s->ncol, k = node % s->ncol;
+  double t = j < s->ntst ? s->mesh[j] + (s->mesh[j + 1] - s->mesh[j]) * k / s->ncol : s->mesh[s->ntst];
+  snprintf(cc->rejected, sizeof cc->rejected,
+           "FUNC rejects the converged solution at t = %.6g (node %d, status %d)", t, node, st);
+  return st < 0 ? CABLE_ERR_CALLBACK : CABLE_ERR_RECOVERABLE;
+}
+
 /* Predictor x0 + ds xdot0, then Newton on the collocation system closed by the
  * pseudo-arclength equation <x - x0, xdot0> = ds. */
 int cont_correct(cable_cont *cc, const double *x0, const double *xdot0, double ds, double *x)
@@ -139,6 +155,8 @@ int cont_correct(cable_cont *cc, const double *x0, const double *xdot0, double d
   for (size_t i = 0; i < n; i++) x[i] = x0[i] + ds * xdot0[i];
   int rc = colloc_newton_solve(cc->nw, x);
   cc->newton_iters = colloc_newton_iterations(cc->nw);
+  cc->rejected[0] = '\0';
+  if (rc == CABLE_SUCCESS) rc = check_nodes(cc, x);
   return rc;
 }
 
@@ -161,9 +179,11 @@ static int first_point(cable_cont *cc)
     s->fixval = principal(cc, cc->x);
     rc = colloc_newton_solve(cc->nw, cc->x);
     cc->newton_iters = colloc_newton_iterations(cc->nw);
+    cc->rejected[0] = '\0';
+    if (rc == CABLE_SUCCESS) rc = check_nodes(cc, cc->x);
     if (rc != CABLE_SUCCESS) {
       cont_set_error(cc, "the starting solution did not converge (%s; %s)", cable_status_message(rc),
-                     colloc_newton_message(cc->nw));
+                     cc->rejected[0] ? cc->rejected : colloc_newton_message(cc->nw));
       cc->ended = 1;
       return cc->end_status = rc == CABLE_ERR_CALLBACK ? rc : CABLE_ERR_NEWTON;
     }
@@ -295,11 +315,13 @@ int cable_cont_step(cable_cont *cc)
     }
     if (fabs(cc->ds) <= cc->c.dsmin * (1.0 + 1e-12)) {
       cont_set_error(cc, "no convergence with DSMIN = %g after point %d (%s)", cc->c.dsmin, cc->npt,
-                     colloc_newton_message(cc->nw));
+                     cc->rejected[0] ? cc->rejected : colloc_newton_message(cc->nw));
       cc->ended = 1;
       cc->itp = CABLE_TY_MX;
       return cc->end_status = CABLE_ERR_DSMIN;
     }
+    if (cc->rejected[0])
+      snprintf(cc->note, sizeof cc->note, "step DS = %g rejected: %s", cc->ds, cc->rejected);
     cc->ds = copysign(fmax(fabs(cc->ds) * 0.5, cc->c.dsmin), cc->ds);
   }
   cc->ds_prev = cc->ds_used;

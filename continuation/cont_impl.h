@@ -63,6 +63,7 @@ struct cable_cont {
   double *umax;                 /* [ndim] */
   cable_solution *sol;          /* current solution in s-file form */
   char err[512];                /* last error message */
+  char rejected[200];           /* why the last corrected point was rejected ("" none) */
 };
 
 /* cont_tangent.c */

@@ -74,6 +74,7 @@ static void emit(cable_cont *cc, const cable_sink *sink, int ibr, int *lab)
   }
   pt->ibr = ibr;
   pt->lab = labelled ? (*lab)++ : 0;
+  pt->note = cc->note[0] ? cc->note : NULL;
   cc->sol->ibr = ibr;
   cc->sol->lab = pt->lab;
   cc->sol->itp = pt->itp;
@@ -86,7 +87,6 @@ static void emit(cable_cont *cc, const cable_sink *sink, int ibr, int *lab)
              pt->pt, type_name(pt->itp), pt->lab, cc->c.icp[0] + 1, pt->par[cc->c.icp[0]], pt->ds,
              pt->newton_iters, pt->err_est, cc->tf.det_sign, cc->tf.sv1, cc->tf.sv2);
     sink->diag(sink->ctx, line);
-    if (cc->note[0]) sink->diag(sink->ctx, cc->note);
   }
 }
 

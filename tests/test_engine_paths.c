@@ -5,7 +5,8 @@
  *  - condensation vs KLU, analytic vs finite-difference Jacobians: same points;
  *  - restart from a stored label reproduces the next points;
  *  - failures: a fatal callback, a recoverable one down to DSMIN, a
- *    non-converging start: clean stop, status, message, last good point kept. */
+ *    non-converging start: clean stop, status, message, last good point kept;
+ *  - a solution that FUNC refuses at a mesh point is never accepted. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -221,6 +222,39 @@ static int failing_func(int ndim, const double *u, const int *icp, const double 
   return cable_testproblem_bratu()->func(ndim, u, icp, par, ijac, f, dfdu, dfdp, NULL);
 }
 
+/* Bratu, but FUNC refuses states with u' above a limit.  u' is largest at
+ * t = 0, a mesh point, where collocation never evaluates FUNC: only the
+ * engine's check of the stored nodes keeps such states out of the output. */
+static int slope_limited_func(int ndim, const double *u, const int *icp, const double *par, int ijac,
+                              double *f, double *dfdu, double *dfdp, void *params)
+{
+  const failing_params *fp = params;
+  if (u[1] > fp->limit) return fp->code;
+  return cable_testproblem_bratu()->func(ndim, u, icp, par, ijac, f, dfdu, dfdp, NULL);
+}
+
+static void test_domain_at_mesh_points(memrun *r)
+{
+  cable_problem pb = *cable_testproblem_bratu();
+  failing_params fp = {0.5, 1};
+  pb.func = slope_limited_func;
+  pb.params = &fp;
+  cable_constants c;
+  base_constants_quiet(&c, 10, 3);
+  c.ds = 0.1; c.dsmin = 1e-4; c.dsmax = 0.1; c.nmx = 200; c.npr = 1;
+  memrun_run(&pb, &c, NULL, r);
+  test_int("domain at mesh points: ends at DSMIN", r->status, CABLE_ERR_DSMIN);
+  test_true("domain at mesh points: message names FUNC and t", strstr(r->err, "FUNC rejects") && strstr(r->err, "t = 0"));
+  double worst = -HUGE_VAL;
+  for (int i = 0; i < r->nsol; i++)
+    for (int k = 0; k < cable_solution_npts(r->sol[i]); k++) worst = fmax(worst, r->sol[i]->u[2 * k + 1]);
+  char what[160];
+  snprintf(what, sizeof what, "domain at mesh points: max u' over all stored nodes of %d solutions %.6f <= limit %.1f",
+           r->nsol, worst, fp.limit);
+  test_true(what, r->nsol > 3 && worst <= fp.limit);
+  memrun_free(r);
+}
+
 static void test_failures(memrun *r)
 {
   cable_problem pb = *cable_testproblem_bratu();
@@ -282,6 +316,7 @@ int main(void)
   test_stiff();
   test_variants();
   test_failures(r);
+  test_domain_at_mesh_points(r);
   free(r);
   return test_summary();
 }

@@ -927,6 +927,26 @@ static int copy_file(const char *from, const char *to)
   return ok;
 }
 
+/* The whole file as a string (caller frees), NULL when unreadable. */
+static char *read_text(const char *path)
+{
+  FILE *f = fopen(path, "rb");
+  if (!f) return NULL;
+  size_t cap = 4096, n = 0, k;
+  char *t = malloc(cap);
+  while (t && (k = fread(t + n, 1, cap - n - 1, f)) > 0) {
+    n += k;
+    if (n + 1 == cap) {
+      char *g = realloc(t, cap *= 2);
+      if (!g) free(t);
+      t = g;
+    }
+  }
+  fclose(f);
+  if (t) t[n] = '\0';
+  return t;
+}
+
 static void replay_files_remove(void)
 {
   char path[256];
@@ -1065,6 +1085,32 @@ static void test_engine_script(void)
   free(log);
 }
 
+/* The engine's remarks reach the d-file (AUTO's fort.9) and the log: a fold
+ * that ITMX = 1 cannot locate, and the reason a branch ended at DSMIN. */
+static void test_engine_notes(void)
+{
+  char *log = NULL, buf[1200], path[256];
+  cable_error err;
+  int rc = replay(NULL,
+                  "r = run(c='bratu', ITMX=1, NMX=20, sv='upper')\n"
+                  "m = run(c='bratu', ITNW=2, NWTN=2, DS=0.5, DSMIN=0.5, DSMAX=0.5, sv='bratu')\n",
+                  &log, &err);
+  if (rc) printf("  error: %s\n", cable_error_format(&err, buf, sizeof buf));
+  test_int("engine notes: status", rc, 0);
+  test_true("engine notes: the log names the fold ITMX could not locate",
+            log && strstr(log, "could not locate the fold within ITMX=1"));
+  free(log);
+  char *d = NULL;
+  snprintf(path, sizeof path, "%s/d.upper", replay_dir);
+  test_true("d.upper carries the note on the fold", (d = read_text(path)) && strstr(d, "NOTE: could not locate the fold"));
+  free(d);
+  snprintf(path, sizeof path, "%s/d.bratu", replay_dir);
+  d = read_text(path);
+  test_true("d.bratu says why the branch ended (DSMIN, KINSOL's reason)",
+            d && strstr(d, "branch 2 ended") && strstr(d, "DSMIN = 0.5") && strstr(d, "KINSOL"));
+  free(d);
+}
+
 static void expect_replay_error(const char *what, const char *text, int status, const char *want)
 {
   char *log = NULL, buf[1200], d[200];
@@ -1150,6 +1196,7 @@ int main(int argc, char **argv)
   test_errors();
   test_value_api();
   test_engine_script();
+  test_engine_notes();
   test_engine_errors();
   replay_cleanup();
   return test_summary();
