@@ -4,19 +4,26 @@
  *   analyze(sol)                  -> dict: Lk, Tw, Wr, knot, hand, crossings,
  *                                    lk_in_tube, pmin, psign, dmin, axis_dmin,
  *                                    drift, closure, err
- *   compare('table.txt', rows, ref=sol)
+ *   compare('table.txt', rows, ref=sol, notes=['line', ...])
  *       rows: [[name, sol, F_target, Lk_target(, ref)], ...]; writes the comparison
  *       table (atomically, in the run directory) and prints it.  ref: a
  *       solution of the unbuckled branch; (Lk - Lk_ref)/2 counts the
- *       self-crossing passages of the braid axis since then.
+ *       self-crossing passages of the braid axis since then.  notes: lines
+ *       written after the table (the scene's own tabulations).
  *   plot('fig.png', ['flat', 'mode1', ...], marks=[[sol, '(a)'], ...],
  *        x='T', y='F', title='...')
  *       a bifurcation diagram of the saved b-files b.flat, b.mode1, ... in the
  *       run directory, with the marked solutions as open circles
  *   render(sol, 'fig.png', view=[x, y, z], size=600, thicken=0, vtp='f.vtp', ply='f.ply')
- *       a shaded picture of a braid solution with its pressure profiles */
+ *       a shaded picture of a braid solution with its pressure profiles
+ *   overlap_free(result)          -> [[T_from, T_to], ...]
+ *       the stretches of each branch (in branch order, T at their ends) where
+ *       the strand tubes do not overlap (dmin > 1), from the labelled
+ *       solutions; an end between two labels is interpolated linearly in
+ *       dmin, so its accuracy is the label spacing (NPR) */
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "atomic_file.h"
@@ -165,6 +172,20 @@ static int fn_compare(cable_replay *r, int nargs, const script_value *args, cons
             s->par[BP_T], Ft, F, fabs(F - Ft) / fabs(Ft), a.topo.lk, isnan(lk_row_ref) ? (double)NAN : (a.topo.lk - lk_row_ref) / 2,
             tube, kt, fmin(a.pmin1, a.pmin2), a.tube.dmin, s->err_est);
   }
+  const script_value *notes = script_kwargs_find(kw, "notes");
+  if (notes && notes->type != SCRIPT_LIST) {
+    cable_atomic_abort(af);
+    return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, "notes", "notes must be a list of strings");
+  }
+  if (notes && script_list_len(notes) > 0) fputc('\n', f);
+  for (size_t i = 0; notes && i < script_list_len(notes); i++) {
+    const char *line = script_string_chars(script_list_get(notes, i));
+    if (!line) {
+      cable_atomic_abort(af);
+      return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, "notes", "notes entry %zu is not a string", i + 1);
+    }
+    fprintf(f, "%s\n", line);
+  }
   rc = cable_atomic_commit(af, err);
   if (rc) return rc;
   FILE *in = fopen(path, "r");
@@ -254,6 +275,59 @@ static int fn_render(cable_replay *r, int nargs, const script_value *args, const
   return rc;
 }
 
+static int interval_append(script_value *list, double t0, double t1)
+{
+  script_value iv;
+  int rc = script_list_new(&iv);
+  if (rc) return rc;
+  if ((rc = script_list_append(&iv, script_number(t0))) || (rc = script_list_append(&iv, script_number(t1))) ||
+      (rc = script_list_append(list, iv))) {
+    script_value_release(&iv);
+    return rc;
+  }
+  return 0;
+}
+
+#define OVERLAP_MAX_INTERVALS 256
+
+static int fn_overlap_free(int nargs, const script_value *args, script_value *out, cable_error *err)
+{
+  if (nargs != 1 || script_handle_kind(&args[0]) != SCRIPT_HANDLE_RESULT)
+    return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, NULL, "overlap_free(result) takes one result");
+  const rp_result *res = script_handle_ptr(&args[0]);
+  script_value list;
+  int rc = script_list_new(&list);
+  if (rc) return cable_error_set(err, rc, NULL, 0, NULL, "out of memory");
+  for (int b = 0; b < res->nbr && !rc; b++) {
+    const rp_branch *br = res->br[b];
+    size_t n = (size_t)(br->nsol > 0 ? br->nsol : 1);
+    double *t = malloc(n * sizeof *t), *d = malloc(n * sizeof *d);
+    double (*iv)[2] = malloc(OVERLAP_MAX_INTERVALS * sizeof *iv);
+    if (!t || !d || !iv) rc = cable_error_set(err, CABLE_ERR_ALLOC, NULL, 0, NULL, "out of memory");
+    for (int i = 0; !rc && i < br->nsol; i++) {
+      const cable_solution *s = br->sol[i];
+      tube_distance_result td;
+      if ((rc = braid_tube_distance_solution(s, 0, &td)))
+        cable_error_set(err, rc, NULL, 0, NULL, "label %d is not a closed braid solution (%s)", s->lab,
+                        cable_status_message(rc));
+      t[i] = s->par[BP_T];
+      d[i] = td.dmin;
+    }
+    int m = rc ? 0 : tube_free_intervals(t, d, br->nsol, iv, OVERLAP_MAX_INTERVALS);
+    for (int k = 0; !rc && k < m && k < OVERLAP_MAX_INTERVALS; k++)
+      if ((rc = interval_append(&list, iv[k][0], iv[k][1]))) cable_error_set(err, rc, NULL, 0, NULL, "out of memory");
+    free(t);
+    free(d);
+    free(iv);
+  }
+  if (rc) {
+    script_value_release(&list);
+    return rc;
+  }
+  *out = list;
+  return 0;
+}
+
 int rp_call(void *ctx, const char *name, int nargs, const script_value *args, const script_kwargs *kw,
             script_value *out, cable_error *err)
 {
@@ -262,5 +336,6 @@ int rp_call(void *ctx, const char *name, int nargs, const script_value *args, co
   if (strcmp(name, "compare") == 0) return fn_compare(r, nargs, args, kw, err);
   if (strcmp(name, "plot") == 0) return fn_plot(r, nargs, args, kw, err);
   if (strcmp(name, "render") == 0) return fn_render(r, nargs, args, kw, err);
+  if (strcmp(name, "overlap_free") == 0) return fn_overlap_free(nargs, args, out, err);
   return CABLE_ERR_NOTFOUND;
 }

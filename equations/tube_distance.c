@@ -315,3 +315,24 @@ int braid_tube_distance_solution(const cable_solution *sol, int n, tube_distance
   if (rc == CABLE_SUCCESS) out->axis_kappa_max = kmax;
   return rc;
 }
+
+int tube_free_intervals(const double *t, const double *d, int n, double (*iv)[2], int max)
+{
+  int count = 0;
+  double open_at = 0.0;
+  for (int i = 0; i < n; i++) {
+    int free_now = d[i] > 1.0, free_before = i > 0 && d[i - 1] > 1.0;
+    double cross = i > 0 && free_now != free_before ? t[i - 1] + (1.0 - d[i - 1]) * (t[i] - t[i - 1]) / (d[i] - d[i - 1])
+                                                    : t[i];
+    if (free_now && !free_before) open_at = cross;
+    int close_here = (!free_now && free_before) || (free_now && i == n - 1);
+    if (close_here) {
+      if (count < max) {
+        iv[count][0] = open_at;
+        iv[count][1] = free_now ? t[i] : cross;
+      }
+      count++;
+    }
+  }
+  return count;
+}

@@ -90,4 +90,12 @@ int braid_tube_distance(const braid_curves *bc, tube_distance_result *out);
  * curvature of the contact curve at those points (for PVLS output). */
 int braid_tube_distance_solution(const cable_solution *sol, int n, tube_distance_result *out);
 
+/* Along a branch sampled at n points with torque t[i] and tube distance d[i]
+ * (in units of Delta): the stretches where d > 1 (tubes apart), as [from, to]
+ * pairs in branch order into iv (at most max of them).  An end between two
+ * samples is the linear interpolant's crossing of d = 1; an end of the branch
+ * inside a stretch closes it at that sample.  Returns the number of stretches
+ * (it may exceed max; only max are stored). */
+int tube_free_intervals(const double *t, const double *d, int n, double (*iv)[2], int max);
+
 #endif

@@ -46,6 +46,28 @@ trap 'rm -f "$tmp"' EXIT
   echo "loaded machine: settings closer than that are equally fast."
   echo
   "$build/tests/bench_workprecision" doc/img
+  echo
+  echo "## Work against precision at all four points: knot72, flat -> BP1..BP4 -> modes 1-4 -> (a)-(d)"
+  echo
+  echo "\`scripts/bench_scene.sh $build\`: the whole path of the knot72 scene to the paper's four points"
+  echo "(\`runs/knot72\`'s constants files with NTST, NCOL replaced on both; no analysis, pictures,"
+  echo "left arm or mirror). Time = the whole path (start, flat branch, four switches and branches),"
+  echo "median of 3 runs; errors relative to the finest run. The point (d) on the mode-4 branch"
+  echo "(the longest, with the most intricate shape) needs the finest mesh; the table above sees (a) only."
+  echo
+  bash scripts/bench_scene.sh "$build" 3
+  echo
+  echo "## Stress grid (\`make stress\`)"
+  echo
+  echo "\`scripts/stress.sh $build\` (\`$build/tests/test_stress --full\`); the cases, the pass"
+  echo "criteria and what the grid shows are described in \`doc/stress.md\`."
+  echo
+  stress_rc=0
+  bash scripts/stress.sh "$build" > "$build/stress.out" 2>&1 || stress_rc=$?
+  grep -E '^[0-9]+ passed, [0-9]+ failed' "$build/stress.out" | tail -1 | sed 's/^/Outcome: /'
+  echo "(exit status $stress_rc)"
+  echo
+  cat "$build/stress.md"
 } > "$tmp"
 mv "$tmp" "$out"
 trap - EXIT

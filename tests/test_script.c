@@ -16,6 +16,7 @@
 #include "aufile.h"
 #include "cable_error.h"
 #include "cable_status.h"
+#include "braid_resolver.h"
 #include "harness.h"
 #include "script.h"
 #include "script_host_cable.h"
@@ -975,13 +976,15 @@ static void replay_cleanup(void)
 
 /* Runs a script (a file, or text) on a fresh engine-host session; the log
  * (labelled points, print output) comes back in *log (free it). */
-static int replay(const char *path, const char *text, char **log, cable_error *err)
+static int replay_with(const char *path, const char *text, const cable_replay_problems *problems, char **log,
+                       cable_error *err)
 {
   size_t len;
   FILE *f = open_memstream(log, &len);
   cable_replay_options o;
   cable_replay_options_init(&o);
   o.dir = replay_dir;
+  if (problems) o.problems = problems;
   o.log = f;
   int rc;
   if (path) {
@@ -993,6 +996,11 @@ static int replay(const char *path, const char *text, char **log, cable_error *e
   }
   fclose(f);
   return rc;
+}
+
+static int replay(const char *path, const char *text, char **log, cable_error *err)
+{
+  return replay_with(path, text, NULL, log, err);
 }
 
 static const char *log_line(const char *log, const char *prefix)
@@ -1111,6 +1119,34 @@ static void test_engine_notes(void)
   free(d);
 }
 
+/* overlap_free on a real braid branch: the flat (7,2) knot's tubes stay about
+ * 3 Delta apart (tests/test_tube_distance.c checks the interval arithmetic),
+ * so the whole branch is one stretch from its first to its last label. */
+static void test_overlap_free(void)
+{
+  char *log = NULL, buf[1200];
+  cable_error err;
+  int rc = replay_with(NULL,
+                  "r = run(e='braid_knot', TORUS=7, HAND=1, PAR={'Delta': 0.0051364907419, 'Ltot': 1.98889, 'T': 0},"
+                  " ICP=['T', 'L', 'L2', 'eps21', 'F'], NTST=40, NCOL=4, DS=1, DSMAX=1, NMX=6, NPR=2, ISP=0, ILP=0)\n"
+                  "iv = overlap_free(r)\n"
+                  "print('ov', len(iv), iv[0][0], iv[0][1], r('EP1')['T'], r('EP2')['T'], analyze(r('EP2'))['dmin'])\n"
+                  "x = overlap_free(r('EP2'))\n",
+                  cable_braid_resolver(), &log, &err);
+  if (rc != CABLE_ERR_INPUT) printf("  error: %s\n", cable_error_format(&err, buf, sizeof buf));
+  test_int("overlap_free(solution) is refused", rc, CABLE_ERR_INPUT);
+  test_true("  with a message naming the function", strstr(err.msg, "overlap_free(result)") != NULL);
+  int n = 0;
+  double a = NAN, b = NAN, t0 = 0, t1 = 1, dmin = 0;
+  const char *l = log_line(log, "ov ");
+  test_true("overlap_free on the flat knot: printed", l && sscanf(l, "%d %lf %lf %lf %lf %lf", &n, &a, &b, &t0, &t1, &dmin) == 6);
+  snprintf(buf, sizeof buf, "flat knot: one overlap-free stretch (dmin %.3f > 1)", dmin);
+  test_true(buf, n == 1 && dmin > 1);
+  test_abs("  from the first label's T", a, t0, 1e-12);
+  test_abs("  to the last label's T", b, t1, 1e-12);
+  free(log);
+}
+
 static void expect_replay_error(const char *what, const char *text, int status, const char *want)
 {
   char *log = NULL, buf[1200], d[200];
@@ -1197,6 +1233,7 @@ int main(int argc, char **argv)
   test_value_api();
   test_engine_script();
   test_engine_notes();
+  test_overlap_free();
   test_engine_errors();
   replay_cleanup();
   return test_summary();

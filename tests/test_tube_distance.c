@@ -275,8 +275,35 @@ static void check_errors(void)
   braid_curves_free(bc);
 }
 
+/* Overlap-free stretches of a sampled branch: ends interpolated linearly in d
+ * (closed forms of the linear interpolant, exact to round-off). */
+static void check_free_intervals(void)
+{
+  double iv[4][2];
+  const double t1[] = {0, 1, 2, 3, 4}, d1[] = {2, 1.5, 0.5, 0.8, 1.4};
+  int n = tube_free_intervals(t1, d1, 5, iv, 4);
+  test_int("free stretches: free, overlap, free again", n, 2);
+  test_abs("first stretch starts at the branch start", iv[0][0], 0.0, 0.0);
+  test_abs("first stretch ends at 1 + 0.5/1 = 1.5", iv[0][1], 1.5, 1e-15);
+  test_abs("second stretch starts at 3 + 0.2/0.6", iv[1][0], 3.0 + 0.2 / 0.6, 1e-15);
+  test_abs("second stretch ends at the branch end", iv[1][1], 4.0, 0.0);
+  /* T decreasing along the branch (the mode branches run to negative T) */
+  const double t2[] = {10, 8, 6}, d2[] = {0.5, 0.9, 1.3};
+  n = tube_free_intervals(t2, d2, 3, iv, 4);
+  test_int("free stretch of a branch starting overlapped", n, 1);
+  test_abs("its start: 8 + (1 - 0.9)(6 - 8)/(1.3 - 0.9) = 7.5", iv[0][0], 7.5, 1e-15);
+  test_abs("its end: the branch end", iv[0][1], 6.0, 0.0);
+  const double d3[] = {1.0, 0.2, 1.0};
+  test_int("d = 1 touches: not free", tube_free_intervals(t2, d3, 3, iv, 4), 0);
+  const double t4[] = {0, 1, 2, 3, 4, 5, 6}, d4[] = {2, 0, 2, 0, 2, 0, 2};
+  test_int("four stretches counted, two stored", tube_free_intervals(t4, d4, 7, iv, 2), 4);
+  test_abs("the second stored stretch is [1.5, 2.5]", iv[1][0] + iv[1][1], 4.0, 1e-15);
+  test_int("an empty branch has none", tube_free_intervals(t4, d4, 0, iv, 2), 0);
+}
+
 int main(void)
 {
+  check_free_intervals();
   check_segments();
   check_peanut();
   check_brute_force();
