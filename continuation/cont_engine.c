@@ -344,15 +344,18 @@ int cable_cont_step(cable_cont *cc)
   accept_trial(cc);
   cc->itp_x = cc->itp;
   control_step(cc);
-  if (cc->c.iad > 0 && !cc->queued && ++cc->nstep_adapt >= cc->c.iad) {
+  /* output first: the stored solution is the converged one on its own mesh;
+     the new mesh's interpolant is only the next corrector's start (AUTO
+     writes its point before ADAPT too) */
+  cont_store_solution(cc, cc->itp, 0);
+  check_limits(cc);
+  if (!cc->ended && cc->c.iad > 0 && !cc->queued && ++cc->nstep_adapt >= cc->c.iad) {
     cc->nstep_adapt = 0;
     if ((rc = cont_adapt_mesh(cc)) != CABLE_SUCCESS) {
       cc->ended = 1;
       return cc->end_status = rc;
     }
   }
-  cont_store_solution(cc, cc->itp, 0);
-  check_limits(cc);
   return CABLE_SUCCESS;
 }
 

@@ -85,7 +85,7 @@ static void emit(cable_cont *cc, const cable_sink *sink, int ibr, int *lab)
     snprintf(line, sizeof line,
              "BR %d PT %d TY %s LAB %d PAR(%d)=%.10g ds=%.4g newton=%d err=%.3g det=%+d sv1=%.3e sv2=%.3e", ibr,
              pt->pt, type_name(pt->itp), pt->lab, cc->c.icp[0] + 1, pt->par[cc->c.icp[0]], pt->ds,
-             pt->newton_iters, pt->err_est, cc->tf.det_sign, cc->tf.sv1, cc->tf.sv2);
+             pt->newton_iters, pt->err_est, pt->det_sign, pt->sv1, pt->sv2);
     sink->diag(sink->ctx, line);
   }
 }
