@@ -92,14 +92,34 @@ int cont_locate(cable_cont *cc, int type, int which)
   int side = 0;
   cont_tests ts = cc->tft;
   double *xs = cc->w1, *xds = cc->w2;
+  const char *what = type == CABLE_TY_LP ? "fold" : type == CABLE_TY_BP ? "branch point" : "user zero";
+  double tol = cc->c.epss * fabs(cc->ds_used);
   for (int it = 0; it < cc->c.itmx; it++) {
     double s = s1 - f1 * (s1 - s0) / (f1 - f0);
     double lo = fmin(s0, s1), hi = fmax(s0, s1);
     if (!(s > lo && s < hi)) s = 0.5 * (s0 + s1);
-    if (cont_correct(cc, cc->x, cc->xdot, s, xs) != CABLE_SUCCESS) return CABLE_ERR_NEWTON;
-    if (cont_tangent(cc, xs, cc->xdot, xds, &ts) != CABLE_SUCCESS) return CABLE_ERR_LINSOLVE;
+    int rc = cont_correct(cc, cc->x, cc->xdot, s, xs);
+    if (rc == CABLE_SUCCESS) rc = cont_tangent(cc, xs, cc->xdot, xds, &ts);
+    int nudged = 0;
+    if (rc == CABLE_ERR_LINSOLVE) {
+      /* The extended matrix is exactly singular at s (a zero pivot: s is
+         the branch point to working precision).  A stored point there could
+         not be restarted from (switching factorises it), so step off by the
+         location tolerance, into the larger part of the bracket, where the
+         matrix is regular. */
+      s += (s - lo < hi - s) ? tol : -tol;
+      rc = cont_correct(cc, cc->x, cc->xdot, s, xs);
+      if (rc == CABLE_SUCCESS) rc = cont_tangent(cc, xs, cc->xdot, xds, &ts);
+      nudged = 1;
+    }
+    if (rc != CABLE_SUCCESS) {
+      cont_set_error(cc, "could not locate the %s: %s at arclength %.10g of the step (%s)", what,
+                     rc == CABLE_ERR_LINSOLVE ? "the extended Jacobian is singular" : "the corrector failed", s,
+                     cc->rejected[0] ? cc->rejected : colloc_newton_message(cc->nw));
+      return rc;
+    }
     double f = test_value(&ts, type, which);
-    int done = fabs(s - sprev) <= cc->c.epss * fabs(cc->ds_used) || f == 0.0;
+    int done = nudged || fabs(s - sprev) <= tol || f == 0.0;
     sprev = s;
     if (done) {
       memcpy(cc->xt, xs, (size_t)cc->n * sizeof *xs);
@@ -138,9 +158,7 @@ int cont_locate(cable_cont *cc, int type, int which)
       side = -1;
     }
   }
-  cont_set_error(cc, "could not locate the %s within ITMX=%d iterations",
-                 type == CABLE_TY_LP ? "fold" : type == CABLE_TY_BP ? "branch point" : "user zero",
-                 cc->c.itmx);
+  cont_set_error(cc, "could not locate the %s within ITMX=%d iterations", what, cc->c.itmx);
   return CABLE_ERR_NEWTON;
 }
 

@@ -86,6 +86,38 @@ static void test_elastica(memrun *r)
   cable_solution_free(bp1);
 }
 
+/* Regression: at NTST = 50, NCOL = 4 the regula falsi on the BP test lands
+ * on lambda = pi^2 to working precision, where the extended matrix of the
+ * trivial elastica branch has an exactly zero pivot.  The located point was
+ * dropped without a note (the branch went on with two BPs); it must be found
+ * and stored off the exact singularity, so that switching there works. */
+static void test_elastica_exact_zero_pivot(memrun *r)
+{
+  cable_constants c;
+  engine_constants(&c, 50, 4);
+  c.ds = 0.5; c.dsmin = 1e-6; c.dsmax = 4.0; c.nmx = 200;
+  c.rl1 = 100.0;
+  c.isp = 2; c.ilp = 0;
+  c.epss = 1e-10;
+  memrun_run(cable_testproblem_elastica(), &c, NULL, r);
+  test_int("elastica NCOL=4: three branch points below lambda = 100", memrun_count(r, CABLE_TY_BP), 3);
+  const cable_solution *bp = memrun_find(r, CABLE_TY_BP, 0);
+  cable_solution *bp1 = bp ? cable_solution_clone(bp) : NULL;
+  /* same bound as test_elastica (h^(2 NCOL) = 0.02^8 (n pi)^10 ~ 2e-9 for n = 1) */
+  if (bp1) test_rel("elastica NCOL=4: BP1 at pi^2", bp1->par[0], M_PI * M_PI, 1e-8);
+  memrun_free(r);
+  if (!bp1) return;
+  engine_constants(&c, 50, 4);
+  c.isw = -1;
+  c.ds = 0.05; c.dsmin = 1e-6; c.dsmax = 0.2; c.nmx = 10;
+  c.isp = 0; c.ilp = 0;
+  memrun_run(cable_testproblem_elastica(), &c, bp1, r);
+  test_true("elastica NCOL=4: switching at the located BP1 works", r->status > 0 && r->n == 10);
+  test_true("elastica NCOL=4: the switched branch leaves theta = 0", r->n == 10 && r->l2[9] > 0.5);
+  memrun_free(r);
+  cable_solution_free(bp1);
+}
+
 /* max mesh-point error of the Bratu solution at lambda ~ 1 */
 static double bratu_error(memrun *r, int ntst, int ncol)
 {
@@ -221,6 +253,7 @@ int main(void)
   memrun *r = calloc(1, sizeof *r);
   test_bratu_fold(r);
   test_elastica(r);
+  test_elastica_exact_zero_pivot(r);
   test_superconvergence(r);
   test_double_bp(r);
   free(r);
