@@ -85,7 +85,7 @@ demo: cable
 scenes: cable
 	@bash scripts/scenes.sh
 
-bench: cable $(BENCH_BINS)
+bench: cable tests-build $(BENCH_BINS)
 	@bash scripts/bench.sh $(BUILD)
 
 # Stress grid (scripts/stress.sh, table in doc/stress.md); a quick subset runs in make check.

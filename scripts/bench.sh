@@ -19,10 +19,23 @@ trap 'rm -f "$tmp"' EXIT
   echo "\`$build/tests/bench_step\`: 10 steps of DS = 1 along the flat branch from T = 0 with"
   echo "branch-point tests on (ISP=2: determinant sign and two smallest singular values per"
   echo "step); assembly = one analytic Newton-matrix assembly; factorisation = one structured"
-  echo "factorisation (local condensation + banded LU). Yardstick: AUTO-07p on this problem"
-  echo "(NTST=150, NCOL=4, finite-difference Jacobians) takes about 0.33 s per step here."
+  echo "factorisation (local condensation + banded LU). ISP=0: the same steps without the"
+  echo "branch-point test functions (their share of a step = special-point detection); FD: finite-"
+  echo "difference Jacobians (JAC=0) instead of the analytic ones; KLU: SUNDIALS' sparse direct"
+  echo "solver (LINSOLVER=klu) instead of the structured one (one run at NTST = 200, not run beyond:"
+  echo "its fill-in makes it too slow). Yardstick: AUTO-07p on this problem (NTST=150, NCOL=4,"
+  echo "finite-difference Jacobians) takes about 0.33 s per step here."
   echo
   "$build/tests/bench_step"
+  echo
+  echo "## Work against precision: the engine's test problems"
+  echo
+  echo "\`$build/tests/bench_testproblems\`: Bratu's branch from u = 0 through its fold and the trivial"
+  echo "elastica branch to lambda = 100 with the determinant test (ISP=2), uniform meshes (IAD=0),"
+  echo "EPSS = 1e-10, on the NTST x NCOL grid of the knot72 study below. Errors against the exact"
+  echo "values (lambda* = 3.513830719125162, (n pi)^2); run time = median of 3 runs of the whole branch."
+  echo
+  "$build/tests/bench_testproblems"
   echo
   echo "## Work against precision: knot72, flat -> BP1 -> mode 1 -> (a)"
   echo

@@ -7,13 +7,19 @@
 #include <string.h>
 #include <time.h>
 
+#include <dirent.h>
+#include <unistd.h>
+
 #include "abd_solver.h"
+#include "aufile.h"
 #include "braid_problems.h"
 #include "braid_start.h"
 #include "cable_cont.h"
 #include "colloc_jac.h"
 #include "colloc_newton.h"
 #include "colloc_system.h"
+#include "constants_parse.h"
+#include "names.h"
 
 #define REPEATS 3
 #define STEPS 10
@@ -37,6 +43,13 @@ static double median(double *v, int n)
   return v[n / 2];
 }
 
+typedef struct {
+  cable_linsolver ls;
+  int jac;        /* 1 analytic, 0 finite differences */
+  int isp;        /* 2: determinant sign and singular values every step; 0: none */
+  int repeats;
+} step_setup;
+
 static void constants(cable_constants *c, int ntst, cable_linsolver ls)
 {
   cable_constants_init(c);
@@ -47,13 +60,15 @@ static void constants(cable_constants *c, int ntst, cable_linsolver ls)
 }
 
 /* seconds per continuation step (after the start), median over REPEATS */
-static double step_time(const cable_problem *pb, int ntst, cable_linsolver ls, double *newton_per_step)
+static double step_time(const cable_problem *pb, int ntst, step_setup su, double *newton_per_step)
 {
   double t[REPEATS];
   int iters = 0, steps = 0;
-  for (int r = 0; r < REPEATS; r++) {
+  for (int r = 0; r < su.repeats; r++) {
     cable_constants c;
-    constants(&c, ntst, ls);
+    constants(&c, ntst, su.ls);
+    c.jac = su.jac;
+    c.isp = su.isp;
     int st;
     cable_cont *cc = cable_cont_alloc(pb, &c, &st);
     if (st == 0) st = cable_cont_set_start(cc, NULL);
@@ -68,7 +83,72 @@ static double step_time(const cable_problem *pb, int ntst, cable_linsolver ls, d
     cable_cont_free(cc);
   }
   *newton_per_step = steps ? (double)iters / steps : 0;
-  return median(t, REPEATS);
+  return median(t, su.repeats);
+}
+
+/* the writer's temporary directory and the files in it */
+static void remove_dir(const char *dir)
+{
+  DIR *d = opendir(dir);
+  if (d) {
+    struct dirent *e;
+    char path[4096];
+    while ((e = readdir(d)) != NULL) {
+      if (strcmp(e->d_name, ".") == 0 || strcmp(e->d_name, "..") == 0) continue;
+      snprintf(path, sizeof path, "%s/%s", dir, e->d_name);
+      unlink(path);
+    }
+    closedir(d);
+  }
+  rmdir(dir);
+}
+
+/* seconds per step spent writing output: the same run through cable_cont_run
+ * with the b./s./d./CSV writer (NPR = 1: every point labelled and stored in
+ * the s-file, the most output a run can ask for) minus the run with a sink
+ * that discards everything; median over REPEATS of each.  NAN when the
+ * temporary directory or a file cannot be written. */
+static double output_time(const cable_problem *pb, int ntst)
+{
+  double tw[REPEATS], tn[REPEATS];
+  cable_names names;
+  cable_names_init(&names);
+  cable_names_fill(&names, pb->parnames, pb->npar, pb->unames, pb->ndim);
+  for (int r = 0; r < REPEATS; r++) {
+    for (int with_files = 0; with_files <= 1; with_files++) {
+      cable_constants c;
+      constants(&c, ntst, CABLE_LINSOLVER_CONDENSE);
+      c.npr = 1;
+      cable_constants_take_problem_dims(&c, pb->ndim, pb->nbc, pb->nint);
+      char dir[] = "/tmp/cable-bench-out.XXXXXX";
+      cable_aufile *w = NULL;
+      cable_error err;
+      cable_sink sink = {NULL, NULL, NULL, NULL};
+      if (with_files) {
+        if (!mkdtemp(dir)) return (double)NAN;
+        w = cable_aufile_open(dir, "bench", &c, &names, NULL, &err);
+        if (!w) return (double)NAN;
+        sink = cable_aufile_sink(w);
+      }
+      int st;
+      double t0 = now();
+      cable_cont *cc = cable_cont_alloc(pb, &c, &st);
+      if (st == 0) st = cable_cont_set_start(cc, NULL);
+      if (st == 0) st = cable_cont_run(cc, &sink, 1, 1, NULL);
+      cable_cont_free(cc);
+      int cst = w ? cable_aufile_close(w, &err) : 0;
+      double t = (now() - t0) / (STEPS + 1);
+      if (with_files) {
+        remove_dir(dir);
+        if (cst != 0) return (double)NAN;
+        tw[r] = t;
+      } else {
+        tn[r] = t;
+      }
+      if (st < 0) return (double)NAN;
+    }
+  }
+  return median(tw, REPEATS) - median(tn, REPEATS);
 }
 
 /* seconds for one Jacobian assembly and one factorisation at the start point */
@@ -109,20 +189,31 @@ int main(void)
   if (braid_start_prepare(&sp) != 0) return 1;
   cable_problem pb;
   braid_problem_instance("braid_knot", &sp, &pb);
-  printf("| NTST | step, condensation (s) | Newton it./step | assembly (s) | factorisation (s) | step, KLU (s) | KLU / condensation |\n");
-  printf("|---:|---:|---:|---:|---:|---:|---:|\n");
-  static const int ntsts[] = {25, 50, 100, 150, 200, 400};
+  printf("| NTST | step, condensation (s) | Newton it./step | assembly (s) | factorisation (s) | step without BP tests, ISP=0 (s) | BP tests' share | output per step, NPR=1 (s) | output share | step, FD Jacobian (s) | FD / analytic | step, KLU (s) | KLU / condensation |\n");
+  printf("|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+  static const int ntsts[] = {25, 50, 100, 150, 200, 400, 800};
   for (size_t i = 0; i < sizeof ntsts / sizeof ntsts[0]; i++) {
     int ntst = ntsts[i];
-    double nit, nitk, tj, tf;
-    double tc = step_time(&pb, ntst, CABLE_LINSOLVER_CONDENSE, &nit);
+    double nit, nit0, nitf, nitk, tj, tf;
+    step_setup base = {CABLE_LINSOLVER_CONDENSE, 1, 2, REPEATS};
+    double tc = step_time(&pb, ntst, base, &nit);
     phase_times(&pb, ntst, &tj, &tf);
-    /* KLU becomes very slow beyond NTST ~ 100 at NDIM = 21 (doc/linear-algebra.md) */
-    double tk = ntst <= 100 ? step_time(&pb, ntst, CABLE_LINSOLVER_KLU, &nitk) : (double)NAN;
-    if (isnan(tk))
-      printf("| %d | %.4f | %.1f | %.4f | %.4f | not run | - |\n", ntst, tc, nit, tj, tf);
-    else
-      printf("| %d | %.4f | %.1f | %.4f | %.4f | %.4f | %.1f |\n", ntst, tc, nit, tj, tf, tk, tk / tc);
+    step_setup noisp = base, fd = base, klu = base;
+    noisp.isp = 0;
+    fd.jac = 0;
+    klu.ls = CABLE_LINSOLVER_KLU;
+    double t0 = step_time(&pb, ntst, noisp, &nit0);
+    double tfd = ntst <= 200 ? step_time(&pb, ntst, fd, &nitf) : (double)NAN;
+    /* KLU's fill-in makes it very slow beyond NTST ~ 100 at NDIM = 21
+       (doc/linear-algebra.md): one run at NTST = 200, none beyond */
+    klu.repeats = ntst >= 200 ? 1 : REPEATS;
+    double tk = ntst <= 200 ? step_time(&pb, ntst, klu, &nitk) : (double)NAN;
+    char fds[64] = "not run | -", klus[64] = "not run | -";
+    if (!isnan(tfd)) snprintf(fds, sizeof fds, "%.4f | %.1f", tfd, tfd / tc);
+    if (!isnan(tk)) snprintf(klus, sizeof klus, "%.4f%s | %.1f", tk, klu.repeats == 1 ? " (1 run)" : "", tk / tc);
+    double tout = output_time(&pb, ntst);
+    printf("| %d | %.4f | %.1f | %.4f | %.4f | %.4f | %.0f %% | %.5f | %.0f %% | %s | %s |\n", ntst, tc, nit, tj, tf,
+           t0, 100.0 * (tc - t0) / tc, tout, 100.0 * tout / tc, fds, klus);
     fflush(stdout);
   }
   return 0;
