@@ -151,9 +151,19 @@ static double output_time(const cable_problem *pb, int ntst)
   return median(tw, REPEATS) - median(tn, REPEATS);
 }
 
-/* seconds for one Jacobian assembly and one factorisation at the start point */
-static void phase_times(const cable_problem *pb, int ntst, double *t_jac, double *t_fact)
+/* Medians (s) of the phases of one Newton iteration at the start point,
+ * and of the branch-point test functions' extra work. */
+typedef struct {
+  double residual;   /* collocation residual: NTST*NCOL FUNC calls + BCND */
+  double assembly;   /* analytic Newton matrix (FUNC and DFDU/DFDP at every node) */
+  double factor;     /* structured factorisation: local condensation + banded LU */
+  double solve;      /* one solve with that factorisation */
+  double sv;         /* two smallest singular values by inverse iteration (ISP=2) */
+} phase_costs;
+
+static phase_costs phase_times(const cable_problem *pb, int ntst)
 {
+  phase_costs pc = {0, 0, 0, 0, 0};
   cable_constants c;
   constants(&c, ntst, CABLE_LINSOLVER_CONDENSE);
   int icp[4] = {BP_T, BP_L, BP_L2, BP_EPS21}, st;
@@ -161,25 +171,37 @@ static void phase_times(const cable_problem *pb, int ntst, double *t_jac, double
   colloc_jac *J = colloc_jac_alloc(21, ntst, 4, 4, pb->nbc, 0);
   abd_solver *a = abd_solver_alloc(21, ntst, 4, 4, pb->nbc, 0);
   double *x = calloc((size_t)s->n, sizeof *x), *t = calloc((size_t)(ntst * 4 + 1), sizeof *t);
+  double *F = calloc((size_t)s->n, sizeof *F), *vecs = calloc((size_t)s->n * 2, sizeof *vecs);
   colloc_system_times(s, t);
   for (int k = 0; k <= ntst * 4; k++) pb->stpnt(21, t[k], x + (size_t)k * 21, s->par, pb->params);
   for (int q = 0; q < 4; q++) x[s->n - 4 + q] = s->par[icp[q]];
   s->closing = COLLOC_CLOSE_FIXPAR;
-  double tj[REPEATS], tf[REPEATS];
+  double tr[REPEATS], tj[REPEATS], tf[REPEATS], ts[REPEATS], tv[REPEATS];
   for (int r = 0; r < REPEATS; r++) {
     double t0 = now();
-    colloc_system_jacobian(s, x, J);
+    colloc_system_residual(s, x, F);
     double t1 = now();
+    colloc_system_jacobian(s, x, J);
+    double t2 = now();
     abd_solver_factor(a, J);
-    tf[r] = now() - t1;
-    tj[r] = t1 - t0;
+    double t3 = now();
+    abd_solver_solve(a, F);
+    double t4 = now();
+    double sv[2];
+    abd_solver_smallest_sv(a, J, 2, sv, vecs, 12, 1e-6); /* the engine's CONT_SV_MAXIT, CONT_SV_RTOL */
+    double t5 = now();
+    tr[r] = t1 - t0; tj[r] = t2 - t1; tf[r] = t3 - t2; ts[r] = t4 - t3; tv[r] = t5 - t4;
   }
-  *t_jac = median(tj, REPEATS);
-  *t_fact = median(tf, REPEATS);
-  free(x); free(t);
+  pc.residual = median(tr, REPEATS);
+  pc.assembly = median(tj, REPEATS);
+  pc.factor = median(tf, REPEATS);
+  pc.solve = median(ts, REPEATS);
+  pc.sv = median(tv, REPEATS);
+  free(x); free(t); free(F); free(vecs);
   abd_solver_free(a);
   colloc_jac_free(J);
   colloc_system_free(s);
+  return pc;
 }
 
 int main(void)
@@ -189,15 +211,28 @@ int main(void)
   if (braid_start_prepare(&sp) != 0) return 1;
   cable_problem pb;
   braid_problem_instance("braid_knot", &sp, &pb);
-  printf("| NTST | step, condensation (s) | Newton it./step | assembly (s) | factorisation (s) | step without BP tests, ISP=0 (s) | BP tests' share | output per step, NPR=1 (s) | output share | step, FD Jacobian (s) | FD / analytic | step, KLU (s) | KLU / condensation |\n");
-  printf("|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
   static const int ntsts[] = {25, 50, 100, 150, 200, 400, 800};
-  for (size_t i = 0; i < sizeof ntsts / sizeof ntsts[0]; i++) {
+  enum { NN = sizeof ntsts / sizeof ntsts[0] };
+
+  printf("Phases of one Newton iteration (s):\n\n");
+  printf("| NTST | residual | assembly | factorisation | solve | one Newton iteration | the same per NTST (us) | two smallest singular values |\n");
+  printf("|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+  for (int i = 0; i < NN; i++) {
+    phase_costs pc = phase_times(&pb, ntsts[i]);
+    double it = pc.residual + pc.assembly + pc.factor + pc.solve;
+    printf("| %d | %.5f | %.5f | %.5f | %.5f | %.5f | %.1f | %.5f |\n", ntsts[i], pc.residual, pc.assembly, pc.factor,
+           pc.solve, it, 1e6 * it / ntsts[i], pc.sv);
+    fflush(stdout);
+  }
+
+  printf("\nContinuation steps (s per step):\n\n");
+  printf("| NTST | step, condensation | Newton it./step | step without BP tests, ISP=0 | BP tests' share | output per step, NPR=1 | output share | step, FD Jacobian | FD / analytic | step, KLU | KLU / condensation |\n");
+  printf("|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+  for (int i = 0; i < NN; i++) {
     int ntst = ntsts[i];
-    double nit, nit0, nitf, nitk, tj, tf;
+    double nit, nit0, nitf, nitk;
     step_setup base = {CABLE_LINSOLVER_CONDENSE, 1, 2, REPEATS};
     double tc = step_time(&pb, ntst, base, &nit);
-    phase_times(&pb, ntst, &tj, &tf);
     step_setup noisp = base, fd = base, klu = base;
     noisp.isp = 0;
     fd.jac = 0;
@@ -212,8 +247,8 @@ int main(void)
     if (!isnan(tfd)) snprintf(fds, sizeof fds, "%.4f | %.1f", tfd, tfd / tc);
     if (!isnan(tk)) snprintf(klus, sizeof klus, "%.4f%s | %.1f", tk, klu.repeats == 1 ? " (1 run)" : "", tk / tc);
     double tout = output_time(&pb, ntst);
-    printf("| %d | %.4f | %.1f | %.4f | %.4f | %.4f | %.0f %% | %.5f | %.0f %% | %s | %s |\n", ntst, tc, nit, tj, tf,
-           t0, 100.0 * (tc - t0) / tc, tout, 100.0 * tout / tc, fds, klus);
+    printf("| %d | %.4f | %.1f | %.4f | %.0f %% | %.5f | %.0f %% | %s | %s |\n", ntst, tc, nit, t0,
+           100.0 * (tc - t0) / tc, tout, 100.0 * tout / tc, fds, klus);
     fflush(stdout);
   }
   return 0;
