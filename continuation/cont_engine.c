@@ -220,6 +220,16 @@ static int first_point(cable_cont *cc)
   }
   /* test functions with the tangent itself as closing row */
   rc = cont_tangent(cc, cc->x, cc->xdot, cc->w3, &cc->tf);
+  if (rc == CABLE_ERR_LINSOLVE && cc->switch_pending) {
+    /* At a branch point [F_x; phi^T] is singular: the old branch's tangent
+       lies in its kernel, and on exactly structured problems (the straight
+       elastica) the factorisation meets an exact zero pivot.  The start has
+       no test-function values then: det sign 0 counts no sign change
+       against the first step (cont_find_event). */
+    memset(&cc->tf, 0, sizeof cc->tf);
+    cont_tests_fill(cc, cc->x, cc->xdot, &cc->tf);
+    rc = CABLE_SUCCESS;
+  }
   if (rc != CABLE_SUCCESS) {
     cont_set_error(cc, "no test functions at the starting point: %s", cable_status_message(rc));
     cc->ended = 1;

@@ -86,36 +86,59 @@ static void test_elastica(memrun *r)
   cable_solution_free(bp1);
 }
 
-/* Regression: at NTST = 50, NCOL = 4 the regula falsi on the BP test lands
- * on lambda = pi^2 to working precision, where the extended matrix of the
- * trivial elastica branch has an exactly zero pivot.  The located point was
- * dropped without a note (the branch went on with two BPs); it must be found
- * and stored off the exact singularity, so that switching there works. */
+/* Regressions on the straight elastica, whose extended matrices are exactly
+ * structured, so that a branch point can meet an exact zero pivot:
+ *  - at NTST = 50, NCOL = 4 the regula falsi on the BP test lands on
+ *    lambda = pi^2 to working precision; the located point was dropped
+ *    without a note (the branch went on with two BPs);
+ *  - switching (ISW=-1) at BP1 (NTST 30 and 40, NCOL 4) and at BP3
+ *    (NTST 50, NCOL 5) failed with "no test functions at the starting
+ *    point": [F_x; phi^T] is singular at a BP (the old tangent is in its
+ *    kernel) and the factorisation met an exact zero pivot.
+ * Every BP below lambda = 100 must be found and every switch must start. */
 static void test_elastica_exact_zero_pivot(memrun *r)
 {
-  cable_constants c;
-  engine_constants(&c, 50, 4);
-  c.ds = 0.5; c.dsmin = 1e-6; c.dsmax = 4.0; c.nmx = 200;
-  c.rl1 = 100.0;
-  c.isp = 2; c.ilp = 0;
-  c.epss = 1e-10;
-  memrun_run(cable_testproblem_elastica(), &c, NULL, r);
-  test_int("elastica NCOL=4: three branch points below lambda = 100", memrun_count(r, CABLE_TY_BP), 3);
-  const cable_solution *bp = memrun_find(r, CABLE_TY_BP, 0);
-  cable_solution *bp1 = bp ? cable_solution_clone(bp) : NULL;
-  /* same bound as test_elastica (h^(2 NCOL) = 0.02^8 (n pi)^10 ~ 2e-9 for n = 1) */
-  if (bp1) test_rel("elastica NCOL=4: BP1 at pi^2", bp1->par[0], M_PI * M_PI, 1e-8);
-  memrun_free(r);
-  if (!bp1) return;
-  engine_constants(&c, 50, 4);
-  c.isw = -1;
-  c.ds = 0.05; c.dsmin = 1e-6; c.dsmax = 0.2; c.nmx = 10;
-  c.isp = 0; c.ilp = 0;
-  memrun_run(cable_testproblem_elastica(), &c, bp1, r);
-  test_true("elastica NCOL=4: switching at the located BP1 works", r->status > 0 && r->n == 10);
-  test_true("elastica NCOL=4: the switched branch leaves theta = 0", r->n == 10 && r->l2[9] > 0.5);
-  memrun_free(r);
-  cable_solution_free(bp1);
+  static const int meshes[][2] = {{50, 4}, {50, 5}, {40, 4}, {30, 4}};
+  for (size_t m = 0; m < sizeof meshes / sizeof meshes[0]; m++) {
+    int ntst = meshes[m][0], ncol = meshes[m][1];
+    char what[700];
+    cable_constants c;
+    engine_constants(&c, ntst, ncol);
+    c.ds = 0.5; c.dsmin = 1e-6; c.dsmax = 4.0; c.nmx = 200;
+    c.rl1 = 100.0;
+    c.isp = 2; c.ilp = 0;
+    c.epss = 1e-10;
+    memrun_run(cable_testproblem_elastica(), &c, NULL, r);
+    snprintf(what, sizeof what, "elastica NTST=%d NCOL=%d: three branch points below lambda = 100", ntst, ncol);
+    test_int(what, memrun_count(r, CABLE_TY_BP), 3);
+    cable_solution *bp[3] = {NULL, NULL, NULL};
+    for (int k = 0; k < 3; k++) {
+      const cable_solution *b = memrun_find(r, CABLE_TY_BP, k);
+      if (b) bp[k] = cable_solution_clone(b);
+    }
+    memrun_free(r);
+    for (int k = 0; k < 3; k++) {
+      if (!bp[k]) continue;
+      double exact = ((k + 1) * M_PI) * ((k + 1) * M_PI);
+      /* Gauss collocation's eigenvalue error O(h^(2 NCOL)) (n pi)^(2 NCOL + 2):
+         at most 0.033^8 (3 pi)^10 ~ 2e-9 relative here */
+      snprintf(what, sizeof what, "elastica NTST=%d NCOL=%d: BP%d at (%d pi)^2", ntst, ncol, k + 1, k + 1);
+      test_rel(what, bp[k]->par[0], exact, 1e-8);
+      engine_constants(&c, ntst, ncol);
+      c.isw = -1;
+      c.ds = 0.05; c.dsmin = 1e-6; c.dsmax = 0.2; c.nmx = 10;
+      c.isp = 0; c.ilp = 0;
+      c.epss = 1e-10;
+      memrun_run(cable_testproblem_elastica(), &c, bp[k], r);
+      snprintf(what, sizeof what, "elastica NTST=%d NCOL=%d: switching at BP%d starts and runs (%s)", ntst, ncol,
+               k + 1, r->err);
+      test_true(what, r->status > 0 && r->n == 10);
+      snprintf(what, sizeof what, "elastica NTST=%d NCOL=%d: the branch from BP%d leaves theta = 0", ntst, ncol, k + 1);
+      test_true(what, r->n == 10 && r->l2[9] > 0.5);
+      memrun_free(r);
+      cable_solution_free(bp[k]);
+    }
+  }
 }
 
 /* max mesh-point error of the Bratu solution at lambda ~ 1 */
