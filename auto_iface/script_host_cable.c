@@ -566,6 +566,52 @@ static void remember(cable_replay *r, const rp_setup *s)
   snprintf(r->cur_e, sizeof r->cur_e, "%s", s->e);
 }
 
+/* ---- label and branch numbers ------------------------------------------------------- */
+
+static void note_label(cable_replay *r, int lab, int ibr)
+{
+  if (lab > r->last_label) r->last_label = lab;
+  if (ibr > r->next_branch) r->next_branch = ibr;
+}
+
+static void note_sfile(cable_replay *r, const cable_sfile *sf)
+{
+  for (int i = 0; sf && i < cable_sfile_count(sf); i++) note_label(r, cable_sfile_get(sf, i)->lab, cable_sfile_get(sf, i)->ibr);
+}
+
+/* Labels and branch numbers already in b./s.NAME (when they exist). */
+static int note_files(cable_replay *r, const char *name, cable_error *err)
+{
+  char path[1024];
+  rp_path(r, "s", name, path, sizeof path);
+  if (file_exists(path)) {
+    cable_sfile *sf = cable_sfile_read(path, err);
+    if (!sf) return err && err->status ? err->status : CABLE_ERR_IO;
+    note_sfile(r, sf);
+    cable_sfile_free(sf);
+  }
+  rp_path(r, "b", name, path, sizeof path);
+  if (file_exists(path)) {
+    cable_bfile *bf = cable_bfile_read(path, err);
+    if (!bf) return err && err->status ? err->status : CABLE_ERR_IO;
+    for (int k = 0; k < bf->nbranch; k++)
+      for (int i = 0; i < bf->branch[k].nrow; i++) note_label(r, bf->branch[k].lab[i], bf->branch[k].br[i]);
+    cable_bfile_free(bf);
+  }
+  return 0;
+}
+
+/* AUTO's NEWLAB: the new labels follow the largest label of the solutions
+ * file the run restarts from, and a new branch number follows its largest
+ * branch number.  cable also continues after the labels of the files an
+ * ap= run appends to (AUTO can repeat a label there), and after every label
+ * of the session, so that no s-file receives a label twice. */
+static int continue_numbering(cable_replay *r, const rp_setup *s, cable_error *err)
+{
+  note_sfile(r, s->sf);
+  return s->ap[0] ? note_files(r, s->ap, err) : 0;
+}
+
 static int rp_run(void *ctx, const script_value *start, const script_kwargs *kw, script_value *out,
                   cable_error *err)
 {
@@ -573,6 +619,7 @@ static int rp_run(void *ctx, const script_value *start, const script_kwargs *kw,
   rp_setup s;
   rp_branch *b = NULL;
   int rc = build_setup(r, start, kw, &s, err);
+  if (!rc) rc = continue_numbering(r, &s, err);
   if (!rc) rc = engine_run(r, &s, &b, err);
   rp_result *res = NULL;
   if (!rc) {
@@ -753,9 +800,8 @@ static int rp_save(void *ctx, const script_value *data, const char *name, cable_
 static void note_result(cable_replay *r, const rp_result *res)
 {
   for (int k = 0; k < res->nbr; k++) {
-    if (res->br[k]->ibr > r->next_branch) r->next_branch = res->br[k]->ibr;
-    for (int i = 0; i < res->br[k]->nsol; i++)
-      if (res->br[k]->sol[i]->lab > r->last_label) r->last_label = res->br[k]->sol[i]->lab;
+    note_label(r, 0, res->br[k]->ibr);
+    for (int i = 0; i < res->br[k]->nsol; i++) note_label(r, res->br[k]->sol[i]->lab, 0);
   }
 }
 

@@ -1037,6 +1037,29 @@ int main(void)
     cable_solution_free(s);
   }
 
+  /* ---- a label the file already has is refused (appending and within one run) */
+  {
+    cable_aufile_options ap;
+    cable_aufile_options_init(&ap);
+    ap.append = 1;
+    w = cable_aufile_open(OUTDIR, "syn", &c, &names, &ap, &err);
+    sink = cable_aufile_sink(w);
+    const int lab3[3] = {9, 3, 10};   /* s.syn already holds labels 1..8 */
+    expect_row rr[3];
+    st = emit_branch(&sink, 3, 3, 5, 4, NPAR1, 2, 3, itp1, lab3, icp1, 3, rr, NULL);
+    test_true("appending label 3 to s.syn (labels 1-8) is refused", st < 0);
+    st = cable_aufile_close(w, &err);
+    printf("  message: %s\n", cable_error_format(&err, msg, sizeof msg));
+    test_true("  close reports the duplicate label", st < 0 && strstr(msg, "label 3 is already in the file"));
+    w = cable_aufile_open(OUTDIR, "dup", &c, &names, NULL, &err);
+    sink = cable_aufile_sink(w);
+    const int labd[3] = {1, 2, 1};
+    st = emit_branch(&sink, 1, 3, 5, 4, NPAR1, 2, 3, itp1, labd, icp1, 3, rr, NULL);
+    test_true("one run writing label 1 twice is refused", st < 0);
+    st = cable_aufile_close(w, &err);
+    test_true("  close reports it", st < 0 && strstr(err.msg, "label 1 is already in the file"));
+  }
+
   for (int p = 0; p < 10; p++) cable_solution_free(keep1[p]);
   for (int p = 0; p < 4; p++) cable_solution_free(keep2[p]);
   test_with_engine();

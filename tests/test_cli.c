@@ -6,6 +6,7 @@
 #include <sys/stat.h>
 #include <sys/wait.h>
 
+#include "aufile.h"
 #include "harness.h"
 
 #define CABLE "./build/release/cable"
@@ -45,6 +46,36 @@ static void bad(const char *what, const char *args, const char *expect1, const c
   if (!(strstr(out, expect1) && strstr(out, expect2))) printf("  message was: %s", out);
 }
 
+/* Labels a restart (s=) appends (ap=) to the file it came from continue after
+ * the file's largest label, as AUTO's NEWLAB; the new branch is numbered
+ * after the file's largest branch; no label appears twice. */
+static void test_append_labels(void)
+{
+  char out[8192];
+  int rc = run("cd " DIR " && ../../../" CABLE " run c=good sv=lab 2>&1", out, sizeof out);
+  test_int("labels: first run exit 0", rc, 0);
+  rc = run("cd " DIR " && ../../../" CABLE " run c=good s=lab IRS=2 ap=lab 2>&1", out, sizeof out);
+  test_int("labels: restart from s.lab appended to it: exit 0", rc, 0);
+  cable_error err;
+  cable_sfile *sf = cable_sfile_read(DIR "/s.lab", &err);
+  int n = sf ? cable_sfile_count(sf) : 0, uniq = sf != NULL, maxold = 0, newlab = 0, newbr = 0;
+  for (int i = 0; i < n; i++) {
+    const cable_solution *a = cable_sfile_get(sf, i);
+    for (int j = i + 1; j < n; j++) uniq &= a->lab != cable_sfile_get(sf, j)->lab;
+    if (a->ibr == 1 && a->lab > maxold) maxold = a->lab;
+    if (a->ibr != 1) newlab = a->lab, newbr = a->ibr;
+  }
+  test_true("labels: s.lab has no label twice", uniq && n >= 3);
+  test_int("labels: the appended run's label is the file's largest + 1", newlab, maxold + 1);
+  test_int("labels: the appended run is branch 2", newbr, 2);
+  cable_sfile_free(sf);
+  cable_bfile *bf = cable_bfile_read(DIR "/b.lab", &err);
+  test_true("labels: b.lab's second section is branch 2", bf && bf->nbranch == 2 && bf->branch[1].br[0] == 2);
+  cable_bfile_free(bf);
+  remove(DIR "/b.lab"); remove(DIR "/s.lab"); remove(DIR "/d.lab");
+  (void)!system("rm -f " DIR "/b.lab.*.csv");
+}
+
 int main(void)
 {
   char out[8192];
@@ -82,5 +113,6 @@ int main(void)
   remove(DIR "/b.out"); remove(DIR "/s.out"); remove(DIR "/d.out");
   remove(DIR "/b.out2"); remove(DIR "/s.out2"); remove(DIR "/d.out2");
   (void)!system("rm -f " DIR "/b.*.csv");
+  test_append_labels();
   return test_summary();
 }
