@@ -88,14 +88,21 @@ int cable_cmd_table(const char *bfile, FILE *out, cable_error *err)
   return 0;
 }
 
+/* The d. or b. file beside s.NAME; 0 when sfile is not named s.NAME. */
+static int sibling(const char *sfile, char type, char *path, size_t len)
+{
+  const char *base = strrchr(sfile, '/');
+  base = base ? base + 1 : sfile;
+  if (strncmp(base, "s.", 2) != 0) return 0;
+  snprintf(path, len, "%.*s%c.%s", (int)(base - sfile), sfile, type, base + 2);
+  return 1;
+}
+
 /* Error estimates that the d-file records for stored labels. */
 static double dfile_error_estimate(const char *sfile, int lab)
 {
   char path[1024];
-  const char *base = strrchr(sfile, '/');
-  base = base ? base + 1 : sfile;
-  if (strncmp(base, "s.", 2) != 0) return -1;
-  snprintf(path, sizeof path, "%.*sd.%s", (int)(base - sfile), sfile, base + 2);
+  if (!sibling(sfile, 'd', path, sizeof path)) return -1;
   FILE *f = fopen(path, "r");
   if (!f) return -1;
   char line[512];
@@ -109,10 +116,32 @@ static double dfile_error_estimate(const char *sfile, int lab)
   return est;
 }
 
+/* The parameter columns of solution x's row in the b-file (the principal
+ * parameter and the other ICP columns; not L2-NORM or MAX U).  0 when the
+ * b-file has no row with x's label, branch and point. */
+static int bfile_parameters(const cable_bfile *b, const cable_solution *x, FILE *out)
+{
+  for (int k = 0; b && k < b->nbranch; k++) {
+    const cable_bfile_branch *br = &b->branch[k];
+    for (int i = 0; i < br->nrow; i++) {
+      if (br->lab[i] != x->lab || br->br[i] != x->ibr || br->pt[i] != x->ntot) continue;
+      for (int j = 0; j < br->ncol; j++) {
+        const char *h = br->colname[j];
+        if (j == 1 || strcmp(h, "L2-NORM") == 0 || strncmp(h, "MAX ", 4) == 0) continue;
+        fprintf(out, " %s=%.10g", h, br->data[(size_t)j * (size_t)br->nrow + (size_t)i]);
+      }
+      return 1;
+    }
+  }
+  return 0;
+}
+
 int cable_cmd_list(const char *sfile, FILE *out, cable_error *err)
 {
   cable_sfile *s = cable_sfile_read(sfile, err);
   if (!s) return err->status ? err->status : CABLE_ERR_IO;
+  cable_bfile *b = NULL;   /* read only when a solution lacks its free-parameter list */
+  int b_tried = 0;
   fprintf(out, "  LAB  TY    BR    PT  NTST NCOL  error-est   free parameters\n");
   for (int i = 0; i < cable_sfile_count(s); i++) {
     const cable_solution *x = cable_sfile_get(s, i);
@@ -120,9 +149,26 @@ int cable_cmd_list(const char *sfile, FILE *out, cable_error *err)
     fprintf(out, "%5d  %-2s %5d %5d %5d %4d  ", x->lab, cable_type_name(x->itp), x->ibr, x->ntot, x->ntst, x->ncol);
     if (e >= 0) fprintf(out, "%9.2e  ", e);
     else fprintf(out, "%9s  ", "-");
-    for (int q = 0; q < x->nfpr; q++) fprintf(out, " PAR(%d)=%.10g", x->icp[q] + 1, x->par[x->icp[q]]);
+    /* the free-parameter indices come with the direction (icp -1 without
+       it: IIS=0, or AUTO's 12-integer headers) */
+    int shown = 0;
+    for (int q = 0; q < x->nfpr; q++)
+      if (x->icp[q] >= 0 && x->icp[q] < x->npar) {
+        fprintf(out, " PAR(%d)=%.10g", x->icp[q] + 1, x->par[x->icp[q]]);
+        shown++;
+      }
+    if (!shown) {
+      char path[1024];
+      if (!b_tried && sibling(sfile, 'b', path, sizeof path)) {
+        cable_error berr;
+        b = cable_bfile_read(path, &berr);   /* optional: a missing b-file is no error */
+      }
+      b_tried = 1;
+      if (!bfile_parameters(b, x, out)) fputs(" (not stored: no direction in the s-file, no b-file row)", out);
+    }
     fputc('\n', out);
   }
+  cable_bfile_free(b);
   cable_sfile_free(s);
   return 0;
 }

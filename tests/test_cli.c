@@ -76,6 +76,55 @@ static void test_append_labels(void)
   (void)!system("rm -f " DIR "/b.lab.*.csv");
 }
 
+/* The line of `cable list` output that starts with label lab, or NULL. */
+static const char *list_line(const char *out, int lab, char *line, size_t len)
+{
+  for (const char *p = out; p && *p; p = strchr(p, '\n') ? strchr(p, '\n') + 1 : NULL) {
+    int l;
+    if (sscanf(p, "%d", &l) == 1 && l == lab) {
+      size_t n = strcspn(p, "\n");
+      snprintf(line, len, "%.*s", (int)n, p);
+      return line;
+    }
+  }
+  return NULL;
+}
+
+/* cable list of solutions stored without their direction: the s-file has no
+ * free-parameter indices (icp = -1); never index PAR with them. */
+static void test_list_without_direction(void)
+{
+  char out[8192], line[512];
+  int rc = run(CABLE " list tests/data/s.auto07p 2>&1", out, sizeof out);
+  test_int("list s.auto07p: exit 0", rc, 0);
+  const char *l1 = list_line(out, 1, line, sizeof line);
+  test_true("list s.auto07p: label 1 (with direction) lists PAR(1) and PAR(11)",
+            l1 && strstr(l1, "PAR(1)=1 PAR(11)=6.283185307"));
+  const char *l2 = list_line(out, 2, line, sizeof line);
+  test_true("list s.auto07p: label 2 (12-integer header, no direction) names no PAR(0) and says why",
+            l2 && !strstr(l2, "PAR(0)") && strstr(l2, "not stored"));
+  if (l2) printf("  line: %s\n", l2);
+  rc = run("cd " DIR " && ../../../" CABLE " run c=good IIS=0 sv=iis0 2>&1", out, sizeof out);
+  test_int("IIS=0 run: exit 0", rc, 0);
+  rc = run("cd " DIR " && ../../../" CABLE " list s.iis0 2>&1", out, sizeof out);
+  test_int("list s.iis0: exit 0", rc, 0);
+  cable_error err;
+  cable_sfile *sf = cable_sfile_read(DIR "/s.iis0", &err);
+  int n = sf ? cable_sfile_count(sf) : 0, ok = n > 1;
+  for (int i = 0; i < n; i++) {
+    const cable_solution *x = cable_sfile_get(sf, i);
+    char want[64];
+    snprintf(want, sizeof want, " lambda=%.10g", x->par[0]);   /* the b-file row's value, 11 digits */
+    const char *l = list_line(out, x->lab, line, sizeof line);
+    ok &= x->icp[0] == -1 && l && strstr(l, want) && !strstr(l, "PAR(0)");
+    if (!(l && strstr(l, want))) printf("  label %d: want '%s' in '%s'\n", x->lab, want, l ? l : "(none)");
+  }
+  test_true("list s.iis0: every label shows lambda from its b-file row, no PAR(0)", ok);
+  cable_sfile_free(sf);
+  remove(DIR "/b.iis0"); remove(DIR "/s.iis0"); remove(DIR "/d.iis0");
+  (void)!system("rm -f " DIR "/b.iis0.*.csv");
+}
+
 int main(void)
 {
   char out[8192];
@@ -114,5 +163,6 @@ int main(void)
   remove(DIR "/b.out2"); remove(DIR "/s.out2"); remove(DIR "/d.out2");
   (void)!system("rm -f " DIR "/b.*.csv");
   test_append_labels();
+  test_list_without_direction();
   return test_summary();
 }
