@@ -175,7 +175,7 @@ int rp_result_write(const cable_replay *r, const rp_result *res, const char *nam
   cable_aufile_options o;
   cable_aufile_options_init(&o);
   o.append = append;
-  o.write_csv = 0;   /* the CSV tables belong to `cable run`; scripts save AUTO's files */
+  o.write_csv = 1;   /* b.NAME.<k>.csv beside AUTO's files, for every saved result */
   const char *dir = r->opt.dir && r->opt.dir[0] ? r->opt.dir : NULL;
   cable_aufile *w = cable_aufile_open(dir, name, &res->br[0]->c, &res->br[0]->names, &o, err);
   if (!w) return err && err->status ? err->status : CABLE_ERR_IO;

@@ -1,5 +1,6 @@
 /* The cable program on bad input: one line on stderr naming the file, line
  * and key, a non-zero exit, and no output file written; and a good run. */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -8,6 +9,7 @@
 
 #include "aufile.h"
 #include "harness.h"
+#include "names.h"
 
 #define CABLE "./build/release/cable"
 #define DIR "tests/data/cli"
@@ -125,6 +127,83 @@ static void test_list_without_direction(void)
   (void)!system("rm -f " DIR "/b.iis0.*.csv");
 }
 
+/* The CSV heading of a b-file column heading: blanks become '_',
+ * L2-NORM becomes L2NORM (doc/output-formats.md). */
+static void csv_name(const char *heading, char *out, size_t len)
+{
+  if (strcmp(heading, "L2-NORM") == 0) heading = "L2NORM";
+  snprintf(out, len, "%s", heading);
+  for (char *c = out; *c; c++)
+    if (*c == ' ') *c = '_';
+}
+
+/* A saved run writes b.NAME.1.csv: named columns, one row per b-file row,
+ * the same numbers (the b-file's have 11 significant digits: REL_TOL). */
+#define CSV_REL_TOL 1e-10
+static void test_csv(void)
+{
+  char out[8192];
+  int rc = run("cd " DIR " && ../../../" CABLE " run c=good sv=csvt 2>&1", out, sizeof out);
+  test_int("csv: cable run ... sv=csvt: exit 0", rc, 0);
+  test_true("csv: b.csvt.1.csv exists", exists(DIR "/b.csvt.1.csv"));
+  cable_error err;
+  cable_bfile *bf = cable_bfile_read(DIR "/b.csvt", &err);
+  FILE *f = fopen(DIR "/b.csvt.1.csv", "r");
+  char line[4096];
+  int head_ok = bf && bf->nbranch == 1 && f && fgets(line, sizeof line, f);
+  if (head_ok) {
+    /* BR,PT,TY,LAB, then the b-file's columns by name, then NEWTON,DS,ERR_EST */
+    char want[4096] = "BR,PT,TY,LAB", nm[128];
+    for (int j = 0; j < bf->branch[0].ncol; j++) {
+      csv_name(bf->branch[0].colname[j], nm, sizeof nm);
+      strcat(want, ",");
+      strcat(want, nm);
+    }
+    strcat(want, ",NEWTON,DS,ERR_EST\n");
+    head_ok = strcmp(line, want) == 0;
+    if (!head_ok) printf("  header: got %s  want %s", line, want);
+  }
+  test_true("csv: header names the b-file's columns (lambda, L2NORM, MAX_u, ...)", head_ok && strstr(line, ",lambda,L2NORM,"));
+  int nrow = 0, rows_ok = head_ok;
+  double emax = 0;
+  while (rows_ok && fgets(line, sizeof line, f)) {
+    const cable_bfile_branch *b = &bf->branch[0];
+    if (nrow >= b->nrow) {
+      rows_ok = 0;
+      break;
+    }
+    /* split at every comma (TY may be empty) */
+    char *field[64];
+    int nf = 0;
+    for (char *c = line; nf < 64;) {
+      field[nf++] = c;
+      c = strpbrk(c, ",\n");
+      if (!c || *c == '\n') {
+        if (c) *c = '\0';
+        break;
+      }
+      *c++ = '\0';
+    }
+    if (nf != 4 + b->ncol + 3) {
+      rows_ok = 0;
+      break;
+    }
+    rows_ok &= atoi(field[0]) == b->br[nrow] && atoi(field[1]) == b->pt[nrow] && atoi(field[3]) == b->lab[nrow] &&
+               strcmp(field[2], b->ty[nrow] ? cable_type_name(b->ty[nrow]) : "") == 0;
+    for (int j = 0; j < b->ncol; j++) {
+      double v = strtod(field[4 + j], NULL), w = b->data[(size_t)j * (size_t)b->nrow + (size_t)nrow];
+      emax = fmax(emax, fabs(v - w) / fmax(fabs(w), 1e-300));
+    }
+    nrow++;
+  }
+  if (f) fclose(f);
+  test_int("csv: one row per b-file row", nrow, bf && bf->nbranch ? bf->branch[0].nrow : -1);
+  test_true("csv: BR, PT, TY, LAB of every row as in the b-file", rows_ok);
+  test_le("csv: values vs the b-file's, max rel. error", emax, CSV_REL_TOL);
+  cable_bfile_free(bf);
+  remove(DIR "/b.csvt"); remove(DIR "/s.csvt"); remove(DIR "/d.csvt"); remove(DIR "/b.csvt.1.csv");
+}
+
 int main(void)
 {
   char out[8192];
@@ -164,5 +243,6 @@ int main(void)
   (void)!system("rm -f " DIR "/b.*.csv");
   test_append_labels();
   test_list_without_direction();
+  test_csv();
   return test_summary();
 }

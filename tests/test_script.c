@@ -897,8 +897,8 @@ static void test_value_api(void)
 
 /* One directory per test process: runs of the suite may overlap. */
 static char replay_dir[64] = "tests/tmp/replay";
-static const char *const replay_files[] = {"c.bratu", "b.bratu", "s.bratu", "d.bratu",
-                                           "b.upper", "s.upper", "d.upper"};
+static const char *const replay_files[] = {"c.bratu", "b.bratu", "s.bratu", "d.bratu", "b.bratu.1.csv",
+                                           "b.upper", "s.upper", "d.upper", "b.upper.1.csv"};
 
 /* Bratu's fold: lambda* = th^2 / (2 cosh^2(th/4)) with (th/4) tanh(th/4) = 1,
  * and there max u = u(1/2) = 2 ln cosh(th/4) (30-digit mpmath values). */
@@ -1057,6 +1057,15 @@ static void test_engine_script(void)
   for (int i = 0; lam && i < bf->branch[0].nrow; i++)
     if (bf->branch[0].lab[i] == 2) lp_row = lam[i];
   test_rel("b.bratu: the fold's row (label 2)", lp_row, fold, FILE_REL_TOL);
+  /* save() also writes the branch's CSV table, one line per b-file row */
+  snprintf(path, sizeof path, "%s/b.bratu.1.csv", replay_dir);
+  char *csv = read_text(path);
+  int csv_lines = 0;
+  for (const char *c = csv; c && *c; c++) csv_lines += *c == '\n';
+  test_true("save(b, 'bratu') wrote b.bratu.1.csv with a header naming lambda",
+            csv && strncmp(csv, "BR,PT,TY,LAB,lambda,L2NORM,", 27) == 0);
+  test_int("b.bratu.1.csv: header + one line per b-file row", csv_lines, bf && bf->nbranch ? 1 + bf->branch[0].nrow : -1);
+  free(csv);
   cable_bfile_free(bf);
 
   /* the template plug-in, run by the engine through a script (PVLS: umax) */
