@@ -350,6 +350,7 @@ static int build_setup(cable_replay *r, const script_value *data, const script_k
     s->names = r->cur_names;
     snprintf(s->e, sizeof s->e, "%s", r->cur_e);
   }
+  s->c.s[0] = s->c.sv[0] = '\0';   /* one-off, like IRS: set below for this run */
   const script_kwarg *ke = NULL, *kc = NULL, *ks = NULL;
   for (int i = 0; kw && i < kw->n && !rc; i++) {
     const script_kwarg *k = &kw->items[i];
@@ -360,12 +361,17 @@ static int build_setup(cable_replay *r, const script_value *data, const script_k
     else if (strcmp(k->name, "ap") == 0) rc = kw_string(k, s->ap, sizeof s->ap, err);
   }
   if (!rc && ke) rc = kw_string(ke, s->e, sizeof s->e, err);
+  /* a constants file's s= and sv= count for the run that reads it, under
+     the keywords (AUTO: keyword arguments override the c-file) */
+  char cfile_s[CABLE_NAME_MAX] = "", cfile_sv[CABLE_NAME_MAX] = "";
   if (!rc && data && data->type == SCRIPT_STRING) {
     /* run('name'): c.NAME (when present) and s.NAME, as AUTO */
     const char *name = script_string_chars(data);
     if (!ke) s->e[0] = '\0';
     rc = read_constants_file(r, name, s, 0, err);
+    if (!rc) snprintf(cfile_sv, sizeof cfile_sv, "%s", s->c.sv);
     if (!rc) rc = read_solutions_file(r, name, s, err);
+    if (!rc) snprintf(s->c.s, sizeof s->c.s, "%s", name);
     if (!rc && !s->e[0]) snprintf(s->e, sizeof s->e, "%s", name);
   }
   if (!rc && kc) {
@@ -373,12 +379,23 @@ static int build_setup(cable_replay *r, const script_value *data, const script_k
     rc = kw_string(kc, name, sizeof name, err);
     if (!rc) rc = read_constants_file(r, name, s, 1, err);
     if (!rc && ke) snprintf(s->e, sizeof s->e, "%s", script_string_chars(&ke->value));
+    if (!rc) {
+      snprintf(cfile_s, sizeof cfile_s, "%s", s->c.s);
+      snprintf(cfile_sv, sizeof cfile_sv, "%s", s->c.sv);
+    }
   }
   if (!rc && ks) {
     char name[CABLE_NAME_MAX];
     rc = kw_string(ks, name, sizeof name, err);
     if (!rc) rc = read_solutions_file(r, name, s, err);
+    if (!rc) snprintf(s->c.s, sizeof s->c.s, "%s", name);
+  } else if (!rc && cfile_s[0] && !data) {
+    rc = read_solutions_file(r, cfile_s, s, err);   /* an explicit start wins over the file's s= */
+  } else if (!rc && !s->sf) {
+    s->c.s[0] = '\0';
   }
+  if (!rc && cfile_sv[0] && !s->sv[0] && !s->ap[0]) snprintf(s->sv, sizeof s->sv, "%s", cfile_sv);
+  if (!rc) snprintf(s->c.sv, sizeof s->c.sv, "%s", s->sv);   /* the b-file header says where it went */
   if (rc) return rc;
   const char *const *parnames;
   int npar;
@@ -562,6 +579,7 @@ static void remember(cable_replay *r, const rp_setup *s)
   r->cur = s->c;
   r->cur.irs = 0;
   r->cur.irs_name[0] = '\0';
+  r->cur.s[0] = r->cur.sv[0] = '\0';
   r->cur_names = s->names;
   snprintf(r->cur_e, sizeof r->cur_e, "%s", s->e);
 }

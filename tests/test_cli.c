@@ -204,6 +204,47 @@ static void test_csv(void)
   remove(DIR "/b.csvt"); remove(DIR "/s.csvt"); remove(DIR "/d.csvt"); remove(DIR "/b.csvt.1.csv");
 }
 
+static void remove_outputs(const char *name)
+{
+  char cmd[256];
+  snprintf(cmd, sizeof cmd, "rm -f " DIR "/b.%s " DIR "/s.%s " DIR "/d.%s " DIR "/b.%s.*.csv", name, name, name, name);
+  (void)!system(cmd);
+}
+
+/* A constants file's s= and sv= are honoured, and keywords override them
+ * (c.svfile: sv='fromc'; c.sfile: s='sbase', IRS=2, sv='restarted'). */
+static void test_cfile_s_sv(void)
+{
+  char out[8192];
+  int rc = run("cd " DIR " && ../../../" CABLE " run c=svfile 2>&1", out, sizeof out);
+  test_int("c-file sv='fromc': exit 0", rc, 0);
+  test_true("c-file sv='fromc': b.fromc, s.fromc, d.fromc written",
+            exists(DIR "/b.fromc") && exists(DIR "/s.fromc") && exists(DIR "/d.fromc"));
+  remove_outputs("fromc");
+  rc = run("cd " DIR " && ../../../" CABLE " run c=svfile sv=kw 2>&1", out, sizeof out);
+  test_true("keyword sv=kw overrides the c-file's sv: b.kw written, no b.fromc",
+            rc == 0 && exists(DIR "/b.kw") && !exists(DIR "/b.fromc"));
+  remove_outputs("kw");
+  rc = run("cd " DIR " && ../../../" CABLE " run c=good sv=sbase 2>&1", out, sizeof out);
+  rc |= run("cd " DIR " && ../../../" CABLE " run c=sfile 2>&1", out, sizeof out);
+  test_int("c-file s='sbase', IRS=2: exit 0", rc, 0);
+  cable_error err;
+  cable_sfile *base = cable_sfile_read(DIR "/s.sbase", &err);
+  cable_bfile *bf = cable_bfile_read(DIR "/b.restarted", &err);
+  const cable_solution *l2 = base ? cable_sfile_find_label(base, 2) : NULL;
+  const double *lam = bf && bf->nbranch ? cable_bfile_column(&bf->branch[0], "lambda") : NULL;
+  test_true("c-file s= and IRS=2: b.restarted written (the c-file's sv)", lam && l2);
+  /* the first row is the restart point itself (11 digits in both files) */
+  test_rel("b.restarted starts at label 2 of s.sbase", lam ? lam[0] : (double)NAN, l2 ? l2->par[0] : (double)NAN, 1e-10);
+  cable_bfile_free(bf);
+  cable_sfile_free(base);
+  rc = run("cd " DIR " && ../../../" CABLE " run c=sfile s=nosuch sv=x 2>&1", out, sizeof out);
+  test_true("keyword s=nosuch overrides the c-file's s: the error names s.nosuch", rc != 0 && strstr(out, "s.nosuch"));
+  remove_outputs("sbase");
+  remove_outputs("restarted");
+  remove_outputs("x");
+}
+
 int main(void)
 {
   char out[8192];
@@ -244,5 +285,6 @@ int main(void)
   test_append_labels();
   test_list_without_direction();
   test_csv();
+  test_cfile_s_sv();
   return test_summary();
 }
