@@ -168,6 +168,7 @@ typedef struct rp_setup {
   char e[CABLE_NAME_MAX];
   const cable_solution *start;   /* borrowed from a branch or from sf */
   cable_sfile *sf;               /* owned: s.NAME of a string start or s= */
+  char sfpath[1024];             /* its path */
   char sv[CABLE_NAME_MAX], ap[CABLE_NAME_MAX];
 } rp_setup;
 
@@ -256,6 +257,7 @@ static int read_solutions_file(cable_replay *r, const char *name, rp_setup *s, c
 {
   char path[1024];
   rp_path(r, "s", name, path, sizeof path);
+  snprintf(s->sfpath, sizeof s->sfpath, "%s", path);
   cable_sfile_free(s->sf);
   s->sf = cable_sfile_read(path, err);
   return s->sf ? 0 : (err && err->status ? err->status : CABLE_ERR_IO);
@@ -322,8 +324,8 @@ static const cable_solution *result_irs(const rp_result *res, const cable_consta
 /* AUTO's load/run argument handling: the base constants from the data (or
  * the runner), then c=, e=, s=, sv=, ap=, then every other keyword as an
  * override, then the start. */
-static int build_setup(cable_replay *r, const script_value *data, const script_kwargs *kw,
-                       rp_setup *s, cable_error *err)
+static int build_setup(cable_replay *r, const script_value *data, const script_kwargs *kw, int nover,
+                       const char *const *over, rp_setup *s, cable_error *err)
 {
   memset(s, 0, sizeof *s);
   const rp_result *res = NULL;
@@ -408,6 +410,13 @@ static int build_setup(cable_replay *r, const script_value *data, const script_k
     rc = kw_text(k, text, sizeof text, err);
     if (!rc) rc = cable_constants_parse_override(text, &s->c, &s->names, parnames, npar, err);
   }
+  for (int i = 0; i < nover && !rc; i++) {
+    rc = cable_constants_parse_override(over[i], &s->c, &s->names, parnames, npar, err);
+    if (rc && err && !err->file[0]) {
+      snprintf(err->file, sizeof err->file, "command line");
+      err->line = 0;   /* the message quotes the argument */
+    }
+  }
   problem_release(r, &p);
   if (rc) return rc;
   snprintf(s->c.e, sizeof s->c.e, "%s", s->e);
@@ -418,7 +427,10 @@ static int build_setup(cable_replay *r, const script_value *data, const script_k
       return cable_error_set(err, CABLE_ERR_NOTFOUND, NULL, 0, "IRS",
                              irs_given ? "no such label in the result" : "the result has no labelled solution");
   } else if (!s->start && s->sf && irs_given) {
-    if ((rc = cable_sfile_resolve_irs(s->sf, &s->c, err))) return rc;
+    if ((rc = cable_sfile_resolve_irs(s->sf, &s->c, err))) {
+      if (err && !err->file[0]) snprintf(err->file, sizeof err->file, "%.500s", s->sfpath);
+      return rc;
+    }
     s->start = cable_sfile_find_label(s->sf, s->c.irs);
   } else if (!s->start && irs_given) {
     return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, "IRS",
@@ -630,13 +642,12 @@ static int continue_numbering(cable_replay *r, const rp_setup *s, cable_error *e
   return s->ap[0] ? note_files(r, s->ap, err) : 0;
 }
 
-static int rp_run(void *ctx, const script_value *start, const script_kwargs *kw, script_value *out,
-                  cable_error *err)
+static int run_with(cable_replay *r, const script_value *start, const script_kwargs *kw, int nover,
+                    const char *const *over, script_value *out, cable_error *err)
 {
-  cable_replay *r = ctx;
   rp_setup s;
   rp_branch *b = NULL;
-  int rc = build_setup(r, start, kw, &s, err);
+  int rc = build_setup(r, start, kw, nover, over, &s, err);
   if (!rc) rc = continue_numbering(r, &s, err);
   if (!rc) rc = engine_run(r, &s, &b, err);
   rp_result *res = NULL;
@@ -653,6 +664,21 @@ static int rp_run(void *ctx, const script_value *start, const script_kwargs *kw,
     fprintf(rp_log(r), "  %s b.%s, s.%s, d.%s\n", s.sv[0] ? "saved to" : "appended to", s.sv[0] ? s.sv : s.ap,
             s.sv[0] ? s.sv : s.ap, s.sv[0] ? s.sv : s.ap);
   setup_free(&s);
+  return rc;
+}
+
+static int rp_run(void *ctx, const script_value *start, const script_kwargs *kw, script_value *out,
+                  cable_error *err)
+{
+  return run_with(ctx, start, kw, 0, NULL, out, err);
+}
+
+int cable_replay_run_cli(cable_replay *r, const script_kwargs *names, int nover, const char *const *overrides,
+                         cable_error *err)
+{
+  script_value out = script_none();
+  int rc = run_with(r, NULL, names, nover, overrides, &out, err);
+  script_value_release(&out);
   return rc;
 }
 
@@ -850,7 +876,7 @@ static int rp_load(void *ctx, int what, const script_value *data, const script_k
   }
   /* load(...): a solution with its constants; also the runner's new state */
   rp_setup s;
-  int rc = build_setup(r, data, kw, &s, err);
+  int rc = build_setup(r, data, kw, 0, NULL, &s, err);
   if (!rc && s.start) {
     rp_branch *b = rp_branch_alloc(s.start->ibr, &s.c, &s.names, s.e);
     cable_point pt;

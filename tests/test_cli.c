@@ -245,6 +245,57 @@ static void test_cfile_s_sv(void)
   remove_outputs("x");
 }
 
+/* The principal-parameter column of b.NAME's first section, or NULL. */
+static cable_bfile *bcol(const char *path, const char *col, const double **v, int *n)
+{
+  cable_error err;
+  cable_bfile *bf = cable_bfile_read(path, &err);
+  *v = bf && bf->nbranch ? cable_bfile_column(&bf->branch[0], col) : NULL;
+  *n = *v ? bf->branch[0].nrow : 0;
+  return bf;
+}
+
+/* cable run KEY=VALUE: each argument is a constants-file statement (bare
+ * words are strings), DS=- reverses the direction as AUTO's DS='-'. */
+static void test_run_overrides(void)
+{
+  char out[8192];
+  const double *lam;
+  int n;
+  int rc = run("cd " DIR " && ../../../" CABLE " run c=good sv=ovbase 2>&1", out, sizeof out);
+  test_int("overrides: base run", rc, 0);
+  rc = run("cd " DIR " && ../../../" CABLE " run c=good s=ovbase IRS=EP2 NMX=3 sv=ov1 2>&1", out, sizeof out);
+  test_int("IRS=EP2 (a bare label name): exit 0", rc, 0);
+  cable_bfile *b1 = bcol(DIR "/b.ov1", "lambda", &lam, &n);
+  cable_error err;
+  cable_sfile *base = cable_sfile_read(DIR "/s.ovbase", &err);
+  const cable_solution *ep2 = base ? cable_sfile_find(base, "EP2", &err) : NULL;
+  /* the first row is the restart point (11 digits in both files) */
+  test_true("IRS=EP2 restarts at s.ovbase's second EP", lam && ep2 && n == 3 &&
+                                                             fabs(lam[0] - ep2->par[0]) <= 1e-10 * fabs(ep2->par[0]));
+  int up = lam && n == 3 && lam[1] > lam[0] && lam[2] > lam[1];
+  test_true("  and continues with DS > 0: lambda increases", up);
+  cable_bfile_free(b1);
+  rc = run("cd " DIR " && ../../../" CABLE " run c=good s=ovbase IRS=EP2 NMX=3 DS=- sv=ov2 2>&1", out, sizeof out);
+  test_int("DS=- (AUTO's DS='-'): exit 0", rc, 0);
+  b1 = bcol(DIR "/b.ov2", "lambda", &lam, &n);
+  test_true("DS=- reverses the direction: lambda decreases from EP2",
+            lam && ep2 && n == 3 && lam[1] < lam[0] && lam[2] < lam[1]);
+  cable_bfile_free(b1);
+  cable_sfile_free(base);
+  rc = run("cd " DIR " && ../../../" CABLE " run c=good LINSOLVER=klu NMX=3 sv=ov3 2>&1", out, sizeof out);
+  FILE *f = fopen(DIR "/b.ov3", "r");
+  char line[512];
+  int klu = 0;
+  while (f && fgets(line, sizeof line, f)) klu |= strstr(line, "LINSOLVER = 'klu'") != NULL;
+  if (f) fclose(f);
+  test_true("LINSOLVER=klu (a bare word): exit 0, the b-file header says 'klu'", rc == 0 && klu);
+  for (int i = 0; i < 4; i++) {
+    static const char *const name[] = {"ovbase", "ov1", "ov2", "ov3"};
+    remove_outputs(name[i]);
+  }
+}
+
 int main(void)
 {
   char out[8192];
@@ -255,6 +306,7 @@ int main(void)
   bad("missing '='", "run c=noequals sv=bad", "c.noequals:3", "DS");
   bad("unknown parameter name", "run c=badname sv=bad", "c.badname:2", "nosuch");
   bad("negative NTST override", "run c=good NTST=-5 sv=bad", "NTST", "-5");
+  bad("NaN override", "run c=good NTST=nan sv=bad", "NTST=nan", "NTST: must be an integer");
   bad("unknown key", "run c=good FOO=1 sv=bad", "FOO", "unknown key");
   bad("argument without '='", "run c=good NMX", "NMX", "KEY=VALUE");
   bad("unknown label in a script", "replay badlabel.auto", "badlabel.auto:2", "BP7");
@@ -286,5 +338,6 @@ int main(void)
   test_list_without_direction();
   test_csv();
   test_cfile_s_sv();
+  test_run_overrides();
   return test_summary();
 }
