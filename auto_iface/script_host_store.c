@@ -241,10 +241,10 @@ int rp_result_read(const cable_replay *r, const char *name, const cable_constant
     }
     double umax[CABLE_NAMES_MAX];
     int nd = s->ndim < CABLE_NAMES_MAX ? s->ndim : CABLE_NAMES_MAX;
+    /* AUTO's MAX U(d): the largest value of u_d over the stored points */
     for (int d = 0; d < nd; d++) {
-      umax[d] = 0;
-      for (int q = 0; q < cable_solution_npts(s); q++)
-        if (fabs(s->u[q * s->ndim + d]) > fabs(umax[d])) umax[d] = s->u[q * s->ndim + d];
+      umax[d] = s->u[d];
+      for (int q = 1; q < cable_solution_npts(s); q++) umax[d] = fmax(umax[d], s->u[q * s->ndim + d]);
     }
     cable_point pt;
     memset(&pt, 0, sizeof pt);

@@ -591,6 +591,52 @@ static void test_with_engine(void)
     if (g->ibr == 2) amp = fmax(amp, fabs(g->u[0]));
   }
   test_true("engine run 2: the stored branch-2 solutions are buckled (|theta(0)| > 0.3)", amp > 0.3);
+  /* the other direction from BP1 (theta = a cos(pi s) with a > 0 where run 2
+     had a < 0): there max theta' = 0 < max |theta'| */
+  c.ds = -c.ds;
+  w = cable_aufile_open(OUTDIR, "ela", &c, &names, &opt, &err);
+  cc = cable_cont_alloc(pb, &c, &status);
+  const cable_solution *bp1 = sf ? cable_sfile_find_label(sf, c.irs) : NULL;
+  st = w && cc && bp1 ? cable_cont_set_start(cc, bp1) : -1;
+  tee_free(&t);
+  if (w) t.out = cable_aufile_sink(w);
+  if (st == 0) rc = cable_cont_run(cc, &sink, cable_aufile_last_branch(w) + 1, cable_aufile_last_label(w) + 1, &next);
+  cable_cont_free(cc);
+  st = w ? cable_aufile_close(w, &err) : -1;
+  test_int("engine run 3 (DS < 0 from BP1) appended", st, 0);
+  tee_free(&t);
+  cable_bfile_free(bf);
+  cable_sfile_free(sf);
+  sf = cable_sfile_read(OUTDIR "/s.ela", &err);
+  bf = cable_bfile_read(OUTDIR "/b.ela", &err);
+  /* MAX U columns are AUTO's MXUPSP: max_t u_i(t), signed (not max |u_i|),
+     over the stored points; compared with the s-file's points (both files
+     round to 11 digits) */
+  double dmax = 0;
+  int nrows = 0, signed_differs = 0;
+  for (int k = 0; bf && sf && k < bf->nbranch; k++) {
+    const cable_bfile_branch *bb = &bf->branch[k];
+    const double *mx[2] = {cable_bfile_column(bb, "MAX theta"), cable_bfile_column(bb, "MAX theta'")};
+    for (int r = 0; mx[0] && mx[1] && r < bb->nrow; r++) {
+      const cable_solution *g = bb->lab[r] ? cable_sfile_find_label(sf, bb->lab[r]) : NULL;
+      if (!g) continue;
+      for (int i = 0; i < 2; i++) {
+        double m = g->u[i], ma = fabs(g->u[i]);
+        for (int q = 1; q < cable_solution_npts(g); q++) {
+          m = fmax(m, g->u[q * g->ndim + i]);
+          ma = fmax(ma, fabs(g->u[q * g->ndim + i]));
+        }
+        dmax = fmax(dmax, fabs(mx[i][r] - m) / fmax(fabs(m), 1e-300));
+        signed_differs += ma - m > 1e-3 * ma;
+      }
+      nrows++;
+    }
+  }
+  test_int("MAX theta, MAX theta' columns of every labelled row checked", nrows, sf ? cable_sfile_count(sf) : -1);
+  test_le("MAX U columns = max over the stored points of u_i (signed), max rel. error", dmax, REL_TOL);
+  snprintf(msg, sizeof msg, "the buckled branch has rows where max u_i < max |u_i| (%d), so the test tells them apart",
+           signed_differs);
+  test_true(msg, signed_differs > 0);
   cable_bfile_free(bf);
   cable_sfile_free(sf);
   tee_free(&t);
