@@ -837,24 +837,32 @@ static int check_labels(cable_aufile *w)
   return 0;
 }
 
+/* The files are made complete first and published only when everything
+ * is in order: a failed callback or a label check leaves every previous file
+ * as it was.  s goes first, because a restart reads s, and a b-file whose
+ * labels the s-file lacks is the worse inconsistency; a failed rename stops
+ * the files after it. */
 int cable_aufile_close(cable_aufile *w, cable_error *err)
 {
   if (!w) return cable_error_set(err, CABLE_ERR_INPUT, "", 0, "", "no writer");
-  check_labels(w);
+  if (!w->failed) check_labels(w);
   cable_error e;
-  int st = 0;
-  cable_atomic_file **all[3] = {&w->b, &w->s, &w->d};
-  for (int k = 0; k < 3; k++) {
-    int r = cable_atomic_commit(*all[k], &e);
-    *all[k] = NULL;
-    if (r != 0 && st == 0) st = r, w->err = e, w->failed = 1;
+  cable_atomic_file **all[3] = {&w->s, &w->b, &w->d};
+  for (int k = 0; k < 3 + w->ncsv && !w->failed; k++) {
+    cable_atomic_file *af = k < 3 ? *all[k] : w->csv[k - 3];
+    if (cable_atomic_finish(af, &e) != 0) w->err = e, w->failed = 1;
   }
-  for (int k = 0; k < w->ncsv; k++) {
-    int r = cable_atomic_commit(w->csv[k], &e);
-    w->csv[k] = NULL;
-    if (r != 0 && st == 0) st = r, w->err = e, w->failed = 1;
+  for (int k = 0; k < 3 + w->ncsv; k++) {
+    cable_atomic_file **af = k < 3 ? all[k] : &w->csv[k - 3];
+    if (w->failed) {
+      cable_atomic_abort(*af);
+    } else if (cable_atomic_commit(*af, &e) != 0) {
+      w->err = e;
+      w->failed = 1;
+    }
+    *af = NULL;
   }
-  if (!w->opt.append && w->opt.write_csv) {
+  if (!w->failed && !w->opt.append && w->opt.write_csv) {
     /* replacing: CSVs of sections the new b-file no longer has are stale */
     char path[4200];
     for (int k = w->nsections + 1;; k++) {

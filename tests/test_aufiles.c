@@ -1081,6 +1081,46 @@ int main(void)
     printf("  message: %s\n", cable_error_format(&err, msg, sizeof msg));
     test_true("close: label 1 has a b-row but no s-file solution", st < 0 && strstr(msg, "label 1 has a b-file row"));
     cable_solution_free(s);
+    test_true("failed label checks publish nothing: no b./s./d.mismatch, b./s./d.mismatch2",
+              !file_exists(OUTDIR "/b.mismatch") && !file_exists(OUTDIR "/s.mismatch") &&
+                  !file_exists(OUTDIR "/d.mismatch") && !file_exists(OUTDIR "/b.mismatch2") &&
+                  !file_exists(OUTDIR "/s.mismatch2") && !file_exists(OUTDIR "/d.mismatch2") &&
+                  !file_exists(OUTDIR "/b.mismatch.1.csv"));
+    test_int("  and leave no temporary files", count_tmp_files(OUTDIR), 0);
+  }
+
+  /* ---- commit order: s before b; a failed s commit publishes nothing after it */
+  {
+    expect_row rr[10];
+    mkdir(OUTDIR "/s.order", 0755);   /* the s-file cannot be renamed into place */
+    FILE *old = fopen(OUTDIR "/b.order", "w");
+    if (old) {
+      fputs("old b-file\n", old);
+      fclose(old);
+    }
+    w = cable_aufile_open(OUTDIR, "order", &c, &names, NULL, &err);
+    sink = cable_aufile_sink(w);
+    emit_branch(&sink, 1, 3, 5, 4, NPAR1, 2, 4, itp1, lab1, icp1, 3, rr, NULL);
+    st = cable_aufile_close(w, &err);
+    printf("  message: %s\n", cable_error_format(&err, msg, sizeof msg));
+    char *b = slurp(OUTDIR "/b.order", NULL);
+    test_true("s.NAME cannot be committed: close fails naming s.order", st == CABLE_ERR_IO && strstr(msg, "s.order"));
+    test_true("  b.order keeps its old contents (s is committed first)", b && strcmp(b, "old b-file\n") == 0);
+    test_true("  no d.order, no CSV", !file_exists(OUTDIR "/d.order") && !file_exists(OUTDIR "/b.order.1.csv"));
+    test_int("  no temporary files left", count_tmp_files(OUTDIR), 0);
+    free(b);
+    rmdir(OUTDIR "/s.order");
+    mkdir(OUTDIR "/b.order2", 0755);
+    w = cable_aufile_open(OUTDIR, "order2", &c, &names, NULL, &err);
+    sink = cable_aufile_sink(w);
+    emit_branch(&sink, 1, 3, 5, 4, NPAR1, 2, 4, itp1, lab1, icp1, 3, rr, NULL);
+    st = cable_aufile_close(w, &err);
+    cable_sfile *s2 = cable_sfile_read(OUTDIR "/s.order2", &err);
+    test_true("b.NAME cannot be committed: close fails, s.order2 (committed first) is complete",
+              st == CABLE_ERR_IO && s2 && cable_sfile_count(s2) == 2);
+    cable_sfile_free(s2);
+    test_int("  no temporary files left", count_tmp_files(OUTDIR), 0);
+    rmdir(OUTDIR "/b.order2");
   }
 
   /* ---- a label the file already has is refused (appending and within one run) */
@@ -1088,6 +1128,8 @@ int main(void)
     cable_aufile_options ap;
     cable_aufile_options_init(&ap);
     ap.append = 1;
+    long nb0, ns0, nd0;
+    char *b0 = slurp(OUTDIR "/b.syn", &nb0), *s0 = slurp(OUTDIR "/s.syn", &ns0), *d0 = slurp(OUTDIR "/d.syn", &nd0);
     w = cable_aufile_open(OUTDIR, "syn", &c, &names, &ap, &err);
     sink = cable_aufile_sink(w);
     const int lab3[3] = {9, 3, 10};   /* s.syn already holds labels 1..8 */
@@ -1097,6 +1139,13 @@ int main(void)
     st = cable_aufile_close(w, &err);
     printf("  message: %s\n", cable_error_format(&err, msg, sizeof msg));
     test_true("  close reports the duplicate label", st < 0 && strstr(msg, "label 3 is already in the file"));
+    long nb1, ns1, nd1;
+    char *b1 = slurp(OUTDIR "/b.syn", &nb1), *s1 = slurp(OUTDIR "/s.syn", &ns1), *d1 = slurp(OUTDIR "/d.syn", &nd1);
+    test_true("  b.syn, s.syn, d.syn byte-identical to before the refused run",
+              b0 && b1 && s0 && s1 && d0 && d1 && nb0 == nb1 && ns0 == ns1 && nd0 == nd1 &&
+                  memcmp(b0, b1, (size_t)nb0) == 0 && memcmp(s0, s1, (size_t)ns0) == 0 && memcmp(d0, d1, (size_t)nd0) == 0);
+    test_true("  no b.syn.3.csv, no temporary files", !file_exists(OUTDIR "/b.syn.3.csv") && count_tmp_files(OUTDIR) == 0);
+    free(b0), free(b1), free(s0), free(s1), free(d0), free(d1);
     w = cable_aufile_open(OUTDIR, "dup", &c, &names, NULL, &err);
     sink = cable_aufile_sink(w);
     const int labd[3] = {1, 2, 1};
