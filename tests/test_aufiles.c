@@ -1,7 +1,8 @@
 /* b./s./d. files in AUTO-07p's layout: write a synthetic branch (u_i(t) =
  * sin((i+1)t), NDIM 3, NTST 5, NCOL 4) and an appended second branch (NDIM 8,
  * no direction data), read them back with cable's readers and with an
- * independent fixed-width reader written here, and check the atomic-write
+ * independent fixed-width reader written here (also on the engine's own
+ * output for bratu, elastica, layer and stiff), and check the atomic-write
  * guarantees.  Numbers are printed as ES19.10E3: 11 significant digits, so a
  * re-read value is within 0.5e-10 relative of the original (tolerance 1e-10). */
 #include <dirent.h>
@@ -642,6 +643,87 @@ static void test_with_engine(void)
   tee_free(&t);
 }
 
+/* The independent fixed-width readers on real engine output: each test
+ * problem's branch written by cable's writer, then every s-file line and
+ * b-file row checked field by field and against what the engine handed out. */
+static void layout_of_engine_run(const char *name, const cable_problem *pb, const char *ctext)
+{
+  cable_constants c;
+  cable_names names;
+  cable_error err;
+  char what[256], path[256];
+  int st = cable_constants_parse_string(name, ctext, &c, &names, pb->parnames, pb->npar, &err);
+  snprintf(what, sizeof what, "%s: constants parse", name);
+  test_int(what, st, 0);
+  if (st) return;
+  cable_constants_take_problem_dims(&c, pb->ndim, pb->nbc, pb->nint);
+  cable_names_fill(&names, pb->parnames, pb->npar, pb->unames, pb->ndim);
+  int status = 0, next = 0;
+  cable_cont *cc = cable_cont_alloc(pb, &c, &status);
+  cable_aufile *w = cable_aufile_open(OUTDIR, name, &c, &names, NULL, &err);
+  if (!cc || !w || cable_cont_set_start(cc, NULL) != 0) {
+    snprintf(what, sizeof what, "%s: engine and writer", name);
+    test_true(what, 0);
+    cable_cont_free(cc);
+    cable_aufile_abort(w);
+    return;
+  }
+  tee t;
+  memset(&t, 0, sizeof t);
+  t.out = cable_aufile_sink(w);
+  cable_sink sink = {&t, tee_point, tee_solution, tee_diag};
+  int rc = cable_cont_run(cc, &sink, 1, 1, &next);
+  cable_cont_free(cc);
+  st = cable_aufile_close(w, &err);
+  snprintf(what, sizeof what, "%s: run ends normally (%d points, %d labelled) and the files close", name, t.n, t.nsol);
+  test_true(what, rc > 0 && st == 0 && t.nsol >= 2 && t.n <= 64);
+  int bad_lines = 0, nrowpr_ok = 0;
+  snprintf(path, sizeof path, OUTDIR "/s.%s", name);
+  int blocks = check_s_layout(path, &bad_lines, &nrowpr_ok);
+  snprintf(what, sizeof what, "%s: fixed-width s-file reader: one block per stored solution", name);
+  test_int(what, blocks, t.nsol);
+  snprintf(what, sizeof what, "%s: s-file lines with wrong widths or not ES19.10E3", name);
+  test_int(what, bad_lines, 0);
+  snprintf(what, sizeof what, "%s: NROWPR = ceil((NDIM+1)/7)*NTPL + ceil(NPAR/7) [+ direction], that many lines%s", name,
+           c.iis == 0 ? " (IIS=0: none)" : "");
+  test_true(what, nrowpr_ok);
+  bscan bs;
+  snprintf(path, sizeof path, OUTDIR "/b.%s", name);
+  check_b_layout(path, &bs);
+  snprintf(what, sizeof what, "%s: fixed-width b-file reader: 1 section, one row per point", name);
+  test_true(what, bs.sections == 1 && bs.nrow == t.n);
+  snprintf(what, sizeof what, "%s: b-file rows or fields not in the I4,I6,I4,I5,ES19.10E3 layout", name);
+  test_int(what, bs.bad, 0);
+  /* AUTO's column count: PAR(ICP(1)), L2-NORM, N2 MAX U, the other ICP */
+  int n2 = c.nicp > 7 ? 0 : (c.nicp + pb->ndim > 7 ? 7 - c.nicp : pb->ndim), meta = 1;
+  double emax = 0;
+  for (int r = 0; r < bs.nrow && r < t.n; r++) {
+    meta &= bs.br[r] == 1 && bs.pt[r] == t.pt[r] && bs.lab[r] == t.lab[r] && bs.nval[r] == 2 + n2 + c.nicp - 1;
+    emax = fmax(emax, fmax(relerr(bs.v[r][0], t.p0[r]), relerr(bs.v[r][1], t.l2[r])));
+  }
+  snprintf(what, sizeof what, "%s: BR PT LAB of every row as the engine's, %d value columns", name, 2 + n2 + c.nicp - 1);
+  test_true(what, meta);
+  snprintf(what, sizeof what, "%s: principal parameter and L2-NORM columns vs the engine's, max rel. error", name);
+  test_le(what, emax, REL_TOL);
+  tee_free(&t);
+}
+
+static void test_layout_engine_problems(void)
+{
+  layout_of_engine_run("bratu", cable_testproblem_bratu(),
+                       "ICP = ['lambda'], NTST = 20, NCOL = 4, JAC = 1, IAD = 3\n"
+                       "DS = 0.1, DSMIN = 1e-6, DSMAX = 0.5, NMX = 40, RL1 = 10, ILP = 1, NPR = 10\n");
+  layout_of_engine_run("elastica", cable_testproblem_elastica(),
+                       "ICP = ['lambda'], NTST = 30, NCOL = 5, JAC = 1, IAD = 0, ISP = 2, ILP = 0, EPSS = 1e-10\n"
+                       "DS = 0.5, DSMIN = 1e-6, DSMAX = 4.0, NMX = 60, RL1 = 50\n");
+  layout_of_engine_run("layer", cable_testproblem_layer(),
+                       "ICP = ['p', 'eps'], NTST = 12, NCOL = 3, IAD = 1, JAC = 1, IIS = 2\n"
+                       "DS = 0.05, DSMIN = 1e-4, DSMAX = 0.05, NMX = 10, IADS = 0, NPR = 3\n");
+  layout_of_engine_run("stiff", cable_testproblem_stiff(),
+                       "ICP = ['k'], NTST = 50, NCOL = 7, JAC = 1, IIS = 0, EPSS = 1e-10\n"
+                       "DS = 1.0, DSMIN = 1e-4, DSMAX = 2.0, NMX = 40, UZSTOP = {'k': 60}, UZR = {'k': 50}\n");
+}
+
 int main(void)
 {
   test_format();
@@ -1158,5 +1240,6 @@ int main(void)
   for (int p = 0; p < 10; p++) cable_solution_free(keep1[p]);
   for (int p = 0; p < 4; p++) cable_solution_free(keep2[p]);
   test_with_engine();
+  test_layout_engine_problems();
   return test_summary();
 }
