@@ -877,6 +877,9 @@ static int rp_load(void *ctx, int what, const script_value *data, const script_k
   /* load(...): a solution with its constants; also the runner's new state */
   rp_setup s;
   int rc = build_setup(r, data, kw, 0, NULL, &s, err);
+  /* AUTO's load('name') / load(s='name') without IRS: the file's last solution */
+  int n = s.sf ? cable_sfile_count(s.sf) : 0;
+  if (!rc && !s.start && n > 0 && s.c.irs == 0 && !s.c.irs_name[0]) s.start = cable_sfile_get(s.sf, n - 1);
   if (!rc && s.start) {
     rp_branch *b = rp_branch_alloc(s.start->ibr, &s.c, &s.names, s.e);
     cable_point pt;

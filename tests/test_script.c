@@ -1100,6 +1100,27 @@ static void test_engine_script(void)
   test_abs("UZ2 at lambda = 2", u2, 2, 1e-9);
   test_abs("UZ1 at lambda = 1", u1, 1, 1e-9);
   free(log);
+
+  /* load('name') without IRS: the last solution of s.NAME, as AUTO's load */
+  rc = replay(NULL,
+              "x = load('bratu')\n"
+              "y = load('bratu', IRS=2)\n"
+              "print('ld', x['LAB'], x['TY'], y['LAB'], y['TY'])\n",
+              &log, &err);
+  if (rc) printf("  error: %s\n", cable_error_format(&err, buf, sizeof buf));
+  test_int("load('bratu') without IRS: status", rc, 0);
+  sf = NULL;
+  snprintf(path, sizeof path, "%s/s.bratu", replay_dir);
+  sf = cable_sfile_read(path, &err);
+  int n = sf ? cable_sfile_count(sf) : 0, xl = 0, yl = 0;
+  char xty[8] = "", yty[8] = "";
+  l = log_line(log, "ld ");
+  test_true("load printed two solutions", l && sscanf(l, "%d %7s %d %7s", &xl, xty, &yl, yty) == 4);
+  test_true("load('bratu') is s.bratu's last solution (label and type)",
+            n > 0 && xl == cable_sfile_get(sf, n - 1)->lab && strcmp(xty, cable_type_name(cable_sfile_get(sf, n - 1)->itp)) == 0);
+  test_true("load('bratu', IRS=2) is label 2, the fold", yl == 2 && strcmp(yty, "LP") == 0);
+  cable_sfile_free(sf);
+  free(log);
 }
 
 /* The engine's remarks reach the d-file (AUTO's fort.9) and the log: a fold
