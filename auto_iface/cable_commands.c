@@ -39,7 +39,7 @@ static void unquote(const char *v, char *out, size_t len)
 int cable_cmd_run(int argc, char **argv, cable_error *err)
 {
   if (argc > CLI_MAX_ARGS)
-    return cable_error_set(err, CABLE_ERR_INPUT, "command line", 0, NULL, "more than %d arguments", CLI_MAX_ARGS);
+    return cable_error_set(err, CABLE_ERR_INPUT, "<command line>", 0, NULL, "more than %d arguments", CLI_MAX_ARGS);
   script_kwarg kwv[8];
   int nkw = 0, nover = 0, rc = 0;
   const char **over = calloc((size_t)argc + 1, sizeof *over);
@@ -49,18 +49,18 @@ int cable_cmd_run(int argc, char **argv, cable_error *err)
     const char *eq = strchr(argv[i], '=');
     char key[64];
     if (!eq || eq == argv[i] || (size_t)(eq - argv[i]) >= sizeof key) {
-      rc = cable_error_set(err, CABLE_ERR_INPUT, "command line", 0, argv[i],
+      rc = cable_error_set(err, CABLE_ERR_INPUT, "<command line>", 0, argv[i],
                            "arguments are KEY=VALUE (for example c=knot72 NMX=50)");
       break;
     }
     snprintf(key, sizeof key, "%.*s", (int)(eq - argv[i]), argv[i]);
     if (!eq[1]) {
-      rc = cable_error_set(err, CABLE_ERR_INPUT, "command line", 0, key, "no value after '=' (in '%s')", argv[i]);
+      rc = cable_error_set(err, CABLE_ERR_INPUT, "<command line>", 0, key, "no value after '=' (in '%s')", argv[i]);
       break;
     }
     for (int j = 0; j < i; j++)
       if (strncmp(argv[j], argv[i], (size_t)(eq - argv[i]) + 1) == 0)
-        rc = cable_error_set(err, CABLE_ERR_INPUT, "command line", 0, key, "given twice ('%s' and '%s')", argv[j],
+        rc = cable_error_set(err, CABLE_ERR_INPUT, "<command line>", 0, key, "given twice ('%s' and '%s')", argv[j],
                              argv[i]);
     if (rc) break;
     if (name_key(key)) {

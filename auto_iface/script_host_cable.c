@@ -413,7 +413,7 @@ static int build_setup(cable_replay *r, const script_value *data, const script_k
   for (int i = 0; i < nover && !rc; i++) {
     rc = cable_constants_parse_override(over[i], &s->c, &s->names, parnames, npar, err);
     if (rc && err && !err->file[0]) {
-      snprintf(err->file, sizeof err->file, "command line");
+      snprintf(err->file, sizeof err->file, "<command line>");
       err->line = 0;   /* the message quotes the argument */
     }
   }
