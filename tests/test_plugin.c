@@ -457,7 +457,7 @@ static void test_documented_build(void)
   cmd[strcspn(cmd, "\n")] = '\0';
   test_true("doc/plugins.md has a one-line 'cc -shared ...' build command", cmd[0] != '\0');
   printf("  command: %s\n", cmd);
-  char cwd[PATH_MAX], dir[PATH_MAX + 64], sh[8 * PATH_MAX];
+  char cwd[PATH_MAX], dir[PATH_MAX + 64], sh[10 * PATH_MAX];
   if (!getcwd(cwd, sizeof cwd)) cwd[0] = '\0';
   snprintf(dir, sizeof dir, "%s/tests/tmp/plugbuild.%ld", cwd, (long)getpid());
   snprintf(sh, sizeof sh,
