@@ -175,15 +175,30 @@ int cable_atomic_checkpoint(cable_atomic_file *af, cable_error *err)
   return 0;
 }
 
-int cable_atomic_commit(cable_atomic_file *af, cable_error *err)
+int cable_atomic_finish(cable_atomic_file *af, cable_error *err)
 {
   if (!af) return cable_error_set(err, CABLE_ERR_INPUT, "", 0, "", "file is not open");
+  if (!af->f) return 0;
   int st = 0, e = 0;
   if (ferror(af->f) || fflush(af->f) != 0) st = -1, e = errno;
   if (st == 0 && fsync(fileno(af->f)) != 0) st = -1, e = errno;
   if (fclose(af->f) != 0 && st == 0) st = -1, e = errno;
   af->f = NULL;
-  if (st == 0 && rename(af->tmp, af->path) != 0) st = -1, e = errno;
+  if (st != 0)
+    return cable_error_set(err, CABLE_ERR_IO, af->path, 0, "", "cannot write the file: %s",
+                           e ? strerror(e) : "write error");
+  return 0;
+}
+
+int cable_atomic_commit(cable_atomic_file *af, cable_error *err)
+{
+  if (!af) return cable_error_set(err, CABLE_ERR_INPUT, "", 0, "", "file is not open");
+  int st = cable_atomic_finish(af, err), e = 0;
+  if (st != 0) {
+    cable_atomic_abort(af);
+    return st;
+  }
+  if (rename(af->tmp, af->path) != 0) st = -1, e = errno;
   int status = 0;
   if (st != 0) {
     status = cable_error_set(err, CABLE_ERR_IO, af->path, 0, "", "cannot write the file: %s",

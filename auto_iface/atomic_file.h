@@ -33,8 +33,15 @@ const char *cable_atomic_path(const cable_atomic_file *af);
  * atomically; writing continues afterwards.  0 or a negative status. */
 int cable_atomic_checkpoint(cable_atomic_file *af, cable_error *err);
 
-/* Flush, sync and rename into place; frees af (also on failure, when the
- * temporary file is removed and path keeps its previous contents). */
+/* Flush, sync and close the temporary file, without publishing it: the
+ * first half of a commit, so that several files can be made complete before
+ * any of them is renamed into place.  Nothing can be written afterwards; af
+ * still needs commit or abort.  0 or a negative status. */
+int cable_atomic_finish(cable_atomic_file *af, cable_error *err);
+
+/* Finish (when not done yet) and rename into place; frees af (also on
+ * failure, when the temporary file is removed and path keeps its previous
+ * contents). */
 int cable_atomic_commit(cable_atomic_file *af, cable_error *err);
 
 /* Discard: remove the temporary file, leave path untouched, free af.

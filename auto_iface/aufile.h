@@ -65,9 +65,11 @@ int cable_aufile_last_branch(const cable_aufile *w);
 /* Publish complete copies of the files as written so far. */
 int cable_aufile_checkpoint(cable_aufile *w, cable_error *err);
 
-/* Commit every file and free w.  Fails (and still commits what was written)
- * when a callback failed or when a label has a b-file row but no s-file
- * solution or the other way round. */
+/* Commit every file (s first, then b, d and the CSVs) and free w.  When a
+ * callback failed, or a label has a b-file row but no s-file solution or the
+ * other way round, nothing is published (every file keeps its previous
+ * contents) and the error is returned.  A rename that fails stops the files
+ * after it. */
 int cable_aufile_close(cable_aufile *w, cable_error *err);
 
 /* Discard the run's output (files keep their previous contents); frees w.

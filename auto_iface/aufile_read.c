@@ -84,6 +84,7 @@ static int is_blank(const char *s)
 struct cable_sfile {
   int n, cap;
   cable_solution **sol;
+  char path[512];   /* for messages of the lookups */
 };
 
 void cable_sfile_free(cable_sfile *s)
@@ -263,6 +264,7 @@ cable_sfile *cable_sfile_read(const char *path, cable_error *err)
   cable_sfile *s = calloc(1, sizeof *s);
   dvec buf = {0};
   int st = s ? 0 : cable_error_set(err, CABLE_ERR_ALLOC, r.path, 0, "", "out of memory");
+  if (s) snprintf(s->path, sizeof s->path, "%s", r.path);
   while (st == 0 && lr_next(&r)) {
     if (is_blank(r.line)) continue;
     st = read_block(&r, s, &buf, err);
@@ -282,7 +284,7 @@ cable_sfile *cable_sfile_read(const char *path, cable_error *err)
 const cable_solution *cable_sfile_find(const cable_sfile *s, const char *spec, cable_error *err)
 {
   if (!s || !spec || !spec[0]) {
-    cable_error_set(err, CABLE_ERR_INPUT, "", 0, "IRS", "empty label");
+    cable_error_set(err, CABLE_ERR_INPUT, s ? s->path : "", 0, "IRS", "empty label");
     return NULL;
   }
   char *end;
@@ -292,22 +294,22 @@ const cable_solution *cable_sfile_find(const cable_sfile *s, const char *spec, c
     if (v > 0) sol = cable_sfile_find_label(s, (int)v);
     else if (v < 0) sol = cable_sfile_get(s, (int)(-v - 1));
     if (!sol && v < 0)
-      cable_error_set(err, CABLE_ERR_NOTFOUND, "", 0, "IRS", "there is no solution number %ld (the file has %d)",
+      cable_error_set(err, CABLE_ERR_NOTFOUND, s->path, 0, "IRS", "there is no solution number %ld (the file has %d)",
                       -v, s->n);
     else if (!sol)
-      cable_error_set(err, CABLE_ERR_NOTFOUND, "", 0, "IRS", "label %ld not found", v);
+      cable_error_set(err, CABLE_ERR_NOTFOUND, s->path, 0, "IRS", "label %ld not found", v);
     return sol;
   }
   int type, nth;
   if (cable_label_spec_parse(spec, &type, &nth) != 0) {
-    cable_error_set(err, CABLE_ERR_INPUT, "", 0, "IRS",
+    cable_error_set(err, CABLE_ERR_INPUT, s->path, 0, "IRS",
                     "unknown label '%.40s': expected a number or TYPEn (BP1, UZ2, LP1, EP1, MX1, RG1)", spec);
     return NULL;
   }
   int count = 0;
   for (int i = 0; i < s->n; i++)
     if (cable_type_base(s->sol[i]->itp) == type && ++count == nth) return s->sol[i];
-  cable_error_set(err, CABLE_ERR_NOTFOUND, "", 0, "IRS", "label '%s' not found: the file has %d %s solution%s",
+  cable_error_set(err, CABLE_ERR_NOTFOUND, s->path, 0, "IRS", "label '%s' not found: the file has %d %s solution%s",
                   spec, count, cable_type_name(type), count == 1 ? "" : "s");
   return NULL;
 }

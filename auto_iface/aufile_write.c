@@ -40,6 +40,7 @@ struct cable_aufile {
   /* label bookkeeping: labels with a b-row / with an s-block */
   int *blab, nblab, blabcap;
   int *slab, nslab, slabcap;
+  int *oldlab, noldlab, oldlabcap;   /* labels already in the files appended to */
   int last_label, last_branch;
   double *parbuf;
   int parcap;
@@ -133,6 +134,13 @@ static int int_push(int **a, int *n, int *cap, int v)
     *cap = nc;
   }
   (*a)[(*n)++] = v;
+  return 0;
+}
+
+static int int_find(const int *a, int n, int v)
+{
+  for (int i = 0; i < n; i++)
+    if (a[i] == v) return 1;
   return 0;
 }
 
@@ -520,6 +528,9 @@ static int point_cb(void *ctx, const cable_point *pt)
   for (int j = 0; j < n; j++) fputs(cable_aufile_format_es(buf, val[j], BCOL, BDIG, BEXP), f);
   fputc('\n', f);
   if (pt->lab != 0) {
+    if (int_find(w->oldlab, w->noldlab, pt->lab) || int_find(w->blab, w->nblab, pt->lab))
+      return w_fail(w, CABLE_ERR_INPUT, w->spath, "label %d is already in the file: labels in one s-file must be unique",
+                    pt->lab);
     if (int_push(&w->blab, &w->nblab, &w->blabcap, pt->lab) != 0)
       return w_fail(w, CABLE_ERR_ALLOC, w->bpath, "out of memory");
     if (pt->lab > w->last_label) w->last_label = pt->lab;
@@ -670,6 +681,7 @@ static void free_writer(cable_aufile *w)
   free(w->csv);
   free(w->blab);
   free(w->slab);
+  free(w->oldlab);
   free(w->parbuf);
   free(w);
 }
@@ -692,6 +704,10 @@ static int scan_existing(cable_aufile *w, cable_error *err)
     if (!s) return err ? err->status : CABLE_ERR_IO;
     for (int i = 0; i < cable_sfile_count(s); i++) {
       const cable_solution *sol = cable_sfile_get(s, i);
+      if (int_push(&w->oldlab, &w->noldlab, &w->oldlabcap, sol->lab) != 0) {
+        cable_sfile_free(s);
+        return cable_error_set(err, CABLE_ERR_ALLOC, w->spath, 0, "", "out of memory");
+      }
       if (sol->lab > w->last_label) w->last_label = sol->lab;
       if (sol->ibr > w->last_branch) w->last_branch = sol->ibr;
     }
@@ -703,7 +719,13 @@ static int scan_existing(cable_aufile *w, cable_error *err)
     w->nsections = b->nbranch;
     for (int i = 0; i < b->nbranch; i++)
       for (int r = 0; r < b->branch[i].nrow; r++) {
-        if (b->branch[i].lab[r] > w->last_label) w->last_label = b->branch[i].lab[r];
+        int lab = b->branch[i].lab[r];
+        if (lab != 0 && !int_find(w->oldlab, w->noldlab, lab) &&
+            int_push(&w->oldlab, &w->noldlab, &w->oldlabcap, lab) != 0) {
+          cable_bfile_free(b);
+          return cable_error_set(err, CABLE_ERR_ALLOC, w->bpath, 0, "", "out of memory");
+        }
+        if (lab > w->last_label) w->last_label = lab;
         if (b->branch[i].br[r] > w->last_branch) w->last_branch = b->branch[i].br[r];
       }
     cable_bfile_free(b);
@@ -815,24 +837,32 @@ static int check_labels(cable_aufile *w)
   return 0;
 }
 
+/* The files are made complete first and published only when everything
+ * is in order: a failed callback or a label check leaves every previous file
+ * as it was.  s goes first, because a restart reads s, and a b-file whose
+ * labels the s-file lacks is the worse inconsistency; a failed rename stops
+ * the files after it. */
 int cable_aufile_close(cable_aufile *w, cable_error *err)
 {
   if (!w) return cable_error_set(err, CABLE_ERR_INPUT, "", 0, "", "no writer");
-  check_labels(w);
+  if (!w->failed) check_labels(w);
   cable_error e;
-  int st = 0;
-  cable_atomic_file **all[3] = {&w->b, &w->s, &w->d};
-  for (int k = 0; k < 3; k++) {
-    int r = cable_atomic_commit(*all[k], &e);
-    *all[k] = NULL;
-    if (r != 0 && st == 0) st = r, w->err = e, w->failed = 1;
+  cable_atomic_file **all[3] = {&w->s, &w->b, &w->d};
+  for (int k = 0; k < 3 + w->ncsv && !w->failed; k++) {
+    cable_atomic_file *af = k < 3 ? *all[k] : w->csv[k - 3];
+    if (cable_atomic_finish(af, &e) != 0) w->err = e, w->failed = 1;
   }
-  for (int k = 0; k < w->ncsv; k++) {
-    int r = cable_atomic_commit(w->csv[k], &e);
-    w->csv[k] = NULL;
-    if (r != 0 && st == 0) st = r, w->err = e, w->failed = 1;
+  for (int k = 0; k < 3 + w->ncsv; k++) {
+    cable_atomic_file **af = k < 3 ? all[k] : &w->csv[k - 3];
+    if (w->failed) {
+      cable_atomic_abort(*af);
+    } else if (cable_atomic_commit(*af, &e) != 0) {
+      w->err = e;
+      w->failed = 1;
+    }
+    *af = NULL;
   }
-  if (!w->opt.append && w->opt.write_csv) {
+  if (!w->failed && !w->opt.append && w->opt.write_csv) {
     /* replacing: CSVs of sections the new b-file no longer has are stale */
     char path[4200];
     for (int k = w->nsections + 1;; k++) {

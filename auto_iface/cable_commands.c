@@ -13,44 +13,94 @@
 #include "script.h"
 #include "script_host_cable.h"
 
-/* keys whose values are names (quoted in the generated run(...) call) */
-static int is_name_key(const char *key, size_t len)
+/* Keys whose values are names: the run's keywords, not constants.  The
+ * table's own spelling of key, or NULL. */
+static const char *name_key(const char *key)
 {
-  static const char *const names[] = {"c", "e", "s", "sv", "ap", "dat"};
+  static const char *const names[] = {"c", "e", "s", "sv", "ap"};
   for (size_t i = 0; i < sizeof names / sizeof names[0]; i++)
-    if (strlen(names[i]) == len && strncmp(key, names[i], len) == 0) return 1;
-  return 0;
+    if (strcmp(key, names[i]) == 0) return names[i];
+  return NULL;
 }
 
+/* A name as given, without one pair of surrounding quotes. */
+static void unquote(const char *v, char *out, size_t len)
+{
+  size_t n = strlen(v);
+  if (n >= 2 && (v[0] == '\'' || v[0] == '"') && v[n - 1] == v[0]) snprintf(out, len, "%.*s", (int)(n - 2), v + 1);
+  else snprintf(out, len, "%s", v);
+}
+
+#define CLI_MAX_ARGS 256   /* arguments of one `cable run` */
+
+/* Each KEY=VALUE is what a constants file line would say (bare words are
+ * strings there: IRS=BP1, LINSOLVER=klu); only DS=- needs its quotes,
+ * because a lone '-' is not a value in the file syntax. */
 int cable_cmd_run(int argc, char **argv, cable_error *err)
 {
-  size_t cap = 64;
-  for (int i = 0; i < argc; i++) cap += strlen(argv[i]) + 8;
-  char *text = malloc(cap);
-  if (!text) return cable_error_set(err, CABLE_ERR_ALLOC, NULL, 0, NULL, "out of memory");
-  size_t n = (size_t)snprintf(text, cap, "run(");
-  for (int i = 0; i < argc; i++) {
+  if (argc > CLI_MAX_ARGS)
+    return cable_error_set(err, CABLE_ERR_INPUT, "<command line>", 0, NULL, "more than %d arguments", CLI_MAX_ARGS);
+  script_kwarg kwv[8];
+  int nkw = 0, nover = 0, rc = 0;
+  const char **over = calloc((size_t)argc + 1, sizeof *over);
+  char **owned = calloc((size_t)argc + 1, sizeof *owned);
+  if (!over || !owned) rc = cable_error_set(err, CABLE_ERR_ALLOC, NULL, 0, NULL, "out of memory");
+  for (int i = 0; i < argc && !rc; i++) {
     const char *eq = strchr(argv[i], '=');
-    if (!eq || eq == argv[i]) {
-      free(text);
-      return cable_error_set(err, CABLE_ERR_INPUT, "<command line>", 0, argv[i],
-                             "arguments are KEY=VALUE (for example c=knot72 NMX=50)");
+    char key[64];
+    if (!eq || eq == argv[i] || (size_t)(eq - argv[i]) >= sizeof key) {
+      rc = cable_error_set(err, CABLE_ERR_INPUT, "<command line>", 0, argv[i],
+                           "arguments are KEY=VALUE (for example c=knot72 NMX=50)");
+      break;
     }
-    size_t klen = (size_t)(eq - argv[i]);
-    int quote = is_name_key(argv[i], klen) && eq[1] != '\'' && eq[1] != '"';
-    n += (size_t)snprintf(text + n, cap - n, "%s%.*s=%s%s%s", i ? ", " : "", (int)klen, argv[i],
-                          quote ? "'" : "", eq + 1, quote ? "'" : "");
+    snprintf(key, sizeof key, "%.*s", (int)(eq - argv[i]), argv[i]);
+    if (!eq[1]) {
+      rc = cable_error_set(err, CABLE_ERR_INPUT, "<command line>", 0, key, "no value after '=' (in '%s')", argv[i]);
+      break;
+    }
+    for (int j = 0; j < i; j++)
+      if (strncmp(argv[j], argv[i], (size_t)(eq - argv[i]) + 1) == 0)
+        rc = cable_error_set(err, CABLE_ERR_INPUT, "<command line>", 0, key, "given twice ('%s' and '%s')", argv[j],
+                             argv[i]);
+    if (rc) break;
+    if (name_key(key)) {
+      char name[CABLE_NAME_MAX];
+      unquote(eq + 1, name, sizeof name);
+      script_kwarg *k = &kwv[nkw];
+      k->name = name_key(key);
+      if (script_string_new(&k->value, name, strlen(name))) {
+        rc = cable_error_set(err, CABLE_ERR_ALLOC, NULL, 0, NULL, "out of memory");
+        break;
+      }
+      nkw++;
+    } else if (strcmp(eq + 1, "-") == 0) {
+      size_t len = strlen(argv[i]) + 3;
+      if (!(owned[nover] = malloc(len))) {
+        rc = cable_error_set(err, CABLE_ERR_ALLOC, NULL, 0, NULL, "out of memory");
+        break;
+      }
+      snprintf(owned[nover], len, "%s='-'", key);
+      over[nover] = owned[nover];
+      nover++;
+    } else {
+      over[nover++] = argv[i];
+    }
   }
-  snprintf(text + n, cap - n, ")\n");
-  cable_replay_options o;
-  cable_replay_options_init(&o);
-  o.dir = ".";
-  o.problems = cable_braid_resolver();
-  cable_replay *r = cable_replay_alloc(&o);
-  int rc = r ? script_run_string("<command line>", text, cable_replay_host(r), err)
-             : cable_error_set(err, CABLE_ERR_ALLOC, NULL, 0, NULL, "out of memory");
-  cable_replay_free(r);
-  free(text);
+  if (!rc) {
+    cable_replay_options o;
+    cable_replay_options_init(&o);
+    o.dir = ".";
+    o.problems = cable_braid_resolver();
+    cable_replay *r = cable_replay_alloc(&o);
+    script_kwargs kw = {nkw, kwv};
+    rc = r ? cable_replay_run_cli(r, &kw, nover, over, err)
+           : cable_error_set(err, CABLE_ERR_ALLOC, NULL, 0, NULL, "out of memory");
+    cable_replay_free(r);
+  }
+  for (int k = 0; k < nkw; k++) script_value_release(&kwv[k].value);
+  for (int k = 0; owned && k < argc; k++) free(owned[k]);
+  free(owned);
+  free(over);
   return rc;
 }
 
@@ -88,14 +138,21 @@ int cable_cmd_table(const char *bfile, FILE *out, cable_error *err)
   return 0;
 }
 
+/* The d. or b. file beside s.NAME; 0 when sfile is not named s.NAME. */
+static int sibling(const char *sfile, char type, char *path, size_t len)
+{
+  const char *base = strrchr(sfile, '/');
+  base = base ? base + 1 : sfile;
+  if (strncmp(base, "s.", 2) != 0) return 0;
+  snprintf(path, len, "%.*s%c.%s", (int)(base - sfile), sfile, type, base + 2);
+  return 1;
+}
+
 /* Error estimates that the d-file records for stored labels. */
 static double dfile_error_estimate(const char *sfile, int lab)
 {
   char path[1024];
-  const char *base = strrchr(sfile, '/');
-  base = base ? base + 1 : sfile;
-  if (strncmp(base, "s.", 2) != 0) return -1;
-  snprintf(path, sizeof path, "%.*sd.%s", (int)(base - sfile), sfile, base + 2);
+  if (!sibling(sfile, 'd', path, sizeof path)) return -1;
   FILE *f = fopen(path, "r");
   if (!f) return -1;
   char line[512];
@@ -109,10 +166,32 @@ static double dfile_error_estimate(const char *sfile, int lab)
   return est;
 }
 
+/* The parameter columns of solution x's row in the b-file (the principal
+ * parameter and the other ICP columns; not L2-NORM or MAX U).  0 when the
+ * b-file has no row with x's label, branch and point. */
+static int bfile_parameters(const cable_bfile *b, const cable_solution *x, FILE *out)
+{
+  for (int k = 0; b && k < b->nbranch; k++) {
+    const cable_bfile_branch *br = &b->branch[k];
+    for (int i = 0; i < br->nrow; i++) {
+      if (br->lab[i] != x->lab || br->br[i] != x->ibr || br->pt[i] != x->ntot) continue;
+      for (int j = 0; j < br->ncol; j++) {
+        const char *h = br->colname[j];
+        if (j == 1 || strcmp(h, "L2-NORM") == 0 || strncmp(h, "MAX ", 4) == 0) continue;
+        fprintf(out, " %s=%.10g", h, br->data[(size_t)j * (size_t)br->nrow + (size_t)i]);
+      }
+      return 1;
+    }
+  }
+  return 0;
+}
+
 int cable_cmd_list(const char *sfile, FILE *out, cable_error *err)
 {
   cable_sfile *s = cable_sfile_read(sfile, err);
   if (!s) return err->status ? err->status : CABLE_ERR_IO;
+  cable_bfile *b = NULL;   /* read only when a solution lacks its free-parameter list */
+  int b_tried = 0;
   fprintf(out, "  LAB  TY    BR    PT  NTST NCOL  error-est   free parameters\n");
   for (int i = 0; i < cable_sfile_count(s); i++) {
     const cable_solution *x = cable_sfile_get(s, i);
@@ -120,9 +199,26 @@ int cable_cmd_list(const char *sfile, FILE *out, cable_error *err)
     fprintf(out, "%5d  %-2s %5d %5d %5d %4d  ", x->lab, cable_type_name(x->itp), x->ibr, x->ntot, x->ntst, x->ncol);
     if (e >= 0) fprintf(out, "%9.2e  ", e);
     else fprintf(out, "%9s  ", "-");
-    for (int q = 0; q < x->nfpr; q++) fprintf(out, " PAR(%d)=%.10g", x->icp[q] + 1, x->par[x->icp[q]]);
+    /* the free-parameter indices come with the direction (icp -1 without
+       it: IIS=0, or AUTO's 12-integer headers) */
+    int shown = 0;
+    for (int q = 0; q < x->nfpr; q++)
+      if (x->icp[q] >= 0 && x->icp[q] < x->npar) {
+        fprintf(out, " PAR(%d)=%.10g", x->icp[q] + 1, x->par[x->icp[q]]);
+        shown++;
+      }
+    if (!shown) {
+      char path[1024];
+      if (!b_tried && sibling(sfile, 'b', path, sizeof path)) {
+        cable_error berr;
+        b = cable_bfile_read(path, &berr);   /* optional: a missing b-file is no error */
+      }
+      b_tried = 1;
+      if (!bfile_parameters(b, x, out)) fputs(" (not stored: no direction in the s-file, no b-file row)", out);
+    }
     fputc('\n', out);
   }
+  cable_bfile_free(b);
   cable_sfile_free(s);
   return 0;
 }

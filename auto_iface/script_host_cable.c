@@ -168,6 +168,7 @@ typedef struct rp_setup {
   char e[CABLE_NAME_MAX];
   const cable_solution *start;   /* borrowed from a branch or from sf */
   cable_sfile *sf;               /* owned: s.NAME of a string start or s= */
+  char sfpath[1024];             /* its path */
   char sv[CABLE_NAME_MAX], ap[CABLE_NAME_MAX];
 } rp_setup;
 
@@ -256,6 +257,7 @@ static int read_solutions_file(cable_replay *r, const char *name, rp_setup *s, c
 {
   char path[1024];
   rp_path(r, "s", name, path, sizeof path);
+  snprintf(s->sfpath, sizeof s->sfpath, "%s", path);
   cable_sfile_free(s->sf);
   s->sf = cable_sfile_read(path, err);
   return s->sf ? 0 : (err && err->status ? err->status : CABLE_ERR_IO);
@@ -322,8 +324,8 @@ static const cable_solution *result_irs(const rp_result *res, const cable_consta
 /* AUTO's load/run argument handling: the base constants from the data (or
  * the runner), then c=, e=, s=, sv=, ap=, then every other keyword as an
  * override, then the start. */
-static int build_setup(cable_replay *r, const script_value *data, const script_kwargs *kw,
-                       rp_setup *s, cable_error *err)
+static int build_setup(cable_replay *r, const script_value *data, const script_kwargs *kw, int nover,
+                       const char *const *over, rp_setup *s, cable_error *err)
 {
   memset(s, 0, sizeof *s);
   const rp_result *res = NULL;
@@ -350,6 +352,7 @@ static int build_setup(cable_replay *r, const script_value *data, const script_k
     s->names = r->cur_names;
     snprintf(s->e, sizeof s->e, "%s", r->cur_e);
   }
+  s->c.s[0] = s->c.sv[0] = '\0';   /* one-off, like IRS: set below for this run */
   const script_kwarg *ke = NULL, *kc = NULL, *ks = NULL;
   for (int i = 0; kw && i < kw->n && !rc; i++) {
     const script_kwarg *k = &kw->items[i];
@@ -360,12 +363,17 @@ static int build_setup(cable_replay *r, const script_value *data, const script_k
     else if (strcmp(k->name, "ap") == 0) rc = kw_string(k, s->ap, sizeof s->ap, err);
   }
   if (!rc && ke) rc = kw_string(ke, s->e, sizeof s->e, err);
+  /* a constants file's s= and sv= count for the run that reads it, under
+     the keywords (AUTO: keyword arguments override the c-file) */
+  char cfile_s[CABLE_NAME_MAX] = "", cfile_sv[CABLE_NAME_MAX] = "";
   if (!rc && data && data->type == SCRIPT_STRING) {
     /* run('name'): c.NAME (when present) and s.NAME, as AUTO */
     const char *name = script_string_chars(data);
     if (!ke) s->e[0] = '\0';
     rc = read_constants_file(r, name, s, 0, err);
+    if (!rc) snprintf(cfile_sv, sizeof cfile_sv, "%s", s->c.sv);
     if (!rc) rc = read_solutions_file(r, name, s, err);
+    if (!rc) snprintf(s->c.s, sizeof s->c.s, "%s", name);
     if (!rc && !s->e[0]) snprintf(s->e, sizeof s->e, "%s", name);
   }
   if (!rc && kc) {
@@ -373,12 +381,23 @@ static int build_setup(cable_replay *r, const script_value *data, const script_k
     rc = kw_string(kc, name, sizeof name, err);
     if (!rc) rc = read_constants_file(r, name, s, 1, err);
     if (!rc && ke) snprintf(s->e, sizeof s->e, "%s", script_string_chars(&ke->value));
+    if (!rc) {
+      snprintf(cfile_s, sizeof cfile_s, "%s", s->c.s);
+      snprintf(cfile_sv, sizeof cfile_sv, "%s", s->c.sv);
+    }
   }
   if (!rc && ks) {
     char name[CABLE_NAME_MAX];
     rc = kw_string(ks, name, sizeof name, err);
     if (!rc) rc = read_solutions_file(r, name, s, err);
+    if (!rc) snprintf(s->c.s, sizeof s->c.s, "%s", name);
+  } else if (!rc && cfile_s[0] && !data) {
+    rc = read_solutions_file(r, cfile_s, s, err);   /* an explicit start wins over the file's s= */
+  } else if (!rc && !s->sf) {
+    s->c.s[0] = '\0';
   }
+  if (!rc && cfile_sv[0] && !s->sv[0] && !s->ap[0]) snprintf(s->sv, sizeof s->sv, "%s", cfile_sv);
+  if (!rc) snprintf(s->c.sv, sizeof s->c.sv, "%s", s->sv);   /* the b-file header says where it went */
   if (rc) return rc;
   const char *const *parnames;
   int npar;
@@ -391,6 +410,13 @@ static int build_setup(cable_replay *r, const script_value *data, const script_k
     rc = kw_text(k, text, sizeof text, err);
     if (!rc) rc = cable_constants_parse_override(text, &s->c, &s->names, parnames, npar, err);
   }
+  for (int i = 0; i < nover && !rc; i++) {
+    rc = cable_constants_parse_override(over[i], &s->c, &s->names, parnames, npar, err);
+    if (rc && err && !err->file[0]) {
+      snprintf(err->file, sizeof err->file, "<command line>");
+      err->line = 0;   /* the message quotes the argument */
+    }
+  }
   problem_release(r, &p);
   if (rc) return rc;
   snprintf(s->c.e, sizeof s->c.e, "%s", s->e);
@@ -401,7 +427,10 @@ static int build_setup(cable_replay *r, const script_value *data, const script_k
       return cable_error_set(err, CABLE_ERR_NOTFOUND, NULL, 0, "IRS",
                              irs_given ? "no such label in the result" : "the result has no labelled solution");
   } else if (!s->start && s->sf && irs_given) {
-    if ((rc = cable_sfile_resolve_irs(s->sf, &s->c, err))) return rc;
+    if ((rc = cable_sfile_resolve_irs(s->sf, &s->c, err))) {
+      if (err && !err->file[0]) snprintf(err->file, sizeof err->file, "%.500s", s->sfpath);
+      return rc;
+    }
     s->start = cable_sfile_find_label(s->sf, s->c.irs);
   } else if (!s->start && irs_given) {
     return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, "IRS",
@@ -562,17 +591,64 @@ static void remember(cable_replay *r, const rp_setup *s)
   r->cur = s->c;
   r->cur.irs = 0;
   r->cur.irs_name[0] = '\0';
+  r->cur.s[0] = r->cur.sv[0] = '\0';
   r->cur_names = s->names;
   snprintf(r->cur_e, sizeof r->cur_e, "%s", s->e);
 }
 
-static int rp_run(void *ctx, const script_value *start, const script_kwargs *kw, script_value *out,
-                  cable_error *err)
+/* ---- label and branch numbers ------------------------------------------------------- */
+
+static void note_label(cable_replay *r, int lab, int ibr)
 {
-  cable_replay *r = ctx;
+  if (lab > r->last_label) r->last_label = lab;
+  if (ibr > r->next_branch) r->next_branch = ibr;
+}
+
+static void note_sfile(cable_replay *r, const cable_sfile *sf)
+{
+  for (int i = 0; sf && i < cable_sfile_count(sf); i++) note_label(r, cable_sfile_get(sf, i)->lab, cable_sfile_get(sf, i)->ibr);
+}
+
+/* Labels and branch numbers already in b./s.NAME (when they exist). */
+static int note_files(cable_replay *r, const char *name, cable_error *err)
+{
+  char path[1024];
+  rp_path(r, "s", name, path, sizeof path);
+  if (file_exists(path)) {
+    cable_sfile *sf = cable_sfile_read(path, err);
+    if (!sf) return err && err->status ? err->status : CABLE_ERR_IO;
+    note_sfile(r, sf);
+    cable_sfile_free(sf);
+  }
+  rp_path(r, "b", name, path, sizeof path);
+  if (file_exists(path)) {
+    cable_bfile *bf = cable_bfile_read(path, err);
+    if (!bf) return err && err->status ? err->status : CABLE_ERR_IO;
+    for (int k = 0; k < bf->nbranch; k++)
+      for (int i = 0; i < bf->branch[k].nrow; i++) note_label(r, bf->branch[k].lab[i], bf->branch[k].br[i]);
+    cable_bfile_free(bf);
+  }
+  return 0;
+}
+
+/* AUTO's NEWLAB: the new labels follow the largest label of the solutions
+ * file the run restarts from, and a new branch number follows its largest
+ * branch number.  cable also continues after the labels of the files an
+ * ap= run appends to (AUTO can repeat a label there), and after every label
+ * of the session, so that no s-file receives a label twice. */
+static int continue_numbering(cable_replay *r, const rp_setup *s, cable_error *err)
+{
+  note_sfile(r, s->sf);
+  return s->ap[0] ? note_files(r, s->ap, err) : 0;
+}
+
+static int run_with(cable_replay *r, const script_value *start, const script_kwargs *kw, int nover,
+                    const char *const *over, script_value *out, cable_error *err)
+{
   rp_setup s;
   rp_branch *b = NULL;
-  int rc = build_setup(r, start, kw, &s, err);
+  int rc = build_setup(r, start, kw, nover, over, &s, err);
+  if (!rc) rc = continue_numbering(r, &s, err);
   if (!rc) rc = engine_run(r, &s, &b, err);
   rp_result *res = NULL;
   if (!rc) {
@@ -588,6 +664,21 @@ static int rp_run(void *ctx, const script_value *start, const script_kwargs *kw,
     fprintf(rp_log(r), "  %s b.%s, s.%s, d.%s\n", s.sv[0] ? "saved to" : "appended to", s.sv[0] ? s.sv : s.ap,
             s.sv[0] ? s.sv : s.ap, s.sv[0] ? s.sv : s.ap);
   setup_free(&s);
+  return rc;
+}
+
+static int rp_run(void *ctx, const script_value *start, const script_kwargs *kw, script_value *out,
+                  cable_error *err)
+{
+  return run_with(ctx, start, kw, 0, NULL, out, err);
+}
+
+int cable_replay_run_cli(cable_replay *r, const script_kwargs *names, int nover, const char *const *overrides,
+                         cable_error *err)
+{
+  script_value out = script_none();
+  int rc = run_with(r, NULL, names, nover, overrides, &out, err);
+  script_value_release(&out);
   return rc;
 }
 
@@ -753,9 +844,8 @@ static int rp_save(void *ctx, const script_value *data, const char *name, cable_
 static void note_result(cable_replay *r, const rp_result *res)
 {
   for (int k = 0; k < res->nbr; k++) {
-    if (res->br[k]->ibr > r->next_branch) r->next_branch = res->br[k]->ibr;
-    for (int i = 0; i < res->br[k]->nsol; i++)
-      if (res->br[k]->sol[i]->lab > r->last_label) r->last_label = res->br[k]->sol[i]->lab;
+    note_label(r, 0, res->br[k]->ibr);
+    for (int i = 0; i < res->br[k]->nsol; i++) note_label(r, res->br[k]->sol[i]->lab, 0);
   }
 }
 
@@ -786,7 +876,10 @@ static int rp_load(void *ctx, int what, const script_value *data, const script_k
   }
   /* load(...): a solution with its constants; also the runner's new state */
   rp_setup s;
-  int rc = build_setup(r, data, kw, &s, err);
+  int rc = build_setup(r, data, kw, 0, NULL, &s, err);
+  /* AUTO's load('name') / load(s='name') without IRS: the file's last solution */
+  int n = s.sf ? cable_sfile_count(s.sf) : 0;
+  if (!rc && !s.start && n > 0 && s.c.irs == 0 && !s.c.irs_name[0]) s.start = cable_sfile_get(s.sf, n - 1);
   if (!rc && s.start) {
     rp_branch *b = rp_branch_alloc(s.start->ibr, &s.c, &s.names, s.e);
     cable_point pt;

@@ -175,7 +175,7 @@ int rp_result_write(const cable_replay *r, const rp_result *res, const char *nam
   cable_aufile_options o;
   cable_aufile_options_init(&o);
   o.append = append;
-  o.write_csv = 0;   /* the CSV tables belong to `cable run`; scripts save AUTO's files */
+  o.write_csv = 1;   /* b.NAME.<k>.csv beside AUTO's files, for every saved result */
   const char *dir = r->opt.dir && r->opt.dir[0] ? r->opt.dir : NULL;
   cable_aufile *w = cable_aufile_open(dir, name, &res->br[0]->c, &res->br[0]->names, &o, err);
   if (!w) return err && err->status ? err->status : CABLE_ERR_IO;
@@ -241,10 +241,10 @@ int rp_result_read(const cable_replay *r, const char *name, const cable_constant
     }
     double umax[CABLE_NAMES_MAX];
     int nd = s->ndim < CABLE_NAMES_MAX ? s->ndim : CABLE_NAMES_MAX;
+    /* AUTO's MAX U(d): the largest value of u_d over the stored points */
     for (int d = 0; d < nd; d++) {
-      umax[d] = 0;
-      for (int q = 0; q < cable_solution_npts(s); q++)
-        if (fabs(s->u[q * s->ndim + d]) > fabs(umax[d])) umax[d] = s->u[q * s->ndim + d];
+      umax[d] = s->u[d];
+      for (int q = 1; q < cable_solution_npts(s); q++) umax[d] = fmax(umax[d], s->u[q * s->ndim + d]);
     }
     cable_point pt;
     memset(&pt, 0, sizeof pt);

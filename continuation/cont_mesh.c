@@ -205,9 +205,11 @@ void cont_store_solution(cable_cont *cc, int itp, int lab)
   sol->isw = cc->c.isw;
   sol->err_est = cont_error_estimate(cc, cc->x);
   if (cc->pb->pvls) cc->pb->pvls(sol, sol->par, cc->pb->params);
-  /* L2-NORM: sqrt of the integral of |u|^2 (unweighted); MAX U: max |u_i| over t */
+  /* L2-NORM: sqrt of the integral of |u|^2 (unweighted); MAX U(i): AUTO's
+     MXUPSP, the largest value (signed, not the modulus) of u_i over the
+     NTST*NCOL+1 stored points */
   double l2 = 0.0;
-  for (int i = 0; i < nd; i++) cc->umax[i] = 0.0;
+  for (int i = 0; i < nd; i++) cc->umax[i] = sol->u[i];
   for (int j = 0; j < s->ntst; j++) {
     double h = s->mesh[j + 1] - s->mesh[j];
     for (int k = 0; k <= s->ncol; k++) {
@@ -215,7 +217,7 @@ void cont_store_solution(cable_cont *cc, int itp, int lab)
       double sq = 0.0;
       for (int i = 0; i < nd; i++) {
         sq += u[i] * u[i];
-        cc->umax[i] = fmax(cc->umax[i], fabs(u[i]));
+        cc->umax[i] = fmax(cc->umax[i], u[i]);
       }
       l2 += h * s->basis.wn[k] * sq;
     }

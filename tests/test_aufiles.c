@@ -1,7 +1,8 @@
 /* b./s./d. files in AUTO-07p's layout: write a synthetic branch (u_i(t) =
  * sin((i+1)t), NDIM 3, NTST 5, NCOL 4) and an appended second branch (NDIM 8,
  * no direction data), read them back with cable's readers and with an
- * independent fixed-width reader written here, and check the atomic-write
+ * independent fixed-width reader written here (also on the engine's own
+ * output for bratu, elastica, layer and stiff), and check the atomic-write
  * guarantees.  Numbers are printed as ES19.10E3: 11 significant digits, so a
  * re-read value is within 0.5e-10 relative of the original (tolerance 1e-10). */
 #include <dirent.h>
@@ -591,9 +592,136 @@ static void test_with_engine(void)
     if (g->ibr == 2) amp = fmax(amp, fabs(g->u[0]));
   }
   test_true("engine run 2: the stored branch-2 solutions are buckled (|theta(0)| > 0.3)", amp > 0.3);
+  /* the other direction from BP1 (theta = a cos(pi s) with a > 0 where run 2
+     had a < 0): there max theta' = 0 < max |theta'| */
+  c.ds = -c.ds;
+  w = cable_aufile_open(OUTDIR, "ela", &c, &names, &opt, &err);
+  cc = cable_cont_alloc(pb, &c, &status);
+  const cable_solution *bp1 = sf ? cable_sfile_find_label(sf, c.irs) : NULL;
+  st = w && cc && bp1 ? cable_cont_set_start(cc, bp1) : -1;
+  tee_free(&t);
+  if (w) t.out = cable_aufile_sink(w);
+  if (st == 0) rc = cable_cont_run(cc, &sink, cable_aufile_last_branch(w) + 1, cable_aufile_last_label(w) + 1, &next);
+  cable_cont_free(cc);
+  st = w ? cable_aufile_close(w, &err) : -1;
+  test_int("engine run 3 (DS < 0 from BP1) appended", st, 0);
+  tee_free(&t);
+  cable_bfile_free(bf);
+  cable_sfile_free(sf);
+  sf = cable_sfile_read(OUTDIR "/s.ela", &err);
+  bf = cable_bfile_read(OUTDIR "/b.ela", &err);
+  /* MAX U columns are AUTO's MXUPSP: max_t u_i(t), signed (not max |u_i|),
+     over the stored points; compared with the s-file's points (both files
+     round to 11 digits) */
+  double dmax = 0;
+  int nrows = 0, signed_differs = 0;
+  for (int k = 0; bf && sf && k < bf->nbranch; k++) {
+    const cable_bfile_branch *bb = &bf->branch[k];
+    const double *mx[2] = {cable_bfile_column(bb, "MAX theta"), cable_bfile_column(bb, "MAX theta'")};
+    for (int r = 0; mx[0] && mx[1] && r < bb->nrow; r++) {
+      const cable_solution *g = bb->lab[r] ? cable_sfile_find_label(sf, bb->lab[r]) : NULL;
+      if (!g) continue;
+      for (int i = 0; i < 2; i++) {
+        double m = g->u[i], ma = fabs(g->u[i]);
+        for (int q = 1; q < cable_solution_npts(g); q++) {
+          m = fmax(m, g->u[q * g->ndim + i]);
+          ma = fmax(ma, fabs(g->u[q * g->ndim + i]));
+        }
+        dmax = fmax(dmax, fabs(mx[i][r] - m) / fmax(fabs(m), 1e-300));
+        signed_differs += ma - m > 1e-3 * ma;
+      }
+      nrows++;
+    }
+  }
+  test_int("MAX theta, MAX theta' columns of every labelled row checked", nrows, sf ? cable_sfile_count(sf) : -1);
+  test_le("MAX U columns = max over the stored points of u_i (signed), max rel. error", dmax, REL_TOL);
+  snprintf(msg, sizeof msg, "the buckled branch has rows where max u_i < max |u_i| (%d), so the test tells them apart",
+           signed_differs);
+  test_true(msg, signed_differs > 0);
   cable_bfile_free(bf);
   cable_sfile_free(sf);
   tee_free(&t);
+}
+
+/* The independent fixed-width readers on real engine output: each test
+ * problem's branch written by cable's writer, then every s-file line and
+ * b-file row checked field by field and against what the engine handed out. */
+static void layout_of_engine_run(const char *name, const cable_problem *pb, const char *ctext)
+{
+  cable_constants c;
+  cable_names names;
+  cable_error err;
+  char what[256], path[256];
+  int st = cable_constants_parse_string(name, ctext, &c, &names, pb->parnames, pb->npar, &err);
+  snprintf(what, sizeof what, "%s: constants parse", name);
+  test_int(what, st, 0);
+  if (st) return;
+  cable_constants_take_problem_dims(&c, pb->ndim, pb->nbc, pb->nint);
+  cable_names_fill(&names, pb->parnames, pb->npar, pb->unames, pb->ndim);
+  int status = 0, next = 0;
+  cable_cont *cc = cable_cont_alloc(pb, &c, &status);
+  cable_aufile *w = cable_aufile_open(OUTDIR, name, &c, &names, NULL, &err);
+  if (!cc || !w || cable_cont_set_start(cc, NULL) != 0) {
+    snprintf(what, sizeof what, "%s: engine and writer", name);
+    test_true(what, 0);
+    cable_cont_free(cc);
+    cable_aufile_abort(w);
+    return;
+  }
+  tee t;
+  memset(&t, 0, sizeof t);
+  t.out = cable_aufile_sink(w);
+  cable_sink sink = {&t, tee_point, tee_solution, tee_diag};
+  int rc = cable_cont_run(cc, &sink, 1, 1, &next);
+  cable_cont_free(cc);
+  st = cable_aufile_close(w, &err);
+  snprintf(what, sizeof what, "%s: run ends normally (%d points, %d labelled) and the files close", name, t.n, t.nsol);
+  test_true(what, rc > 0 && st == 0 && t.nsol >= 2 && t.n <= 64);
+  int bad_lines = 0, nrowpr_ok = 0;
+  snprintf(path, sizeof path, OUTDIR "/s.%s", name);
+  int blocks = check_s_layout(path, &bad_lines, &nrowpr_ok);
+  snprintf(what, sizeof what, "%s: fixed-width s-file reader: one block per stored solution", name);
+  test_int(what, blocks, t.nsol);
+  snprintf(what, sizeof what, "%s: s-file lines with wrong widths or not ES19.10E3", name);
+  test_int(what, bad_lines, 0);
+  snprintf(what, sizeof what, "%s: NROWPR = ceil((NDIM+1)/7)*NTPL + ceil(NPAR/7) [+ direction], that many lines%s", name,
+           c.iis == 0 ? " (IIS=0: none)" : "");
+  test_true(what, nrowpr_ok);
+  bscan bs;
+  snprintf(path, sizeof path, OUTDIR "/b.%s", name);
+  check_b_layout(path, &bs);
+  snprintf(what, sizeof what, "%s: fixed-width b-file reader: 1 section, one row per point", name);
+  test_true(what, bs.sections == 1 && bs.nrow == t.n);
+  snprintf(what, sizeof what, "%s: b-file rows or fields not in the I4,I6,I4,I5,ES19.10E3 layout", name);
+  test_int(what, bs.bad, 0);
+  /* AUTO's column count: PAR(ICP(1)), L2-NORM, N2 MAX U, the other ICP */
+  int n2 = c.nicp > 7 ? 0 : (c.nicp + pb->ndim > 7 ? 7 - c.nicp : pb->ndim), meta = 1;
+  double emax = 0;
+  for (int r = 0; r < bs.nrow && r < t.n; r++) {
+    meta &= bs.br[r] == 1 && bs.pt[r] == t.pt[r] && bs.lab[r] == t.lab[r] && bs.nval[r] == 2 + n2 + c.nicp - 1;
+    emax = fmax(emax, fmax(relerr(bs.v[r][0], t.p0[r]), relerr(bs.v[r][1], t.l2[r])));
+  }
+  snprintf(what, sizeof what, "%s: BR PT LAB of every row as the engine's, %d value columns", name, 2 + n2 + c.nicp - 1);
+  test_true(what, meta);
+  snprintf(what, sizeof what, "%s: principal parameter and L2-NORM columns vs the engine's, max rel. error", name);
+  test_le(what, emax, REL_TOL);
+  tee_free(&t);
+}
+
+static void test_layout_engine_problems(void)
+{
+  layout_of_engine_run("bratu", cable_testproblem_bratu(),
+                       "ICP = ['lambda'], NTST = 20, NCOL = 4, JAC = 1, IAD = 3\n"
+                       "DS = 0.1, DSMIN = 1e-6, DSMAX = 0.5, NMX = 40, RL1 = 10, ILP = 1, NPR = 10\n");
+  layout_of_engine_run("elastica", cable_testproblem_elastica(),
+                       "ICP = ['lambda'], NTST = 30, NCOL = 5, JAC = 1, IAD = 0, ISP = 2, ILP = 0, EPSS = 1e-10\n"
+                       "DS = 0.5, DSMIN = 1e-6, DSMAX = 4.0, NMX = 60, RL1 = 50\n");
+  layout_of_engine_run("layer", cable_testproblem_layer(),
+                       "ICP = ['p', 'eps'], NTST = 12, NCOL = 3, IAD = 1, JAC = 1, IIS = 2\n"
+                       "DS = 0.05, DSMIN = 1e-4, DSMAX = 0.05, NMX = 10, IADS = 0, NPR = 3\n");
+  layout_of_engine_run("stiff", cable_testproblem_stiff(),
+                       "ICP = ['k'], NTST = 50, NCOL = 7, JAC = 1, IIS = 0, EPSS = 1e-10\n"
+                       "DS = 1.0, DSMIN = 1e-4, DSMAX = 2.0, NMX = 40, UZSTOP = {'k': 60}, UZR = {'k': 50}\n");
 }
 
 int main(void)
@@ -1035,10 +1163,83 @@ int main(void)
     printf("  message: %s\n", cable_error_format(&err, msg, sizeof msg));
     test_true("close: label 1 has a b-row but no s-file solution", st < 0 && strstr(msg, "label 1 has a b-file row"));
     cable_solution_free(s);
+    test_true("failed label checks publish nothing: no b./s./d.mismatch, b./s./d.mismatch2",
+              !file_exists(OUTDIR "/b.mismatch") && !file_exists(OUTDIR "/s.mismatch") &&
+                  !file_exists(OUTDIR "/d.mismatch") && !file_exists(OUTDIR "/b.mismatch2") &&
+                  !file_exists(OUTDIR "/s.mismatch2") && !file_exists(OUTDIR "/d.mismatch2") &&
+                  !file_exists(OUTDIR "/b.mismatch.1.csv"));
+    test_int("  and leave no temporary files", count_tmp_files(OUTDIR), 0);
+  }
+
+  /* ---- commit order: s before b; a failed s commit publishes nothing after it */
+  {
+    expect_row rr[10];
+    mkdir(OUTDIR "/s.order", 0755);   /* the s-file cannot be renamed into place */
+    FILE *old = fopen(OUTDIR "/b.order", "w");
+    if (old) {
+      fputs("old b-file\n", old);
+      fclose(old);
+    }
+    w = cable_aufile_open(OUTDIR, "order", &c, &names, NULL, &err);
+    sink = cable_aufile_sink(w);
+    emit_branch(&sink, 1, 3, 5, 4, NPAR1, 2, 4, itp1, lab1, icp1, 3, rr, NULL);
+    st = cable_aufile_close(w, &err);
+    printf("  message: %s\n", cable_error_format(&err, msg, sizeof msg));
+    char *b = slurp(OUTDIR "/b.order", NULL);
+    test_true("s.NAME cannot be committed: close fails naming s.order", st == CABLE_ERR_IO && strstr(msg, "s.order"));
+    test_true("  b.order keeps its old contents (s is committed first)", b && strcmp(b, "old b-file\n") == 0);
+    test_true("  no d.order, no CSV", !file_exists(OUTDIR "/d.order") && !file_exists(OUTDIR "/b.order.1.csv"));
+    test_int("  no temporary files left", count_tmp_files(OUTDIR), 0);
+    free(b);
+    rmdir(OUTDIR "/s.order");
+    mkdir(OUTDIR "/b.order2", 0755);
+    w = cable_aufile_open(OUTDIR, "order2", &c, &names, NULL, &err);
+    sink = cable_aufile_sink(w);
+    emit_branch(&sink, 1, 3, 5, 4, NPAR1, 2, 4, itp1, lab1, icp1, 3, rr, NULL);
+    st = cable_aufile_close(w, &err);
+    cable_sfile *s2 = cable_sfile_read(OUTDIR "/s.order2", &err);
+    test_true("b.NAME cannot be committed: close fails, s.order2 (committed first) is complete",
+              st == CABLE_ERR_IO && s2 && cable_sfile_count(s2) == 2);
+    cable_sfile_free(s2);
+    test_int("  no temporary files left", count_tmp_files(OUTDIR), 0);
+    rmdir(OUTDIR "/b.order2");
+  }
+
+  /* ---- a label the file already has is refused (appending and within one run) */
+  {
+    cable_aufile_options ap;
+    cable_aufile_options_init(&ap);
+    ap.append = 1;
+    long nb0, ns0, nd0;
+    char *b0 = slurp(OUTDIR "/b.syn", &nb0), *s0 = slurp(OUTDIR "/s.syn", &ns0), *d0 = slurp(OUTDIR "/d.syn", &nd0);
+    w = cable_aufile_open(OUTDIR, "syn", &c, &names, &ap, &err);
+    sink = cable_aufile_sink(w);
+    const int lab3[3] = {9, 3, 10};   /* s.syn already holds labels 1..8 */
+    expect_row rr[3];
+    st = emit_branch(&sink, 3, 3, 5, 4, NPAR1, 2, 3, itp1, lab3, icp1, 3, rr, NULL);
+    test_true("appending label 3 to s.syn (labels 1-8) is refused", st < 0);
+    st = cable_aufile_close(w, &err);
+    printf("  message: %s\n", cable_error_format(&err, msg, sizeof msg));
+    test_true("  close reports the duplicate label", st < 0 && strstr(msg, "label 3 is already in the file"));
+    long nb1, ns1, nd1;
+    char *b1 = slurp(OUTDIR "/b.syn", &nb1), *s1 = slurp(OUTDIR "/s.syn", &ns1), *d1 = slurp(OUTDIR "/d.syn", &nd1);
+    test_true("  b.syn, s.syn, d.syn byte-identical to before the refused run",
+              b0 && b1 && s0 && s1 && d0 && d1 && nb0 == nb1 && ns0 == ns1 && nd0 == nd1 &&
+                  memcmp(b0, b1, (size_t)nb0) == 0 && memcmp(s0, s1, (size_t)ns0) == 0 && memcmp(d0, d1, (size_t)nd0) == 0);
+    test_true("  no b.syn.3.csv, no temporary files", !file_exists(OUTDIR "/b.syn.3.csv") && count_tmp_files(OUTDIR) == 0);
+    free(b0), free(b1), free(s0), free(s1), free(d0), free(d1);
+    w = cable_aufile_open(OUTDIR, "dup", &c, &names, NULL, &err);
+    sink = cable_aufile_sink(w);
+    const int labd[3] = {1, 2, 1};
+    st = emit_branch(&sink, 1, 3, 5, 4, NPAR1, 2, 3, itp1, labd, icp1, 3, rr, NULL);
+    test_true("one run writing label 1 twice is refused", st < 0);
+    st = cable_aufile_close(w, &err);
+    test_true("  close reports it", st < 0 && strstr(err.msg, "label 1 is already in the file"));
   }
 
   for (int p = 0; p < 10; p++) cable_solution_free(keep1[p]);
   for (int p = 0; p < 4; p++) cable_solution_free(keep2[p]);
   test_with_engine();
+  test_layout_engine_problems();
   return test_summary();
 }

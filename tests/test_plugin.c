@@ -10,15 +10,22 @@
 #include <float.h>
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_odeiv2.h>
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
+#include "cable_cont.h"
 #include "cable_error.h"
+#include "cable_output.h"
 #include "cable_problem.h"
 #include "cable_solution.h"
 #include "cable_status.h"
+#include "constants_parse.h"
 #include "harness.h"
+#include "names.h"
 #include "plugin_loader.h"
 
 /* Plug-ins live beside the tests of the same build: BUILD/tests/test_plugin
@@ -403,6 +410,99 @@ static void test_validate(void)
   expect_invalid("NULL problem", NULL, "built-in: cable_problem_entry: returned NULL (no problem)");
 }
 
+/* ---- the documented one-line build ------------------------------------------------------ */
+
+/* Bratu's fold (30-digit mpmath value, as in tests/test_script.c). */
+#define BRATU_FOLD_LAMBDA 3.5138307191251612062
+/* With NTST=20, NCOL=4, EPSS=1e-7 tests/test_engine_bvp.c bounds the fold's
+ * lambda by 1e-9 (discretisation O(h^8) ~ 1e-11, location to EPSS). */
+#define BRATU_FOLD_TOL 1e-9
+
+typedef struct {
+  double fold;
+  int nlp;
+} fold_sink;
+
+static int fold_point(void *ctx, const cable_point *pt)
+{
+  fold_sink *f = ctx;
+  if (cable_type_base(pt->itp) == 5 && f->nlp++ == 0) f->fold = pt->par[pt->icp[0]];
+  return 0;
+}
+
+static int fold_solution(void *ctx, const cable_point *pt, const cable_solution *sol)
+{
+  (void)ctx, (void)pt, (void)sol;
+  return 0;
+}
+
+static void fold_diag(void *ctx, const char *line)
+{
+  (void)ctx, (void)line;
+}
+
+/* doc/plugins.md's build command, copied from the page and run as it stands
+ * (in a scratch directory that mirrors the source tree's auto_iface,
+ * continuation and tests/plugins), then the plug-in it builds run by the
+ * engine to Bratu's fold. */
+static void test_documented_build(void)
+{
+  FILE *f = fopen("doc/plugins.md", "r");
+  char line[1024], cmd[1024] = "";
+  while (f && fgets(line, sizeof line, f)) {
+    const char *t = line + strspn(line, " ");
+    if (strncmp(t, "cc -shared", 10) == 0 && !cmd[0]) snprintf(cmd, sizeof cmd, "%s", t);
+  }
+  if (f) fclose(f);
+  cmd[strcspn(cmd, "\n")] = '\0';
+  test_true("doc/plugins.md has a one-line 'cc -shared ...' build command", cmd[0] != '\0');
+  printf("  command: %s\n", cmd);
+  char cwd[PATH_MAX], dir[PATH_MAX + 64], sh[10 * PATH_MAX];
+  if (!getcwd(cwd, sizeof cwd)) cwd[0] = '\0';
+  snprintf(dir, sizeof dir, "%s/tests/tmp/plugbuild.%ld", cwd, (long)getpid());
+  snprintf(sh, sizeof sh,
+           "rm -rf '%s' && mkdir -p '%s/tests' && ln -s '%s/auto_iface' '%s/auto_iface' && "
+           "ln -s '%s/continuation' '%s/continuation' && ln -s '%s/tests/plugins' '%s/tests/plugins'",
+           dir, dir, cwd, dir, cwd, dir, cwd, dir);
+  int rc = system(sh);
+  test_int("scratch tree for the build", rc, 0);
+  snprintf(sh, sizeof sh, "cd '%s' && %s", dir, cmd);
+  rc = system(sh);
+  test_int("the documented command builds bratu.so (exit status)", rc, 0);
+  char so[PATH_MAX + 80];
+  snprintf(so, sizeof so, "%s/bratu.so", dir);
+  cable_error err;
+  const cable_problem *pb = NULL;
+  cable_plugin *p = cable_plugin_open(so, &pb, &err);
+  char buf[1200];
+  if (!p) printf("  error: %s\n", cable_error_format(&err, buf, sizeof buf));
+  test_true("the built bratu.so loads", p && pb);
+  cable_constants c;
+  cable_names names;
+  int st = p ? cable_constants_parse_string("c.bratu",
+                                            "ICP = ['lambda'], NTST = 20, NCOL = 4, JAC = 1, IAD = 3\n"
+                                            "DS = 0.1, DSMIN = 1e-6, DSMAX = 0.5, NMX = 60, RL1 = 10\n"
+                                            "ILP = 1, ISP = 0, EPSS = 1e-7\n",
+                                            &c, &names, pb->parnames, pb->npar, &err)
+             : -1;
+  fold_sink fs = {NAN, 0};
+  if (st == 0) {
+    cable_constants_take_problem_dims(&c, pb->ndim, pb->nbc, pb->nint);
+    cable_cont *cc = cable_cont_alloc(pb, &c, &st);
+    if (st == 0) st = cable_cont_set_start(cc, NULL);
+    cable_sink sink = {&fs, fold_point, fold_solution, fold_diag};
+    int next = 0;
+    if (st == 0) st = cable_cont_run(cc, &sink, 1, 1, &next) > 0 ? 0 : -1;
+    cable_cont_free(cc);
+  }
+  test_int("the engine runs the built plug-in to the end", st, 0);
+  test_int("  one fold on the way", fs.nlp, 1);
+  test_abs("  fold lambda vs the closed form", fs.fold, BRATU_FOLD_LAMBDA, BRATU_FOLD_TOL);
+  cable_plugin_close(p);
+  snprintf(sh, sizeof sh, "rm -rf '%s'", dir);
+  (void)!system(sh);
+}
+
 int main(int argc, char **argv)
 {
   (void)argc;
@@ -411,5 +511,6 @@ int main(int argc, char **argv)
   test_bratu();
   test_broken();
   test_validate();
+  test_documented_build();
   return test_summary();
 }
