@@ -27,7 +27,7 @@ typedef struct cable_point {
   const int *icp;       /* icp[0] is the principal parameter */
   const double *par;    /* [npar] */
   double l2norm;        /* AUTO's L2-NORM of the solution (all components) */
-  const double *umax;   /* [ndim] MAX U(i): the value of largest modulus over t */
+  const double *umax;   /* [ndim] MAX U(i): the signed maximum of u_i over the stored points, as AUTO (MXUPSP) */
   /* diagnostics */
   int newton_iters;
   double ds;            /* step size that produced the point */

@@ -1147,16 +1147,14 @@ static int sign_changes(const cable_solution *x, double tiny)
 /* A scene's loop: the straight elastica's branch points at (k pi)^2 below
  * lambda = 100, and a switch (ISW=-1) at every one of them; the branch from
  * the k-th BP is the buckled mode theta ~ cos(k pi s), whose theta changes
- * sign k times.  (NTST=40, NCOL=5: with NTST=50, NCOL=5 the engine cannot
- * start the switch at BP3, and with NCOL=4 and NTST 30 or 40 not at BP1:
- * "no test functions at the starting point", the extended matrix at the
- * exactly singular BP being singular too; an engine matter, reported.) */
+ * sign k times.  NTST=50, NCOL=5 meets an exact zero pivot at the switch
+ * from BP3 (the engine must start it all the same: test_engine_bvp). */
 static void test_bp_loop(void)
 {
   char *log = NULL, buf[1200], path[256];
   cable_error err;
   int rc = replay(NULL,
-                  "r = run(e='elastica', ICP=['lambda'], NTST=40, NCOL=5, JAC=1, IAD=0, DS=0.5, DSMIN=1e-6, DSMAX=4.0,"
+                  "r = run(e='elastica', ICP=['lambda'], NTST=50, NCOL=5, JAC=1, IAD=0, DS=0.5, DSMIN=1e-6, DSMAX=4.0,"
                   " NMX=200, RL1=100, ISP=2, ILP=0, EPSS=1e-10, sv='sw')\n"
                   "k = 0\n"
                   "for bp in r('BP'):\n"
