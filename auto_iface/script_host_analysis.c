@@ -126,6 +126,14 @@ static int psign_stored(const braid_psign *p)
   return p->n < BRAID_PSIGN_MAX ? p->n : BRAID_PSIGN_MAX;
 }
 
+static int dict_int(script_value *d, const char *key, long n)
+{
+  script_value k;
+  int rc = script_string_new(&k, key, strlen(key));
+  if (rc) return rc;
+  return script_dict_set(d, k, script_integer(n));
+}
+
 static int fn_analyze(int nargs, const script_value *args, script_value *out, cable_error *err)
 {
   const cable_solution *s = nargs == 1 ? handle_solution(&args[0]) : NULL;
@@ -156,14 +164,14 @@ static int fn_analyze(int nargs, const script_value *args, script_value *out, ca
   if (!rc) rc = dict_num(&d, "pmax1", a->pmax1);
   if (!rc) rc = dict_num(&d, "pmin2", a->pmin2);
   if (!rc) rc = dict_num(&d, "pmax2", a->pmax2);
-  if (!rc) rc = dict_num(&d, "psign", a->psign1.n);
-  if (!rc) rc = dict_num(&d, "psign2", a->psign2.n);
+  if (!rc) rc = dict_int(&d, "psign", a->psign1.n);
+  if (!rc) rc = dict_int(&d, "psign2", a->psign2.n);
   if (!rc) rc = dict_numbers(&d, "psign_s1", a->psign1.s, psign_stored(&a->psign1));
   if (!rc) rc = dict_numbers(&d, "psign_s2", a->psign2.s, psign_stored(&a->psign2));
   if (!rc) rc = dict_numbers(&d, "psign_sigma2", a->psign2.sigma, psign_stored(&a->psign2));
   if (!rc) rc = dict_num(&d, "dmin", a->tube.dmin);
   if (!rc) rc = dict_num(&d, "axis_dmin", a->tube.axis_dmin);
-  if (!rc) rc = dict_num(&d, "noverlap", a->tube.noverlap);
+  if (!rc) rc = dict_int(&d, "noverlap", a->tube.noverlap);
   if (!rc) rc = dict_intervals(&d, "overlap", &a->tube);
   if (!rc) rc = dict_num(&d, "overlap_length", a->tube.overlap_length);
   if (!rc) rc = dict_num(&d, "axis_kappa_max", a->tube.axis_kappa_max);
