@@ -223,6 +223,15 @@ int cable_cmd_list(const char *sfile, FILE *out, cable_error *err)
   return 0;
 }
 
+/* Where one strand's contact pressure changes sign (braid_analysis.h). */
+static void print_psign(FILE *out, const char *what, const double *x, int n)
+{
+  if (n <= 0) return;
+  fprintf(out, "    sign changes of %s", what);
+  for (int i = 0; i < n && i < BRAID_PSIGN_MAX; i++) fprintf(out, " %.6f", x[i]);
+  fputc('\n', out);
+}
+
 int cable_cmd_analyze(const char *sfile, int nlab, char **labels, FILE *out, cable_error *err)
 {
   cable_sfile *s = cable_sfile_read(sfile, err);
@@ -250,11 +259,14 @@ int cable_cmd_analyze(const char *sfile, int nlab, char **labels, FILE *out, cab
             k->handedness > 0 ? "right-handed " : k->handedness < 0 ? "left-handed " : "", k->name,
             k->crossing_number, a.topo.lk_in_tube);
     fprintf(out, "  contact pressure: strand 1 in [%.6g, %.6g], strand 2 in [%.6g, %.6g]; sign changes %d\n",
-            a.pmin1, a.pmax1, a.pmin2, a.pmax2, a.psign_changes);
+            a.pmin1, a.pmax1, a.pmin2, a.pmax2, a.psign1.n);
+    print_psign(out, "strand 1 at s =", a.psign1.s, a.psign1.n);
+    print_psign(out, "strand 2 at sigma =", a.psign2.sigma, a.psign2.n);
     fprintf(out, "  tubes: closest non-adjacent approach %.4f Delta (%s), axis %.4f Delta\n", a.tube.dmin,
             a.tube.dmin < 1 ? "overlap" : "no overlap", a.tube.axis_dmin);
     fprintf(out, "  first integrals drift %.2e; material closure %.6f%s\n", a.drift, a.closure,
             a.topo.closure < 0 ? " (pi for a closed material frame)" : "");
+    if (a.topo.closure > 0) fprintf(out, "  material closure of strand 2 %.6f\n", a.closure2);
   }
   cable_sfile_free(s);
   return rc;

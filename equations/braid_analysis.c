@@ -9,6 +9,7 @@
 #include "braid_pressure.h"
 #include "braid_state.h"
 #include "cable_status.h"
+#include "curve_interp.h"
 
 static double wrap_2pi(double a)
 {
@@ -46,6 +47,84 @@ double braid_first_integral_drift(const cable_solution *sol)
   return drift;
 }
 
+int braid_pressure_at(const cable_solution *sol, double t, double *p1, double *p2, double *sigma)
+{
+  double u[BR_NDIM];
+  braid_material m;
+  braid_material_from_par(sol->par, &m);
+  curve_interp_eval(sol, t, 0, BR_NDIM, u, NULL, NULL);
+  if (braid_contact_pressure(u, NULL, &m, p1, p2) != 0) return CABLE_ERR_NONFINITE;
+  if (sigma) *sigma = u[BR_SIGMA];
+  return CABLE_SUCCESS;
+}
+
+static int negative(double p)
+{
+  return p < 0;
+}
+
+/* The t in [ta, tb] where strand `which`'s pressure changes sign (it does:
+ * the node values differ in sign), by bisection on the interpolant. */
+static int refine_sign_change(const cable_solution *sol, int which, double ta, double tb, double *t)
+{
+  double pa1, pa2;
+  int rc = braid_pressure_at(sol, ta, &pa1, &pa2, NULL);
+  int neg_a = negative(which == 1 ? pa1 : pa2);
+  /* each halving gains one bit: 64 halvings take any mesh interval below
+     BRAID_PSIGN_TTOL; the bound only guards against a non-shrinking interval */
+  for (int it = 0; !rc && it < 64 && tb - ta > BRAID_PSIGN_TTOL; it++) {
+    double tm = 0.5 * (ta + tb), q1, q2;
+    rc = braid_pressure_at(sol, tm, &q1, &q2, NULL);
+    if (negative(which == 1 ? q1 : q2) == neg_a) ta = tm;
+    else tb = tm;
+  }
+  *t = 0.5 * (ta + tb);
+  return rc;
+}
+
+static int record_sign_change(const cable_solution *sol, int which, double ta, double tb, braid_psign *ps)
+{
+  if (ps->n < BRAID_PSIGN_MAX) {
+    double t, p1, p2, sigma;
+    int rc = refine_sign_change(sol, which, ta, tb, &t);
+    if (!rc) rc = braid_pressure_at(sol, t, &p1, &p2, &sigma);
+    if (rc) return rc;
+    ps->s[ps->n] = t * sol->par[BP_L];
+    ps->sigma[ps->n] = sigma;
+  }
+  ps->n++;
+  return CABLE_SUCCESS;
+}
+
+int braid_pressure_signs(const cable_solution *sol, braid_analysis *out)
+{
+  if (sol->ndim != BR_NDIM || sol->npar <= BP_W02 || curve_interp_check(sol) != 0) return CABLE_ERR_INPUT;
+  braid_material m;
+  braid_material_from_par(sol->par, &m);
+  out->pmin1 = out->pmin2 = HUGE_VAL;
+  out->pmax1 = out->pmax2 = -HUGE_VAL;
+  out->psign1.n = out->psign2.n = 0;
+  double prev1 = 0.0, prev2 = 0.0;
+  for (int k = 0; k < cable_solution_npts(sol); k++) {
+    const double *u = sol->u + (size_t)k * BR_NDIM;
+    double f[BR_NDIM], p1, p2;
+    if (braid_rhs(u, &m, f, NULL, NULL) != 0) return CABLE_ERR_NONFINITE;
+    if (braid_contact_pressure(u, f, &m, &p1, &p2) != 0) return CABLE_ERR_NONFINITE;
+    out->pmin1 = fmin(out->pmin1, p1);
+    out->pmax1 = fmax(out->pmax1, p1);
+    out->pmin2 = fmin(out->pmin2, p2);
+    out->pmax2 = fmax(out->pmax2, p2);
+    int rc = CABLE_SUCCESS;
+    if (k > 0 && negative(prev1) != negative(p1)) rc = record_sign_change(sol, 1, sol->t[k - 1], sol->t[k], &out->psign1);
+    if (!rc && k > 0 && negative(prev2) != negative(p2))
+      rc = record_sign_change(sol, 2, sol->t[k - 1], sol->t[k], &out->psign2);
+    if (rc) return rc;
+    prev1 = p1;
+    prev2 = p2;
+  }
+  return CABLE_SUCCESS;
+}
+
 int braid_analysis_compute(const cable_solution *sol, braid_analysis *out)
 {
   memset(out, 0, sizeof *out);
@@ -54,30 +133,11 @@ int braid_analysis_compute(const cable_solution *sol, braid_analysis *out)
   if (rc) return rc;
   rc = braid_tube_distance_solution(sol, 0, &out->tube);
   if (rc) return rc;
-  braid_material m;
-  braid_material_from_par(sol->par, &m);
-  int npts = cable_solution_npts(sol);
-  double f[BR_NDIM];
-  out->pmin1 = out->pmin2 = HUGE_VAL;
-  out->pmax1 = out->pmax2 = -HUGE_VAL;
-  double pprev = 0.0;
-  for (int k = 0; k < npts; k++) {
-    const double *u = sol->u + (size_t)k * BR_NDIM;
-    if (braid_rhs(u, &m, f, NULL, NULL) != 0) return CABLE_ERR_NONFINITE;
-    double p1, p2;
-    if (braid_contact_pressure(u, f, &m, &p1, &p2) != 0) return CABLE_ERR_NONFINITE;
-    out->pmin1 = fmin(out->pmin1, p1);
-    out->pmax1 = fmax(out->pmax1, p1);
-    out->pmin2 = fmin(out->pmin2, p2);
-    out->pmax2 = fmax(out->pmax2, p2);
-    if (k > 0 && ((pprev < 0 && p1 >= 0) || (pprev >= 0 && p1 < 0))) {
-      if (out->psign_changes < 8) out->s_psign[out->psign_changes] = sol->t[k] * sol->par[BP_L];
-      out->psign_changes++;
-    }
-    pprev = p1;
-  }
+  rc = braid_pressure_signs(sol, out);
+  if (rc) return rc;
   out->drift = braid_first_integral_drift(sol);
   if (out->drift < 0) return CABLE_ERR_NONFINITE;
+  int npts = cable_solution_npts(sol);
   const double *u0 = sol->u, *u1 = sol->u + (size_t)(npts - 1) * BR_NDIM;
   if (out->topo.closure < 0) {
     out->closure = wrap_2pi(u0[BR_XI1] + u1[BR_XI2]);
@@ -86,4 +146,25 @@ int braid_analysis_compute(const cable_solution *sol, braid_analysis *out)
     out->closure2 = wrap_2pi(u1[BR_XI2] - u0[BR_XI2]);
   }
   return CABLE_SUCCESS;
+}
+
+int braid_axis_same_type(const braid_analysis *a, const braid_analysis *b)
+{
+  return strcmp(a->topo.axis.name, b->topo.axis.name) == 0 && a->topo.axis.handedness == b->topo.axis.handedness;
+}
+
+int braid_branch_settled(const braid_analysis *const *a, int n, int *first)
+{
+  int last = n - 1;
+  while (last >= 0 && !a[last]) last--;
+  *first = last;
+  if (last < 0) return -1;
+  for (int i = last - 1; i >= 0; i--) {
+    if (!a[i]) continue;
+    if (!braid_axis_same_type(a[i], a[last])) break;
+    *first = i;
+  }
+  for (int i = *first; i <= last; i++)
+    if (a[i] && a[i]->tube.dmin > 1.0) return i;
+  return -1;
 }

@@ -1,8 +1,8 @@
 /* Derived quantities of one stored braid solution, computed only when a
  * scene or `cable analyze` asks (they cost far more than a continuation step):
  * linking, twist and writhe of the contact-curve ribbon, the knot type of the
- * braid axis, contact pressures, tube overlap, first-integral drift and the
- * closure of the material frames. */
+ * braid axis, contact pressures and where they change sign, tube overlap,
+ * first-integral drift and the closure of the material frames. */
 #ifndef CABLE_BRAID_ANALYSIS_H
 #define CABLE_BRAID_ANALYSIS_H
 
@@ -10,13 +10,34 @@
 #include "cable_solution.h"
 #include "tube_distance.h"
 
+/* Sign changes of one strand's contact pressure stored; the count of all is
+ * kept.  The paper's cable links have 12-20 (doc/links.md).  Node values can
+ * show at most NTST * NCOL of them: 400 on the scenes' meshes (NTST 100,
+ * NCOL 4), so every one is stored there. */
+#define BRAID_PSIGN_MAX 512
+/* A sign change found between two neighbouring nodes is refined by bisection
+ * on the piecewise-polynomial solution down to this width in t = s/L: far
+ * below the interpolant's own accuracy (O(h^(NCOL+1)), h ~ 1e-2). */
+#define BRAID_PSIGN_TTOL 1e-12
+
+/* Where one strand's contact pressure changes sign, in braid order. */
+typedef struct braid_psign {
+  int n;                          /* sign changes found (only BRAID_PSIGN_MAX are stored) */
+  double s[BRAID_PSIGN_MAX];      /* braid position: arclength s of strand 1 */
+  double sigma[BRAID_PSIGN_MAX];  /* the same points as arclength sigma of strand 2 (sigma(0) = 0) */
+} braid_psign;
+
 typedef struct braid_analysis {
   braid_topology topo;          /* Lk, Tw, Wr, axis knot type, Lk inside the companion's tube */
-  tube_distance_result tube;    /* dmin (strand tubes, / Delta), axis closest approach */
+  tube_distance_result tube;    /* dmin (strand tubes, / Delta), axis closest approach, overlap
+                                   s-intervals, max curvature of the contact curve */
   double pmin1, pmax1;          /* contact force on strand 1 per unit length of strand 1 */
   double pmin2, pmax2;          /* on strand 2 per unit length of strand 2 */
-  int psign_changes;            /* sign changes of p1 along s (node values) */
-  double s_psign[8];            /* first few arclengths s where p1 changes sign */
+  /* Sign changes along the braid: psign1 of p1 (strand 1's balance), psign2
+   * of p2 (strand 2's, computed independently).  Since p1 = sigma' p2 with
+   * sigma' > 0 the two sets coincide on exact solutions; their distance is a
+   * check of the solution. */
+  braid_psign psign1, psign2;
   double drift;                 /* max relative drift of |F|^2, F.M, h, Hamiltonian over the mesh points */
   double closure;               /* knot: xi1(0) + xi2(L) mod 2 pi; link: xi1(L) - xi1(0) mod 2 pi */
   double closure2;              /* link: xi2(L) - xi2(0) mod 2 pi; knot: unused (0) */
@@ -27,7 +48,30 @@ typedef struct braid_analysis {
  * when the solution is not a braid solution. */
 double braid_first_integral_drift(const cable_solution *sol);
 
+/* Contact pressures p1, p2 (braid_pressure.h) of the solution's
+ * piecewise-polynomial interpolant at t in [0, 1], and sigma there.  0, or
+ * CABLE_ERR_NONFINITE at a singular state. */
+int braid_pressure_at(const cable_solution *sol, double t, double *p1, double *p2, double *sigma);
+
+/* Where p1 and p2 change sign (out->psign1, out->psign2) and their ranges:
+ * node values are scanned for sign changes (p >= 0 counts as non-negative);
+ * each one is refined by bisection on braid_pressure_at.  Two sign changes
+ * between neighbouring nodes are not seen.  Part of braid_analysis_compute. */
+int braid_pressure_signs(const cable_solution *sol, braid_analysis *out);
+
 /* 0, or a cable_status (< 0) when the solution is not a closed braid. */
 int braid_analysis_compute(const cable_solution *sol, braid_analysis *out);
+
+/* 1 when the two braid axes have the same knot type (name and handedness). */
+int braid_axis_same_type(const braid_analysis *a, const braid_analysis *b);
+
+/* The knot type a branch settles into, decided from the branch alone: a[i]
+ * are the analyses of its labelled solutions in branch order (NULL: not
+ * analysable, skipped).  The final type is that of the last analysed
+ * solution; the final stretch is the longest run of analysed solutions at
+ * the end of the branch that all have it, and starts at *first (-1 when no
+ * solution was analysed).  Returns the index of the stretch's first solution
+ * whose tubes do not overlap (tube.dmin > 1), or -1 when it has none. */
+int braid_branch_settled(const braid_analysis *const *a, int n, int *first);
 
 #endif
