@@ -3,17 +3,27 @@
  *    T = -2: the same |F| (mirror symmetry), Lk = +3.5 and -3.5;
  *  - eps21 (the unfolding parameter of the redundant condition) vanishes and
  *    the first integrals are constant along the braid;
- *  - the flat left-handed (6,2) link: Lk = -3, an integer. */
+ *  - the flat left-handed (6,2) link: Lk = -3, an integer;
+ *  - the PVLS columns Lk, Tw, Wr, pmin, dmin and err of a run that prints
+ *    them, read back from the b-file, agree with braid_analysis on the
+ *    stored solutions (from STPNT and on a restart), and a run that does not
+ *    print them leaves them uncomputed. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
 
+#include "aufile.h"
 #include "braid_analysis.h"
+#include "braid_resolver.h"
 #include "braid_problems.h"
 #include "braid_start.h"
 #include "cable_cont.h"
 #include "harness.h"
 #include "ribbon.h"
+#include "script.h"
+#include "script_host_cable.h"
 
 /* Continue from the torus guess in T to T = target; returns the solution there. */
 static cable_solution *flat_at(const char *name, int p, int hand, double delta, double length, double target,
@@ -42,8 +52,143 @@ static cable_solution *flat_at(const char *name, int p, int hand, double delta, 
   return s;
 }
 
+/* ---- PVLS columns through the run host and the b-file ------------------- */
+
+static int write_file(const char *path, const char *text)
+{
+  FILE *f = fopen(path, "w");
+  if (!f) return -1;
+  fputs(text, f);
+  return fclose(f);
+}
+
+static const double *bcol(const cable_bfile *b, int br, const char *name)
+{
+  return b && br < b->nbranch ? cable_bfile_column(&b->branch[br], name) : NULL;
+}
+
+/* Every labelled row of branch br against braid_analysis on the s-file's
+ * solution of that label. */
+static void check_pvls_rows(const char *what, const cable_bfile *b, int br, const cable_sfile *s)
+{
+  const double *lk = bcol(b, br, "Lk"), *tw = bcol(b, br, "Tw"), *wr = bcol(b, br, "Wr");
+  const double *pmin = bcol(b, br, "pmin"), *dmin = bcol(b, br, "dmin"), *err = bcol(b, br, "err");
+  char t[200];
+  snprintf(t, sizeof t, "%s: b-file has the columns Lk Tw Wr pmin dmin err", what);
+  test_true(t, lk && tw && wr && pmin && dmin && err);
+  if (!(lk && tw && wr && pmin && dmin && err)) return;
+  const cable_bfile_branch *bb = &b->branch[br];
+  int nlab = 0;
+  for (int i = 0; i < bb->nrow; i++) {
+    if (bb->lab[i] <= 0) continue;
+    const cable_solution *sol = cable_sfile_find_label(s, bb->lab[i]);
+    braid_analysis a;
+    if (!sol || braid_analysis_compute(sol, &a) != 0) {
+      snprintf(t, sizeof t, "%s: label %d analysed", what, bb->lab[i]);
+      test_true(t, 0);
+      continue;
+    }
+    nlab++;
+    /* a flat (7,2) knot: Lk = 3.5 up to the interpolant's closure and the
+       quadrature (the writhe test's 1e-6); Tw + Wr = Lk to the b-file's 11
+       digits */
+    snprintf(t, sizeof t, "%s LAB %d: Lk column = 3.5", what, bb->lab[i]);
+    test_abs(t, lk[i], 3.5, 1e-6);
+    snprintf(t, sizeof t, "%s LAB %d: Tw + Wr = Lk", what, bb->lab[i]);
+    test_abs(t, tw[i] + wr[i], lk[i], 1e-9);
+    snprintf(t, sizeof t, "%s LAB %d: Tw column = analyze's Tw", what, bb->lab[i]);
+    test_abs(t, tw[i], a.topo.tw, 1e-8);
+    /* the b-file row and the s-file solution differ by the s-file's rounding
+       of u (~1e-11 relative), which moves pmin and dmin by as little */
+    snprintf(t, sizeof t, "%s LAB %d: pmin column = analyze's min(pmin1, pmin2)", what, bb->lab[i]);
+    test_rel(t, pmin[i], fmin(a.pmin1, a.pmin2), 1e-8);
+    snprintf(t, sizeof t, "%s LAB %d: dmin column = analyze's dmin", what, bb->lab[i]);
+    test_rel(t, dmin[i], a.tube.dmin, 1e-8);
+    snprintf(t, sizeof t, "%s LAB %d: err column = the solution's error estimate", what, bb->lab[i]);
+    test_rel(t, err[i], sol->err_est, 1e-8);
+  }
+  snprintf(t, sizeof t, "%s: labelled rows checked", what);
+  test_true(t, nlab >= 2);
+}
+
+static void test_pvls_columns(void)
+{
+  char dir[] = "/tmp/cable_pvls_XXXXXX";
+  if (!mkdtemp(dir)) {
+    test_true("temporary directory", 0);
+    return;
+  }
+  char path[256];
+  snprintf(path, sizeof path, "%s/c.pvls", dir);
+  write_file(path, "e = 'braid_knot'\n"
+                   "NDIM = 21, IPS = 4\n"
+                   "ICP = ['T', 'L', 'L2', 'eps21', 'F', 'Lk', 'Tw', 'Wr', 'pmin', 'dmin', 'err']\n"
+                   "TORUS = 7, HAND = 1\n"
+                   "PAR = {'Delta': 0.0051364907419, 'Ltot': 1.98889, 'T': 0.0}\n"
+                   "NTST = 40, NCOL = 4, IAD = 3, JAC = 1, ISP = 0, ILP = 0\n"
+                   "DS = 1.0, DSMIN = 1e-6, DSMAX = 5.0, NMX = 4, NPR = 2\n");
+  cable_replay_options o;
+  cable_replay_options_init(&o);
+  o.dir = dir;
+  o.problems = cable_braid_resolver();
+  FILE *log = fopen("/dev/null", "w");
+  o.log = log;
+  cable_replay *r = cable_replay_alloc(&o);
+  cable_error err;
+  memset(&err, 0, sizeof err);
+  /* from STPNT, a restart from a stored label, and a run without the columns */
+  int rc = r ? script_run_string("<pvls test>",
+                                 "k = run(e='braid_knot', c='pvls', sv='pvls')\n"
+                                 "k2 = run(k('EP2'), e='braid_knot', c='pvls', NMX=3, sv='pvls2')\n"
+                                 "k3 = run(e='braid_knot', c='pvls', ICP=['T', 'L', 'L2', 'eps21'], NMX=2, sv='pvls3')\n",
+                                 cable_replay_host(r), &err)
+             : -1;
+  cable_replay_free(r);
+  if (log) fclose(log);
+  test_int("PVLS runs: the script runs", rc, 0);
+  if (rc != 0) printf("  %s\n", err.msg);
+  const char *names[2] = {"pvls", "pvls2"};
+  for (int k = 0; k < 2 && rc == 0; k++) {
+    char bp[256], sp[256];
+    snprintf(bp, sizeof bp, "%s/b.%s", dir, names[k]);
+    snprintf(sp, sizeof sp, "%s/s.%s", dir, names[k]);
+    cable_bfile *b = cable_bfile_read(bp, &err);
+    cable_sfile *s = cable_sfile_read(sp, &err);
+    test_true("PVLS runs: b- and s-file read back", b && s);
+    if (b && s) {
+      cable_sfile_take_err_est(s, BP_ERR);
+      check_pvls_rows(k == 0 ? "from STPNT" : "restart", b, 0, s);
+    }
+    cable_bfile_free(b);
+    cable_sfile_free(s);
+  }
+  if (rc == 0) {
+    /* not printed: not computed (the slots keep the constants' 0) */
+    snprintf(path, sizeof path, "%s/s.pvls3", dir);
+    cable_sfile *s = cable_sfile_read(path, &err);
+    const cable_solution *sol = s ? cable_sfile_get(s, cable_sfile_count(s) - 1) : NULL;
+    test_true("run without the columns: s-file read", sol != NULL);
+    if (sol) {
+      test_true("run without Lk, Tw, Wr in ICP leaves them uncomputed (0)",
+                sol->par[BP_LK] == 0.0 && sol->par[BP_TW] == 0.0 && sol->par[BP_WR] == 0.0);
+      test_true("run without pmin, dmin in ICP leaves them uncomputed (0)",
+                sol->par[BP_PMIN] == 0.0 && sol->par[BP_DMIN] == 0.0);
+    }
+    cable_sfile_free(s);
+  }
+  const char *files[] = {"c.pvls", "b.pvls", "s.pvls", "d.pvls", "b.pvls2", "s.pvls2", "d.pvls2",
+                         "b.pvls3", "s.pvls3", "d.pvls3", "pvls.csv", "pvls2.csv", "pvls3.csv"};
+  for (size_t i = 0; i < sizeof files / sizeof files[0]; i++) {
+    snprintf(path, sizeof path, "%s/%s", dir, files[i]);
+    remove(path);
+  }
+  rmdir(dir);
+}
+
 int main(void)
 {
+  test_pvls_columns();
+
   const double delta = 0.0051364907419, ltot = 1.98889;
   const int knot_icp[4] = {BP_T, BP_L, BP_L2, BP_EPS21};
   cable_solution *right = flat_at("braid_knot", 7, +1, delta, ltot, 2.0, knot_icp, 4, 40);
