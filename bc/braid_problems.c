@@ -14,7 +14,8 @@
 
 static const char *const braid_parnames[BP_NPAR] = {
   "T", "L", "L2", "Ltot", "Delta", "Phi", "w2fix", "B1", "B2", "C1", "C2", "w01", "w02",
-  "eps21", "eps13", "F", "FM", "h", "qnorm", "Ham", "pmin", "dmin", "Lk", "Tw", "Wr", "err"};
+  "eps21", "eps13", "F", "FM", "h", "qnorm", "Ham", "pmin", "dmin", "Lk", "Tw", "Wr", "err",
+  "Wrerr"};
 
 static const char *const braid_unames[BR_NDIM] = {
   "F1", "F2", "F3", "M1", "M2", "M3", "eta", "w2", "w3", "xi1", "T1",
@@ -73,12 +74,13 @@ int braid_pvls(const cable_solution *sol, double *par, void *params)
     par[BP_DMIN] = e == 0 && isfinite(td.dmin) ? td.dmin : 0.0;
     if (par[BP_DMIN] == 0.0) rc = 1;
   }
-  if (any_requested(sol, BP_LK, BP_WR)) {
+  if (any_requested(sol, BP_LK, BP_WR) || requested(sol, BP_WRERR)) {
     braid_ribbon rb;
     int e = braid_ribbon_compute(sol, 0, &rb);
     par[BP_LK] = e == 0 ? rb.lk : 0.0;
     par[BP_TW] = e == 0 ? rb.tw : 0.0;
     par[BP_WR] = e == 0 ? rb.wr : 0.0;
+    par[BP_WRERR] = e == 0 ? rb.wr_err : 0.0;
     if (e != 0) rc = 1;
   }
   return rc;

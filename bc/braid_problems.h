@@ -34,7 +34,8 @@ int braid_problem_instance(const char *name, const braid_start_params *sp, cable
  *    when known;
  *  only when the run prints them (sol->pvls_icp lists the slot, or is NULL):
  *    pmin (braid_contact_pressure_min), dmin (braid_tube_distance_solution),
- *    Lk, Tw, Wr (braid_ribbon_compute; any one of the three computes all).
+ *    Lk, Tw, Wr and Wrerr, the writhe's error estimate (braid_ribbon_compute;
+ *    any one of the four computes all).
  * Returns 0; 1 (recoverable) when a requested geometric column could not be
  * computed (it is then 0); > 0 when the state at t = 0 is outside the
  * model's domain; -1 for a solution of the wrong size. */

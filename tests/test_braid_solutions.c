@@ -7,7 +7,11 @@
  *  - the PVLS columns Lk, Tw, Wr, pmin, dmin and err of a run that prints
  *    them, read back from the b-file, agree with braid_analysis on the
  *    stored solutions (from STPNT and on a restart), and a run that does not
- *    print them leaves them uncomputed. */
+ *    print them leaves them uncomputed;
+ *  - along a whole stored branch (mode 1 of the flat (7,2) knot, every point
+ *    labelled, through the self-passage of the braid axis where Lk jumps
+ *    from 3.5 to 5.5), Lk is a half-integer to 1e-6 at every label, or the
+ *    label is flagged unresolved with its writhe error estimate. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -185,9 +189,106 @@ static void test_pvls_columns(void)
   rmdir(dir);
 }
 
+/* Remove the files a replay in dir wrote (names: without the prefix). */
+static void remove_outputs(const char *dir, const char *const *names, size_t n)
+{
+  char path[256];
+  const char *pre[] = {"b.", "s.", "d.", "c.", ""};
+  for (size_t i = 0; i < n; i++)
+    for (size_t k = 0; k < sizeof pre / sizeof pre[0]; k++) {
+      snprintf(path, sizeof path, "%s/%s%s%s", dir, pre[k], names[i], k == 4 ? ".csv" : "");
+      remove(path);
+    }
+  rmdir(dir);
+}
+
+static void test_branch_lk(void)
+{
+  char dir[] = "/tmp/cable_lkbranch_XXXXXX";
+  if (!mkdtemp(dir)) {
+    test_true("temporary directory", 0);
+    return;
+  }
+  char path[256];
+  /* runs/knot72's path on a coarser mesh (NTST 20, NCOL 6: 2 s), every point
+     of the mode-1 branch labelled (NPR=1) */
+  snprintf(path, sizeof path, "%s/c.br", dir);
+  write_file(path, "e = 'braid_knot'\nNDIM = 21, IPS = 4\nICP = ['T', 'L', 'L2', 'eps21', 'F']\n"
+                   "TORUS = 7, HAND = 1\nPAR = {'Delta': 0.0051364907419, 'Ltot': 1.98889, 'T': 0.0}\n"
+                   "NTST = 20, NCOL = 6, IAD = 3, JAC = 1, ISP = 2, ILP = 0, NSV = 2\n"
+                   "DS = 5.0, DSMIN = 1e-6, DSMAX = 20.0, NMX = 60, RL0 = -34.0, RL1 = 12.0\n"
+                   "EPSL = 1e-7, EPSU = 1e-7, EPSS = 1e-7\n");
+  snprintf(path, sizeof path, "%s/c.brsym", dir);
+  write_file(path, "e = 'braid_knot_sym'\nNDIM = 21, IPS = 4\nICP = ['T', 'L', 'L2', 'eps21', 'eps13', 'F']\n"
+                   "NTST = 20, NCOL = 6, IAD = 3, JAC = 1, ISW = -1, ISP = 0, ILP = 0\n"
+                   "DS = 0.05, DSMIN = 1e-6, DSMAX = 2.0, NMX = 800, NPR = 1, RL0 = -30.0, RL1 = 40.0\n"
+                   "EPSL = 1e-7, EPSU = 1e-7, EPSS = 1e-7\n");
+  cable_replay_options o;
+  cable_replay_options_init(&o);
+  o.dir = dir;
+  o.problems = cable_braid_resolver();
+  FILE *log = fopen("/dev/null", "w");
+  o.log = log;
+  cable_replay *r = cable_replay_alloc(&o);
+  cable_error err;
+  memset(&err, 0, sizeof err);
+  int rc = r ? script_run_string("<Lk branch test>",
+                                 "flat = run(e='braid_knot', c='br', sv='brflat')\n"
+                                 "m1 = run(flat('BP1'), e='braid_knot_sym', c='brsym', UZSTOP={'T': -2.10752}, "
+                                 "sv='brmode1')\n",
+                                 cable_replay_host(r), &err)
+             : -1;
+  cable_replay_free(r);
+  if (log) fclose(log);
+  test_int("Lk branch: the runs succeed", rc, 0);
+  snprintf(path, sizeof path, "%s/s.brmode1", dir);
+  cable_sfile *s = rc == 0 ? cable_sfile_read(path, &err) : NULL;
+  test_true("Lk branch: stored branch read back", s != NULL);
+  int n = s ? cable_sfile_count(s) : 0, bad = 0, unresolved = 0, close = 0, n35 = 0, n55 = 0;
+  double worst = 0.0, dmin = INFINITY;
+  for (int i = 0; i < n; i++) {
+    const cable_solution *sol = cable_sfile_get(s, i);
+    braid_ribbon rb;
+    if (braid_ribbon_compute(sol, 0, &rb) != 0 || rb.closure != -1) {
+      bad++;
+      continue;
+    }
+    if (!rb.resolved) {
+      unresolved++;
+      printf("  LAB %d: T = %.6g, Lk = %.10f unresolved: Wr error estimate %.3g\n", sol->lab, sol->par[BP_T],
+             rb.lk, rb.wr_err);
+      continue;
+    }
+    /* the writhe to BRAID_RIBBON_WR_TOL; the rest is the interpolant's
+       (tangent kinks of O(h^NCOL) at the mesh points), measured <= 1e-7 */
+    if (rb.lk_defect > 1e-6) {
+      bad++;
+      printf("  LAB %d: T = %.6g, Lk = %.10f is %.3g off a half-integer (Wr error estimate %.3g)\n", sol->lab,
+             sol->par[BP_T], rb.lk, rb.lk_defect, rb.wr_err);
+    }
+    worst = fmax(worst, rb.lk_defect);
+    dmin = fmin(dmin, rb.axis_dmin);
+    close += rb.axis_dmin < 1.0;
+    n35 += fabs(rb.lk - 3.5) < 1e-6;
+    n55 += fabs(rb.lk - 5.5) < 1e-6;
+  }
+  printf("  %d labels: worst |Lk - half-integer| %.3g, %d unresolved, %d with the axis closer than Delta "
+         "to itself (closest %.3g Delta)\n", n, worst, unresolved, close, dmin);
+  test_true("Lk branch: more than 50 labelled solutions", n > 50);
+  test_int("Lk branch: every label has Lk a half-integer to 1e-6 or is flagged unresolved", bad, 0);
+  /* the branch must really test the hard case: non-adjacent parts of the
+     axis closer than Delta, and both sides of the self-passage */
+  test_true("Lk branch: labels with the axis closer than Delta to itself", close >= 1);
+  test_true("Lk branch: Lk = 3.5 before and 5.5 after the self-passage", n35 > 0 && n55 > 0);
+  cable_sfile_free(s);
+  const char *names[] = {"br", "brsym", "brflat", "brmode1"};
+  remove_outputs(dir, names, sizeof names / sizeof names[0]);
+}
+
 int main(void)
 {
   test_pvls_columns();
+  test_branch_lk();
 
   const double delta = 0.0051364907419, ltot = 1.98889;
   const int knot_icp[4] = {BP_T, BP_L, BP_L2, BP_EPS21};
