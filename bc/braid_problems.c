@@ -15,7 +15,7 @@
 static const char *const braid_parnames[BP_NPAR] = {
   "T", "L", "L2", "Ltot", "Delta", "Phi", "w2fix", "B1", "B2", "C1", "C2", "w01", "w02",
   "eps21", "eps13", "F", "FM", "h", "qnorm", "Ham", "pmin", "dmin", "Lk", "Tw", "Wr", "err",
-  "Wrerr"};
+  "Wrerr", "T1", "T2"};
 
 static const char *const braid_unames[BR_NDIM] = {
   "F1", "F2", "F3", "M1", "M2", "M3", "eta", "w2", "w3", "xi1", "T1",
@@ -55,6 +55,10 @@ int braid_pvls(const cable_solution *sol, double *par, void *params)
   par[BP_HAM] = fi.ham;
   par[BP_QN] = u1[BR_Q0] * u1[BR_Q0] + u1[BR_Q1] * u1[BR_Q1] + u1[BR_Q2] * u1[BR_Q2] +
                u1[BR_Q3] * u1[BR_Q3] - 1.0;
+  /* T1' = T2' = 0 (D8): with T1(0) = T, T2(0) = -T imposed by the
+     conditions, the columns at s = L show how well the torques are kept */
+  par[BP_T1END] = u1[BR_T1];
+  par[BP_T2END] = u1[BR_T2];
   if (sol->err_est >= 0) par[BP_ERR] = sol->err_est;
   /* The geometric columns cost a pressure sweep (pmin), a tube-distance
    * search (dmin) or the writhe double integral (Lk, Tw, Wr): only when the

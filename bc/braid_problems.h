@@ -30,8 +30,9 @@ int braid_problem_instance(const char *name, const braid_start_params *sp, cable
 
 /* PVLS of all braid problems, written into par[] (doc/braid-boundary-conditions.md, 6):
  *  always (cheap): F = |F|, FM = F.M, h, Ham (the Hamiltonian), at t = 0
- *    (they are first integrals); qnorm = |q(1)|^2 - 1; err = sol->err_est
- *    when known;
+ *    (they are first integrals); qnorm = |q(1)|^2 - 1; T1, T2 = the strand
+ *    torques at t = 1 (first integrals: T and -T); err = sol->err_est when
+ *    known;
  *  only when the run prints them (sol->pvls_icp lists the slot, or is NULL):
  *    pmin (braid_contact_pressure_min), dmin (braid_tube_distance_solution),
  *    Lk, Tw, Wr and Wrerr, the writhe's error estimate (braid_ribbon_compute;

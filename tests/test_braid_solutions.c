@@ -77,6 +77,33 @@ static void check_pvls_rows(const char *what, const cable_bfile *b, int br, cons
 {
   const double *lk = bcol(b, br, "Lk"), *tw = bcol(b, br, "Tw"), *wr = bcol(b, br, "Wr");
   const double *pmin = bcol(b, br, "pmin"), *dmin = bcol(b, br, "dmin"), *err = bcol(b, br, "err");
+  const double *T = bcol(b, br, "T"), *T1 = bcol(b, br, "T1"), *T2 = bcol(b, br, "T2");
+  const double *wrerr = bcol(b, br, "Wrerr"), *qn = bcol(b, br, "qnorm");
+  const char *fi[4] = {"FM", "h", "Ham", "F"};
+  char t0[200];
+  snprintf(t0, sizeof t0, "%s: b-file has the columns T1 T2 Wrerr qnorm FM h Ham F", what);
+  int have_fi = T && T1 && T2 && wrerr && qn;
+  for (int k = 0; k < 4; k++) have_fi = have_fi && bcol(b, br, fi[k]);
+  test_true(t0, have_fi);
+  if (have_fi) {
+    const cable_bfile_branch *bb0 = &b->branch[br];
+    double dt = 0.0, dq = 0.0, we = 0.0;
+    for (int i = 0; i < bb0->nrow; i++) {
+      dt = fmax(dt, fmax(fabs(T1[i] - T[i]), fabs(T2[i] + T[i])));
+      dq = fmax(dq, fabs(qn[i]));
+      we = fmax(we, wrerr[i]);
+    }
+    /* T' = 0 is integrated exactly by collocation: T1(1) = T1(0) = T to
+       round-off (and the b-file's 11 digits, |T| <= 1) */
+    snprintf(t0, sizeof t0, "%s: every row has T1 = T and T2 = -T", what);
+    test_le(t0, dt, 1e-9);
+    /* |q|^2 is conserved by the ODE; the discrete solution keeps it to the
+       discretisation error */
+    snprintf(t0, sizeof t0, "%s: every row has |qnorm| small", what);
+    test_le(t0, dq, 1e-6);
+    snprintf(t0, sizeof t0, "%s: Wrerr column within BRAID_RIBBON_WR_TOL", what);
+    test_true(t0, we > 0 && we <= BRAID_RIBBON_WR_TOL);
+  }
   char t[200];
   snprintf(t, sizeof t, "%s: b-file has the columns Lk Tw Wr pmin dmin err", what);
   test_true(t, lk && tw && wr && pmin && dmin && err);
@@ -126,9 +153,21 @@ static void test_pvls_columns(void)
   snprintf(path, sizeof path, "%s/c.pvls", dir);
   write_file(path, "e = 'braid_knot'\n"
                    "NDIM = 21, IPS = 4\n"
-                   "ICP = ['T', 'L', 'L2', 'eps21', 'F', 'Lk', 'Tw', 'Wr', 'pmin', 'dmin', 'err']\n"
+                   "ICP = ['T', 'L', 'L2', 'eps21', 'F', 'Lk', 'Tw', 'Wr', 'pmin', 'dmin', 'err', 'Wrerr', "
+                   "'T1', 'T2', 'FM', 'h', 'qnorm', 'Ham']\n"
                    "TORUS = 7, HAND = 1\n"
                    "PAR = {'Delta': 0.0051364907419, 'Ltot': 1.98889, 'T': 0.0}\n"
+                   "NTST = 40, NCOL = 4, IAD = 3, JAC = 1, ISP = 0, ILP = 0\n"
+                   "DS = 1.0, DSMIN = 1e-6, DSMAX = 5.0, NMX = 4, NPR = 2\n");
+  /* the restart's constants set no PAR: a PAR={'T': ...} in the constants
+     would override the stored solution's T on restart (AUTO's rule) while
+     the first point is written without Newton, so its T1 column would not
+     equal its T */
+  snprintf(path, sizeof path, "%s/c.pvlsr", dir);
+  write_file(path, "e = 'braid_knot'\n"
+                   "NDIM = 21, IPS = 4\n"
+                   "ICP = ['T', 'L', 'L2', 'eps21', 'F', 'Lk', 'Tw', 'Wr', 'pmin', 'dmin', 'err', 'Wrerr', "
+                   "'T1', 'T2', 'FM', 'h', 'qnorm', 'Ham']\n"
                    "NTST = 40, NCOL = 4, IAD = 3, JAC = 1, ISP = 0, ILP = 0\n"
                    "DS = 1.0, DSMIN = 1e-6, DSMAX = 5.0, NMX = 4, NPR = 2\n");
   cable_replay_options o;
@@ -143,7 +182,7 @@ static void test_pvls_columns(void)
   /* from STPNT, a restart from a stored label, and a run without the columns */
   int rc = r ? script_run_string("<pvls test>",
                                  "k = run(e='braid_knot', c='pvls', sv='pvls')\n"
-                                 "k2 = run(k('EP2'), e='braid_knot', c='pvls', NMX=3, sv='pvls2')\n"
+                                 "k2 = run(k('EP2'), e='braid_knot', c='pvlsr', NMX=3, sv='pvls2')\n"
                                  "k3 = run(e='braid_knot', c='pvls', ICP=['T', 'L', 'L2', 'eps21'], NMX=2, sv='pvls3')\n",
                                  cable_replay_host(r), &err)
              : -1;
@@ -180,7 +219,7 @@ static void test_pvls_columns(void)
     }
     cable_sfile_free(s);
   }
-  const char *files[] = {"c.pvls", "b.pvls", "s.pvls", "d.pvls", "b.pvls2", "s.pvls2", "d.pvls2",
+  const char *files[] = {"c.pvls", "c.pvlsr", "b.pvls", "s.pvls", "d.pvls", "b.pvls2", "s.pvls2", "d.pvls2",
                          "b.pvls3", "s.pvls3", "d.pvls3", "pvls.csv", "pvls2.csv", "pvls3.csv"};
   for (size_t i = 0; i < sizeof files / sizeof files[0]; i++) {
     snprintf(path, sizeof path, "%s/%s", dir, files[i]);
