@@ -7,7 +7,8 @@
  *  - the PVLS columns Lk, Tw, Wr, pmin, dmin and err of a run that prints
  *    them, read back from the b-file, agree with braid_analysis on the
  *    stored solutions (from STPNT and on a restart), and a run that does not
- *    print them leaves them uncomputed;
+ *    print them leaves them uncomputed; both runs note their start's
+ *    residual in the d-file;
  *  - along a whole stored branch (mode 1 of the flat (7,2) knot, every point
  *    labelled, through the self-passage of the braid axis where Lk jumps
  *    from 3.5 to 5.5), Lk is a half-integer to 1e-6 at every label, or the
@@ -142,6 +143,25 @@ static void check_pvls_rows(const char *what, const cable_bfile *b, int br, cons
   test_true(t, nlab >= 2);
 }
 
+/* The residual in the d-file's NOTE "<what> ... max |F| = <r>" (the first
+ * such line), or INFINITY when there is none. */
+static double start_residual(const char *dfile, const char *what)
+{
+  FILE *f = fopen(dfile, "r");
+  if (!f) return INFINITY;
+  char line[1024];
+  double r = INFINITY;
+  while (fgets(line, sizeof line, f)) {
+    const char *n = strstr(line, "NOTE: "), *m = strstr(line, "max |F| = ");
+    if (n && m && strncmp(n + 6, what, strlen(what)) == 0) {
+      r = strtod(m + 10, NULL);
+      break;
+    }
+  }
+  fclose(f);
+  return r;
+}
+
 static void test_pvls_columns(void)
 {
   char dir[] = "/tmp/cable_pvls_XXXXXX";
@@ -204,6 +224,19 @@ static void test_pvls_columns(void)
     }
     cable_bfile_free(b);
     cable_sfile_free(s);
+  }
+  /* every start reports its Newton residual (d-file NOTE of point 1) */
+  const char *dnames[2] = {"pvls", "pvls2"};
+  const char *what[2] = {"start: Newton converged in", "restart: stored solution taken without Newton"};
+  for (int k = 0; k < 2 && rc == 0; k++) {
+    snprintf(path, sizeof path, "%s/d.%s", dir, dnames[k]);
+    double res = start_residual(path, what[k]);
+    char t[200];
+    /* the engine's Newton stops at |dx| <= EPSL (1 + |x|) = 1e-7: one more
+       quadratic step leaves round-off (measured 4e-14); a restart of a
+       converged solution keeps its residual */
+    snprintf(t, sizeof t, "d.%s point 1 notes '%s ... max |F| = r' with r <= 1e-9", dnames[k], what[k]);
+    test_le(t, res, 1e-9);
   }
   if (rc == 0) {
     /* not printed: not computed (the slots keep the constants' 0) */
