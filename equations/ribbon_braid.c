@@ -179,10 +179,11 @@ static double cum(const density *D, double a)
 /* a in [lo, hi] with U(a) = target: safeguarded Newton (U' = rho > 0) to
  * 1e-9 samples, far below what moves the quadrature. */
 #define DENSITY_INVERT_TOL 1e-9
+#define DENSITY_INVERT_MAXIT 200   /* bisection alone halves [lo, hi] to round-off in ~60 */
 static double cum_invert(const density *D, double target, double lo, double hi)
 {
   double a = lo + (target - cum(D, lo)) / rho(D, lo);
-  for (int it = 0; it < 200; it++) {
+  for (int it = 0; it < DENSITY_INVERT_MAXIT; it++) {
     if (!(a > lo && a < hi)) a = 0.5 * (lo + hi);
     double f = cum(D, a) - target;
     if (fabs(f) <= DENSITY_INVERT_TOL) break;
@@ -193,15 +194,16 @@ static double cum_invert(const density *D, double target, double lo, double hi)
   return a;
 }
 
-/* n samples of the contact curve at a_i = U^-1(Z i/n): positions r, the
- * derivatives dr = dc/du = T Z/rho (period 1 in u) and the parameters t. */
-static int sample_axis(axis *x, const density *D, int n, double *r, double *dr, double *t)
+/* n samples of the contact curve at a_i = U^-1(Z i/n): positions r and the
+ * derivatives dr = dc/du = T Z/rho (period 1 in u). */
+static int sample_axis(axis *x, const density *D, int n, double *r, double *dr)
 {
   double Z = cum(D, x->A), a = 0.0;
   for (int i = 0; i < n; i++) {
     if (i > 0) a = cum_invert(D, Z * i / n, a, x->A);
     braid_point q;
-    int rc = axis_at(x, a, &t[i], &q);
+    double t;
+    int rc = axis_at(x, a, &t, &q);
     if (rc != CABLE_SUCCESS) return rc;
     double sp = sqrt(dot3(q.dc, q.dc)), w = Z / rho(D, a);
     for (int k = 0; k < 3; k++) {
@@ -334,7 +336,7 @@ int braid_ribbon_compute(const cable_solution *sol, int nsamples, braid_ribbon *
   double Delta = sol->par[BP_DELTA];
   gsl_integration_glfixed_table *tab = gsl_integration_glfixed_table_alloc(BRAID_RIBBON_GL_ORDER);
   axis x = {sol, tab, ntst, ncol, malloc(((size_t)ntst + 1) * sizeof(double)), 0.0, -1, CABLE_SUCCESS};
-  double *r = NULL, *dr = NULL, *t = NULL;
+  double *r = NULL, *dr = NULL;
   near_pair *np = malloc(BRAID_RIBBON_MAX_NEAR * sizeof *np);
   if (!tab || !x.arc || !np) { rc = CABLE_ERR_ALLOC; goto done; }
 
@@ -375,8 +377,7 @@ int braid_ribbon_compute(const cable_solution *sol, int nsamples, braid_ribbon *
   size_t cap = 3 * ((size_t)BRAID_RIBBON_MAX_SAMPLES + 8);
   r = malloc(cap * sizeof *r);
   dr = malloc(cap * sizeof *dr);
-  t = malloc(cap / 3 * sizeof *t);
-  if (!r || !dr || !t) { rc = CABLE_ERR_ALLOC; goto done; }
+  if (!r || !dr) { rc = CABLE_ERR_ALLOC; goto done; }
   out->nnear = 0;
   out->axis_dmin = INFINITY;
   if (nsamples > 0) {
@@ -384,7 +385,7 @@ int braid_ribbon_compute(const cable_solution *sol, int nsamples, braid_ribbon *
     int n = nsamples < RIBBON_MIN_SAMPLES ? RIBBON_MIN_SAMPLES : (nsamples + 7) / 8 * 8;
     if (n > BRAID_RIBBON_MAX_SAMPLES) n = BRAID_RIBBON_MAX_SAMPLES;
     density D = {A, A / n, 0.0, 0, np};
-    if ((rc = sample_axis(&x, &D, n, r, dr, t)) != CABLE_SUCCESS) goto done;
+    if ((rc = sample_axis(&x, &D, n, r, dr)) != CABLE_SUCCESS) goto done;
     if ((rc = ribbon_writhe_samples(n, 1.0, r, dr, &out->wr, &out->wr_err)) != CABLE_SUCCESS) goto done;
     out->nsamples = n;
   } else {
@@ -398,7 +399,7 @@ int braid_ribbon_compute(const cable_solution *sol, int nsamples, braid_ribbon *
     if (n0 > BRAID_RIBBON_MAX_SAMPLES) n0 = BRAID_RIBBON_MAX_SAMPLES;
     h = A / n0;
     density D = {A, h, 0.0, 0, np};
-    if ((rc = sample_axis(&x, &D, n0, r, dr, t)) != CABLE_SUCCESS) goto done;
+    if ((rc = sample_axis(&x, &D, n0, r, dr)) != CABLE_SUCCESS) goto done;
     for (int i = 0; i < 3 * n0; i++) dr[i] /= A;   /* unit tangents for the search */
     rc = find_near(&x, n0, r, dr, BRAID_RIBBON_WINDOW * Delta, BRAID_RIBBON_NEAR * Delta, np,
                    &out->nnear, &out->axis_dmin);
@@ -419,7 +420,7 @@ int braid_ribbon_compute(const cable_solution *sol, int nsamples, braid_ribbon *
       double wr, err;
       if (level == 0 && out->nnear == 0) {
         for (int i = 0; i < 3 * n0; i++) dr[i] *= A;   /* back to dc/du: the same samples */
-      } else if ((rc = sample_axis(&x, &D, n, r, dr, t)) != CABLE_SUCCESS) {
+      } else if ((rc = sample_axis(&x, &D, n, r, dr)) != CABLE_SUCCESS) {
         goto done;
       }
       if ((rc = ribbon_writhe_samples(n, 1.0, r, dr, &wr, &err)) != CABLE_SUCCESS) goto done;
@@ -437,7 +438,6 @@ int braid_ribbon_compute(const cable_solution *sol, int nsamples, braid_ribbon *
 done:
   free(r);
   free(dr);
-  free(t);
   free(np);
   free(x.arc);
   gsl_integration_glfixed_table_free(tab);
