@@ -42,10 +42,14 @@ static int braid_find(void *ctx, const char *name, const cable_constants *c, int
   if (knot && p % 2 == 0)
     return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, "TORUS",
                            "%s starts from a (p,2) torus knot: TORUS must be odd, got %d", name, p);
+  if (link && p == 0)
+    return cable_error_set(err, CABLE_ERR_UNSUPPORTED, NULL, 0, "TORUS",
+                           "braid_link cannot start from the two rings (TORUS=0 or no TORUS): they are a family "
+                           "of exact solutions, so Newton's matrix is singular there; give TORUS=2n, a (2n,2) "
+                           "torus link");
   if (link && p % 2 != 0)
     return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, "TORUS",
-                           "braid_link starts from the two rings (TORUS=0) or a (p,2) torus link with even p, got %d",
-                           p);
+                           "braid_link starts from a (p,2) torus link: TORUS must be even, got %d", p);
   braid_instance *bi = calloc(1, sizeof *bi);
   if (!bi) return cable_error_set(err, CABLE_ERR_ALLOC, NULL, 0, "", "out of memory");
   braid_start_params_init(&bi->sp, p > 0 ? BRAID_START_TORUS : BRAID_START_RINGS, p, c->hand, delta, length,

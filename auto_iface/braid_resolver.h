@@ -1,6 +1,6 @@
 /* Braid problems started from STPNT for the run host: the starting geometry
  * comes from the constants: TORUS=p ((p,2) torus knot for odd p, link for even
- * p; 0 or absent: the two-ring start), HAND=1|-1, and PAR={...} values of
+ * p >= 2; the two-ring start is refused: it is degenerate), HAND=1|-1, and PAR={...} values of
  * Delta, Ltot (knots) or L (links), T and the material constants. */
 #ifndef CABLE_BRAID_RESOLVER_H
 #define CABLE_BRAID_RESOLVER_H

@@ -5,22 +5,44 @@
 #include "braid_bc.h"
 #include "braid_integrals.h"
 #include "braid_model.h"
+#include "braid_pressure.h"
 #include "braid_problems.h"
 #include "cable_solution.h"
 #include "cable_status.h"
+#include "ribbon.h"
+#include "tube_distance.h"
 
 static const char *const braid_parnames[BP_NPAR] = {
   "T", "L", "L2", "Ltot", "Delta", "Phi", "w2fix", "B1", "B2", "C1", "C2", "w01", "w02",
-  "eps21", "eps13", "F", "FM", "h", "qnorm", "Ham", "pmin", "dmin", "Lk", "Tw", "Wr", "err"};
+  "eps21", "eps13", "F", "FM", "h", "qnorm", "Ham", "pmin", "dmin", "Lk", "Tw", "Wr", "err",
+  "Wrerr", "T1", "T2"};
 
 static const char *const braid_unames[BR_NDIM] = {
   "F1", "F2", "F3", "M1", "M2", "M3", "eta", "w2", "w3", "xi1", "T1",
   "xi2", "T2", "q0", "q1", "q2", "q3", "x1", "y1", "z1", "sigma"};
 
-int braid_pvls(const struct cable_solution *sol, double *par, void *params)
+/* 1 when the run prints parameter slot k (it is in ICP), or when no run is
+ * asking (sol->pvls_icp NULL: a test or a post-processing call wants all). */
+static int requested(const cable_solution *sol, int k)
+{
+  if (sol->pvls_icp == NULL) return 1;
+  for (int q = 0; q < sol->pvls_nicp; q++)
+    if (sol->pvls_icp[q] == k) return 1;
+  return 0;
+}
+
+static int any_requested(const cable_solution *sol, int k0, int k1)
+{
+  for (int k = k0; k <= k1; k++)
+    if (requested(sol, k)) return 1;
+  return 0;
+}
+
+int braid_pvls(const cable_solution *sol, double *par, void *params)
 {
   (void)params;
-  if (sol == NULL || sol->ndim != BR_NDIM || sol->ntst < 1 || sol->ncol < 1) return -1;
+  if (sol == NULL || sol->ndim != BR_NDIM || sol->ntst < 1 || sol->ncol < 1 || sol->npar < BP_NPAR)
+    return -1;
   braid_material m;
   braid_material_from_par(par, &m);
   braid_first_integrals fi;
@@ -33,7 +55,39 @@ int braid_pvls(const struct cable_solution *sol, double *par, void *params)
   par[BP_HAM] = fi.ham;
   par[BP_QN] = u1[BR_Q0] * u1[BR_Q0] + u1[BR_Q1] * u1[BR_Q1] + u1[BR_Q2] * u1[BR_Q2] +
                u1[BR_Q3] * u1[BR_Q3] - 1.0;
-  return 0;
+  /* T1' = T2' = 0 (D8): with T1(0) = T, T2(0) = -T imposed by the
+     conditions, the columns at s = L show how well the torques are kept */
+  par[BP_T1END] = u1[BR_T1];
+  par[BP_T2END] = u1[BR_T2];
+  if (sol->err_est >= 0) par[BP_ERR] = sol->err_est;
+  /* The geometric columns cost a pressure sweep (pmin), a tube-distance
+   * search (dmin) or the writhe double integral (Lk, Tw, Wr): only when the
+   * run prints them.  A quantity that cannot be computed (e.g. Lk of a braid
+   * whose axis does not close) is written as 0 and reported by the return
+   * value; output never gets NaN. */
+  int rc = 0;
+  if (requested(sol, BP_PMIN)) {
+    double pmin;
+    int e = braid_contact_pressure_min(sol, &m, &pmin);
+    par[BP_PMIN] = e == 0 ? pmin : 0.0;
+    if (e != 0) rc = 1;
+  }
+  if (requested(sol, BP_DMIN)) {
+    tube_distance_result td;
+    int e = braid_tube_distance_solution(sol, 0, &td);
+    par[BP_DMIN] = e == 0 && isfinite(td.dmin) ? td.dmin : 0.0;
+    if (par[BP_DMIN] == 0.0) rc = 1;
+  }
+  if (any_requested(sol, BP_LK, BP_WR) || requested(sol, BP_WRERR)) {
+    braid_ribbon rb;
+    int e = braid_ribbon_compute(sol, 0, &rb);
+    par[BP_LK] = e == 0 ? rb.lk : 0.0;
+    par[BP_TW] = e == 0 ? rb.tw : 0.0;
+    par[BP_WR] = e == 0 ? rb.wr : 0.0;
+    par[BP_WRERR] = e == 0 ? rb.wr_err : 0.0;
+    if (e != 0) rc = 1;
+  }
+  return rc;
 }
 
 #define BRAID_PROBLEM_COMMON                                                           \

@@ -28,10 +28,18 @@ const cable_problem *braid_problem_find(const char *name);
  * or sp is given but not prepared. */
 int braid_problem_instance(const char *name, const braid_start_params *sp, cable_problem *out);
 
-/* PVLS of all three problems: par[BP_F] = |F|, par[BP_FM] = F.M,
- * par[BP_H] = h, par[BP_HAM] = the Hamiltonian, all at t = 0 (they are first
- * integrals), and par[BP_QN] = |q(1)|^2 - 1.  Returns > 0 when the state at
- * t = 0 is outside the model's domain, -1 for a solution of the wrong size. */
+/* PVLS of all braid problems, written into par[] (doc/braid-boundary-conditions.md, 6):
+ *  always (cheap): F = |F|, FM = F.M, h, Ham (the Hamiltonian), at t = 0
+ *    (they are first integrals); qnorm = |q(1)|^2 - 1; T1, T2 = the strand
+ *    torques at t = 1 (first integrals: T and -T); err = sol->err_est when
+ *    known;
+ *  only when the run prints them (sol->pvls_icp lists the slot, or is NULL):
+ *    pmin (braid_contact_pressure_min), dmin (braid_tube_distance_solution),
+ *    Lk, Tw, Wr and Wrerr, the writhe's error estimate (braid_ribbon_compute;
+ *    any one of the four computes all).
+ * Returns 0; 1 (recoverable) when a requested geometric column could not be
+ * computed (it is then 0); > 0 when the state at t = 0 is outside the
+ * model's domain; -1 for a solution of the wrong size. */
 int braid_pvls(const struct cable_solution *sol, double *par, void *params);
 
 #endif

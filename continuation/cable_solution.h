@@ -20,6 +20,12 @@ typedef struct cable_solution {
   int *icp;        /* [nfpr] free-parameter indices (0-based) */
   double *pardot;  /* [nfpr] tangent components of the free parameters */
   double err_est;  /* estimated max-norm discretisation error (< 0: unknown) */
+  /* While the engine calls PVLS: the run's ICP list (free and printed
+   * parameters, 0-based), so that PVLS can skip costly columns nobody asked
+   * for.  Borrowed from the engine, never copied; NULL (alloc, clone, files)
+   * means "unknown": PVLS then computes everything. */
+  const int *pvls_icp;
+  int pvls_nicp;
 } cable_solution;
 
 /* Every field zeroed except the sizes; arrays allocated; NULL on failure. */

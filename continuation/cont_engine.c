@@ -187,6 +187,16 @@ static int first_point(cable_cont *cc)
       cc->ended = 1;
       return cc->end_status = rc == CABLE_ERR_CALLBACK ? rc : CABLE_ERR_NEWTON;
     }
+    snprintf(cc->note, sizeof cc->note, "start: Newton converged in %d iterations, max |F| = %.3e",
+             cc->newton_iters, colloc_newton_residual(cc->nw));
+  } else if (!cc->switch_pending) {
+    /* a restart is taken as stored (AUTO): its residual shows whether it
+       still solves the problem with this run's parameters */
+    s->closing = COLLOC_CLOSE_FIXPAR;
+    s->fixval = principal(cc, cc->x);
+    double r = colloc_system_residual(s, cc->x, cc->w1) == 0 ? 0.0 : HUGE_VAL;
+    for (int i = 0; i < cc->n && r < HUGE_VAL; i++) r = fmax(r, fabs(cc->w1[i]));
+    snprintf(cc->note, sizeof cc->note, "restart: stored solution taken without Newton, max |F| = %.3e", r);
   }
   int have_dir = 0;
   for (int i = 0; i < cc->n; i++)

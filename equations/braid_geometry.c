@@ -193,6 +193,8 @@ int braid_topology_compute(const cable_solution *sol, int nsamples, braid_topolo
   out->lk = rb.lk;
   out->tw = rb.tw;
   out->wr = rb.wr;
+  out->wr_err = rb.wr_err;
+  out->resolved = rb.resolved;
   out->closure = rb.closure;
   out->lk_defect = rb.lk_defect;
   int n = nsamples > 0 ? nsamples : BRAID_TOPOLOGY_SAMPLES;

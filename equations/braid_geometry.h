@@ -58,6 +58,8 @@ int braid_contact_curvature(const cable_solution *sol, int n, double *kappa, dou
  * braid axis (the companion knot of a cable knot or link). */
 typedef struct braid_topology {
   double lk, tw, wr;            /* Lk = Tw + Wr of the contact-curve ribbon (ribbon.h) */
+  double wr_err;                /* error estimate of Wr (braid_ribbon.wr_err) */
+  int resolved;                 /* 1: wr_err <= BRAID_RIBBON_WR_TOL; 0: Lk is not trustworthy */
   int closure;                  /* -1 knot (d1(L) = -d1(0)), +1 link (d1(L) = d1(0)), 0 neither */
   double lk_defect;             /* distance of lk from the nearest half-odd integer (knot) or integer (link) */
   knot_type_result axis;        /* knot type of the contact curve */

@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "braid_rhs_gen.h"
+#include "cable_status.h"
 
 int braid_contact_detail_eval(const double *u, const double *dudS, const braid_material *m,
                               braid_contact_detail *out)
@@ -51,4 +52,18 @@ int braid_contact_pressure(const double *u, const double *dudS, const braid_mate
   *p1 = d.p_from1;
   *p2 = st == BRAID_OK ? d.p_from2 / d.sigmap : 0.0;
   return st;
+}
+
+int braid_contact_pressure_min(const cable_solution *sol, const braid_material *m, double *pmin)
+{
+  if (!sol || !m || !pmin || sol->ndim != BR_NDIM) return CABLE_ERR_INPUT;
+  double lo = HUGE_VAL;
+  for (int k = 0; k < cable_solution_npts(sol); k++) {
+    double p1, p2;
+    int st = braid_contact_pressure(sol->u + (size_t)k * BR_NDIM, NULL, m, &p1, &p2);
+    if (st != BRAID_OK) return st;
+    lo = fmin(lo, fmin(p1, p2));
+  }
+  *pmin = lo;
+  return CABLE_SUCCESS;
 }

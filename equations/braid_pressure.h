@@ -8,6 +8,7 @@
 #define CABLE_BRAID_PRESSURE_H
 
 #include "braid_model.h"
+#include "cable_solution.h"
 
 /* u: the 21 states at one point; dudS: du/ds there (s = arclength of strand 1,
  * i.e. braid_rhs's output, NOT the AUTO derivative d/dt = L d/ds), or NULL to
@@ -36,5 +37,11 @@ typedef struct {
 
 int braid_contact_detail_eval(const double *u, const double *dudS, const braid_material *m,
                               braid_contact_detail *out);
+
+/* Smallest contact pressure of a stored braid solution: min over its
+ * ntst*ncol+1 stored points of min(p1, p2) (the `pmin` column; the same
+ * quantity as analyze()'s pmin).  0, CABLE_ERR_INPUT for a solution that is
+ * not a braid solution, or the guard code of braid_contact_pressure. */
+int braid_contact_pressure_min(const cable_solution *sol, const braid_material *m, double *pmin);
 
 #endif

@@ -41,6 +41,9 @@ enum braid_par {
   BP_DMIN,        /* "dmin"  minimum distance of non-adjacent axis parts / Delta */
   BP_LK, BP_TW, BP_WR, /* "Lk","Tw","Wr" of the contact-curve ribbon */
   BP_ERR,         /* "err"   discretisation-error estimate */
+  BP_WRERR,       /* "Wrerr" error estimate of Wr (and so of Lk) */
+  BP_T1END,       /* "T1"    strand torque T1 at s = L (a first integral: = T) */
+  BP_T2END,       /* "T2"    strand torque T2 at s = L (a first integral: = -T) */
   BP_NPAR         /* number of slots used */
 };
 

@@ -86,11 +86,36 @@ int ribbon_pushoff_linking(ribbon_workspace *w, const ribbon_curve *c, double ep
 
 /* ---- the braid ribbon of a solution (paper Sect. 12.3) ---- */
 
-/* Contact-curve samples per Delta of its length for the writhe: distant parts
- * of a non-overlapping braid axis are at least about Delta apart, so the
- * Gauss integrand has its nearest complex singularity >= Delta from the real
- * axis and the trapezoidal error is ~ exp(-2 pi * 4) ~ 1e-11. */
-#define BRAID_RIBBON_SAMPLES_PER_DELTA 4
+/* Writhe quadrature of the braid ribbon (doc/geometry.md, 2).  The samples
+ * are uniform in a variable u with du/da = rho(a)/Z (a the arclength of the
+ * contact curve): rho = 1/h plus, around both ends of every closest approach
+ * of non-adjacent parts of the axis at distance d < BRAID_RIBBON_NEAR Delta,
+ * beta / sqrt(d^2 + s^2 x^2) (x the arclength from the end, s the sine of the
+ * angle between the two parts).  The trapezoidal error of a pair at distance
+ * d with spacing h is ~ exp(-2 pi d / h), and the Romberg extrapolation uses
+ * the spacing 4h as well:
+ *  - h = Delta / BRAID_RIBBON_SAMPLES_PER_DELTA gives d/(4h) = 4 at d = 2 Delta
+ *    (exp(-8 pi) ~ 1e-11), so parts at least BRAID_RIBBON_NEAR Delta apart
+ *    need nothing more;
+ *  - closer approaches get spacing d/beta at the closest point, d/(4 beta/16)
+ *    with beta = BRAID_RIBBON_NEAR_BETA = 16: the same margin, whatever d.
+ * Parts nearer than BRAID_RIBBON_WINDOW Delta along the axis are neighbours,
+ * not approaches (the Romberg extrapolation handles the diagonal).  While the
+ * Romberg correction wr_err exceeds BRAID_RIBBON_WR_TOL, h is halved and beta
+ * doubled, up to BRAID_RIBBON_MAX_SAMPLES samples; a result still above it is
+ * flagged unresolved. */
+#define BRAID_RIBBON_SAMPLES_PER_DELTA 8
+#define BRAID_RIBBON_NEAR 2.0
+#define BRAID_RIBBON_NEAR_BETA 16.0
+#define BRAID_RIBBON_WINDOW 3.14159265358979323846
+/* Floor on s: nearly parallel parts get the density of s = 0.1 (their
+ * contribution carries the factor s itself). */
+#define BRAID_RIBBON_MIN_SINE 0.1
+/* Closest approaches kept (the closest ones). */
+#define BRAID_RIBBON_MAX_NEAR 64
+/* Target of the writhe's error estimate: Lk must come out half-integer
+ * (integer) to 1e-6, so 1e-9 leaves the interpolant's own error the larger. */
+#define BRAID_RIBBON_WR_TOL 1e-9
 #define BRAID_RIBBON_MIN_SAMPLES 1024
 /* Cap on the samples (cost grows as n^2: 16384 samples take about 0.5 s). */
 #define BRAID_RIBBON_MAX_SAMPLES 16384
@@ -103,19 +128,24 @@ int ribbon_pushoff_linking(ribbon_workspace *w, const ribbon_curve *c, double ep
 
 typedef struct braid_ribbon {
   double lk, tw, wr;           /* Lk = Tw + Wr */
-  double wr_err;               /* Romberg correction of the writhe quadrature */
+  double wr_err;               /* Romberg correction of the writhe quadrature (error estimate) */
+  int resolved;                /* 1: wr_err <= BRAID_RIBBON_WR_TOL */
   int closure;                 /* -1 knot (d1(L) = -d1(0)), +1 link (d1(L) = d1(0)), 0 neither */
   double lk_defect;            /* |lk - nearest half-odd integer| (knot) or integer (link); NAN if closure 0 */
   double axis_length;          /* length of the contact curve */
   double closure_gap;          /* |c(L) - c(0)| */
   int nsamples;                /* writhe samples used */
+  int nnear;                   /* closest approaches closer than BRAID_RIBBON_NEAR Delta */
+  double axis_dmin;            /* the closest of them / Delta (INFINITY: none) */
 } braid_ribbon;
 
 /* Tw is integrated over each mesh interval of the piecewise-polynomial
- * solution with Gauss-Legendre; Wr is the Gauss integral on nsamples points
- * uniform in arclength of the contact curve (0: default from Delta, see
- * above; otherwise rounded up to a multiple of 8).  The result is as accurate
- * as the solution's interpolant (O(h^ncol) for derivatives). */
+ * solution with Gauss-Legendre; Wr is the Gauss integral on samples placed
+ * by the arclength of the contact curve: nsamples = 0 chooses and refines
+ * them as described above; nsamples > 0 takes that many uniform samples
+ * (rounded up to a multiple of 8, at most BRAID_RIBBON_MAX_SAMPLES) without
+ * refinement.  The result is as accurate as the solution's interpolant
+ * (O(h^ncol) for derivatives). */
 int braid_ribbon_compute(const cable_solution *sol, int nsamples, braid_ribbon *out);
 /* The same with default samples; any output pointer may be NULL. */
 int braid_ribbon_lk(const cable_solution *sol, double *lk, double *tw, double *wr);

@@ -2,10 +2,21 @@
 """Derive the standard 2-braid ODEs (paper Sect. 12.2) with sympy, check the
 derivation, and write the C right-hand sides and exact Jacobians.
 
-Usage (from the repository root; needs Debian's sympy, i.e. /usr/bin/python3):
+Needs sympy and mpmath: on Debian/Ubuntu the package python3-sympy (it pulls
+in python3-mpmath), installed with `sudo apt-get install python3-sympy`, for
+the system interpreter /usr/bin/python3 (the committed output was made with
+sympy 1.11.1, Debian 12).  The build itself needs only a C compiler: the
+generated files are committed.
+
+Usage (from the repository root):
 
     /usr/bin/python3 scripts/gen_braid.py            # checks, then writes the C files
     /usr/bin/python3 scripts/gen_braid.py --check    # checks only
+
+then `make check`.  With the same sympy version the output is byte-identical
+to the committed files (`git status` shows nothing); another version may
+order the common subexpressions differently, which is harmless but shows in
+the diff.
 
 Output: equations/braid_rhs_gen.c and equations/braid_rhs_gen.h.  The output
 is deterministic (the script re-executes itself with PYTHONHASHSEED=0 so that
