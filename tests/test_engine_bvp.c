@@ -118,6 +118,37 @@ static void test_elastica_exact_zero_pivot(memrun *r)
   cable_solution_free(bp1);
 }
 
+/* Fixed steps (IADS = 0) long enough to hold two branch points: from
+ * lambda = 1, DS = 35, 40 and 45 steps (the trivial branch's tangent is pure
+ * lambda) put BP1 and BP2 inside the first step for DS = 40 and 45, where the
+ * determinant keeps its sign; DS = 35 puts BP1 alone in a 35-wide bracket.
+ * Before the pencil test, DS = 45 lost BP1 and BP2 without a word, DS = 40
+ * lost BP1, and DS = 35 failed to locate BP1 within ITMX. */
+static void test_elastica_fixed_steps(memrun *r)
+{
+  static const double steps[] = {35.0, 40.0, 45.0};
+  for (size_t q = 0; q < sizeof steps / sizeof steps[0]; q++) {
+    cable_constants c;
+    engine_constants(&c, 50, 5);
+    c.ds = c.dsmax = steps[q]; c.dsmin = 1e-6; c.iads = 0; c.nmx = 200;
+    c.rl1 = 100.0;
+    c.isp = 2; c.ilp = 0;
+    c.epss = 1e-10;
+    memrun_run(cable_testproblem_elastica(), &c, NULL, r);
+    char what[96];
+    snprintf(what, sizeof what, "elastica DS=%g fixed: three branch points below lambda = 100", steps[q]);
+    test_int(what, memrun_count(r, CABLE_TY_BP), 3);
+    for (int n = 1; n <= 3; n++) {
+      const cable_solution *bp = memrun_find(r, CABLE_TY_BP, n - 1);
+      snprintf(what, sizeof what, "elastica DS=%g fixed: BP%d at (%d pi)^2", steps[q], n, n);
+      /* the same discretisation bound as test_elastica (NTST=50, NCOL=5) */
+      if (bp) test_rel(what, bp->par[0], (n * M_PI) * (n * M_PI), 1e-8);
+      else test_true(what, 0);
+    }
+    memrun_free(r);
+  }
+}
+
 /* max mesh-point error of the Bratu solution at lambda ~ 1 */
 static double bratu_error(memrun *r, int ntst, int ncol)
 {
@@ -254,6 +285,7 @@ int main(void)
   test_bratu_fold(r);
   test_elastica(r);
   test_elastica_exact_zero_pivot(r);
+  test_elastica_fixed_steps(r);
   test_superconvergence(r);
   test_double_bp(r);
   free(r);
