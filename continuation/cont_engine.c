@@ -252,6 +252,17 @@ static int first_point(cable_cont *cc)
   }
   /* test functions with the tangent itself as closing row */
   rc = cont_tangent(cc, cc->x, cc->xdot, cc->w3, &cc->tf);
+  if (rc == CABLE_ERR_LINSOLVE && cc->switch_pending) {
+    /* At a branch point [F_x; theta phi^T] is singular for every phi: the old
+       tangent stays in its kernel (and at a double BP a kernel direction
+       does too); it is only numerically regular because the BP was located
+       to EPSS.  An exactly singular one (the uncoupled double elastica
+       hits one) has no determinant sign: the start gets none, so the first
+       step counts no BP sign change. */
+    memset(&cc->tf, 0, sizeof cc->tf);
+    cont_tests_fill(cc, cc->x, cc->xdot, &cc->tf);
+    rc = CABLE_SUCCESS;
+  }
   if (rc != CABLE_SUCCESS) {
     cont_set_error(cc, "no test functions at the starting point: %s", cable_status_message(rc));
     cc->ended = 1;

@@ -7,7 +7,8 @@
  *    h^(2 NCOL) (superconvergence), slope fitted for NCOL = 2..5;
  *  - two uncoupled elasticas: every branch point is double (two singular values
  *    vanish, the determinant keeps its sign); the singular-value test finds and
- *    locates them at (n pi)^2. */
+ *    locates them at (n pi)^2, and switching with BPANGLE (or BPDIR) in the
+ *    canonical kernel basis reaches each of the four bifurcating branches. */
 #include <gsl/gsl_math.h>
 #include <gsl/gsl_sf_ellint.h>
 #include <math.h>
@@ -248,31 +249,73 @@ static void test_double_bp(memrun *r)
   cable_solution *start = bp1 ? cable_solution_clone(bp1) : NULL;
   memrun_free(r);
   if (!start) return;
-  /* switching at the double BP along either kernel vector (BPDIR = 0, 1):
-     every solution of the uncoupled pair has each theta_i either 0 or a
-     buckled elastica at the same lambda, lambda = 4 K(sin(theta_i(0)/2))^2 */
-  for (int dir = 0; dir <= 1; dir++) {
+  /* switching at the double BP.  The kernel is spanned by (cos pi t, 0) and
+     (0, cos pi t) in (theta1, theta2); the canonical basis (cont_switch.c,
+     rule 1 on U(1) = theta1) is e1 = only theta1 moves, e2 = only theta2.
+     The uncoupled pair's solutions have each theta_i either 0 or a buckled
+     elastica at the same lambda, so four branches leave the BP: theta1 alone
+     (BPANGLE = 0, and BPDIR = 0), theta2 alone (90, BPDIR = 1), both in phase
+     (45: theta1 = theta2) and in antiphase (135: theta1 = -theta2). */
+  static const struct {
+    double angle;  /* NAN: BPDIR */
+    int bpdir;
+    int kind;      /* 1: theta1 alone, 2: theta2 alone, 3: theta1 = theta2, 4: theta1 = -theta2 */
+    double dsign;  /* DS < 0: the other half of the branch */
+  } cases[] = {{0.0, 0, 1, 1}, {90.0, 0, 2, 1}, {45.0, 0, 3, 1}, {135.0, 0, 4, 1},
+               {90.0, 0, 2, -1}, {45.0, 0, 3, -1}, {NAN, 0, 1, 1}, {NAN, 1, 2, 1}};
+  static const char *const kinds[] = {"", "only theta1 buckles", "only theta2 buckles", "theta1 = theta2",
+                                      "theta1 = -theta2"};
+  for (size_t q = 0; q < sizeof cases / sizeof cases[0]; q++) {
     engine_constants(&c, 40, 4);
-    c.jac = 0; c.isw = -1; c.bpsym = dir; c.isp = 0;
-    c.ds = 0.05; c.dsmin = 1e-6; c.dsmax = 0.2; c.nmx = 30; c.npr = 10;
+    c.jac = 0; c.isw = -1; c.isp = 0;
+    c.bpangle = cases[q].angle;
+    c.bpsym = cases[q].bpdir;
+    c.ds = 0.05 * cases[q].dsign; c.dsmin = 1e-6; c.dsmax = 0.2; c.nmx = 30; c.npr = 10;
     memrun_run(&pb, &c, start, r);
-    double worst = 0, amp = 0;
+    double worst = 0, amp1 = 0, amp2 = 0, sum = 0, diff = 0;
     for (int i = 1; i < r->nsol; i++) {
       const cable_solution *s = r->sol[i];
       double lam = s->par[0];
       for (int comp = 0; comp < 4; comp += 2) {
         double th0 = fabs(s->u[comp]);
-        amp = fmax(amp, th0);
         if (th0 < 1e-6) continue; /* this elastica stays straight */
         double K = gsl_sf_ellint_Kcomp(sin(th0 / 2), GSL_PREC_DOUBLE);
         worst = fmax(worst, fabs(lam - 4 * K * K) / lam);
       }
+      for (int k = 0; k < cable_solution_npts(s); k++) {
+        double t1 = s->u[4 * k], t2 = s->u[4 * k + 2];
+        amp1 = fmax(amp1, fabs(t1));
+        amp2 = fmax(amp2, fabs(t2));
+        diff = fmax(diff, fabs(t1 - t2));
+        sum = fmax(sum, fabs(t1 + t2));
+      }
     }
-    char what[96];
-    snprintf(what, sizeof what, "double BP, BPDIR=%d: the branch buckles", dir);
-    test_true(what, r->status > 0 && amp > 0.3);
+    char what[160], how[40];
+    if (isnan(cases[q].angle)) snprintf(how, sizeof how, "BPDIR=%d DS%c", cases[q].bpdir, cases[q].dsign > 0 ? '+' : '-');
+    else snprintf(how, sizeof how, "BPANGLE=%g DS%c", cases[q].angle, cases[q].dsign > 0 ? '+' : '-');
+    snprintf(what, sizeof what, "double BP, %s: the branch is computed and buckles (max |theta| %.3f)", how,
+             fmax(amp1, amp2));
+    test_true(what, r->status > 0 && r->nsol >= 3 && fmax(amp1, amp2) > 0.3);
+    /* a straight component is zero to the Newton tolerance (EPSU = 1e-7 relative
+       corrections, quadratic convergence leaves far less); a buckled one
+       reaches amplitude > 0.3 within 30 steps of 0.05..0.2 */
+    int kind = cases[q].kind, ok;
+    if (kind == 1) ok = amp1 > 0.3 && amp2 < 1e-6;
+    else if (kind == 2) ok = amp2 > 0.3 && amp1 < 1e-6;
+    else if (kind == 3) ok = amp1 > 0.3 && diff < 1e-6;
+    else ok = amp1 > 0.3 && sum < 1e-6;
+    snprintf(what, sizeof what, "double BP, %s: %s (max |theta1| %.3g, |theta2| %.3g, |theta1-theta2| %.3g, "
+             "|theta1+theta2| %.3g)", how, kinds[kind], amp1, amp2, diff, sum);
+    test_true(what, ok);
+    /* orientation (cont_switch.c): e1 and e2 are positive at t = 0 in their
+       first non-negligible component, so theta1(0) (kinds 1, 3) or theta2(0)
+       (kinds 2, 4: e2 enters 135 degrees with +sin) has the sign of DS */
+    const cable_solution *last = r->nsol ? r->sol[r->nsol - 1] : NULL;
+    double u0 = last ? last->u[kind == 1 || kind == 3 ? 0 : 2] : 0.0;
+    snprintf(what, sizeof what, "double BP, %s: the buckled theta(0) = %.4f has the sign of DS", how, u0);
+    test_true(what, u0 * cases[q].dsign > 0.3);
     /* FD Jacobians and NTST=40, NCOL=4: discretisation error (0.025)^8 pi^10 ~ 1e-8 */
-    snprintf(what, sizeof what, "double BP, BPDIR=%d: each buckled component on lambda = 4K^2", dir);
+    snprintf(what, sizeof what, "double BP, %s: each buckled component on lambda = 4K^2", how);
     test_le(what, worst, 1e-6);
     memrun_free(r);
   }
