@@ -1,6 +1,7 @@
 /* Collocation basis and discretised system: quadrature exactness, partition of
  * unity, and the block Newton matrix against central differences of the
- * residual (analytic and finite-difference problem Jacobians). */
+ * residual (analytic and finite-difference problem Jacobians), also with an
+ * integral condition (bratu_int, NINT = 1). */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -51,7 +52,7 @@ static void test_basis(void)
 
 /* max |J - FD(F)| / max|J| with central differences of step 1e-6:
  * truncation ~ 1e-12 |F'''|, round-off ~ 1e-16 |F| / 1e-6 = 1e-10 |F|. */
-static double jacobian_error(colloc_system *s, const double *x)
+static double jacobian_error_rows(colloc_system *s, const double *x, int row0, int nrows)
 {
   int n = s->n;
   colloc_jac *J = colloc_jac_alloc(s->ndim, s->ntst, s->ncol, s->nfpr, s->nbc, s->nint);
@@ -68,7 +69,7 @@ static double jacobian_error(colloc_system *s, const double *x)
     colloc_system_residual(s, xp, Fp);
     xp[c] = x[c] - h;
     colloc_system_residual(s, xp, Fm);
-    for (int r = 0; r < n; r++) {
+    for (int r = row0; r < row0 + nrows; r++) {
       double fd = (Fp[r] - Fm[r]) / (2 * h);
       err = fmax(err, fabs(fd - A[r + (size_t)n * c]));
       scale = fmax(scale, fabs(A[r + (size_t)n * c]));
@@ -79,13 +80,15 @@ static double jacobian_error(colloc_system *s, const double *x)
   return err / scale;
 }
 
+static double jacobian_error(colloc_system *s, const double *x) { return jacobian_error_rows(s, x, 0, s->n); }
+
 static void test_system(const cable_problem *pb, const char *name, int jac)
 {
   cable_constants c;
   cable_constants_init(&c);
   c.jac = jac;
-  int icp[1] = {0}, st;
-  colloc_system *s = colloc_system_alloc(pb, &c, 5, 3, icp, 1, &st);
+  int icp[2] = {0, 1}, st, nfpr = pb->nbc + pb->nint - pb->ndim + 1;
+  colloc_system *s = colloc_system_alloc(pb, &c, 5, 3, icp, nfpr, &st);
   test_true("system alloc", s != NULL);
   if (!s) return;
   /* a smooth non-uniform mesh, random state, arclength closing */
@@ -97,7 +100,7 @@ static void test_system(const cable_problem *pb, const char *name, int jac)
     s->x0[i] = x[i] + 0.01;
     s->xdot0[i] = (double)rand() / RAND_MAX;
   }
-  x[s->n - 1] = 2.0;
+  x[s->n - nfpr] = 2.0; /* the principal parameter */
   s->par[1] = 0.05; /* eps of the layer problem (unused by the others) */
   s->closing = COLLOC_CLOSE_ARCLENGTH;
   s->ds = 0.1;
@@ -105,6 +108,12 @@ static void test_system(const cable_problem *pb, const char *name, int jac)
   snprintf(what, sizeof what, "%s JAC=%d: Newton matrix vs differences of the residual", name, jac);
   /* analytic: FD error bound above; JAC=0 adds the inner FD error (step 6e-6: ~1e-10) */
   test_le(what, jacobian_error(s, x), jac ? 1e-8 : 1e-7);
+  if (s->nint > 0) {
+    /* the integral rows alone (their entries are O(h), smaller than the
+       collocation rows', so the whole-matrix check could hide an error) */
+    snprintf(what, sizeof what, "%s JAC=%d: integral-condition rows vs differences", name, jac);
+    test_le(what, jacobian_error_rows(s, x, s->ntst * s->ncol * s->ndim + s->nbc, s->nint), jac ? 1e-8 : 1e-7);
+  }
   free(x);
   colloc_system_free(s);
 }
@@ -116,5 +125,9 @@ int main(void)
   test_system(cable_testproblem_bratu(), "bratu", 0);
   test_system(cable_testproblem_elastica(), "elastica", 1);
   test_system(cable_testproblem_layer(), "layer", 0);
+  /* NINT = 1: the integral row and its derivatives (ICND's dint, JAC=1, and
+     the engine's differences of ICND, JAC=0) */
+  test_system(cable_testproblem_bratu_int(), "bratu_int", 1);
+  test_system(cable_testproblem_bratu_int(), "bratu_int", 0);
   return test_summary();
 }

@@ -9,7 +9,10 @@
  *    vanish, the determinant keeps its sign); the singular-value test finds and
  *    locates them at (n pi)^2, and switching with BPANGLE (or BPDIR) in the
  *    canonical kernel basis reaches each of the four bifurcating branches. */
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_integration.h>
 #include <gsl/gsl_math.h>
+#include <gsl/gsl_roots.h>
 #include <gsl/gsl_sf_ellint.h>
 #include <math.h>
 #include <stdlib.h>
@@ -148,6 +151,86 @@ static void test_elastica_fixed_steps(memrun *r)
     }
     memrun_free(r);
   }
+}
+
+/* int_0^1 u dt of Bratu's exact lower-branch solution with parameter th, by
+ * GSL's adaptive Gauss-Kronrod rule (independent of the engine's quadrature). */
+static double bratu_exact_u(double t, void *p) { return cable_bratu_exact(0.0, *(const double *)p, t); }
+
+static double bratu_exact_mean(double th)
+{
+  gsl_integration_workspace *w = gsl_integration_workspace_alloc(100);
+  gsl_function F = {bratu_exact_u, &th};
+  double res = NAN, err = 0;
+  if (w) gsl_integration_qag(&F, 0.0, 1.0, 1e-15, 1e-14, 100, GSL_INTEG_GAUSS61, w, &res, &err);
+  gsl_integration_workspace_free(w);
+  return res;
+}
+
+/* th at the fold: d lambda / d th = 0 on lambda = th^2 / (2 cosh^2(th/4)) gives th tanh(th/4) = 4 */
+static double fold_fn(double th, void *p)
+{
+  (void)p;
+  return th * tanh(th / 4.0) - 4.0;
+}
+
+static double bratu_fold_theta(void)
+{
+  gsl_function F = {fold_fn, NULL};
+  gsl_root_fsolver *s = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
+  double r = NAN;
+  if (s && gsl_root_fsolver_set(s, &F, 3.0, 6.0) == GSL_SUCCESS)
+    for (int it = 0; it < 200; it++) {
+      gsl_root_fsolver_iterate(s);
+      r = gsl_root_fsolver_root(s);
+      if (gsl_root_test_interval(gsl_root_fsolver_x_lower(s), gsl_root_fsolver_x_upper(s), 0.0, 1e-15) == GSL_SUCCESS)
+        break;
+    }
+  gsl_root_fsolver_free(s);
+  return r;
+}
+
+/* An integral condition (NINT = 1, NFPR = 2): Bratu with mu = int_0^1 u dt.
+ * The lambda branch and its fold are Bratu's; mu at user zeros lambda = 1, 2,
+ * 3 and at the fold must equal the mean of the exact solution. */
+static void test_integral_condition(memrun *r)
+{
+  cable_constants c;
+  engine_constants(&c, 20, 4);
+  c.icp[1] = 1; c.nicp = 2;
+  c.ds = 0.1; c.dsmin = 1e-6; c.dsmax = 0.5; c.nmx = 60;
+  c.rl1 = 10.0;
+  c.ilp = 1; c.isp = 0;
+  c.epss = 1e-7;
+  c.nuzr = 3;
+  for (int k = 0; k < 3; k++) {
+    c.uzr[k].par = 0;
+    c.uzr[k].value = k + 1.0;
+  }
+  memrun_run(cable_testproblem_bratu_int(), &c, NULL, r);
+  test_true("bratu_int (NINT=1): run ends normally", r->status > 0);
+  test_int("bratu_int: three user zeros on the lower branch (and three on the upper)", memrun_count(r, CABLE_TY_UZ), 6);
+  gsl_error_handler_t *old = gsl_set_error_handler_off();
+  for (int k = 0; k < 3; k++) {
+    const cable_solution *s = memrun_find(r, CABLE_TY_UZ, k);
+    char what[96];
+    snprintf(what, sizeof what, "bratu_int: mu = int u dt at lambda = %d (exact solution, GSL quadrature)", k + 1);
+    /* Gauss quadrature of the NCOL=4 collocation polynomial on NTST=20: the
+       solution's O(h^(2 NCOL)) = 5e-11 superconvergent error (test_superconvergence)
+       sets the level; 1e-9 relative leaves a margin */
+    if (s) test_rel(what, s->par[1], bratu_exact_mean(cable_bratu_theta(s->par[0])), 1e-9);
+    else test_true(what, 0);
+  }
+  const cable_solution *lp = memrun_find(r, CABLE_TY_LP, 0);
+  test_true("bratu_int: fold found", lp != NULL);
+  if (lp) {
+    /* the same bounds as test_bratu_fold; mu is stationary in arclength at
+       neither end, so its location error is O(EPSS ds) ~ 1e-8 */
+    test_abs("bratu_int: fold lambda*", lp->par[0], 3.513830719125162, 1e-9);
+    test_rel("bratu_int: mu at the fold", lp->par[1], bratu_exact_mean(bratu_fold_theta()), 1e-7);
+  }
+  gsl_set_error_handler(old);
+  memrun_free(r);
 }
 
 /* max mesh-point error of the Bratu solution at lambda ~ 1 */
@@ -329,6 +412,7 @@ int main(void)
   test_elastica(r);
   test_elastica_exact_zero_pivot(r);
   test_elastica_fixed_steps(r);
+  test_integral_condition(r);
   test_superconvergence(r);
   test_double_bp(r);
   free(r);
