@@ -3,7 +3,8 @@
  *  - the stiff dichotomy u'' = k^2 u (k up to 60) is solved to 1e-10 relative at
  *    NTST = 50, and the determinant sign stays constant along the k continuation;
  *  - condensation vs KLU, analytic vs finite-difference Jacobians: same points;
- *  - restart from a stored label reproduces the next points;
+ *  - restart from a stored label reproduces the next points; a restart onto
+ *    another NTST and NCOL reaches the fold with the new mesh's accuracy;
  *  - failures: a fatal callback, a recoverable one down to DSMIN, a
  *    non-converging start: clean stop, status, message, last good point kept;
  *  - a solution that FUNC refuses at a mesh point is never accepted. */
@@ -246,15 +247,81 @@ static void test_variants(void)
   if (s3) {
     c.nmx = 4;
     memrun_run(cable_testproblem_bratu(), &c, s3, b);
+    /* NMX counts the restart point: 3 new points, each compared (an empty or
+       one-point restart used to pass with nothing compared) */
+    int compared = 0;
     double d = 0;
-    for (int i = 1; i < b->n && at + i < a->n; i++)
+    for (int i = 1; i < b->n && at + i < a->n; i++, compared++)
       d = fmax(d, fabs(b->par[i][0] - a->par[at + i][0]) + fabs(b->l2[i] - a->l2[at + i]));
+    test_int("restart from label 3: the restart computes NMX points", b->n, 4);
+    test_int("restart from label 3: three points compared with the first run", compared, 3);
     test_le("restart from label 3 reproduces the next points", d, 1e-10);
   }
   memrun_free(a);
   memrun_free(b);
   free(a);
   free(b);
+}
+
+/* max |u - exact| at the mesh points of a lower-branch Bratu solution */
+static double bratu_mesh_error(const cable_solution *s)
+{
+  double lam = s->par[0], th = cable_bratu_theta(lam), err = 0;
+  for (int j = 0; j <= s->ntst; j++) {
+    int k = j * s->ncol;
+    err = fmax(err, fabs(s->u[2 * k] - cable_bratu_exact(lam, th, s->t[k])));
+  }
+  return err;
+}
+
+/* Restart onto another mesh: the lower-branch solution at lambda = 3 from an
+ * NTST=20, NCOL=4 run, re-interpolated onto NTST=13, NCOL=6, continues to the
+ * fold.  The fold and the first new point must have the new discretisation's
+ * accuracy, not the interpolant's: NCOL=6 interpolation of the NCOL=4
+ * polynomials is exact, but the NTST=13 mesh is not a refinement of the
+ * NTST=20 one, so the start is off by the old method's interpolation error. */
+static void test_restart_new_mesh(memrun *a, memrun *b)
+{
+  cable_constants c;
+  base_constants_quiet(&c, 20, 4);
+  c.ds = 0.1; c.dsmin = 1e-6; c.dsmax = 0.5; c.nmx = 100;
+  c.nuzr = 1; c.uzr[0].par = 0; c.uzr[0].value = 3.0; c.uzr[0].stop = 1;
+  c.epss = 1e-10;
+  memrun_run(cable_testproblem_bratu(), &c, NULL, a);
+  const cable_solution *uz = memrun_find(a, CABLE_TY_UZ, 0);
+  test_true("restart onto NTST=13 NCOL=6: the lambda = 3 solution stored", uz != NULL);
+  if (!uz) return;
+  base_constants_quiet(&c, 13, 6);
+  c.ds = 0.05; c.dsmin = 1e-6; c.dsmax = 0.2; c.nmx = 60; c.npr = 1;
+  c.ilp = 1; c.rl1 = 10.0;
+  c.epss = 1e-10;
+  memrun_run(cable_testproblem_bratu(), &c, uz, b);
+  const cable_solution *lp = memrun_find(b, CABLE_TY_LP, 0);
+  test_true("restart onto NTST=13 NCOL=6: the fold is found", lp != NULL);
+  /* NTST=13, NCOL=6: eigenvalue-type error O(h^(2 NCOL)) = 13^-12 ~ 4e-14 times
+     a modest constant; location to EPSS = 1e-10 of the step: the same 1e-9
+     bound as at NTST=20, NCOL=4 (test_engine_bvp.c) */
+  if (lp) {
+    test_int("restart onto NTST=13 NCOL=6: the stored fold has the new NTST", lp->ntst, 13);
+    test_int("restart onto NTST=13 NCOL=6: the stored fold has the new NCOL", lp->ncol, 6);
+    test_abs("restart onto NTST=13 NCOL=6: fold lambda*", lp->par[0], 3.513830719125162, 1e-9);
+  }
+  /* the first computed point (solution 1; 0 is the restart itself) on the
+     lower branch: mesh-point error at the new method's level, O(h^12) (13^-12
+     ~ 4e-14 times the derivative growth: < 1e-11; measured 2e-15), against
+     the interpolated start's O(h^5) of NCOL=4 between the old mesh points
+     (measured 7e-10 at the new mesh points) */
+  const cable_solution *first = b->nsol > 1 ? b->sol[1] : NULL;
+  if (first) {
+    char what[128];
+    snprintf(what, sizeof what, "restart onto NTST=13 NCOL=6: first new point (lambda = %.4f) has the new method's accuracy",
+             first->par[0]);
+    test_le(what, bratu_mesh_error(first), 1e-11);
+  } else {
+    test_true("restart onto NTST=13 NCOL=6: a point computed", 0);
+  }
+  memrun_free(a);
+  memrun_free(b);
 }
 
 /* Bratu, but FUNC fails beyond lambda = limit: fatal (< 0) or recoverable (> 0). */
@@ -365,6 +432,12 @@ int main(void)
   test_stored_after_adapt(r);
   test_stiff();
   test_variants();
+  {
+    memrun *a = calloc(1, sizeof *a), *b = calloc(1, sizeof *b);
+    if (a && b) test_restart_new_mesh(a, b);
+    free(a);
+    free(b);
+  }
   test_failures(r);
   test_domain_at_mesh_points(r);
   free(r);
