@@ -18,6 +18,7 @@
 #include <stdlib.h>
 
 #include "cable_constants.h"
+#include "colloc_basis.h"
 #include "engine_util.h"
 #include "harness.h"
 #include "test_problems.h"
@@ -258,6 +259,60 @@ static double bratu_error(memrun *r, int ntst, int ncol)
   return err;
 }
 
+/* The per-solution error estimate (err_est, cont_mesh.c) against the true
+ * max-norm error of the collocation solution over [0,1] (the piecewise
+ * polynomial sampled at ERR_SAMPLES + 1 points per interval against Bratu's
+ * closed form) at lambda = 1, NCOL = 2..7, three meshes each.  Measured
+ * ratios estimate / true: 1.04 (NTST=4, NCOL=3) to 8.4 (NTST=4, NCOL=7).
+ * The estimate is kappa h^(NCOL+1) |u^(NCOL+1)| from divided differences of
+ * the NCOL-th derivative, i.e. the interpolation error of the exact solution
+ * at equally spaced nodes; the collocation error's own constant differs from
+ * kappa by an NCOL-dependent factor, hence the spread.  Stated factor: the
+ * estimate lies between 1/2 and 10 times the true error (it is conservative,
+ * or at worst a factor 2 optimistic). */
+#define ERR_SAMPLES 50
+static void test_error_estimate(memrun *r)
+{
+  static const int meshes[6][3] = {{8, 16, 32}, {4, 8, 16}, {4, 8, 12}, {3, 5, 8}, {2, 3, 5}, {2, 3, 4}};
+  double lo = INFINITY, hi = 0;
+  for (int ncol = 2; ncol <= 7; ncol++)
+    for (int q = 0; q < 3; q++) {
+      int ntst = meshes[ncol - 2][q];
+      cable_constants c;
+      engine_constants(&c, ntst, ncol);
+      c.ds = 0.1; c.dsmin = 1e-6; c.dsmax = 0.2; c.nmx = 100;
+      c.isp = 0; c.ilp = 0;
+      c.nuzr = 1;
+      c.uzr[0].par = 0; c.uzr[0].value = 1.0; c.uzr[0].stop = 1;
+      c.epss = 1e-10;
+      memrun_run(cable_testproblem_bratu(), &c, NULL, r);
+      const cable_solution *s = memrun_find(r, CABLE_TY_UZ, 0);
+      if (!s) {
+        test_true("error estimate: solution at lambda = 1", 0);
+        memrun_free(r);
+        continue;
+      }
+      double lam = s->par[0], th = cable_bratu_theta(lam), err = 0;
+      for (int j = 0; j < ntst; j++) {
+        double t0 = s->t[j * ncol], t1 = s->t[(j + 1) * ncol];
+        for (int k = 0; k <= ERR_SAMPLES; k++) {
+          double t = t0 + (t1 - t0) * k / ERR_SAMPLES, u[2];
+          colloc_interp(2, ntst, ncol, s->t, s->u, t, u);
+          err = fmax(err, fabs(u[0] - cable_bratu_exact(lam, th, t)));
+        }
+      }
+      double ratio = s->err_est / err;
+      lo = fmin(lo, ratio);
+      hi = fmax(hi, ratio);
+      char what[128];
+      snprintf(what, sizeof what, "error estimate NTST=%d NCOL=%d: estimate %.3e / true max error %.3e = %.2f in [0.5, 10]",
+               ntst, ncol, s->err_est, err, ratio);
+      test_true(what, ratio >= 0.5 && ratio <= 10.0);
+      memrun_free(r);
+    }
+  printf("error estimate / true error over all meshes: %.2f .. %.2f\n", lo, hi);
+}
+
 static void test_superconvergence(memrun *r)
 {
   /* mesh sizes chosen so that errors stay well above round-off (1e-14) */
@@ -414,6 +469,7 @@ int main(void)
   test_elastica_fixed_steps(r);
   test_integral_condition(r);
   test_superconvergence(r);
+  test_error_estimate(r);
   test_double_bp(r);
   free(r);
   return test_summary();
