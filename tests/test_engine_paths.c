@@ -3,6 +3,7 @@
  *  - the stiff dichotomy u'' = k^2 u (k up to 60) is solved to 1e-10 relative at
  *    NTST = 50, and the determinant sign stays constant along the k continuation;
  *  - condensation vs KLU, analytic vs finite-difference Jacobians: same points;
+ *  - no allocation inside the Newton iteration (counted malloc calls);
  *  - restart from a stored label reproduces the next points; a restart onto
  *    another NTST and NCOL reaches the fold with the new mesh's accuracy;
  *  - failures: a fatal callback, a recoverable one down to DSMIN, a
@@ -11,6 +12,9 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
 
 #include "cable_constants.h"
 #include "colloc_newton.h"
@@ -18,6 +22,53 @@
 #include "engine_util.h"
 #include "harness.h"
 #include "test_problems.h"
+
+/* Counting allocations: this program's malloc family forwards to glibc's and
+ * counts the calls, so that a test can assert that a code region allocates
+ * nothing (an allocation freed again before the region ends would escape a
+ * heap-size comparison).  malloc has no context argument, so the counter is
+ * a file-level variable, used by test_newton_no_alloc only.  Under
+ * AddressSanitizer (which must own malloc) the interposition is left out and
+ * only the net heap size (mallinfo2) is compared. */
+#if defined(__GLIBC__) && !defined(__SANITIZE_ADDRESS__)
+#define COUNT_ALLOCS 1
+static long alloc_calls;
+extern void *__libc_malloc(size_t n);
+extern void *__libc_calloc(size_t n, size_t size);
+extern void *__libc_realloc(void *p, size_t n);
+extern void *__libc_memalign(size_t align, size_t n);
+extern void __libc_free(void *p);
+void *malloc(size_t n)
+{
+  alloc_calls++;
+  return __libc_malloc(n);
+}
+void *calloc(size_t n, size_t size)
+{
+  alloc_calls++;
+  return __libc_calloc(n, size);
+}
+void *realloc(void *p, size_t n)
+{
+  alloc_calls++;
+  return __libc_realloc(p, n);
+}
+int posix_memalign(void **p, size_t align, size_t n)
+{
+  alloc_calls++;
+  *p = __libc_memalign(align, n);
+  return *p || n == 0 ? 0 : 12; /* ENOMEM */
+}
+void *aligned_alloc(size_t align, size_t n)
+{
+  alloc_calls++;
+  return __libc_memalign(align, n);
+}
+void free(void *p) { __libc_free(p); }
+#else
+#define COUNT_ALLOCS 0
+static long alloc_calls; /* stays 0: nothing counts */
+#endif
 
 /* no special-point detection unless a test asks */
 static void base_constants_quiet(cable_constants *c, int ntst, int ncol)
@@ -205,6 +256,84 @@ static void test_newton_solvers(void)
   test_le("condensation vs KLU: same Newton iterates (max difference of the solutions)", d, 1e-12);
   free(x[0]);
   free(x[1]);
+}
+
+/* No allocation inside the Newton iteration: after a warm-up solve (KINSOL
+ * sets up its linear solver on the first call), a second colloc_newton_solve
+ * from another start (several iterations: residuals, Jacobians,
+ * factorisations, solves) makes no malloc-family call and leaves the heap
+ * size unchanged.  Condensation and KLU, analytic and finite-difference
+ * Jacobians, full and modified Newton. */
+static void test_newton_no_alloc(void)
+{
+  static const struct {
+    cable_linsolver ls;
+    int jac, nwtn;
+    const char *name;
+  } cases[] = {{CABLE_LINSOLVER_CONDENSE, 1, 8, "condensation, JAC=1, full Newton"},
+               {CABLE_LINSOLVER_CONDENSE, 0, 8, "condensation, JAC=0, full Newton"},
+               {CABLE_LINSOLVER_CONDENSE, 1, 1, "condensation, JAC=1, NWTN=1 (modified Newton)"},
+               {CABLE_LINSOLVER_KLU, 1, 8, "KLU, JAC=1, full Newton"}};
+  /* KLU is the reference path and is not held to this: SUNDIALS' KLU wrapper
+     (SUNLinSolInitialize_KLU, called by every KINSol call) forces a new
+     symbolic analysis and factorisation (klu_analyze, klu_factor: allocating)
+     at the first setup of each solve; the count is printed, not tested. */
+  for (size_t q = 0; q < sizeof cases / sizeof cases[0]; q++) {
+    cable_constants c;
+    base_constants_quiet(&c, 20, 4);
+    c.linsolver = cases[q].ls;
+    c.jac = cases[q].jac;
+    c.itnw = 12;
+    c.nwtn = cases[q].nwtn;
+    int icp[1] = {0}, st;
+    colloc_system *s = colloc_system_alloc(cable_testproblem_bratu(), &c, 20, 4, icp, 1, &st);
+    colloc_newton *nw = s ? colloc_newton_alloc(s, &c, &st) : NULL;
+    double *x = s ? calloc((size_t)s->n, sizeof *x) : NULL;
+    if (!nw || !x) {
+      test_true("newton (allocation test) setup", 0);
+      free(x);
+      colloc_newton_free(nw);
+      colloc_system_free(s);
+      return;
+    }
+    int n = s->n;
+    s->closing = COLLOC_CLOSE_FIXPAR;
+    s->fixval = 2.0;
+    x[n - 1] = 2.0;
+    int warm = colloc_newton_solve(nw, x);
+    for (int i = 0; i < n; i++) x[i] = 0.0;
+    s->fixval = 3.0;
+    x[n - 1] = 3.0;
+#if defined(__GLIBC__)
+    struct mallinfo2 m0 = mallinfo2();
+#endif
+    long calls0 = COUNT_ALLOCS ? alloc_calls : 0;
+    int rc = colloc_newton_solve(nw, x);
+    long calls = COUNT_ALLOCS ? alloc_calls - calls0 : 0;
+#if defined(__GLIBC__)
+    struct mallinfo2 m1 = mallinfo2();
+    long grown = (long)m1.uordblks - (long)m0.uordblks;
+#else
+    long grown = 0;
+#endif
+    char what[200];
+    snprintf(what, sizeof what, "Newton (%s): warm-up and measured solves converge (%d iterations)", cases[q].name,
+             colloc_newton_iterations(nw));
+    test_true(what, warm == CABLE_SUCCESS && rc == CABLE_SUCCESS && colloc_newton_iterations(nw) >= 3);
+    if (cases[q].ls == CABLE_LINSOLVER_KLU) {
+      printf("  Newton (%s): %ld allocation calls, heap in use %+ld bytes (reference path, not tested)\n",
+             cases[q].name, calls, grown);
+    } else {
+      snprintf(what, sizeof what, "Newton (%s): no malloc/calloc/realloc call inside the iteration%s", cases[q].name,
+               COUNT_ALLOCS ? "" : " (not counted: sanitizer build)");
+      test_int(what, calls, 0);
+      snprintf(what, sizeof what, "Newton (%s): heap in use unchanged (mallinfo2 uordblks)", cases[q].name);
+      test_int(what, grown, 0);
+    }
+    free(x);
+    colloc_newton_free(nw);
+    colloc_system_free(s);
+  }
 }
 
 static void test_variants(void)
@@ -432,6 +561,7 @@ int main(void)
   test_stored_after_adapt(r);
   test_stiff();
   test_variants();
+  test_newton_no_alloc();
   {
     memrun *a = calloc(1, sizeof *a), *b = calloc(1, sizeof *b);
     if (a && b) test_restart_new_mesh(a, b);
