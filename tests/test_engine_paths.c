@@ -4,6 +4,7 @@
  *    NTST = 50, and the determinant sign stays constant along the k continuation;
  *  - condensation vs KLU, analytic vs finite-difference Jacobians: same points;
  *  - no allocation inside the Newton iteration (counted malloc calls);
+ *  - modified Newton: NWTN factorisations, then chord iterations;
  *  - restart from a stored label reproduces the next points; a restart onto
  *    another NTST and NCOL reaches the fold with the new mesh's accuracy;
  *  - failures: a fatal callback, a recoverable one down to DSMIN, a
@@ -283,7 +284,7 @@ static void test_newton_no_alloc(void)
     base_constants_quiet(&c, 20, 4);
     c.linsolver = cases[q].ls;
     c.jac = cases[q].jac;
-    c.itnw = 12;
+    c.itnw = 30;
     c.nwtn = cases[q].nwtn;
     int icp[1] = {0}, st;
     colloc_system *s = colloc_system_alloc(cable_testproblem_bratu(), &c, 20, 4, icp, 1, &st);
@@ -334,6 +335,73 @@ static void test_newton_no_alloc(void)
     colloc_newton_free(nw);
     colloc_system_free(s);
   }
+}
+
+/* Modified Newton (NWTN < ITNW): NWTN factorisations, then chord iterations
+ * with the last one (AUTO's rule), converging to the full-Newton solution.
+ * Bratu at lambda = 3 from u = 0 (a poor start: several iterations). */
+static void test_modified_newton(void)
+{
+  static const int nwtns[] = {30, 3, 2, 1};
+  double *ref = NULL;
+  int n = 0, full_iters = 0;
+  for (size_t q = 0; q < sizeof nwtns / sizeof nwtns[0]; q++) {
+    cable_constants c;
+    base_constants_quiet(&c, 20, 4);
+    c.itnw = 30;
+    c.nwtn = nwtns[q];
+    c.epsl = c.epsu = 1e-10;
+    int icp[1] = {0}, st;
+    colloc_system *s = colloc_system_alloc(cable_testproblem_bratu(), &c, 20, 4, icp, 1, &st);
+    colloc_newton *nw = s ? colloc_newton_alloc(s, &c, &st) : NULL;
+    double *x = s ? calloc((size_t)s->n, sizeof *x) : NULL;
+    if (!nw || !x) {
+      test_true("modified Newton setup", 0);
+      free(x); colloc_newton_free(nw); colloc_system_free(s);
+      break;
+    }
+    n = s->n;
+    s->closing = COLLOC_CLOSE_FIXPAR;
+    s->fixval = 3.0;
+    x[n - 1] = 3.0;
+    int rc = colloc_newton_solve(nw, x);
+    int it = colloc_newton_iterations(nw), ns = colloc_newton_setups(nw);
+    char what[160];
+    snprintf(what, sizeof what, "NWTN=%d ITNW=30: converges (%d iterations, %d factorisations)", nwtns[q], it, ns);
+    test_true(what, rc == CABLE_SUCCESS);
+    if (q == 0) {
+      snprintf(what, sizeof what, "NWTN >= ITNW (full Newton): one factorisation per iteration");
+      test_int(what, ns, it);
+      full_iters = it;
+      ref = x;
+      x = NULL;
+    } else {
+      /* NWTN factorisations, then chord iterations (more of them than full
+         Newton needs); one more when the chord phase ends by the step test
+         (KINSOL re-factors before accepting it: colloc_newton.h) */
+      snprintf(what, sizeof what, "NWTN=%d: NWTN or NWTN+1 factorisations (%d) for %d iterations", nwtns[q], ns, it);
+      test_true(what, ns >= nwtns[q] && ns <= nwtns[q] + 1 && ns < it);
+      snprintf(what, sizeof what, "NWTN=%d: the chord method needs more iterations (%d) than full Newton (%d)", nwtns[q],
+               it, full_iters);
+      test_true(what, it > full_iters);
+      double d = 0;
+      for (int i = 0; ref && i < n; i++) d = fmax(d, fabs(x[i] - ref[i]));
+      /* both stop when the last correction is below 1e-10 (1 + |x|); the chord
+         method's linear rate leaves at most a few times that */
+      snprintf(what, sizeof what, "NWTN=%d: same solution as full Newton", nwtns[q]);
+      test_le(what, d, 1e-8);
+      /* the factorisation is offered for the tangent exactly when KINSOL's
+         final re-factorisation made it for the last iteration */
+      snprintf(what, sizeof what, "NWTN=%d: the last factorisation is offered for the tangent iff it is fresh", nwtns[q]);
+      struct abd_solver *abd;
+      colloc_jac *J;
+      test_int(what, colloc_newton_factorization(nw, &abd, &J) == 0, ns == nwtns[q] + 1);
+    }
+    free(x);
+    colloc_newton_free(nw);
+    colloc_system_free(s);
+  }
+  free(ref);
 }
 
 static void test_variants(void)
@@ -562,6 +630,7 @@ int main(void)
   test_stiff();
   test_variants();
   test_newton_no_alloc();
+  test_modified_newton();
   {
     memrun *a = calloc(1, sizeof *a), *b = calloc(1, sizeof *b);
     if (a && b) test_restart_new_mesh(a, b);
