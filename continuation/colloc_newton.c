@@ -22,6 +22,10 @@
 /* After KINSOL's small-step exit the residual must be this small relative to
  * 1 + max|x|: a small step with a large residual is stagnation, not convergence. */
 #define COLLOC_NEWTON_RES_ACCEPT 1.0e-6
+/* KINSOL caps a Newton step at 1000 times the scaled start norm by default;
+ * cable's steps are limited by ITNW and the continuation's step control, so
+ * the cap is lifted to a value no step reaches. */
+#define COLLOC_NEWTON_NO_STEP_CAP 1.0e300
 
 struct colloc_newton {
   colloc_system *sys;            /* not owned */
@@ -126,7 +130,7 @@ colloc_newton *colloc_newton_alloc(colloc_system *sys, const cable_constants *c,
      = 2 gave 3 factorisations on Bratu from u = 0) */
   if (KINSetNoResMon(nw->kin, SUNTRUE) != KIN_SUCCESS) goto fail;
   /* the Newton step is limited by ITNW and DS control, not by KINSOL's step cap */
-  if (KINSetMaxNewtonStep(nw->kin, 1e300) != KIN_SUCCESS) goto fail;
+  if (KINSetMaxNewtonStep(nw->kin, COLLOC_NEWTON_NO_STEP_CAP) != KIN_SUCCESS) goto fail;
   *status = CABLE_SUCCESS;
   return nw;
 fail:

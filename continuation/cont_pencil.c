@@ -30,10 +30,9 @@
 
 #include "cont_impl.h"
 
-/* Arnoldi steps.  On the elastica's trivial branch (J affine in lambda) 10
- * steps place the three branch points below lambda = 100 to 1e-3 from a
- * single 100-wide step, 6 steps already separate a pair (test_engine_bvp.c
- * checks DS = 35, 40, 45); 12 leave a margin for curved branches. */
+/* Arnoldi steps.  The elastica tests of test_engine_bvp.c (fixed DS = 35,
+ * 40, 45, 99 on the trivial branch) pass with 6 or more and fail with 4 (a
+ * pair missed again); 12 leave a factor 2 for curved branches. */
 #define CONT_PENCIL_KRYLOV 12
 /* A new Krylov vector shorter than this (relative to the image's norm before
  * orthogonalisation) means the space is invariant: stop early. */

@@ -23,6 +23,11 @@
 
 #include "cont_impl.h"
 
+/* The Illinois modification of regula falsi: when the same end of the bracket
+ * is kept twice, its function value is scaled by this factor (Dowell and
+ * Jarratt 1971), which restores superlinear convergence. */
+#define CONT_ILLINOIS 0.5
+
 static double param_value(const cable_cont *cc, const double *x, int k)
 {
   const double *p = x + (cc->n - cc->nfpr);
@@ -89,19 +94,28 @@ int cont_locate(cable_cont *cc, int type, int which, double seed)
   double s0 = 0.0, f0 = test_value(&cc->tf, type, which);
   double s1 = cc->ds_used, f1 = test_value(&cc->tft, type, which);
   double far = f1, sprev = s1;
+  /* the last two evaluated points, for the secant step */
+  double sp = s0, fp = f0, sq = s1, fq = f1;
   int side = 0;
   cont_tests ts = cc->tft;
   double *xs = cc->w1, *xds = cc->w2;
   const char *what = type == CABLE_TY_LP ? "fold" : type == CABLE_TY_BP ? "branch point" : "user zero";
   double tol = cc->c.epss * fabs(cc->ds_used);
   for (int it = 0; it < cc->c.itmx; it++) {
-    double s = s1 - f1 * (s1 - s0) / (f1 - f0);
     double lo = fmin(s0, s1), hi = fmax(s0, s1);
-    /* the pencil test's prediction is exact for a matrix affine in the
-       arclength and much better than a secant through far-apart values of the
-       kinked sigma_1 (regula falsi from the step's ends needed 9 iterations to
-       reach 4e-8 on the elastica's BP1 from a 35-wide step) */
+    /* Dekker's rule: the secant through the last two iterates, kept inside
+       the bracket; else the Illinois regula falsi on the bracket; else its
+       middle.  The secant through the latest iterates, not the bracket's
+       ends, matters when an end is itself a located special point: its test
+       value is ~0 (the previous BP) and a regula falsi through it crawls.
+       The first iterate is the pencil test's prediction when there is one:
+       exact for a matrix affine in the arclength, and far better than a
+       secant through far-apart values of the kinked sigma_1 (regula falsi
+       from the step's ends needed more than ITMX = 9 iterations for the
+       elastica's BP1 from a 35-wide step). */
+    double s = fq != fp ? sq - fq * (sq - sp) / (fq - fp) : (double)NAN;
     if (it == 0 && seed > lo && seed < hi) s = seed;
+    if (!(s > lo && s < hi)) s = s1 - f1 * (s1 - s0) / (f1 - f0);
     if (!(s > lo && s < hi)) s = 0.5 * (s0 + s1);
     int rc = cont_correct(cc, cc->x, cc->xdot, s, xs);
     if (rc == CABLE_SUCCESS) rc = cont_tangent(cc, xs, cc->xdot, xds, &ts);
@@ -126,6 +140,8 @@ int cont_locate(cable_cont *cc, int type, int which, double seed)
     double f = test_value(&ts, type, which);
     int done = nudged || fabs(s - sprev) <= tol || f == 0.0;
     sprev = s;
+    sp = sq; fp = fq;
+    sq = s; fq = f;
     if (done) {
       memcpy(cc->xt, xs, (size_t)cc->n * sizeof *xs);
       if (type == CABLE_TY_BP)
@@ -155,11 +171,11 @@ int cont_locate(cable_cont *cc, int type, int which, double seed)
     }
     if ((f > 0) == (f1 > 0)) {
       s1 = s; f1 = f;
-      if (side == 1) f0 *= 0.5;
+      if (side == 1) f0 *= CONT_ILLINOIS;
       side = 1;
     } else {
       s0 = s; f0 = f;
-      if (side == -1) f1 *= 0.5;
+      if (side == -1) f1 *= CONT_ILLINOIS;
       side = -1;
     }
   }
