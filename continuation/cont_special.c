@@ -5,16 +5,21 @@
  *       [F_x; theta xdot^T], sign from its determinant (from the stable
  *       factorisation: no overflow, no end-to-end products);
  *   UZ: PAR(k) - value.
- * A sign change between two accepted points is located by regula falsi
- * with the Illinois modification on the arclength from the first point,
- * until the arclength correction is below EPSS * |ds| (AUTO's EPSS).
+ * A sign change between two accepted points is located on the arclength
+ * from the first point by Dekker's rule (secant through the last two
+ * iterates, safeguarded by the bracket; Illinois regula falsi and bisection
+ * as fallbacks), starting from the pencil test's prediction for a BP, until
+ * the arclength correction is below EPSS * |ds| (AUTO's EPSS).
  *
- * Second test (cont_check_dip): a branch point where two singular values
- * vanish together (a double BP, e.g. from a symmetry), or two simple BPs
- * inside one step, leaves the determinant's sign unchanged.  Both show as a
- * dip of the smallest singular value sigma_1 between three consecutive
- * points; the dip is located by Brent minimisation of sigma_1 along the
- * branch and labelled BP when sigma_1 nearly vanishes there. */
+ * Second test (cont_check_dip, cont_dip_in_step): a branch point where two
+ * singular values vanish together (a double BP, e.g. from a symmetry), or
+ * two simple BPs inside one step, leaves the determinant's sign unchanged.
+ * Both show as a dip of the smallest singular value sigma_1, between three
+ * consecutive points or at a double crossing the pencil test predicts inside
+ * the step; the dip is located by Brent minimisation of sigma_1 along the
+ * branch and labelled BP when sigma_1 nearly vanishes there.  (Pairs of
+ * simple BPs in one step are normally separated by the pencil test first,
+ * cont_pencil.c.) */
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_min.h>
 #include <math.h>
