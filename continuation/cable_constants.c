@@ -1,5 +1,6 @@
 #include "cable_constants.h"
 
+#include <math.h>
 #include <string.h>
 
 void cable_constants_init(cable_constants *c)
@@ -16,6 +17,6 @@ void cable_constants_init(cable_constants *c)
   c->thu_default = 1.0;
   c->iid = 2; c->iis = 3;
   c->linsolver = CABLE_LINSOLVER_CONDENSE;
-  c->nsv = 0; c->bpsym = 0;
+  c->nsv = 0; c->bpsym = 0; c->bpangle = (double)NAN;
   c->torus_p = 0; c->hand = 1;
 }

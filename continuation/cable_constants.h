@@ -60,6 +60,8 @@ typedef struct cable_constants {
   cable_linsolver linsolver;              /* LINSOLVER = condense | klu */
   int nsv;                                /* NSV: singular values tracked for BP test (0: off) */
   int bpsym;                              /* BPDIR: kernel vector index for 2-d kernels */
+  double bpangle;                         /* BPANGLE: direction in a 2-d kernel, degrees from
+                                             the canonical e1 towards e2 (NAN: use BPDIR) */
   int torus_p;                            /* TORUS: braid start, (p,2) torus knot (odd p) or
                                              link (even p); 0: the two-ring start */
   int hand;                               /* HAND: +1 right-handed, -1 left-handed */

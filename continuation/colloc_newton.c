@@ -22,6 +22,10 @@
 /* After KINSOL's small-step exit the residual must be this small relative to
  * 1 + max|x|: a small step with a large residual is stagnation, not convergence. */
 #define COLLOC_NEWTON_RES_ACCEPT 1.0e-6
+/* KINSOL caps a Newton step at 1000 times the scaled start norm by default;
+ * cable's steps are limited by ITNW and the continuation's step control, so
+ * the cap is lifted to a value no step reaches. */
+#define COLLOC_NEWTON_NO_STEP_CAP 1.0e300
 
 struct colloc_newton {
   colloc_system *sys;            /* not owned */
@@ -35,6 +39,9 @@ struct colloc_newton {
   int itnw, nwtn;
   double eps;
   int iters;
+  int nsetup;                    /* factorisations (Jacobian setups) in the last solve */
+  int phase_start;               /* iterations before the current KINSol call */
+  int last_setup_iter;           /* the iteration (1-based, whole solve) the last factorisation was made for */
   double resnorm;
   double *F;                     /* residual work vector */
   char msg[256];
@@ -51,6 +58,10 @@ static int kin_jacfn(N_Vector x, N_Vector fx, SUNMatrix A, void *data, N_Vector 
 {
   (void)fx; (void)t1; (void)t2;
   colloc_newton *nw = data;
+  long nni = 0;
+  KINGetNumNonlinSolvIters(nw->kin, &nni); /* the iteration this setup serves */
+  nw->nsetup++;
+  nw->last_setup_iter = nw->phase_start + (int)nni;
   int rc = colloc_system_jacobian(nw->sys, N_VGetArrayPointer(x), nw->J);
   if (rc != 0) return rc > 0 ? 1 : -1;
   if (nw->kind == CABLE_LINSOLVER_KLU) return colloc_sparse_fill(nw->J, A) == 0 ? 0 : -1;
@@ -114,8 +125,12 @@ colloc_newton *colloc_newton_alloc(colloc_system *sys, const cable_constants *c,
   if (KINSetLinearSolver(nw->kin, nw->LS, nw->A) != KIN_SUCCESS) goto fail;
   if (KINSetJacFn(nw->kin, kin_jacfn) != KIN_SUCCESS) goto fail;
   if (KINSetScaledStepTol(nw->kin, nw->eps) != KIN_SUCCESS) goto fail;
+  /* AUTO's chord iterations keep the factorisation to ITNW: KINSOL's residual
+     monitoring would re-factor when the residual falls slowly (measured: NWTN
+     = 2 gave 3 factorisations on Bratu from u = 0) */
+  if (KINSetNoResMon(nw->kin, SUNTRUE) != KIN_SUCCESS) goto fail;
   /* the Newton step is limited by ITNW and DS control, not by KINSOL's step cap */
-  if (KINSetMaxNewtonStep(nw->kin, 1e300) != KIN_SUCCESS) goto fail;
+  if (KINSetMaxNewtonStep(nw->kin, COLLOC_NEWTON_NO_STEP_CAP) != KIN_SUCCESS) goto fail;
   *status = CABLE_SUCCESS;
   return nw;
 fail:
@@ -130,12 +145,22 @@ static double max_abs(const double *v, int n)
   return m;
 }
 
-/* One KINSol call: at most maxit iterations, a new factorisation every msbset. */
-static int kin_phase(colloc_newton *nw, int maxit, long msbset, int *iters)
+/* One KINSol call: at most maxit iterations, a new factorisation every
+ * msbset; reuse = 1 keeps the previous call's factorisation for the first
+ * iteration (KINSetNoInitSetup: without it KINSol factors on entry, which
+ * made NWTN + 1 factorisations before any chord iteration).  KINSOL still
+ * factors once more when a chord step passes the step test with an old
+ * factorisation (KINStop retries the iteration with a fresh one before it
+ * accepts a small step), so a solve that ends by the step test after chord
+ * iterations makes NWTN + 1 factorisations, and its last step is a full
+ * Newton step. */
+static int kin_phase(colloc_newton *nw, int maxit, long msbset, int reuse, int *iters)
 {
   long nni = 0;
+  nw->phase_start = *iters;
   KINSetNumMaxIters(nw->kin, maxit);
   KINSetMaxSetupCalls(nw->kin, msbset);
+  KINSetNoInitSetup(nw->kin, reuse ? SUNTRUE : SUNFALSE);
   int flag = KINSol(nw->kin, nw->x, KIN_NONE, nw->uscale, nw->fscale);
   KINGetNumNonlinSolvIters(nw->kin, &nni);
   *iters += (int)nni;
@@ -153,11 +178,15 @@ int colloc_newton_solve(colloc_newton *nw, double *x)
   KINSetFuncNormTol(nw->kin, COLLOC_NEWTON_FNORM_REL * scale);
   nw->msg[0] = '\0';
   nw->iters = 0;
+  nw->nsetup = 0;
+  nw->last_setup_iter = 0;
   sys->last_callback = 0;
+  /* AUTO's NWTN: full Newton (a factorisation per iteration) for the first
+     NWTN iterations, then the chord method with the last factorisation */
   int full = nw->nwtn < nw->itnw ? nw->nwtn : nw->itnw;
-  int flag = kin_phase(nw, full, 1, &nw->iters);
+  int flag = kin_phase(nw, full, 1, 0, &nw->iters);
   if (flag == KIN_MAXITER_REACHED && nw->itnw > full)
-    flag = kin_phase(nw, nw->itnw - full, nw->itnw, &nw->iters);
+    flag = kin_phase(nw, nw->itnw - full, nw->itnw, 1, &nw->iters);
   int rc = colloc_system_residual(sys, xv, nw->F);
   nw->resnorm = rc == 0 ? max_abs(nw->F, n) : HUGE_VAL;
   if (flag < 0 || rc != 0) {
@@ -176,12 +205,15 @@ int colloc_newton_solve(colloc_newton *nw, double *x)
 }
 
 int colloc_newton_iterations(const colloc_newton *nw) { return nw->iters; }
+int colloc_newton_setups(const colloc_newton *nw) { return nw->nsetup; }
 double colloc_newton_residual(const colloc_newton *nw) { return nw->resnorm; }
 const char *colloc_newton_message(const colloc_newton *nw) { return nw->msg; }
 
 int colloc_newton_factorization(colloc_newton *nw, struct abd_solver **abd, colloc_jac **J)
 {
-  if (nw->kind != CABLE_LINSOLVER_CONDENSE || nw->iters < 1) return -1;
+  /* only a factorisation made for the last iteration is at the last iterate
+     but one; after chord iterations it is older by more than the tolerance */
+  if (nw->kind != CABLE_LINSOLVER_CONDENSE || nw->iters < 1 || nw->last_setup_iter != nw->iters) return -1;
   *abd = SUNLinSol_Colloc_Solver(nw->LS);
   *J = nw->J;
   return *abd ? 0 : -1;

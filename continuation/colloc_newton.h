@@ -8,7 +8,11 @@
  * EPS = min(EPSU, EPSL), and the residual has decreased below
  * COLLOC_NEWTON_RES_ACCEPT relative to its scale; full Newton (a new
  * factorisation every iteration) for the first NWTN iterations, then the
- * factorisation is reused (KINSOL's modified Newton) up to ITNW iterations. */
+ * factorisation of iteration NWTN is reused (the chord method, KINSOL's
+ * modified Newton) up to ITNW iterations, as in AUTO: min(iterations, NWTN)
+ * factorisations, plus one when the chord iterations end by the step test
+ * (KINSOL re-factors before it accepts a small step made with an old
+ * factorisation; AUTO does not). */
 #ifndef CABLE_COLLOC_NEWTON_H
 #define CABLE_COLLOC_NEWTON_H
 
@@ -26,6 +30,7 @@ void colloc_newton_free(colloc_newton *nw);
 int colloc_newton_solve(colloc_newton *nw, double *x);
 
 int colloc_newton_iterations(const colloc_newton *nw);  /* of the last solve */
+int colloc_newton_setups(const colloc_newton *nw);      /* factorisations in the last solve */
 double colloc_newton_residual(const colloc_newton *nw); /* max-norm of F at the last iterate */
 const char *colloc_newton_message(const colloc_newton *nw);
 
@@ -33,7 +38,9 @@ struct abd_solver;
 /* The structured factorisation KINSOL used in the last solve, and the matrix
  * it factored (at the last iterate but one): the continuation reuses it for
  * the tangent, whose system is exactly that Newton matrix.  0 when available
- * (LINSOLVER=condense and at least one iteration), -1 otherwise. */
+ * (LINSOLVER=condense, at least one iteration, and the last factorisation
+ * made for the last iteration: after a chord iteration it is older), -1
+ * otherwise. */
 int colloc_newton_factorization(colloc_newton *nw, struct abd_solver **abd, colloc_jac **J);
 
 #endif

@@ -39,6 +39,7 @@ colloc_system *colloc_system_alloc(const cable_problem *pb, const cable_constant
   s->use_jac_func = jac != 0 && pb->func_has_jac;
   s->use_jac_bcnd = jac != 0 && pb->bcnd_has_jac;
   s->use_jac_icnd = jac != 0 && pb->icnd_has_jac;
+  s->fd_par = jac == -1;
   if (colloc_basis_init(&s->basis, ncol) != CABLE_SUCCESS) {
     free(s);
     return NULL;
@@ -240,18 +241,23 @@ int colloc_system_residual(colloc_system *s, const double *x, double *F)
 static int func_derivs(colloc_system *s, const double *u, double *dfdu, double *dfdp)
 {
   int nd = s->ndim;
-  if (s->use_jac_func) return call_func(s, u, 2, s->w_f, dfdu, dfdp);
+  if (s->use_jac_func && !s->fd_par) return call_func(s, u, 2, s->w_f, dfdu, dfdp);
   int rc;
-  double *up = s->w_du; /* free during Jacobian assembly */
-  memcpy(up, u, (size_t)nd * sizeof *up);
-  for (int l = 0; l < nd; l++) {
-    double d = COLLOC_FD_REL_STEP * (1.0 + fabs(u[l]));
-    up[l] = u[l] + d;
-    if ((rc = call_func(s, up, 0, s->w_fp, NULL, NULL)) != 0) return rc;
-    up[l] = u[l] - d;
-    if ((rc = call_func(s, up, 0, s->w_f, NULL, NULL)) != 0) return rc;
-    up[l] = u[l];
-    for (int i = 0; i < nd; i++) dfdu[i + nd * l] = (s->w_fp[i] - s->w_f[i]) / (2 * d);
+  if (s->use_jac_func) {
+    /* JAC=-1 (AUTO): d f / d u from FUNC, parameter derivatives below */
+    if ((rc = call_func(s, u, 1, s->w_f, dfdu, dfdp)) != 0) return rc;
+  } else {
+    double *up = s->w_du; /* free during Jacobian assembly */
+    memcpy(up, u, (size_t)nd * sizeof *up);
+    for (int l = 0; l < nd; l++) {
+      double d = COLLOC_FD_REL_STEP * (1.0 + fabs(u[l]));
+      up[l] = u[l] + d;
+      if ((rc = call_func(s, up, 0, s->w_fp, NULL, NULL)) != 0) return rc;
+      up[l] = u[l] - d;
+      if ((rc = call_func(s, up, 0, s->w_f, NULL, NULL)) != 0) return rc;
+      up[l] = u[l];
+      for (int i = 0; i < nd; i++) dfdu[i + nd * l] = (s->w_fp[i] - s->w_f[i]) / (2 * d);
+    }
   }
   for (int p = 0; p < s->nfpr; p++) {
     int k = s->icp[p];
@@ -271,15 +277,18 @@ static int bcnd_derivs(colloc_system *s, const double *u0, const double *u1)
 {
   int nd = s->ndim, nb = s->nbc, rc;
   double *dbc = s->w_dbc;
+  int col0 = 0;
   if (s->use_jac_bcnd) {
-    rc = s->pb->bcnd(nd, s->par, s->icp, nb, u0, u1, 2, s->w_fb, dbc, s->pb->params);
-    return rc ? (s->last_callback = rc) : 0;
+    /* JAC=-1: the u columns from BCND, the parameter columns by differences */
+    rc = s->pb->bcnd(nd, s->par, s->icp, nb, u0, u1, s->fd_par ? 1 : 2, s->w_fb, dbc, s->pb->params);
+    if (rc || !s->fd_par) return rc ? (s->last_callback = rc) : 0;
+    col0 = 2 * nd;
   }
   /* perturb a private copy of (u0, u1) */
   double *v0 = s->w_uold, *v1 = s->w_udot;
   memcpy(v0, u0, (size_t)nd * sizeof *v0);
   memcpy(v1, u1, (size_t)nd * sizeof *v1);
-  for (int col = 0; col < 2 * nd + s->nfpr; col++) {
+  for (int col = col0; col < 2 * nd + s->nfpr; col++) {
     double *var, saved;
     int dcol;
     if (col < 2 * nd) {
@@ -307,10 +316,11 @@ static int icnd_derivs(colloc_system *s, const double *x, int j, int m)
 {
   int nd = s->ndim, ni = s->nint, rc;
   double *dint = s->w_dint;
-  if (s->use_jac_icnd) return call_icnd(s, x, j, m, 2, s->w_fi, dint);
-  if ((rc = call_icnd(s, x, j, m, 0, s->w_fi, NULL)) != 0) return rc; /* fills w_u etc. */
+  if (s->use_jac_icnd && !s->fd_par) return call_icnd(s, x, j, m, 2, s->w_fi, dint);
+  /* fills w_u etc.; JAC=-1: also the u columns of dint */
+  if ((rc = call_icnd(s, x, j, m, s->use_jac_icnd ? 1 : 0, s->w_fi, s->use_jac_icnd ? dint : NULL)) != 0) return rc;
   double *u = s->w_u;
-  for (int col = 0; col < nd + s->nfpr; col++) {
+  for (int col = s->use_jac_icnd ? nd : 0; col < nd + s->nfpr; col++) {
     double *var = col < nd ? &u[col] : &s->par[s->icp[col - nd]];
     int dcol = col < nd ? col : nd + s->icp[col - nd];
     double saved = *var, d = COLLOC_FD_REL_STEP * (1.0 + fabs(saved));

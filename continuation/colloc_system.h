@@ -26,6 +26,8 @@ typedef struct colloc_system {
   int n;                      /* unknowns */
   int icp[CABLE_MAX_ICP];     /* free parameters (0-based), nfpr of them */
   int use_jac_func, use_jac_bcnd, use_jac_icnd; /* analytic derivatives in use */
+  int fd_par;                 /* JAC=-1 (AUTO's meaning): analytic derivatives with respect
+                                 to u only, parameter derivatives by central differences */
   colloc_basis basis;
   double *mesh;               /* [ntst+1] */
   double *par;                /* [npar] all parameters; free ones overwritten from x */

@@ -17,6 +17,36 @@
 #define CONT_GROW_FAST 2.0
 #define CONT_GROW 1.3
 #define CONT_SHRINK 0.5
+/* AUTO halves the step after a failed corrector (CONT_FAIL_SHRINK), down to
+ * DSMIN; a step counts as DSMIN when within CONT_DSMIN_SLACK (relative) of
+ * it, so that the repeated halving, floored at DSMIN, ends exactly there in
+ * spite of round-off in fmax/copysign. */
+#define CONT_FAIL_SHRINK 0.5
+#define CONT_DSMIN_SLACK 1.0e-12
+
+/* The pencil test (cont_pencil.c) may shorten one step up to
+ * CONT_PAIR_MAXSPLIT times, each time to the middle of its first two
+ * predicted branch points, when they are more than CONT_PAIR_MINSEP of the
+ * step apart; closer ones are a double branch point (or as good as one for
+ * the step) and are located by minimising sigma_1 (cont_dip_in_step).
+ * Predicted crossings within CONT_PAIR_EDGE of the start of a step that starts
+ * at a located special point are that point itself.  Three splits shrink a
+ * step at most 8-fold; the elastica pairs (DS = 35..45) need one. */
+#define CONT_PAIR_MAXSPLIT 3
+#define CONT_PAIR_MINSEP 1.0e-2
+#define CONT_PAIR_EDGE 1.0e-2
+#define CONT_PAIR_MAXCROSS 8
+
+typedef struct {
+  int n;                          /* predicted crossings in the accepted step */
+  double t[CONT_PAIR_MAXCROSS];   /* their fractions of the step, ascending */
+  int coincident;                 /* the first two are closer than CONT_PAIR_MINSEP */
+  double tmid;                    /* the middle of the first two */
+  int splits;                     /* times the step was shortened */
+  double ds_first;                /* the step before the first split */
+  double ds_split;                /* the step after the last split */
+  int unresolved;                 /* still two separate crossings after the last split */
+} pencil_result;
 
 void cont_set_error(cable_cont *cc, const char *fmt, ...)
 {
@@ -39,6 +69,7 @@ void cable_cont_free(cable_cont *cc)
                  cc->svec, cc->umax, cc->xq, cc->xdotq};
   for (size_t i = 0; i < sizeof v / sizeof v[0]; i++) free(v[i]);
   cable_solution_free(cc->sol);
+  cont_pencil_free(cc);
   free(cc);
 }
 
@@ -108,6 +139,7 @@ cable_cont *cable_cont_alloc(const cable_problem *pb, const cable_constants *c, 
   cc->xt = calloc(n, sizeof(double)); cc->xdott = calloc(n, sizeof(double));
   cc->w1 = calloc(n, sizeof(double)); cc->w2 = calloc(n, sizeof(double)); cc->w3 = calloc(n, sizeof(double));
   cc->svec = calloc(3 * n, sizeof(double)); /* up to three singular vectors (switching) */
+  if (cont_pencil_alloc(cc) != CABLE_SUCCESS) goto fail;
   cc->xq = calloc(n, sizeof(double)); cc->xdotq = calloc(n, sizeof(double));
   cc->umax = calloc((size_t)cc->ndim, sizeof(double));
   cc->sol = cable_solution_alloc(cc->ndim, cc->ntst, cc->ncol, cc->npar, cc->nfpr);
@@ -231,11 +263,12 @@ static int first_point(cable_cont *cc)
   /* test functions with the tangent itself as closing row */
   rc = cont_tangent(cc, cc->x, cc->xdot, cc->w3, &cc->tf);
   if (rc == CABLE_ERR_LINSOLVE && cc->switch_pending) {
-    /* At a branch point [F_x; phi^T] is singular: the old branch's tangent
-       lies in its kernel, and on exactly structured problems (the straight
-       elastica) the factorisation meets an exact zero pivot.  The start has
-       no test-function values then: det sign 0 counts no sign change
-       against the first step (cont_find_event). */
+    /* At a branch point [F_x; theta phi^T] is singular for every phi: the old
+       tangent stays in its kernel (and at a double BP a kernel direction
+       does too); it is only numerically regular because the BP was located
+       to EPSS.  An exactly singular one (the uncoupled double elastica
+       hits one) has no determinant sign: the start gets none, so the first
+       step counts no BP sign change. */
     memset(&cc->tf, 0, sizeof cc->tf);
     cont_tests_fill(cc, cc->x, cc->xdot, &cc->tf);
     rc = CABLE_SUCCESS;
@@ -304,6 +337,62 @@ static void accept_trial(cable_cont *cc)
   cc->npt++;
 }
 
+/* The pencil test at a converged trial point (ISP > 0).  Returns 1 when the
+ * step is to be repeated with the shorter *ds_step, to separate the first
+ * group of predicted branch points from the next. */
+static int pencil_step(cable_cont *cc, pencil_result *pr, double *ds_step)
+{
+  pr->n = 0;
+  pr->coincident = pr->unresolved = 0;
+  if (cc->c.isp <= 0 || !cc->tan_abd) return 0;
+  double t[CONT_PAIR_MAXCROSS];
+  int ndouble = 0, nc = cont_pencil_crossings(cc, cc->tan_abd, t, CONT_PAIR_MAXCROSS, &ndouble);
+  if (nc < 0) return 0; /* the test is advisory: the determinant test still runs */
+  int at_special = cc->dip_at_x || cc->itp_x != CABLE_TY_NONE;
+  for (int i = 0; i < nc; i++)
+    if (!(at_special && t[i] < CONT_PAIR_EDGE)) pr->t[pr->n++] = t[i];
+  if (pr->n < 2) return 0;
+  /* the first group: crossings closer than CONT_PAIR_MINSEP to their predecessor */
+  int g = 1;
+  while (g < pr->n && pr->t[g] - pr->t[g - 1] <= CONT_PAIR_MINSEP) g++;
+  if (g == pr->n) {
+    pr->coincident = 1;
+    pr->tmid = 0.5 * (pr->t[0] + pr->t[g - 1]);
+    return 0;
+  }
+  if (pr->splits >= CONT_PAIR_MAXSPLIT) {
+    pr->unresolved = 1;
+    return 0;
+  }
+  if (pr->splits++ == 0) pr->ds_first = *ds_step;
+  *ds_step *= 0.5 * (pr->t[g - 1] + pr->t[g]);
+  pr->ds_split = *ds_step;
+  return 1;
+}
+
+static void append_note(cable_cont *cc, const char *text)
+{
+  size_t len = strlen(cc->note);
+  snprintf(cc->note + len, sizeof cc->note - len, "%s%s", len ? "; " : "", text);
+}
+
+static void pencil_note(cable_cont *cc, const pencil_result *pr)
+{
+  char buf[240];
+  if (pr->splits > 0) {
+    snprintf(buf, sizeof buf, "step DS = %.6g shortened to %.6g: the pencil test predicted more than one branch point in it",
+             pr->ds_first, pr->ds_split);
+    append_note(cc, buf);
+  }
+  if (pr->unresolved) {
+    int len = snprintf(buf, sizeof buf, "the pencil test still predicts %d branch points in this step (at", pr->n);
+    for (int i = 0; i < pr->n && len < (int)sizeof buf - 24; i++)
+      len += snprintf(buf + len, sizeof buf - (size_t)len, " %.4f", pr->t[i]);
+    snprintf(buf + len, sizeof buf - (size_t)len, " of it): not all are located");
+    append_note(cc, buf);
+  }
+}
+
 int cable_cont_step(cable_cont *cc)
 {
   if (cc->ended) return cc->end_status;
@@ -323,17 +412,20 @@ int cable_cont_step(cable_cont *cc)
     check_limits(cc);
     return CABLE_SUCCESS;
   }
+  double ds_step = cc->ds;
+  pencil_result pr = {0};
   for (;;) {
-    rc = cont_correct(cc, cc->x, cc->xdot, cc->ds, cc->xt);
+    rc = cont_correct(cc, cc->x, cc->xdot, ds_step, cc->xt);
     if (rc == CABLE_SUCCESS) rc = cont_tangent_after_newton(cc, cc->xt, cc->xdot, cc->xdott, &cc->tft);
+    if (rc == CABLE_SUCCESS && pencil_step(cc, &pr, &ds_step)) continue; /* a shorter step separates a pair */
     if (rc == CABLE_SUCCESS) break;
     if (rc == CABLE_ERR_CALLBACK) {
       cont_set_error(cc, "a problem callback failed fatally (status %d) at step size %g",
-                     cc->sys->last_callback, cc->ds);
+                     cc->sys->last_callback, ds_step);
       cc->ended = 1;
       return cc->end_status = rc;
     }
-    if (fabs(cc->ds) <= cc->c.dsmin * (1.0 + 1e-12)) {
+    if (fabs(ds_step) <= cc->c.dsmin * (1.0 + CONT_DSMIN_SLACK)) {
       cont_set_error(cc, "no convergence with DSMIN = %g after point %d (%s)", cc->c.dsmin, cc->npt,
                      cc->rejected[0] ? cc->rejected : colloc_newton_message(cc->nw));
       cc->ended = 1;
@@ -341,11 +433,11 @@ int cable_cont_step(cable_cont *cc)
       return cc->end_status = CABLE_ERR_DSMIN;
     }
     if (cc->rejected[0])
-      snprintf(cc->note, sizeof cc->note, "step DS = %g rejected: %s", cc->ds, cc->rejected);
-    cc->ds = copysign(fmax(fabs(cc->ds) * 0.5, cc->c.dsmin), cc->ds);
+      snprintf(cc->note, sizeof cc->note, "step DS = %g rejected: %s", ds_step, cc->rejected);
+    cc->ds = ds_step = copysign(fmax(fabs(ds_step) * CONT_FAIL_SHRINK, cc->c.dsmin), ds_step);
   }
   cc->ds_prev = cc->ds_used;
-  cc->ds_used = cc->ds;
+  cc->ds_used = ds_step;
   cc->itp = CABLE_TY_NONE;
   cc->uz_hit = -1;
   int which = -1, type = cont_find_event(cc, &cc->tf, &cc->tft, &which);
@@ -354,13 +446,19 @@ int cable_cont_step(cable_cont *cc)
   int was_dip = cc->dip_at_x || cc->itp_x != CABLE_TY_NONE;
   cc->dip_at_x = 0;
   if (type != CABLE_TY_NONE) {
-    rc = cont_locate(cc, type, which); /* replaces the trial point by the located one */
+    /* the pencil's first predicted crossing seeds the BP location */
+    double seed = type == CABLE_TY_BP && pr.n > 0 ? pr.t[0] * ds_step : (double)NAN;
+    rc = cont_locate(cc, type, which, seed); /* replaces the trial point by the located one */
     if (rc == CABLE_SUCCESS) cc->itp = type;
     else snprintf(cc->note, sizeof cc->note, "%s", cc->err);
+  } else if (pr.coincident && cont_dip_in_step(cc, pr.tmid * ds_step) == CABLE_SUCCESS && cc->queued) {
+    cc->itp = CABLE_TY_BP;
+    cc->dip_at_x = 1;
   } else if (!was_dip && cont_check_dip(cc) == CABLE_SUCCESS && cc->queued) {
     cc->itp = CABLE_TY_BP;
     cc->dip_at_x = 1;
   }
+  pencil_note(cc, &pr);
   accept_trial(cc);
   cc->itp_x = cc->itp;
   control_step(cc);

@@ -64,6 +64,11 @@ struct cable_cont {
   cable_solution *sol;          /* current solution in s-file form */
   char err[512];                /* last error message */
   char rejected[200];           /* why the last corrected point was rejected ("" none) */
+  /* pencil test (cont_pencil.c): branch points inside one step */
+  abd_solver *tan_abd;          /* factorisation behind the last tangent (not owned) */
+  colloc_jac *Ja;               /* Newton matrix at the step's start */
+  int pen_m;                    /* Arnoldi steps */
+  double *pen_V, *pen_H, *pen_work; /* Krylov basis [n*(m+1)], Hessenberg, eigenvalues */
 };
 
 /* cont_tangent.c */
@@ -80,8 +85,22 @@ int cont_smallest_sv(cable_cont *cc, int k, double *sv, double *vecs);
 /* cont_special.c */
 void cont_tests_fill(cable_cont *cc, const double *x, const double *xdot, cont_tests *tf);
 int cont_find_event(const cable_cont *cc, const cont_tests *a, const cont_tests *b, int *which);
-int cont_locate(cable_cont *cc, int type, int which);
+/* seed: a first guess of the arclength of the special point (NAN: none) */
+int cont_locate(cable_cont *cc, int type, int which, double seed);
 int cont_check_dip(cable_cont *cc);
+/* A minimum of sigma_1 inside the step predicted at arclength smid (two
+ * coincident crossings of the pencil test): located like cont_check_dip. */
+int cont_dip_in_step(cable_cont *cc, double smid);
+
+/* cont_pencil.c: the branch points that the linear interpolation of the
+ * extended matrix between x (start of the step, closing row from
+ * sys->xdot0) and the trial point (factorisation fb) predicts inside the
+ * step, as fractions t in (0,1) of the step, ascending, at most tmax of
+ * them.  Returns their number (a double crossing counts twice; *ndouble
+ * counts those), or < 0 on error. */
+int cont_pencil_alloc(cable_cont *cc);
+void cont_pencil_free(cable_cont *cc);
+int cont_pencil_crossings(cable_cont *cc, const abd_solver *fb, double *t, int tmax, int *ndouble);
 
 /* cont_mesh.c */
 int cont_adapt_mesh(cable_cont *cc);

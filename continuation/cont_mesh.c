@@ -16,6 +16,12 @@
 /* The monitor is floored at this fraction of its maximum so that smooth parts
  * keep some resolution and the mesh ratio stays bounded. */
 #define CONT_MONITOR_FLOOR 1.0e-3
+/* kappa(NCOL) is the maximum of a polynomial with simple zeros, sampled at
+ * this many equal subintervals of [0,1]: near the maximum the polynomial is
+ * flat, so the sampled value is low by O((1/CONT_KAPPA_SAMPLES)^2) relative
+ * (below 1e-5 for NCOL <= 7), far below the estimate's own uncertainty
+ * (a factor 1-9, doc/engine.md). */
+#define CONT_KAPPA_SAMPLES 2000
 
 /* max over components of |u^(ncol+1)| estimated on each interval, into e[ntst] */
 static void high_derivative(const colloc_system *s, const double *x, double *e, double *dn)
@@ -49,8 +55,8 @@ static double kappa(int ncol)
   /* max over [0,1] of |prod_k (x - k/ncol)| / (ncol+1)!, sampled finely */
   double best = 0.0, fact = 1.0;
   for (int i = 2; i <= ncol + 1; i++) fact *= i;
-  for (int q = 0; q <= 2000; q++) {
-    double x = q / 2000.0, p = 1.0;
+  for (int q = 0; q <= CONT_KAPPA_SAMPLES; q++) {
+    double x = (double)q / CONT_KAPPA_SAMPLES, p = 1.0;
     for (int k = 0; k <= ncol; k++) p *= x - (double)k / ncol;
     best = fmax(best, fabs(p));
   }
@@ -132,9 +138,20 @@ int cont_adapt_mesh(cable_cont *cc)
     memcpy(vecs[v], tmp, nu * sizeof *tmp);
   }
   cont_normalize(cc, cc->xdot);
-  /* test functions of the current point on the new mesh, for the next comparison */
+  /* test functions of the current point on the new mesh, for the next
+     comparison.  The point itself has not moved, so their signs stay: a
+     located special point carries the sign of the far side of its event
+     (cont_locate), which recomputing it could undo when the point sits on
+     the near side within the location tolerance (Bratu's fold was then found
+     twice after the IAD-th step). */
+  cont_tests old = cc->tf;
   rc = cont_tangent(cc, cc->x, cc->xdotp, tmp, &cc->tf);
-  if (rc == CABLE_SUCCESS) cont_tests_fill(cc, cc->x, cc->xdot, &cc->tf);
+  if (rc == CABLE_SUCCESS) {
+    cont_tests_fill(cc, cc->x, cc->xdot, &cc->tf);
+    cc->tf.lp = copysign(fabs(cc->tf.lp), old.lp);
+    for (int k = 0; k < cc->c.nuzr; k++) cc->tf.uz[k] = copysign(fabs(cc->tf.uz[k]), old.uz[k]);
+    if (old.det_sign != 0) cc->tf.det_sign = old.det_sign;
+  }
 done:
   free(e); free(dn); free(cum); free(told); free(newmesh); free(tmp);
   return rc;

@@ -5,16 +5,21 @@
  *       [F_x; theta xdot^T], sign from its determinant (from the stable
  *       factorisation: no overflow, no end-to-end products);
  *   UZ: PAR(k) - value.
- * A sign change between two accepted points is located by regula falsi
- * with the Illinois modification on the arclength from the first point,
- * until the arclength correction is below EPSS * |ds| (AUTO's EPSS).
+ * A sign change between two accepted points is located on the arclength
+ * from the first point by Dekker's rule (secant through the last two
+ * iterates, safeguarded by the bracket; Illinois regula falsi and bisection
+ * as fallbacks), starting from the pencil test's prediction for a BP, until
+ * the arclength correction is below EPSS * |ds| (AUTO's EPSS).
  *
- * Second test (cont_check_dip): a branch point where two singular values
- * vanish together (a double BP, e.g. from a symmetry), or two simple BPs
- * inside one step, leaves the determinant's sign unchanged.  Both show as a
- * dip of the smallest singular value sigma_1 between three consecutive
- * points; the dip is located by Brent minimisation of sigma_1 along the
- * branch and labelled BP when sigma_1 nearly vanishes there. */
+ * Second test (cont_check_dip, cont_dip_in_step): a branch point where two
+ * singular values vanish together (a double BP, e.g. from a symmetry), or
+ * two simple BPs inside one step, leaves the determinant's sign unchanged.
+ * Both show as a dip of the smallest singular value sigma_1, between three
+ * consecutive points or at a double crossing the pencil test predicts inside
+ * the step; the dip is located by Brent minimisation of sigma_1 along the
+ * branch and labelled BP when sigma_1 nearly vanishes there.  (Pairs of
+ * simple BPs in one step are normally separated by the pencil test first,
+ * cont_pencil.c.) */
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_min.h>
 #include <math.h>
@@ -22,6 +27,11 @@
 #include <string.h>
 
 #include "cont_impl.h"
+
+/* The Illinois modification of regula falsi: when the same end of the bracket
+ * is kept twice, its function value is scaled by this factor (Dowell and
+ * Jarratt 1971), which restores superlinear convergence. */
+#define CONT_ILLINOIS 0.5
 
 static double param_value(const cable_cont *cc, const double *x, int k)
 {
@@ -84,19 +94,33 @@ static void branch_tangent(cable_cont *cc, double theta, double *out)
   cont_normalize(cc, out);
 }
 
-int cont_locate(cable_cont *cc, int type, int which)
+int cont_locate(cable_cont *cc, int type, int which, double seed)
 {
   double s0 = 0.0, f0 = test_value(&cc->tf, type, which);
   double s1 = cc->ds_used, f1 = test_value(&cc->tft, type, which);
   double far = f1, sprev = s1;
+  /* the last two evaluated points, for the secant step */
+  double sp = s0, fp = f0, sq = s1, fq = f1;
   int side = 0;
   cont_tests ts = cc->tft;
   double *xs = cc->w1, *xds = cc->w2;
   const char *what = type == CABLE_TY_LP ? "fold" : type == CABLE_TY_BP ? "branch point" : "user zero";
   double tol = cc->c.epss * fabs(cc->ds_used);
   for (int it = 0; it < cc->c.itmx; it++) {
-    double s = s1 - f1 * (s1 - s0) / (f1 - f0);
     double lo = fmin(s0, s1), hi = fmax(s0, s1);
+    /* Dekker's rule: the secant through the last two iterates, kept inside
+       the bracket; else the Illinois regula falsi on the bracket; else its
+       middle.  The secant through the latest iterates, not the bracket's
+       ends, matters when an end is itself a located special point: its test
+       value is ~0 (the previous BP) and a regula falsi through it crawls.
+       The first iterate is the pencil test's prediction when there is one:
+       exact for a matrix affine in the arclength, and far better than a
+       secant through far-apart values of the kinked sigma_1 (regula falsi
+       from the step's ends needed more than ITMX = 9 iterations for the
+       elastica's BP1 from a 35-wide step). */
+    double s = fq != fp ? sq - fq * (sq - sp) / (fq - fp) : (double)NAN;
+    if (it == 0 && seed > lo && seed < hi) s = seed;
+    if (!(s > lo && s < hi)) s = s1 - f1 * (s1 - s0) / (f1 - f0);
     if (!(s > lo && s < hi)) s = 0.5 * (s0 + s1);
     int rc = cont_correct(cc, cc->x, cc->xdot, s, xs);
     if (rc == CABLE_SUCCESS) rc = cont_tangent(cc, xs, cc->xdot, xds, &ts);
@@ -121,6 +145,8 @@ int cont_locate(cable_cont *cc, int type, int which)
     double f = test_value(&ts, type, which);
     int done = nudged || fabs(s - sprev) <= tol || f == 0.0;
     sprev = s;
+    sp = sq; fp = fq;
+    sq = s; fq = f;
     if (done) {
       memcpy(cc->xt, xs, (size_t)cc->n * sizeof *xs);
       if (type == CABLE_TY_BP)
@@ -150,11 +176,11 @@ int cont_locate(cable_cont *cc, int type, int which)
     }
     if ((f > 0) == (f1 > 0)) {
       s1 = s; f1 = f;
-      if (side == 1) f0 *= 0.5;
+      if (side == 1) f0 *= CONT_ILLINOIS;
       side = 1;
     } else {
       s0 = s; f0 = f;
-      if (side == -1) f1 *= 0.5;
+      if (side == -1) f1 *= CONT_ILLINOIS;
       side = -1;
     }
   }
@@ -190,18 +216,18 @@ static double dip_fn(double s, void *p)
   return d->t.sv1;
 }
 
-int cont_check_dip(cable_cont *cc)
+/* Brent minimisation of sigma_1 on [lo, hi] (arclength from x) from the
+ * interior point mid where sigma_1 = fm is below the values fa, fb at the
+ * ends; when the minimum nearly vanishes the located point becomes the trial
+ * point and the old trial point is queued behind it. */
+static int dip_minimise(cable_cont *cc, double lo, double mid, double fm, double hi, double a, double b)
 {
-  double a = cc->tfp.sv1, m = cc->tf.sv1, b = cc->tft.sv1;
-  if (cc->c.isp <= 0 || cc->npt < 2 || !(a > 0 && m > 0 && b > 0)) return CABLE_TY_NONE;
-  if (!(m < a && m < b && m < CONT_DIP_RATIO * fmax(a, b))) return CABLE_TY_NONE;
-  double lo = -fabs(cc->ds_prev), hi = fabs(cc->ds_used);
   dip_ctx ctx = {cc, cc->tf, fmax(a, b)};
   gsl_function F = {dip_fn, &ctx};
   gsl_min_fminimizer *mz = gsl_min_fminimizer_alloc(gsl_min_fminimizer_brent);
   if (!mz) return CABLE_ERR_ALLOC;
   gsl_error_handler_t *old = gsl_set_error_handler_off();
-  int st = gsl_min_fminimizer_set_with_values(mz, &F, 0.0, m, lo, a, hi, b);
+  int st = gsl_min_fminimizer_set_with_values(mz, &F, mid, fm, lo, a, hi, b);
   for (int it = 0; st == GSL_SUCCESS && it < CONT_DIP_MAXIT; it++) {
     if (gsl_min_fminimizer_iterate(mz) != GSL_SUCCESS) break;
     double l = gsl_min_fminimizer_x_lower(mz), u = gsl_min_fminimizer_x_upper(mz);
@@ -235,4 +261,22 @@ int cont_check_dip(cable_cont *cc)
            ctx.t.sv1, ctx.t.sv2, a, b,
            smin < 0 ? "; located before the previous output point" : "");
   return CABLE_SUCCESS;
+}
+
+int cont_check_dip(cable_cont *cc)
+{
+  double a = cc->tfp.sv1, m = cc->tf.sv1, b = cc->tft.sv1;
+  if (cc->c.isp <= 0 || cc->npt < 2 || !(a > 0 && m > 0 && b > 0)) return CABLE_TY_NONE;
+  if (!(m < a && m < b && m < CONT_DIP_RATIO * fmax(a, b))) return CABLE_TY_NONE;
+  return dip_minimise(cc, -fabs(cc->ds_prev), 0.0, m, fabs(cc->ds_used), a, b);
+}
+
+int cont_dip_in_step(cable_cont *cc, double smid)
+{
+  double a = cc->tf.sv1, b = cc->tft.sv1;
+  if (cc->c.isp <= 0 || !(a > 0 && b > 0) || !(smid > 0 && smid < cc->ds_used)) return CABLE_TY_NONE;
+  dip_ctx ctx = {cc, cc->tf, fmax(a, b)};
+  double m = dip_fn(smid, &ctx);
+  if (!(m < a && m < b)) return CABLE_TY_NONE;
+  return dip_minimise(cc, 0.0, smid, m, cc->ds_used, a, b);
 }

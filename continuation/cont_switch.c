@@ -3,9 +3,25 @@
  * a one-dimensional kernel: the vector phi with F_x phi = 0 that is
  * theta-orthogonal to the old tangent, i.e. the direction of the bifurcating
  * branch.  It is the right singular vector of the smallest singular value,
- * computed by inverse iteration with the stable factorisation.  With NSV >= 2
- * and a two-dimensional kernel (a double BP), BPDIR picks the kernel vector
- * (0: smallest singular value, 1: the next). */
+ * computed by inverse iteration with the stable factorisation.
+ *
+ * At a double BP the kernel is two-dimensional and the two singular vectors
+ * are an arbitrary orthonormal basis of it (any rotation of them is as
+ * good).  The switch first makes the basis canonical, from the solution
+ * components U(1), U(2), ... in turn:
+ *   1. the first component c whose energy int u_c^2 dt, as a quadratic form on
+ *      the kernel, has two clearly different principal values: e1 is the
+ *      kernel direction with the most energy in U(c), e2 (orthogonal) the one
+ *      with the least (for two uncoupled copies of a problem: e1 moves only
+ *      the first copy, e2 only the second);
+ *   2. otherwise (every component's energy is the same in all kernel
+ *      directions, e.g. a rotation-type symmetry) the first c with u_c(0) not
+ *      zero on the kernel: e1 moves u_c(0), e2 keeps u_c(0) = 0 (keeps a
+ *      reflection symmetry that fixes u_c(0) = 0);
+ * then follows cos(BPANGLE) e1 + sin(BPANGLE) e2, or e1 / e2 for BPDIR = 0 / 1
+ * when BPANGLE is not set.  Orientation of e1 and e2: the first component
+ * that is not negligible at t = 0 is positive there (else the entry of
+ * largest magnitude); DS < 0 reverses the direction. */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -16,6 +32,99 @@
  * second one is not a branch point of the discretised problem: switching
  * would follow an arbitrary direction. */
 #define CONT_SWITCH_SV_RATIO 0.1
+/* Rule 1 takes component c when its energy form's principal values differ by
+ * more than CONT_KERNEL_GAP of their sum, and c carries at least
+ * CONT_KERNEL_SHARE of the kernel's total energy (below that the form is
+ * round-off).  Rule 2 takes c when |u_c(0)| over the kernel exceeds
+ * CONT_KERNEL_SHARE of the kernel vectors' largest entry. */
+#define CONT_KERNEL_GAP 0.1
+#define CONT_KERNEL_SHARE 1.0e-6
+/* orient(): a value at t = 0 below this fraction of the vector's largest
+ * entry counts as zero (the kernel vectors are accurate to about CONT_SV_RTOL
+ * relative, cont_tangent.c, so a smaller value's sign is noise) */
+#define CONT_KERNEL_ORIENT 1.0e-3
+#define CONT_PI 3.14159265358979323846
+
+/* sum over nodes of the quadrature weight times a_c b_c (component c), or
+   over all components when c < 0 */
+static double component_inner(const colloc_system *s, const double *a, const double *b, int c)
+{
+  int nd = s->ndim, nc = s->ncol;
+  double sum = 0.0;
+  for (int j = 0; j < s->ntst; j++) {
+    double h = s->mesh[j + 1] - s->mesh[j];
+    for (int k = 0; k <= nc; k++) {
+      size_t o = (size_t)(j * nc + k) * (size_t)nd;
+      double d = 0.0;
+      for (int i = (c < 0 ? 0 : c); i < (c < 0 ? nd : c + 1); i++) d += a[o + i] * b[o + i];
+      sum += h * s->basis.wn[k] * d;
+    }
+  }
+  return sum;
+}
+
+/* index of the entry of largest magnitude among u components c (all when c < 0) */
+static int largest_entry(const cable_cont *cc, const double *v, int c)
+{
+  int nd = cc->ndim, nu = cc->n - cc->nfpr, best = -1;
+  for (int i = 0; i < nu; i++)
+    if ((c < 0 || i % nd == c) && (best < 0 || fabs(v[i]) > fabs(v[best]))) best = i;
+  return best < 0 ? 0 : best;
+}
+
+/* The first component U(c) whose value at t = 0 is not negligible is made
+ * positive there (so that e1 + e2 moves both copies of a doubled problem in
+ * phase); failing that, the entry of largest magnitude. */
+static void orient(const cable_cont *cc, double *v)
+{
+  int imax = largest_entry(cc, v, -1), pick = imax;
+  for (int c = cc->ndim - 1; c >= 0; c--)
+    if (fabs(v[c]) > CONT_KERNEL_ORIENT * fabs(v[imax])) pick = c;
+  if (v[pick] < 0)
+    for (int i = 0; i < cc->n; i++) v[i] = -v[i];
+}
+
+/* e1 = cos(psi) v1 + sin(psi) v2, e2 = -sin(psi) v1 + cos(psi) v2 into out1, out2 */
+static void rotate(int n, const double *v1, const double *v2, double psi, double *out1, double *out2)
+{
+  double cs = cos(psi), sn = sin(psi);
+  for (int i = 0; i < n; i++) {
+    out1[i] = cs * v1[i] + sn * v2[i];
+    out2[i] = -sn * v1[i] + cs * v2[i];
+  }
+}
+
+/* The canonical basis (rules above) of the kernel spanned by v1, v2 into e1,
+ * e2; a description into how.  -1 when no rule applies. */
+static int canonical_kernel(cable_cont *cc, const double *v1, const double *v2, double *e1, double *e2,
+                            char *how, size_t len)
+{
+  const colloc_system *s = cc->sys;
+  int n = cc->n, nd = cc->ndim, comp = -1;
+  double total = component_inner(s, v1, v1, -1) + component_inner(s, v2, v2, -1);
+  for (int c = 0; c < nd && comp < 0; c++) {
+    double g11 = component_inner(s, v1, v1, c), g12 = component_inner(s, v1, v2, c);
+    double g22 = component_inner(s, v2, v2, c), tr = g11 + g22;
+    double spread = 2.0 * hypot(0.5 * (g11 - g22), g12);
+    if (!(tr > CONT_KERNEL_SHARE * total) || !(spread > CONT_KERNEL_GAP * tr)) continue;
+    rotate(n, v1, v2, 0.5 * atan2(2.0 * g12, g11 - g22), e1, e2); /* e1: the larger principal value */
+    comp = c;
+    snprintf(how, len, "e1 = the kernel direction with the most energy in U(%d) (%.3g of the kernel's), e2 the least",
+             c + 1, (0.5 * tr + 0.5 * spread) / total);
+  }
+  double vmax = fabs(v1[largest_entry(cc, v1, -1)]) + fabs(v2[largest_entry(cc, v2, -1)]);
+  for (int c = 0; c < nd && comp < 0; c++) {
+    double a = v1[c], b = v2[c], r = hypot(a, b); /* node 0 is t = 0 */
+    if (!(r > CONT_KERNEL_SHARE * vmax)) continue;
+    rotate(n, v1, v2, atan2(b, a), e1, e2); /* e1 = (a v1 + b v2) / r: u_c(0) = r; e2: u_c(0) = 0 */
+    comp = c;
+    snprintf(how, len, "e1 = the kernel direction that moves U(%d) at t = 0, e2 the one that keeps it", c + 1);
+  }
+  if (comp < 0) return -1;
+  orient(cc, e1);
+  orient(cc, e2);
+  return comp;
+}
 
 int cont_switch_direction(cable_cont *cc)
 {
@@ -47,22 +156,36 @@ int cont_switch_direction(cable_cont *cc)
                    sv[2]);
     return CABLE_ERR_SWITCH;
   }
-  if (cc->c.bpsym >= dim) {
+  int angle_set = !isnan(cc->c.bpangle);
+  if (dim == 1 && cc->c.bpsym > 0 && !angle_set) {
     cont_set_error(cc, "ISW=-1: BPDIR=%d but the kernel at this branch point is %d-dimensional", cc->c.bpsym, dim);
     return CABLE_ERR_SWITCH;
   }
-  snprintf(cc->note, sizeof cc->note, "switching at a %s branch point: singular values %.3e, %.3e, %.3e",
-           dim == 1 ? "simple" : "double", sv[0], sv[1], sv[2]);
-  int pick = cc->c.bpsym;
-  const double *phi = cc->svec + (size_t)pick * (size_t)n;
-  memcpy(cc->xdot, phi, (size_t)n * sizeof *phi);
-  cont_normalize(cc, cc->xdot);
-  /* a deterministic orientation: the largest component positive; DS < 0 reverses */
-  int imax = 0;
-  for (int i = 1; i < n; i++)
-    if (fabs(cc->xdot[i]) > fabs(cc->xdot[imax])) imax = i;
-  double sgn = (cc->xdot[imax] < 0 ? -1.0 : 1.0) * (cc->c.ds < 0 ? -1.0 : 1.0);
-  for (int i = 0; i < n; i++) cc->xdot[i] *= sgn;
+  int len = snprintf(cc->note, sizeof cc->note, "switching at a %s branch point: singular values %.3e, %.3e, %.3e",
+                     dim == 1 ? "simple" : "double", sv[0], sv[1], sv[2]);
+  double *dir = cc->xdot;
+  if (dim == 1) {
+    memcpy(dir, cc->svec, (size_t)n * sizeof *dir);
+    /* a deterministic orientation: the largest component (parameters included) positive */
+    int imax = 0;
+    for (int i = 1; i < n; i++)
+      if (fabs(dir[i]) > fabs(dir[imax])) imax = i;
+    if (dir[imax] < 0) for (int i = 0; i < n; i++) dir[i] = -dir[i];
+    if (angle_set) snprintf(cc->note + len, sizeof cc->note - (size_t)len, "; BPANGLE ignored (simple kernel)");
+  } else {
+    double *e1 = cc->w1, *e2 = cc->w2;
+    char how[200];
+    if (canonical_kernel(cc, cc->svec, cc->svec + (size_t)n, e1, e2, how, sizeof how) < 0) {
+      cont_set_error(cc, "ISW=-1: no solution component distinguishes the two kernel vectors at this double branch point");
+      return CABLE_ERR_SWITCH;
+    }
+    double phi = angle_set ? cc->c.bpangle * (CONT_PI / 180.0) : (cc->c.bpsym ? 0.5 * CONT_PI : 0.0);
+    for (int i = 0; i < n; i++) dir[i] = cos(phi) * e1[i] + sin(phi) * e2[i];
+    snprintf(cc->note + len, sizeof cc->note - (size_t)len, "; %s; following %g degrees from e1 towards e2", how,
+             phi * (180.0 / CONT_PI));
+  }
+  cont_normalize(cc, dir);
+  if (cc->c.ds < 0) for (int i = 0; i < n; i++) dir[i] = -dir[i];
   cc->ds = fabs(cc->c.ds);
   return CABLE_SUCCESS;
 }

@@ -48,6 +48,7 @@ static int tangent_from(cable_cont *cc, abd_solver *abd, colloc_jac *J, const do
   xdot_new[cc->n - 1] = 1.0;
   if (abd_solver_solve(abd, xdot_new) != 0) return CABLE_ERR_LINSOLVE;
   cont_normalize(cc, xdot_new);
+  cc->tan_abd = abd;
   tf->det_sign = sign;
   tf->det_log = logdet;
   tf->sv1 = tf->sv2 = 0.0;

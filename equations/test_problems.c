@@ -111,6 +111,56 @@ double cable_bratu_exact(double lambda, double th, double t)
   return -2.0 * log(cosh((t - 0.5) * th / 2.0) / cosh(th / 4.0));
 }
 
+/* ---- Bratu with an integral condition: int_0^1 u dt - mu = 0 ----
+ * NBC = 2, NINT = 1, so NFPR = 2: lambda and mu = PAR(2) are both free; the
+ * branch is Bratu's, and mu reports the mean of u along it. */
+static int bratu_int_bcnd(int ndim, const double *par, const int *icp, int nbc, const double *u0,
+                          const double *u1, int ijac, double *fb, double *dbc, void *params)
+{
+  (void)par; (void)icp; (void)params;
+  dirichlet(ndim, nbc, 0, u0, u1, 0.0, 0.0, ijac, fb, dbc);
+  zero_par_columns(nbc, ndim, 2, ijac, dbc);
+  return 0;
+}
+
+static int bratu_int_icnd(int ndim, const double *par, const int *icp, int nint, const double *u,
+                          const double *uold, const double *udot, const double *upold, int ijac,
+                          double *fi, double *dint, void *params)
+{
+  (void)icp; (void)uold; (void)udot; (void)upold; (void)params;
+  fi[0] = u[0] - par[1];
+  if (ijac >= 1) {
+    dint[0 + nint * 0] = 1.0;
+    for (int j = 1; j < ndim; j++) dint[0 + nint * j] = 0.0;
+  }
+  if (ijac >= 2) {
+    dint[0 + nint * (ndim + 0)] = 0.0;
+    dint[0 + nint * (ndim + 1)] = -1.0;
+  }
+  return 0;
+}
+
+static int bratu_int_stpnt(int ndim, double t, double *u, double *par, void *params)
+{
+  (void)t; (void)params;
+  for (int i = 0; i < ndim; i++) u[i] = 0.0;
+  par[0] = 0.0;
+  par[1] = 0.0;
+  return 0;
+}
+
+static const char *const lambda_mu_names[] = {"lambda", "mu"};
+
+static const cable_problem bratu_int = {
+  .abi_version = CABLE_PROBLEM_ABI, .struct_size = sizeof(cable_problem),
+  .name = "bratu_int", .description = "Bratu with mu = int_0^1 u dt as an integral condition",
+  .ndim = 2, .nbc = 2, .nint = 1, .npar = 2, .parnames = lambda_mu_names, .unames = u_names,
+  .func = bratu_func, .bcnd = bratu_int_bcnd, .icnd = bratu_int_icnd, .stpnt = bratu_int_stpnt,
+  .func_has_jac = 1, .bcnd_has_jac = 1, .icnd_has_jac = 1,
+};
+
+const cable_problem *cable_testproblem_bratu_int(void) { return &bratu_int; }
+
 /* ---- elastica ---- */
 static int elastica_func(int ndim, const double *u, const int *icp, const double *par, int ijac,
                          double *f, double *dfdu, double *dfdp, void *params)

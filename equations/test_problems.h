@@ -1,17 +1,21 @@
 /* The engine's built-in test problems (selected with e=NAME like the braid):
  *   bratu     u'' + lambda e^u = 0,  u(0) = u(1) = 0;       PAR(1) = lambda
+ *   bratu_int the same with the integral condition int_0^1 u dt - mu = 0 (NINT = 1):
+ *             PAR(1) = lambda, PAR(2) = mu, both free
  *   elastica  theta'' + lambda sin theta = 0, theta'(0) = theta'(1) = 0;
  *             PAR(1) = lambda; STPNT: theta = 0 at lambda = 1
  *   layer     eps u'' + u' = 0, u(0) = 0, u(1) = p;         PAR(1) = p, PAR(2) = eps
  *   stiff     u'' = k^2 u, u(0) = 1, u(1) = 2;              PAR(1) = k
  * Each has analytic Jacobians (JAC=1) and a closed-form solution or
- * bifurcation structure, documented in doc/test-problems.md. */
+ * bifurcation structure; tests/test_engine_bvp.c and test_engine_paths.c
+ * compare the engine with them (doc/engine.md). */
 #ifndef CABLE_TEST_PROBLEMS_H
 #define CABLE_TEST_PROBLEMS_H
 
 #include "cable_problem.h"
 
 const cable_problem *cable_testproblem_bratu(void);
+const cable_problem *cable_testproblem_bratu_int(void);
 const cable_problem *cable_testproblem_elastica(void);
 const cable_problem *cable_testproblem_layer(void);
 const cable_problem *cable_testproblem_stiff(void);

@@ -7,13 +7,18 @@
  *    h^(2 NCOL) (superconvergence), slope fitted for NCOL = 2..5;
  *  - two uncoupled elasticas: every branch point is double (two singular values
  *    vanish, the determinant keeps its sign); the singular-value test finds and
- *    locates them at (n pi)^2. */
+ *    locates them at (n pi)^2, and switching with BPANGLE (or BPDIR) in the
+ *    canonical kernel basis reaches each of the four bifurcating branches. */
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_integration.h>
 #include <gsl/gsl_math.h>
+#include <gsl/gsl_roots.h>
 #include <gsl/gsl_sf_ellint.h>
 #include <math.h>
 #include <stdlib.h>
 
 #include "cable_constants.h"
+#include "colloc_basis.h"
 #include "engine_util.h"
 #include "harness.h"
 #include "test_problems.h"
@@ -141,6 +146,121 @@ static void test_elastica_exact_zero_pivot(memrun *r)
   }
 }
 
+/* Fixed steps (IADS = 0) long enough to hold two branch points: from
+ * lambda = 1, DS = 35, 40 and 45 steps (the trivial branch's tangent is pure
+ * lambda) put BP1 and BP2 inside the first step for DS = 40 and 45, where the
+ * determinant keeps its sign; DS = 35 puts BP1 alone in a 35-wide bracket;
+ * DS = 99 puts all three in the first step.
+ * Before the pencil test, DS = 45 lost BP1 and BP2 without a word, DS = 40
+ * lost BP1, and DS = 35 failed to locate BP1 within ITMX. */
+static void test_elastica_fixed_steps(memrun *r)
+{
+  static const double steps[] = {35.0, 40.0, 45.0, 99.0};
+  for (size_t q = 0; q < sizeof steps / sizeof steps[0]; q++) {
+    cable_constants c;
+    engine_constants(&c, 50, 5);
+    c.ds = c.dsmax = steps[q]; c.dsmin = 1e-6; c.iads = 0; c.nmx = 200;
+    c.rl1 = 100.0;
+    c.isp = 2; c.ilp = 0;
+    c.epss = 1e-10;
+    memrun_run(cable_testproblem_elastica(), &c, NULL, r);
+    char what[96];
+    /* the step that crosses RL1 = 100 may hold (4 pi)^2 = 158 too: count below 100 */
+    int nbp = 0;
+    for (int i = 0; i < r->nsol; i++) nbp += r->sol[i]->itp == CABLE_TY_BP && r->sol[i]->par[0] < 100.0;
+    snprintf(what, sizeof what, "elastica DS=%g fixed: three branch points below lambda = 100", steps[q]);
+    test_int(what, nbp, 3);
+    for (int n = 1; n <= 3; n++) {
+      const cable_solution *bp = memrun_find(r, CABLE_TY_BP, n - 1);
+      snprintf(what, sizeof what, "elastica DS=%g fixed: BP%d at (%d pi)^2", steps[q], n, n);
+      /* the same discretisation bound as test_elastica (NTST=50, NCOL=5) */
+      if (bp) test_rel(what, bp->par[0], (n * M_PI) * (n * M_PI), 1e-8);
+      else test_true(what, 0);
+    }
+    memrun_free(r);
+  }
+}
+
+/* int_0^1 u dt of Bratu's exact lower-branch solution with parameter th, by
+ * GSL's adaptive Gauss-Kronrod rule (independent of the engine's quadrature). */
+static double bratu_exact_u(double t, void *p) { return cable_bratu_exact(0.0, *(const double *)p, t); }
+
+static double bratu_exact_mean(double th)
+{
+  gsl_integration_workspace *w = gsl_integration_workspace_alloc(100);
+  gsl_function F = {bratu_exact_u, &th};
+  double res = NAN, err = 0;
+  if (w) gsl_integration_qag(&F, 0.0, 1.0, 1e-15, 1e-14, 100, GSL_INTEG_GAUSS61, w, &res, &err);
+  gsl_integration_workspace_free(w);
+  return res;
+}
+
+/* th at the fold: d lambda / d th = 0 on lambda = th^2 / (2 cosh^2(th/4)) gives th tanh(th/4) = 4 */
+static double fold_fn(double th, void *p)
+{
+  (void)p;
+  return th * tanh(th / 4.0) - 4.0;
+}
+
+static double bratu_fold_theta(void)
+{
+  gsl_function F = {fold_fn, NULL};
+  gsl_root_fsolver *s = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
+  double r = NAN;
+  if (s && gsl_root_fsolver_set(s, &F, 3.0, 6.0) == GSL_SUCCESS)
+    for (int it = 0; it < 200; it++) {
+      gsl_root_fsolver_iterate(s);
+      r = gsl_root_fsolver_root(s);
+      if (gsl_root_test_interval(gsl_root_fsolver_x_lower(s), gsl_root_fsolver_x_upper(s), 0.0, 1e-15) == GSL_SUCCESS)
+        break;
+    }
+  gsl_root_fsolver_free(s);
+  return r;
+}
+
+/* An integral condition (NINT = 1, NFPR = 2): Bratu with mu = int_0^1 u dt.
+ * The lambda branch and its fold are Bratu's; mu at user zeros lambda = 1, 2,
+ * 3 and at the fold must equal the mean of the exact solution. */
+static void test_integral_condition(memrun *r)
+{
+  cable_constants c;
+  engine_constants(&c, 20, 4);
+  c.icp[1] = 1; c.nicp = 2;
+  c.ds = 0.1; c.dsmin = 1e-6; c.dsmax = 0.5; c.nmx = 60;
+  c.rl1 = 10.0;
+  c.ilp = 1; c.isp = 0;
+  c.epss = 1e-7;
+  c.nuzr = 3;
+  for (int k = 0; k < 3; k++) {
+    c.uzr[k].par = 0;
+    c.uzr[k].value = k + 1.0;
+  }
+  memrun_run(cable_testproblem_bratu_int(), &c, NULL, r);
+  test_true("bratu_int (NINT=1): run ends normally", r->status > 0);
+  test_int("bratu_int: three user zeros on the lower branch (and three on the upper)", memrun_count(r, CABLE_TY_UZ), 6);
+  gsl_error_handler_t *old = gsl_set_error_handler_off();
+  for (int k = 0; k < 3; k++) {
+    const cable_solution *s = memrun_find(r, CABLE_TY_UZ, k);
+    char what[96];
+    snprintf(what, sizeof what, "bratu_int: mu = int u dt at lambda = %d (exact solution, GSL quadrature)", k + 1);
+    /* Gauss quadrature of the NCOL=4 collocation polynomial on NTST=20: the
+       solution's O(h^(2 NCOL)) = 5e-11 superconvergent error (test_superconvergence)
+       sets the level; 1e-9 relative leaves a margin */
+    if (s) test_rel(what, s->par[1], bratu_exact_mean(cable_bratu_theta(s->par[0])), 1e-9);
+    else test_true(what, 0);
+  }
+  const cable_solution *lp = memrun_find(r, CABLE_TY_LP, 0);
+  test_true("bratu_int: fold found", lp != NULL);
+  if (lp) {
+    /* the same bounds as test_bratu_fold; mu is stationary in arclength at
+       neither end, so its location error is O(EPSS ds) ~ 1e-8 */
+    test_abs("bratu_int: fold lambda*", lp->par[0], 3.513830719125162, 1e-9);
+    test_rel("bratu_int: mu at the fold", lp->par[1], bratu_exact_mean(bratu_fold_theta()), 1e-7);
+  }
+  gsl_set_error_handler(old);
+  memrun_free(r);
+}
+
 /* max mesh-point error of the Bratu solution at lambda ~ 1 */
 static double bratu_error(memrun *r, int ntst, int ncol)
 {
@@ -164,6 +284,60 @@ static double bratu_error(memrun *r, int ntst, int ncol)
   }
   memrun_free(r);
   return err;
+}
+
+/* The per-solution error estimate (err_est, cont_mesh.c) against the true
+ * max-norm error of the collocation solution over [0,1] (the piecewise
+ * polynomial sampled at ERR_SAMPLES + 1 points per interval against Bratu's
+ * closed form) at lambda = 1, NCOL = 2..7, three meshes each.  Measured
+ * ratios estimate / true: 1.04 (NTST=4, NCOL=3) to 8.4 (NTST=4, NCOL=7).
+ * The estimate is kappa h^(NCOL+1) |u^(NCOL+1)| from divided differences of
+ * the NCOL-th derivative, i.e. the interpolation error of the exact solution
+ * at equally spaced nodes; the collocation error's own constant differs from
+ * kappa by an NCOL-dependent factor, hence the spread.  Stated factor: the
+ * estimate lies between 1/2 and 10 times the true error (it is conservative,
+ * or at worst a factor 2 optimistic). */
+#define ERR_SAMPLES 50
+static void test_error_estimate(memrun *r)
+{
+  static const int meshes[6][3] = {{8, 16, 32}, {4, 8, 16}, {4, 8, 12}, {3, 5, 8}, {2, 3, 5}, {2, 3, 4}};
+  double lo = INFINITY, hi = 0;
+  for (int ncol = 2; ncol <= 7; ncol++)
+    for (int q = 0; q < 3; q++) {
+      int ntst = meshes[ncol - 2][q];
+      cable_constants c;
+      engine_constants(&c, ntst, ncol);
+      c.ds = 0.1; c.dsmin = 1e-6; c.dsmax = 0.2; c.nmx = 100;
+      c.isp = 0; c.ilp = 0;
+      c.nuzr = 1;
+      c.uzr[0].par = 0; c.uzr[0].value = 1.0; c.uzr[0].stop = 1;
+      c.epss = 1e-10;
+      memrun_run(cable_testproblem_bratu(), &c, NULL, r);
+      const cable_solution *s = memrun_find(r, CABLE_TY_UZ, 0);
+      if (!s) {
+        test_true("error estimate: solution at lambda = 1", 0);
+        memrun_free(r);
+        continue;
+      }
+      double lam = s->par[0], th = cable_bratu_theta(lam), err = 0;
+      for (int j = 0; j < ntst; j++) {
+        double t0 = s->t[j * ncol], t1 = s->t[(j + 1) * ncol];
+        for (int k = 0; k <= ERR_SAMPLES; k++) {
+          double t = t0 + (t1 - t0) * k / ERR_SAMPLES, u[2];
+          colloc_interp(2, ntst, ncol, s->t, s->u, t, u);
+          err = fmax(err, fabs(u[0] - cable_bratu_exact(lam, th, t)));
+        }
+      }
+      double ratio = s->err_est / err;
+      lo = fmin(lo, ratio);
+      hi = fmax(hi, ratio);
+      char what[128];
+      snprintf(what, sizeof what, "error estimate NTST=%d NCOL=%d: estimate %.3e / true max error %.3e = %.2f in [0.5, 10]",
+               ntst, ncol, s->err_est, err, ratio);
+      test_true(what, ratio >= 0.5 && ratio <= 10.0);
+      memrun_free(r);
+    }
+  printf("error estimate / true error over all meshes: %.2f .. %.2f\n", lo, hi);
 }
 
 static void test_superconvergence(memrun *r)
@@ -240,31 +414,73 @@ static void test_double_bp(memrun *r)
   cable_solution *start = bp1 ? cable_solution_clone(bp1) : NULL;
   memrun_free(r);
   if (!start) return;
-  /* switching at the double BP along either kernel vector (BPDIR = 0, 1):
-     every solution of the uncoupled pair has each theta_i either 0 or a
-     buckled elastica at the same lambda, lambda = 4 K(sin(theta_i(0)/2))^2 */
-  for (int dir = 0; dir <= 1; dir++) {
+  /* switching at the double BP.  The kernel is spanned by (cos pi t, 0) and
+     (0, cos pi t) in (theta1, theta2); the canonical basis (cont_switch.c,
+     rule 1 on U(1) = theta1) is e1 = only theta1 moves, e2 = only theta2.
+     The uncoupled pair's solutions have each theta_i either 0 or a buckled
+     elastica at the same lambda, so four branches leave the BP: theta1 alone
+     (BPANGLE = 0, and BPDIR = 0), theta2 alone (90, BPDIR = 1), both in phase
+     (45: theta1 = theta2) and in antiphase (135: theta1 = -theta2). */
+  static const struct {
+    double angle;  /* NAN: BPDIR */
+    int bpdir;
+    int kind;      /* 1: theta1 alone, 2: theta2 alone, 3: theta1 = theta2, 4: theta1 = -theta2 */
+    double dsign;  /* DS < 0: the other half of the branch */
+  } cases[] = {{0.0, 0, 1, 1}, {90.0, 0, 2, 1}, {45.0, 0, 3, 1}, {135.0, 0, 4, 1},
+               {90.0, 0, 2, -1}, {45.0, 0, 3, -1}, {NAN, 0, 1, 1}, {NAN, 1, 2, 1}};
+  static const char *const kinds[] = {"", "only theta1 buckles", "only theta2 buckles", "theta1 = theta2",
+                                      "theta1 = -theta2"};
+  for (size_t q = 0; q < sizeof cases / sizeof cases[0]; q++) {
     engine_constants(&c, 40, 4);
-    c.jac = 0; c.isw = -1; c.bpsym = dir; c.isp = 0;
-    c.ds = 0.05; c.dsmin = 1e-6; c.dsmax = 0.2; c.nmx = 30; c.npr = 10;
+    c.jac = 0; c.isw = -1; c.isp = 0;
+    c.bpangle = cases[q].angle;
+    c.bpsym = cases[q].bpdir;
+    c.ds = 0.05 * cases[q].dsign; c.dsmin = 1e-6; c.dsmax = 0.2; c.nmx = 30; c.npr = 10;
     memrun_run(&pb, &c, start, r);
-    double worst = 0, amp = 0;
+    double worst = 0, amp1 = 0, amp2 = 0, sum = 0, diff = 0;
     for (int i = 1; i < r->nsol; i++) {
       const cable_solution *s = r->sol[i];
       double lam = s->par[0];
       for (int comp = 0; comp < 4; comp += 2) {
         double th0 = fabs(s->u[comp]);
-        amp = fmax(amp, th0);
         if (th0 < 1e-6) continue; /* this elastica stays straight */
         double K = gsl_sf_ellint_Kcomp(sin(th0 / 2), GSL_PREC_DOUBLE);
         worst = fmax(worst, fabs(lam - 4 * K * K) / lam);
       }
+      for (int k = 0; k < cable_solution_npts(s); k++) {
+        double t1 = s->u[4 * k], t2 = s->u[4 * k + 2];
+        amp1 = fmax(amp1, fabs(t1));
+        amp2 = fmax(amp2, fabs(t2));
+        diff = fmax(diff, fabs(t1 - t2));
+        sum = fmax(sum, fabs(t1 + t2));
+      }
     }
-    char what[96];
-    snprintf(what, sizeof what, "double BP, BPDIR=%d: the branch buckles", dir);
-    test_true(what, r->status > 0 && amp > 0.3);
+    char what[160], how[40];
+    if (isnan(cases[q].angle)) snprintf(how, sizeof how, "BPDIR=%d DS%c", cases[q].bpdir, cases[q].dsign > 0 ? '+' : '-');
+    else snprintf(how, sizeof how, "BPANGLE=%g DS%c", cases[q].angle, cases[q].dsign > 0 ? '+' : '-');
+    snprintf(what, sizeof what, "double BP, %s: the branch is computed and buckles (max |theta| %.3f)", how,
+             fmax(amp1, amp2));
+    test_true(what, r->status > 0 && r->nsol >= 3 && fmax(amp1, amp2) > 0.3);
+    /* a straight component is zero to the Newton tolerance (EPSU = 1e-7 relative
+       corrections, quadratic convergence leaves far less); a buckled one
+       reaches amplitude > 0.3 within 30 steps of 0.05..0.2 */
+    int kind = cases[q].kind, ok;
+    if (kind == 1) ok = amp1 > 0.3 && amp2 < 1e-6;
+    else if (kind == 2) ok = amp2 > 0.3 && amp1 < 1e-6;
+    else if (kind == 3) ok = amp1 > 0.3 && diff < 1e-6;
+    else ok = amp1 > 0.3 && sum < 1e-6;
+    snprintf(what, sizeof what, "double BP, %s: %s (max |theta1| %.3g, |theta2| %.3g, |theta1-theta2| %.3g, "
+             "|theta1+theta2| %.3g)", how, kinds[kind], amp1, amp2, diff, sum);
+    test_true(what, ok);
+    /* orientation (cont_switch.c): e1 and e2 are positive at t = 0 in their
+       first non-negligible component, so theta1(0) (kinds 1, 3) or theta2(0)
+       (kinds 2, 4: e2 enters 135 degrees with +sin) has the sign of DS */
+    const cable_solution *last = r->nsol ? r->sol[r->nsol - 1] : NULL;
+    double u0 = last ? last->u[kind == 1 || kind == 3 ? 0 : 2] : 0.0;
+    snprintf(what, sizeof what, "double BP, %s: the buckled theta(0) = %.4f has the sign of DS", how, u0);
+    test_true(what, u0 * cases[q].dsign > 0.3);
     /* FD Jacobians and NTST=40, NCOL=4: discretisation error (0.025)^8 pi^10 ~ 1e-8 */
-    snprintf(what, sizeof what, "double BP, BPDIR=%d: each buckled component on lambda = 4K^2", dir);
+    snprintf(what, sizeof what, "double BP, %s: each buckled component on lambda = 4K^2", how);
     test_le(what, worst, 1e-6);
     memrun_free(r);
   }
@@ -277,7 +493,10 @@ int main(void)
   test_bratu_fold(r);
   test_elastica(r);
   test_elastica_exact_zero_pivot(r);
+  test_elastica_fixed_steps(r);
+  test_integral_condition(r);
   test_superconvergence(r);
+  test_error_estimate(r);
   test_double_bp(r);
   free(r);
   return test_summary();

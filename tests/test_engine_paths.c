@@ -3,13 +3,19 @@
  *  - the stiff dichotomy u'' = k^2 u (k up to 60) is solved to 1e-10 relative at
  *    NTST = 50, and the determinant sign stays constant along the k continuation;
  *  - condensation vs KLU, analytic vs finite-difference Jacobians: same points;
- *  - restart from a stored label reproduces the next points;
+ *  - no allocation inside the Newton iteration (counted malloc calls);
+ *  - modified Newton: NWTN factorisations, then chord iterations;
+ *  - restart from a stored label reproduces the next points; a restart onto
+ *    another NTST and NCOL reaches the fold with the new mesh's accuracy;
  *  - failures: a fatal callback, a recoverable one down to DSMIN, a
  *    non-converging start: clean stop, status, message, last good point kept;
  *  - a solution that FUNC refuses at a mesh point is never accepted. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
 
 #include "cable_constants.h"
 #include "colloc_newton.h"
@@ -17,6 +23,53 @@
 #include "engine_util.h"
 #include "harness.h"
 #include "test_problems.h"
+
+/* Counting allocations: this program's malloc family forwards to glibc's and
+ * counts the calls, so that a test can assert that a code region allocates
+ * nothing (an allocation freed again before the region ends would escape a
+ * heap-size comparison).  malloc has no context argument, so the counter is
+ * a file-level variable, used by test_newton_no_alloc only.  Under
+ * AddressSanitizer (which must own malloc) the interposition is left out and
+ * only the net heap size (mallinfo2) is compared. */
+#if defined(__GLIBC__) && !defined(__SANITIZE_ADDRESS__)
+#define COUNT_ALLOCS 1
+static long alloc_calls;
+extern void *__libc_malloc(size_t n);
+extern void *__libc_calloc(size_t n, size_t size);
+extern void *__libc_realloc(void *p, size_t n);
+extern void *__libc_memalign(size_t align, size_t n);
+extern void __libc_free(void *p);
+void *malloc(size_t n)
+{
+  alloc_calls++;
+  return __libc_malloc(n);
+}
+void *calloc(size_t n, size_t size)
+{
+  alloc_calls++;
+  return __libc_calloc(n, size);
+}
+void *realloc(void *p, size_t n)
+{
+  alloc_calls++;
+  return __libc_realloc(p, n);
+}
+int posix_memalign(void **p, size_t align, size_t n)
+{
+  alloc_calls++;
+  *p = __libc_memalign(align, n);
+  return *p || n == 0 ? 0 : 12; /* ENOMEM */
+}
+void *aligned_alloc(size_t align, size_t n)
+{
+  alloc_calls++;
+  return __libc_memalign(align, n);
+}
+void free(void *p) { __libc_free(p); }
+#else
+#define COUNT_ALLOCS 0
+static long alloc_calls; /* stays 0: nothing counts */
+#endif
 
 /* no special-point detection unless a test asks */
 static void base_constants_quiet(cable_constants *c, int ntst, int ncol)
@@ -206,6 +259,151 @@ static void test_newton_solvers(void)
   free(x[1]);
 }
 
+/* No allocation inside the Newton iteration: after a warm-up solve (KINSOL
+ * sets up its linear solver on the first call), a second colloc_newton_solve
+ * from another start (several iterations: residuals, Jacobians,
+ * factorisations, solves) makes no malloc-family call and leaves the heap
+ * size unchanged.  Condensation and KLU, analytic and finite-difference
+ * Jacobians, full and modified Newton. */
+static void test_newton_no_alloc(void)
+{
+  static const struct {
+    cable_linsolver ls;
+    int jac, nwtn;
+    const char *name;
+  } cases[] = {{CABLE_LINSOLVER_CONDENSE, 1, 8, "condensation, JAC=1, full Newton"},
+               {CABLE_LINSOLVER_CONDENSE, 0, 8, "condensation, JAC=0, full Newton"},
+               {CABLE_LINSOLVER_CONDENSE, 1, 1, "condensation, JAC=1, NWTN=1 (modified Newton)"},
+               {CABLE_LINSOLVER_KLU, 1, 8, "KLU, JAC=1, full Newton"}};
+  /* KLU is the reference path and is not held to this: SUNDIALS' KLU wrapper
+     (SUNLinSolInitialize_KLU, called by every KINSol call) forces a new
+     symbolic analysis and factorisation (klu_analyze, klu_factor: allocating)
+     at the first setup of each solve; the count is printed, not tested. */
+  for (size_t q = 0; q < sizeof cases / sizeof cases[0]; q++) {
+    cable_constants c;
+    base_constants_quiet(&c, 20, 4);
+    c.linsolver = cases[q].ls;
+    c.jac = cases[q].jac;
+    c.itnw = 30;
+    c.nwtn = cases[q].nwtn;
+    int icp[1] = {0}, st;
+    colloc_system *s = colloc_system_alloc(cable_testproblem_bratu(), &c, 20, 4, icp, 1, &st);
+    colloc_newton *nw = s ? colloc_newton_alloc(s, &c, &st) : NULL;
+    double *x = s ? calloc((size_t)s->n, sizeof *x) : NULL;
+    if (!nw || !x) {
+      test_true("newton (allocation test) setup", 0);
+      free(x);
+      colloc_newton_free(nw);
+      colloc_system_free(s);
+      return;
+    }
+    int n = s->n;
+    s->closing = COLLOC_CLOSE_FIXPAR;
+    s->fixval = 2.0;
+    x[n - 1] = 2.0;
+    int warm = colloc_newton_solve(nw, x);
+    for (int i = 0; i < n; i++) x[i] = 0.0;
+    s->fixval = 3.0;
+    x[n - 1] = 3.0;
+#if defined(__GLIBC__)
+    struct mallinfo2 m0 = mallinfo2();
+#endif
+    long calls0 = COUNT_ALLOCS ? alloc_calls : 0;
+    int rc = colloc_newton_solve(nw, x);
+    long calls = COUNT_ALLOCS ? alloc_calls - calls0 : 0;
+#if defined(__GLIBC__)
+    struct mallinfo2 m1 = mallinfo2();
+    long grown = (long)m1.uordblks - (long)m0.uordblks;
+#else
+    long grown = 0;
+#endif
+    char what[200];
+    snprintf(what, sizeof what, "Newton (%s): warm-up and measured solves converge (%d iterations)", cases[q].name,
+             colloc_newton_iterations(nw));
+    test_true(what, warm == CABLE_SUCCESS && rc == CABLE_SUCCESS && colloc_newton_iterations(nw) >= 3);
+    if (cases[q].ls == CABLE_LINSOLVER_KLU) {
+      printf("  Newton (%s): %ld allocation calls, heap in use %+ld bytes (reference path, not tested)\n",
+             cases[q].name, calls, grown);
+    } else {
+      snprintf(what, sizeof what, "Newton (%s): no malloc/calloc/realloc call inside the iteration%s", cases[q].name,
+               COUNT_ALLOCS ? "" : " (not counted: sanitizer build)");
+      test_int(what, calls, 0);
+      snprintf(what, sizeof what, "Newton (%s): heap in use unchanged (mallinfo2 uordblks)", cases[q].name);
+      test_int(what, grown, 0);
+    }
+    free(x);
+    colloc_newton_free(nw);
+    colloc_system_free(s);
+  }
+}
+
+/* Modified Newton (NWTN < ITNW): NWTN factorisations, then chord iterations
+ * with the last one (AUTO's rule), converging to the full-Newton solution.
+ * Bratu at lambda = 3 from u = 0 (a poor start: several iterations). */
+static void test_modified_newton(void)
+{
+  static const int nwtns[] = {30, 3, 2, 1};
+  double *ref = NULL;
+  int n = 0, full_iters = 0;
+  for (size_t q = 0; q < sizeof nwtns / sizeof nwtns[0]; q++) {
+    cable_constants c;
+    base_constants_quiet(&c, 20, 4);
+    c.itnw = 30;
+    c.nwtn = nwtns[q];
+    c.epsl = c.epsu = 1e-10;
+    int icp[1] = {0}, st;
+    colloc_system *s = colloc_system_alloc(cable_testproblem_bratu(), &c, 20, 4, icp, 1, &st);
+    colloc_newton *nw = s ? colloc_newton_alloc(s, &c, &st) : NULL;
+    double *x = s ? calloc((size_t)s->n, sizeof *x) : NULL;
+    if (!nw || !x) {
+      test_true("modified Newton setup", 0);
+      free(x); colloc_newton_free(nw); colloc_system_free(s);
+      break;
+    }
+    n = s->n;
+    s->closing = COLLOC_CLOSE_FIXPAR;
+    s->fixval = 3.0;
+    x[n - 1] = 3.0;
+    int rc = colloc_newton_solve(nw, x);
+    int it = colloc_newton_iterations(nw), ns = colloc_newton_setups(nw);
+    char what[160];
+    snprintf(what, sizeof what, "NWTN=%d ITNW=30: converges (%d iterations, %d factorisations)", nwtns[q], it, ns);
+    test_true(what, rc == CABLE_SUCCESS);
+    if (q == 0) {
+      snprintf(what, sizeof what, "NWTN >= ITNW (full Newton): one factorisation per iteration");
+      test_int(what, ns, it);
+      full_iters = it;
+      ref = x;
+      x = NULL;
+    } else {
+      /* NWTN factorisations, then chord iterations (more of them than full
+         Newton needs); one more when the chord phase ends by the step test
+         (KINSOL re-factors before accepting it: colloc_newton.h) */
+      snprintf(what, sizeof what, "NWTN=%d: NWTN or NWTN+1 factorisations (%d) for %d iterations", nwtns[q], ns, it);
+      test_true(what, ns >= nwtns[q] && ns <= nwtns[q] + 1 && ns < it);
+      snprintf(what, sizeof what, "NWTN=%d: the chord method needs more iterations (%d) than full Newton (%d)", nwtns[q],
+               it, full_iters);
+      test_true(what, it > full_iters);
+      double d = 0;
+      for (int i = 0; ref && i < n; i++) d = fmax(d, fabs(x[i] - ref[i]));
+      /* both stop when the last correction is below 1e-10 (1 + |x|); the chord
+         method's linear rate leaves at most a few times that */
+      snprintf(what, sizeof what, "NWTN=%d: same solution as full Newton", nwtns[q]);
+      test_le(what, d, 1e-8);
+      /* the factorisation is offered for the tangent exactly when KINSOL's
+         final re-factorisation made it for the last iteration */
+      snprintf(what, sizeof what, "NWTN=%d: the last factorisation is offered for the tangent iff it is fresh", nwtns[q]);
+      struct abd_solver *abd;
+      colloc_jac *J;
+      test_int(what, colloc_newton_factorization(nw, &abd, &J) == 0, ns == nwtns[q] + 1);
+    }
+    free(x);
+    colloc_newton_free(nw);
+    colloc_system_free(s);
+  }
+  free(ref);
+}
+
 static void test_variants(void)
 {
   memrun *a = calloc(1, sizeof *a), *b = calloc(1, sizeof *b);
@@ -246,15 +444,81 @@ static void test_variants(void)
   if (s3) {
     c.nmx = 4;
     memrun_run(cable_testproblem_bratu(), &c, s3, b);
+    /* NMX counts the restart point: 3 new points, each compared (an empty or
+       one-point restart used to pass with nothing compared) */
+    int compared = 0;
     double d = 0;
-    for (int i = 1; i < b->n && at + i < a->n; i++)
+    for (int i = 1; i < b->n && at + i < a->n; i++, compared++)
       d = fmax(d, fabs(b->par[i][0] - a->par[at + i][0]) + fabs(b->l2[i] - a->l2[at + i]));
+    test_int("restart from label 3: the restart computes NMX points", b->n, 4);
+    test_int("restart from label 3: three points compared with the first run", compared, 3);
     test_le("restart from label 3 reproduces the next points", d, 1e-10);
   }
   memrun_free(a);
   memrun_free(b);
   free(a);
   free(b);
+}
+
+/* max |u - exact| at the mesh points of a lower-branch Bratu solution */
+static double bratu_mesh_error(const cable_solution *s)
+{
+  double lam = s->par[0], th = cable_bratu_theta(lam), err = 0;
+  for (int j = 0; j <= s->ntst; j++) {
+    int k = j * s->ncol;
+    err = fmax(err, fabs(s->u[2 * k] - cable_bratu_exact(lam, th, s->t[k])));
+  }
+  return err;
+}
+
+/* Restart onto another mesh: the lower-branch solution at lambda = 3 from an
+ * NTST=20, NCOL=4 run, re-interpolated onto NTST=13, NCOL=6, continues to the
+ * fold.  The fold and the first new point must have the new discretisation's
+ * accuracy, not the interpolant's: NCOL=6 interpolation of the NCOL=4
+ * polynomials is exact, but the NTST=13 mesh is not a refinement of the
+ * NTST=20 one, so the start is off by the old method's interpolation error. */
+static void test_restart_new_mesh(memrun *a, memrun *b)
+{
+  cable_constants c;
+  base_constants_quiet(&c, 20, 4);
+  c.ds = 0.1; c.dsmin = 1e-6; c.dsmax = 0.5; c.nmx = 100;
+  c.nuzr = 1; c.uzr[0].par = 0; c.uzr[0].value = 3.0; c.uzr[0].stop = 1;
+  c.epss = 1e-10;
+  memrun_run(cable_testproblem_bratu(), &c, NULL, a);
+  const cable_solution *uz = memrun_find(a, CABLE_TY_UZ, 0);
+  test_true("restart onto NTST=13 NCOL=6: the lambda = 3 solution stored", uz != NULL);
+  if (!uz) return;
+  base_constants_quiet(&c, 13, 6);
+  c.ds = 0.05; c.dsmin = 1e-6; c.dsmax = 0.2; c.nmx = 60; c.npr = 1;
+  c.ilp = 1; c.rl1 = 10.0;
+  c.epss = 1e-10;
+  memrun_run(cable_testproblem_bratu(), &c, uz, b);
+  const cable_solution *lp = memrun_find(b, CABLE_TY_LP, 0);
+  test_true("restart onto NTST=13 NCOL=6: the fold is found", lp != NULL);
+  /* NTST=13, NCOL=6: eigenvalue-type error O(h^(2 NCOL)) = 13^-12 ~ 4e-14 times
+     a modest constant; location to EPSS = 1e-10 of the step: the same 1e-9
+     bound as at NTST=20, NCOL=4 (test_engine_bvp.c) */
+  if (lp) {
+    test_int("restart onto NTST=13 NCOL=6: the stored fold has the new NTST", lp->ntst, 13);
+    test_int("restart onto NTST=13 NCOL=6: the stored fold has the new NCOL", lp->ncol, 6);
+    test_abs("restart onto NTST=13 NCOL=6: fold lambda*", lp->par[0], 3.513830719125162, 1e-9);
+  }
+  /* the first computed point (solution 1; 0 is the restart itself) on the
+     lower branch: mesh-point error at the new method's level, O(h^12) (13^-12
+     ~ 4e-14 times the derivative growth: < 1e-11; measured 2e-15), against
+     the interpolated start's O(h^5) of NCOL=4 between the old mesh points
+     (measured 7e-10 at the new mesh points) */
+  const cable_solution *first = b->nsol > 1 ? b->sol[1] : NULL;
+  if (first) {
+    char what[128];
+    snprintf(what, sizeof what, "restart onto NTST=13 NCOL=6: first new point (lambda = %.4f) has the new method's accuracy",
+             first->par[0]);
+    test_le(what, bratu_mesh_error(first), 1e-11);
+  } else {
+    test_true("restart onto NTST=13 NCOL=6: a point computed", 0);
+  }
+  memrun_free(a);
+  memrun_free(b);
 }
 
 /* Bratu, but FUNC fails beyond lambda = limit: fatal (< 0) or recoverable (> 0). */
@@ -365,6 +629,14 @@ int main(void)
   test_stored_after_adapt(r);
   test_stiff();
   test_variants();
+  test_newton_no_alloc();
+  test_modified_newton();
+  {
+    memrun *a = calloc(1, sizeof *a), *b = calloc(1, sizeof *b);
+    if (a && b) test_restart_new_mesh(a, b);
+    free(a);
+    free(b);
+  }
   test_failures(r);
   test_domain_at_mesh_points(r);
   free(r);
