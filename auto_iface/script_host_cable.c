@@ -95,6 +95,7 @@ static int find_problem(cable_replay *r, const char *e, const cable_constants *c
     const char *name;
     const cable_problem *(*get)(void);
   } tests[] = {{"bratu", cable_testproblem_bratu},
+               {"bratu_int", cable_testproblem_bratu_int},
                {"elastica", cable_testproblem_elastica},
                {"layer", cable_testproblem_layer},
                {"stiff", cable_testproblem_stiff}};

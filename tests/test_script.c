@@ -1091,6 +1091,20 @@ static void test_engine_script(void)
   test_abs("plug-in PVLS umax at the fold vs closed form", um, BRATU_FOLD_UMAX, BRATU_UMAX_TOL);
   free(log);
 
+  /* e='bratu_int' from the command-line/script name table: the integral
+     condition int u dt = mu leaves Bratu's fold where it was */
+  rc = replay(NULL,
+              "r = run(e='bratu_int', c='bratu', NINT=1, ICP=['lambda', 'mu'])\n"
+              "print('bratu_int', r('LP1')['lambda'])\n",
+              &log, &err);
+  if (rc) printf("  error: %s\n", cable_error_format(&err, buf, sizeof buf));
+  test_int("e='bratu_int' through a script: status", rc, 0);
+  pl = 0;
+  l = log_line(log, "bratu_int ");
+  test_true("bratu_int: the fold is printed", l && sscanf(l, "%lf", &pl) == 1);
+  test_abs("bratu_int: fold lambda vs closed form", pl, BRATU_FOLD_LAMBDA, BRATU_FOLD_TOL);
+  free(log);
+
   /* user zeros by parameter name, and e= from the constants file */
   rc = replay(NULL,
               "r = run(c='bratu', UZR={'lambda': [1, 2]}, NMX=20)\n"
