@@ -90,10 +90,29 @@ static void emit(cable_cont *cc, const cable_sink *sink, int ibr, int *lab)
   }
 }
 
+/* AUTO's STOP = ['BP2', 'UZ3', ...]: end the branch at the n-th labelled
+ * point of that type (the start, always an EP or a restart, is not counted).
+ * seen[k] counts the points of the k-th entry's type so far. */
+static int stop_reached(const cable_cont *cc, int *seen)
+{
+  if (cc->ended || cc->npt <= 1 || cc->pt.itp == CABLE_TY_NONE) return 0;
+  int itp = cc->pt.itp, base = itp >= 0 ? itp % 10 : -((-itp) % 10);
+  for (int k = 0; k < cc->c.nstop; k++)
+    if (base == cc->c.stop_on[k] && ++seen[k] == cc->c.stop_count[k]) return 1;
+  return 0;
+}
+
 int cable_cont_run(cable_cont *cc, const cable_sink *sink, int ibr, int first_label, int *next_label)
 {
   int lab = first_label, rc;
-  while ((rc = cable_cont_step(cc)) == CABLE_SUCCESS) emit(cc, sink, ibr, &lab);
+  int seen[sizeof cc->c.stop_on / sizeof cc->c.stop_on[0]] = {0};
+  while ((rc = cable_cont_step(cc)) == CABLE_SUCCESS) {
+    emit(cc, sink, ibr, &lab);
+    if (stop_reached(cc, seen)) {
+      cc->ended = 1;
+      cc->end_status = CABLE_END_STOP;
+    }
+  }
   if (rc < 0 && cc->npt > 0) {
     /* the branch ends abnormally: the last good point is stored as MX */
     cc->pt.itp = CABLE_TY_MX;

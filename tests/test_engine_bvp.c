@@ -261,6 +261,32 @@ static void test_integral_condition(memrun *r)
   memrun_free(r);
 }
 
+/* AUTO's STOP: the straight elastica with STOP = ['BP2'] ends at its second
+ * branch point (4 pi^2), which is the branch's last point; RG counts the
+ * NPR-labelled points. */
+static void test_stop(memrun *r)
+{
+  cable_constants c;
+  engine_constants(&c, 50, 5);
+  c.ds = 0.5; c.dsmin = 1e-6; c.dsmax = 4.0; c.nmx = 200;
+  c.rl1 = 100.0;
+  c.isp = 2; c.ilp = 0;
+  c.epss = 1e-10;
+  c.nstop = 1; c.stop_on[0] = CABLE_TY_BP; c.stop_count[0] = 2;
+  memrun_run(cable_testproblem_elastica(), &c, NULL, r);
+  test_int("STOP=['BP2']: the branch ends with CABLE_END_STOP", r->status, CABLE_END_STOP);
+  test_int("STOP=['BP2']: two branch points", memrun_count(r, CABLE_TY_BP), 2);
+  test_true("STOP=['BP2']: the last point is the BP at (2 pi)^2",
+            r->n > 0 && r->itp[r->n - 1] == CABLE_TY_BP && fabs(r->par[r->n - 1][0] - 4 * M_PI * M_PI) < 1e-6);
+  memrun_free(r);
+  c.nstop = 1; c.stop_on[0] = CABLE_TY_RG; c.stop_count[0] = 3;
+  c.npr = 4; c.isp = 0;
+  memrun_run(cable_testproblem_elastica(), &c, NULL, r);
+  test_int("STOP=['RG3'] with NPR=4: ends with CABLE_END_STOP", r->status, CABLE_END_STOP);
+  test_int("STOP=['RG3'] with NPR=4: ends at point 12", r->n, 12);
+  memrun_free(r);
+}
+
 /* max mesh-point error of the Bratu solution at lambda ~ 1 */
 static double bratu_error(memrun *r, int ntst, int ncol)
 {
@@ -493,6 +519,7 @@ int main(void)
   test_bratu_fold(r);
   test_elastica(r);
   test_elastica_exact_zero_pivot(r);
+  test_stop(r);
   test_elastica_fixed_steps(r);
   test_integral_condition(r);
   test_superconvergence(r);
