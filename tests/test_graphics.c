@@ -687,6 +687,83 @@ static void test_plot(void)
   test_true("plot error: nothing created", !file_exists(OUTDIR "/no"));
 }
 
+/* Bounding box [x0, x1] x [y0, y1] of the pixels that differ between two
+ * images of equal size; returns their number. */
+static long diff_bbox(cairo_surface_t *a, cairo_surface_t *b, int box[4])
+{
+  int w = cairo_image_surface_get_width(a), h = cairo_image_surface_get_height(a);
+  long n = 0;
+  box[0] = w, box[1] = h, box[2] = -1, box[3] = -1;
+  for (int y = 0; y < h; y++)
+    for (int x = 0; x < w; x++) {
+      int ca[3], cb[3];
+      rgb_at(a, x, y, ca);
+      rgb_at(b, x, y, cb);
+      if (ca[0] == cb[0] && ca[1] == cb[1] && ca[2] == cb[2]) continue;
+      n++;
+      if (x < box[0]) box[0] = x;
+      if (y < box[1]) box[1] = y;
+      if (x > box[2]) box[2] = x;
+      if (y > box[3]) box[3] = y;
+    }
+  return n;
+}
+
+static cairo_surface_t *plot_to_surface(const plot_branch *b, int nb, const plot_annotation *an, int na,
+                                        const char *path)
+{
+  plot_options o = {"T", "F", NULL, 400, 300, PLOT_FORMAT_PNG};
+  if (plot_bifurcation_annotated(b, nb, an, na, &o, path) != CABLE_SUCCESS) return NULL;
+  return cairo_image_surface_create_from_png(path);
+}
+
+/* Mark labels stay inside the plot area: a mark in the top right corner of
+ * the data (knot72_mirror.png's "(a) mirrored" was cut at the right edge) has
+ * its text to the left of and below the marker.  Two branches labelled at one
+ * point get one joined label ("1, 7": knot72.png's two flat arms at T = 0), not
+ * two labels drawn over each other. */
+static void test_plot_labels(void)
+{
+  double x[11], y[11];
+  for (int i = 0; i < 11; i++) x[i] = i, y[i] = 100 + 10 * i;
+  plot_branch b = {"line", 11, x, y, NULL, NULL};
+  plot_annotation bare = {10, 200, NULL, 0}, text = {10, 200, "(a) mirrored", 0};
+  cairo_surface_t *s0 = plot_to_surface(&b, 1, NULL, 0, OUTDIR "/lab0.png");
+  cairo_surface_t *s1 = plot_to_surface(&b, 1, &bare, 1, OUTDIR "/lab1.png");
+  cairo_surface_t *s2 = plot_to_surface(&b, 1, &text, 1, OUTDIR "/lab2.png");
+  int mk[4], tx[4];
+  long nm = s0 && s1 && s2 ? diff_bbox(s0, s1, mk) : 0, nt = nm ? diff_bbox(s1, s2, tx) : 0;
+  test_true("plot labels: the marker and its text are drawn", nm > 0 && nt > 0);
+  double cx = 0.5 * (mk[0] + mk[2]), cy = 0.5 * (mk[1] + mk[3]);
+  char buf[200];
+  /* the difference may include the legend, which moves away from the label */
+  snprintf(buf, sizeof buf, "plot labels: a top-right mark's text (and all else it changes) lies left of and below"
+           " it (changes x %d..%d y %d..%d, marker at %.0f, %.0f)", tx[0], tx[2], tx[1], tx[3], cx, cy);
+  test_true(buf, nt > 0 && tx[2] < cx && tx[1] > cy);
+  if (s0) cairo_surface_destroy(s0);
+  if (s1) cairo_surface_destroy(s1);
+  if (s2) cairo_surface_destroy(s2);
+
+  /* two branches starting at (0, 100), labelled 1 and 7 there */
+  int lab1[11] = {1}, lab7[11] = {7}, lab0[11] = {0};
+  plot_branch two[2] = {{"a", 11, x, y, NULL, lab1}, {"b", 11, x, y, NULL, lab7}};
+  plot_branch one[2] = {{"a", 11, x, y, NULL, lab1}, {"b", 11, x, y, NULL, lab0}};
+  plot_branch none[2] = {{"a", 11, x, y, NULL, lab0}, {"b", 11, x, y, NULL, lab0}};
+  cairo_surface_t *n0 = plot_to_surface(none, 2, NULL, 0, OUTDIR "/lab3.png");
+  cairo_surface_t *n1 = plot_to_surface(one, 2, NULL, 0, OUTDIR "/lab4.png");
+  cairo_surface_t *n2 = plot_to_surface(two, 2, NULL, 0, OUTDIR "/lab5.png");
+  int b1[4], b2[4];
+  long d1 = n0 && n1 && n2 ? diff_bbox(n0, n1, b1) : 0, d2 = d1 ? diff_bbox(n0, n2, b2) : 0;
+  /* ", 7" adds at least two character widths: at the smallest font (8 px)
+   * more than 6 px; labels drawn over each other add none */
+  snprintf(buf, sizeof buf, "plot labels: labels 1 and 7 at one point are joined (widths %d and %d px)",
+           d1 ? b1[2] - b1[0] + 1 : 0, d2 ? b2[2] - b2[0] + 1 : 0);
+  test_true(buf, d1 > 0 && d2 > 0 && (b2[2] - b2[0]) - (b1[2] - b1[0]) > 6);
+  if (n0) cairo_surface_destroy(n0);
+  if (n1) cairo_surface_destroy(n1);
+  if (n2) cairo_surface_destroy(n2);
+}
+
 /* ------------------------------------------------------------- render */
 
 typedef struct {
@@ -1119,6 +1196,7 @@ int main(void)
   test_frames();
   test_mesh();
   test_plot();
+  test_plot_labels();
   test_render_knot();
   test_render_depth();
   test_render_errors();
