@@ -828,6 +828,66 @@ static double knot_coverage(const render_camera *cam, double R, double a, double
   return 2 * PI * R * width * cam->scale * cam->scale / ((double)cam->width * cam->height);
 }
 
+/* The pixel statistics a rendered (7,2) knot must show, each a yes/no:
+ * coverage within 15 % of the tube geometry's (boundary pixels count when a
+ * third covered, +-0.5 px on a band about 8 px wide, 6 %; ring facets,
+ * cos(pi/13) = 0.97, 3 %; the band's width varying along the knot), shading
+ * (>= 50 distinct colours), and each strand's colour on >= 25 % of the
+ * covered pixels (by symmetry each strand is in front half the time), with
+ * something covered at all. */
+#define KNOT_COVER_TOL 0.15
+#define KNOT_MIN_COLOURS 50
+
+typedef struct {
+  int coverage, shading, red, blue;
+} knot_verdict;
+
+static knot_verdict knot_pixel_checks(const pixel_stats *st, long npix, double want)
+{
+  double cover = (double)st->covered / (double)npix;
+  knot_verdict v;
+  v.coverage = isfinite(cover) && want > 0 && fabs(cover - want) <= KNOT_COVER_TOL * want;
+  v.shading = st->distinct >= KNOT_MIN_COLOURS;
+  v.red = st->covered > 0 && st->red >= st->covered / 4;
+  v.blue = st->covered > 0 && st->blue >= st->covered / 4;
+  return v;
+}
+
+/* The checks reject what is not a rendered knot: a blank image, an image of
+ * one colour, and a band of one flat colour covering exactly the knot's
+ * expected area (so only the shading and strand checks can catch it). */
+static void test_knot_checks_negative(double want)
+{
+  const char *path[3] = {OUTDIR "/blank.png", OUTDIR "/grey.png", OUTDIR "/flatband.png"};
+  for (int k = 0; k < 3; k++) {
+    cairo_surface_t *s = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, SIZE, SIZE);
+    cairo_t *cr = cairo_create(s);
+    cairo_set_antialias(cr, CAIRO_ANTIALIAS_NONE);
+    cairo_set_source_rgb(cr, k == 1 ? 0.5 : 1.0, k == 1 ? 0.5 : 1.0, k == 1 ? 0.5 : 1.0);
+    cairo_paint(cr);
+    if (k == 2) {
+      /* an annulus about the centre of area want x SIZE^2 and width 8 px */
+      double w = 8, rmid = want * SIZE * SIZE / (2 * PI * w);
+      cairo_set_source_rgb(cr, 0.85, 0.12, 0.10);
+      cairo_arc(cr, SIZE / 2.0, SIZE / 2.0, rmid + w / 2, 0, 2 * PI);
+      cairo_arc_negative(cr, SIZE / 2.0, SIZE / 2.0, rmid - w / 2, 2 * PI, 0);
+      cairo_fill(cr);
+    }
+    cairo_destroy(cr);
+    cairo_surface_write_to_png(s, path[k]);
+    cairo_surface_destroy(s);
+    pixel_stats st = image_stats(path[k]);
+    knot_verdict v = knot_pixel_checks(&st, (long)SIZE * SIZE, want);
+    char buf[200];
+    static const char *const what[3] = {"a blank image", "a single-colour image", "a flat one-colour band of the knot's area"};
+    snprintf(buf, sizeof buf, "render checks reject %s (covered %ld, %ld colours, red %ld, blue %ld: coverage %s,"
+             " shading %s, strands %s)", what[k], st.covered, st.distinct, st.red, st.blue, v.coverage ? "ok" : "fails",
+             v.shading ? "ok" : "fails", v.red && v.blue ? "ok" : "fail");
+    test_true(buf, !(v.coverage && v.shading && v.red && v.blue));
+    if (k == 2) test_true("  the band has the knot's coverage: only shading and strand colours reject it", v.coverage);
+  }
+}
+
 static void test_render_knot(void)
 {
   enum { N = 400 };
@@ -847,14 +907,12 @@ static void test_render_knot(void)
   double cover = (double)st.covered / (SIZE * SIZE), want = knot_coverage(&cam, R, a, a * cam.thicken);
   printf("     knot: covered %.4f (geometry %.4f), %ld colours, red %ld, blue %ld, thicken %g\n", cover,
          want, st.distinct, st.red, st.blue, cam.thicken);
-  /* 15 %: boundary pixels count when a third covered (+-0.5 px on a band
-   * about 8 px wide, 6 %), ring facets (cos(pi/13) = 0.97, 3 %), and the
-   * band's width varying along the knot */
-  test_rel("render: coverage matches the tube geometry", cover, want, 0.15);
-  test_true("render: shading gives >= 50 distinct colours", st.distinct >= 50);
-  /* by symmetry each strand is in front half the time */
-  test_true("render: strand 1 colour on >= 25 % of covered pixels", st.red >= st.covered / 4);
-  test_true("render: strand 2 colour on >= 25 % of covered pixels", st.blue >= st.covered / 4);
+  knot_verdict v = knot_pixel_checks(&st, (long)SIZE * SIZE, want);
+  test_true("render: coverage matches the tube geometry (within 15 %)", v.coverage);
+  test_true("render: shading gives >= 50 distinct colours", v.shading);
+  test_true("render: strand 1 colour on >= 25 % of covered pixels", v.red);
+  test_true("render: strand 2 colour on >= 25 % of covered pixels", v.blue);
+  test_knot_checks_negative(want);
 
   /* the paper's thin strands, automatic thickening: the drawn radius is
    * RENDER_MIN_RADIUS_PX, and the band is as wide as that predicts */
