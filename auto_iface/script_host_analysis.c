@@ -19,18 +19,23 @@
  *       run directory, with the marked solutions as open circles
  *   render(sol, 'fig.png', view=[x, y, z], size=600, thicken=0, vtp='f.vtp', ply='f.ply')
  *       a shaded picture of a braid solution with its pressure profiles
- *   overlap_free(result)          -> [[T_from, T_to, T_lo, T_hi, to_end], ...]
+ *   overlap_free(result)          -> [[T_from, T_to, T_lo, T_hi, to_end, to_passage], ...]
  *       the stretches of each branch (in branch order, T at their ends, the
- *       range of T they cover, 1 when the branch ends inside) where the strand
- *       tubes do not overlap (dmin > 1), from the labelled solutions; an end
- *       between two labels is interpolated linearly in dmin, so its accuracy
- *       is the label spacing (NPR) */
+ *       range of T they cover, 1 when the branch ends inside, 1 when it ends at
+ *       a self-passage of the braid axis) where the strand tubes do not
+ *       overlap (dmin > 1), from the labelled solutions; an end between two
+ *       labels is interpolated linearly in dmin, so its accuracy is the label
+ *       spacing (NPR); a passage of the axis through itself between two labels
+ *       (axis_passages.h) ends a stretch at the passage's interpolated T even
+ *       when both labels are free (the overlap around it is narrower than the
+ *       label spacing) */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "atomic_file.h"
+#include "axis_passages.h"
 #include "braid_analysis.h"
 #include "braid_state.h"
 #include "cable_pictures.h"
@@ -123,6 +128,36 @@ static void knot_text(const knot_type_result *k, char *buf, size_t len)
   snprintf(buf, len, "%s%s", k->handedness > 0 ? "right " : k->handedness < 0 ? "left " : "", k->name);
 }
 
+/* Self-passages of the braid axis between consecutive labelled solutions
+ * of a branch, solutions 0..upto (axis_passages.h).  Per interval only the
+ * net signed number is trusted: parts that pass and come back between two
+ * labels, or a straight-line homotopy that is no longer faithful (at folds,
+ * where distant parts of the axis come within a fraction of Delta), give
+ * events of both signs that cancel.  *passes: the sum of |net| over the
+ * intervals (a lower bound of the passages), *net: the signed sum (equal to
+ * (Lk(end) - Lk(start))/2, an independent check of Lk), *mixed: intervals
+ * with events of both signs.  tau/net_iv (may be NULL, [upto]): per interval
+ * i -> i+1, the homotopy parameter of its first passage (NAN: none) and its
+ * net count. */
+static int branch_passages(const rp_branch *br, int upto, int *passes, int *net, int *mixed, double *tau, int *net_iv,
+                           cable_error *err)
+{
+  *passes = *net = *mixed = 0;
+  for (int i = 0; i < upto && i + 1 < br->nsol; i++) {
+    axis_passages ap;
+    int rc = braid_axis_passages(br->sol[i], br->sol[i + 1], &ap);
+    if (rc)
+      return cable_error_set(err, rc, NULL, 0, NULL, "labels %d and %d: cannot follow the braid axis between them (%s)",
+                             br->sol[i]->lab, br->sol[i + 1]->lab, cable_status_message(rc));
+    *passes += abs(ap.net);
+    *net += ap.net;
+    *mixed += ap.count > abs(ap.net);
+    if (tau) tau[i] = ap.net != 0 ? ap.tau_first : (double)NAN;
+    if (net_iv) net_iv[i] = ap.net;
+  }
+  return 0;
+}
+
 /* A UZ label lies at the target T to the engine's location accuracy: the
  * arclength of a located user zero converges to EPSS |DS| (1e-7 x DSMAX 5 in
  * the knot scenes), so T is off by well under 1e-6; 1e-5 (relative above
@@ -197,6 +232,7 @@ typedef struct compare_row {
   compare_pick pick;
   double t_target, f_target, lk_target, rel;
   double dlk_half;              /* (Lk - Lk_ref)/2, NAN without a reference */
+  int passes, net, mixed;       /* axis self-passages along the branch up to the point */
   braid_analysis a;
   char knot[64];
 } compare_row;
@@ -220,6 +256,9 @@ static int compare_row_dict(const compare_row *w, script_value *out)
   if (!rc) rc = dict_num(&d, "lk_in_tube", w->a.topo.lk_in_tube);
   if (!rc) rc = dict_num(&d, "lk_paper", w->lk_target);
   if (!rc) rc = dict_num(&d, "dLk_half", w->dlk_half);
+  if (!rc) rc = dict_num(&d, "passes", w->passes);
+  if (!rc) rc = dict_num(&d, "passes_net", w->net);
+  if (!rc) rc = dict_num(&d, "passes_mixed", w->mixed);
   if (!rc) rc = dict_str(&d, "knot", k->name);
   if (!rc) rc = dict_num(&d, "hand", k->handedness);
   if (!rc) rc = dict_num(&d, "crossings", k->crossing_number);
@@ -241,22 +280,27 @@ static void compare_header(FILE *f)
              "#   the branch's UZ labels at that T was taken, of how many)\n"
              "# Lk = Tw + Wr of the contact-curve ribbon; dLk/2: (Lk - Lk_ref)/2 against the unbuckled\n"
              "#   reference, the net number of self-passages of the braid axis that Lk implies;\n"
+             "# pass: self-passages of the braid axis counted along the branch from its start to the point\n"
+             "#   (edges of the axis polyline that pass through each other between consecutive labels), and\n"
+             "#   their signed sum in brackets, which must equal dLk/2; '*': between some labels the axis\n"
+             "#   passed both ways (those cancel and are not counted)\n"
              "# Lk_tube: Lk minus the writhe of the companion knot's minimal diagram (handedness x crossing\n"
              "#   number for a torus knot: +3 right trefoil, -3 left), the paper's 'linking number', quoted\n"
              "#   in brackets; pmin: minimum contact force per length;\n"
              "# dmin: closest approach of non-adjacent strand centrelines / Delta (< 1: tubes overlap);\n"
              "# err: discretisation-error estimate of the stored solution\n");
-  fprintf(f, "%-5s %4s %5s %12s %12s %14s %9s %9s %5s %15s %-22s %11s %7s %9s\n", "point", "LAB", "uz", "T",
-          "F_paper", "F_cable", "rel", "Lk", "dLk/2", "Lk_tube(paper)", "braid axis", "pmin", "dmin", "err");
+  fprintf(f, "%-5s %4s %5s %12s %12s %14s %9s %9s %5s %9s %15s %-22s %11s %7s %9s\n", "point", "LAB", "uz", "T",
+          "F_paper", "F_cable", "rel", "Lk", "dLk/2", "pass", "Lk_tube(paper)", "braid axis", "pmin", "dmin", "err");
 }
 
 static void compare_line(FILE *f, const compare_row *w)
 {
-  char tube[40], uz[16];
+  char tube[40], uz[16], pass[24];
   snprintf(tube, sizeof tube, "%.4g (%.4g)", w->a.topo.lk_in_tube, w->lk_target);
   snprintf(uz, sizeof uz, "%d/%d", w->pick.k, w->pick.nuz);
-  fprintf(f, "%-5s %4d %5s %12.6f %12.6f %14.7f %9.2e %9.5f %5.1f %15s %-22s %11.4g %7.3f %9.2e\n", w->name,
-          w->s->lab, uz, w->s->par[BP_T], w->f_target, w->s->par[BP_F], w->rel, w->a.topo.lk, w->dlk_half, tube,
+  snprintf(pass, sizeof pass, "%d (%d)%s", w->passes, w->net, w->mixed ? "*" : "");
+  fprintf(f, "%-5s %4d %5s %12.6f %12.6f %14.7f %9.2e %9.5f %5.1f %9s %15s %-22s %11.4g %7.3f %9.2e\n", w->name,
+          w->s->lab, uz, w->s->par[BP_T], w->f_target, w->s->par[BP_F], w->rel, w->a.topo.lk, w->dlk_half, pass, tube,
           w->knot, fmin(w->a.pmin1, w->a.pmin2), w->a.tube.dmin, w->s->err_est);
 }
 
@@ -294,6 +338,7 @@ static int compare_eval_row(const script_value *row, size_t i, double lk_ref, co
   if ((rc = analyze_solution(w->s, &w->a, err))) return rc;
   w->rel = fabs(w->s->par[BP_F] - w->f_target) / fabs(w->f_target);
   w->dlk_half = isnan(lk_ref) ? (double)NAN : (w->a.topo.lk - lk_ref) / 2;
+  if ((rc = branch_passages(w->pick.br, w->pick.isol, &w->passes, &w->net, &w->mixed, NULL, NULL, err))) return rc;
   knot_text(&w->a.topo.axis, w->knot, sizeof w->knot);
   return 0;
 }
@@ -428,38 +473,54 @@ static int fn_render(cable_replay *r, int nargs, const script_value *args, const
 }
 
 /* One overlap-free stretch of a branch: T at its ends (in branch order), the
- * range of T it covers (a fold inside it turns T back), and whether it runs
- * to the branch's last label (the branch ends inside it, so it may go on). */
+ * range of T it covers (a fold inside it turns T back), whether it runs to
+ * the branch's last label (the branch ends inside it, so it may go on), and
+ * whether it ends at a self-passage of the braid axis. */
 typedef struct free_stretch {
   double t_from, t_to, t_lo, t_hi;
-  int to_end;
+  int to_end, to_passage;
 } free_stretch;
+
+static void stretch_extend(free_stretch *st, double t)
+{
+  st->t_lo = fmin(st->t_lo, t);
+  st->t_hi = fmax(st->t_hi, t);
+}
 
 /* The stretches where d > 1 along samples (t[i], d[i]) in branch order; an
  * end between two samples is the linear interpolant's crossing of d = 1.
- * Returns the count (it may exceed max; only max are stored). */
-static int free_stretches(const double *t, const double *d, int n, free_stretch *st, int max)
+ * tau[i] (i < n-1, NAN: none): the braid axis passes through itself between
+ * samples i and i+1, at that fraction of the way: the tubes overlap there even
+ * if both samples are free, so a stretch ends (and the next begins) at the
+ * interpolated T of the passage.  Returns the count (it may exceed max; only
+ * max are stored). */
+static int free_stretches(const double *t, const double *d, const double *tau, int n, free_stretch *st, int max)
 {
   int count = 0;
   free_stretch cur = {0};
+#define STRETCH_CLOSE(T_END, END, PASS)        \
+  do {                                         \
+    cur.t_to = (T_END);                        \
+    stretch_extend(&cur, cur.t_to);            \
+    cur.to_end = (END), cur.to_passage = (PASS); \
+    if (count < max) st[count] = cur;          \
+    count++;                                   \
+  } while (0)
   for (int i = 0; i < n; i++) {
     int free_now = d[i] > 1.0, free_before = i > 0 && d[i - 1] > 1.0;
     double cross = i > 0 && free_now != free_before ? t[i - 1] + (1.0 - d[i - 1]) * (t[i] - t[i - 1]) / (d[i] - d[i - 1])
                                                     : t[i];
-    if (free_now && !free_before) cur = (free_stretch){cross, cross, cross, cross, 0};
-    if (free_before || free_now) {
-      double te = free_now ? t[i] : cross;
-      cur.t_lo = fmin(cur.t_lo, te);
-      cur.t_hi = fmax(cur.t_hi, te);
+    if (free_before && free_now && !isnan(tau[i - 1])) {
+      double tp = t[i - 1] + tau[i - 1] * (t[i] - t[i - 1]);
+      STRETCH_CLOSE(tp, 0, 1);
+      cur = (free_stretch){tp, tp, tp, tp, 0, 0};
     }
-    int close_here = (!free_now && free_before) || (free_now && i == n - 1);
-    if (close_here) {
-      cur.t_to = free_now ? t[i] : cross;
-      cur.to_end = free_now;
-      if (count < max) st[count] = cur;
-      count++;
-    }
+    if (free_now && !free_before) cur = (free_stretch){cross, cross, cross, cross, 0, 0};
+    if (free_now) stretch_extend(&cur, t[i]);
+    if (!free_now && free_before) STRETCH_CLOSE(cross, 0, 0);
+    else if (free_now && i == n - 1) STRETCH_CLOSE(t[i], 1, 0);
   }
+#undef STRETCH_CLOSE
   return count;
 }
 
@@ -468,8 +529,8 @@ static int stretch_append(script_value *list, const free_stretch *st)
   script_value iv;
   int rc = script_list_new(&iv);
   if (rc) return rc;
-  double v[5] = {st->t_from, st->t_to, st->t_lo, st->t_hi, st->to_end};
-  for (int k = 0; k < 5 && !rc; k++) rc = script_list_append(&iv, script_number(v[k]));
+  double v[6] = {st->t_from, st->t_to, st->t_lo, st->t_hi, st->to_end, st->to_passage};
+  for (int k = 0; k < 6 && !rc; k++) rc = script_list_append(&iv, script_number(v[k]));
   if (rc || (rc = script_list_append(list, iv))) {
     script_value_release(&iv);
     return rc;
@@ -490,9 +551,11 @@ static int fn_overlap_free(int nargs, const script_value *args, script_value *ou
   for (int b = 0; b < res->nbr && !rc; b++) {
     const rp_branch *br = res->br[b];
     size_t n = (size_t)(br->nsol > 0 ? br->nsol : 1);
-    double *t = malloc(n * sizeof *t), *d = malloc(n * sizeof *d);
+    double *t = malloc(n * sizeof *t), *d = malloc(n * sizeof *d), *tau = malloc(n * sizeof *tau);
     free_stretch *st = malloc(OVERLAP_MAX_INTERVALS * sizeof *st);
-    if (!t || !d || !st) rc = cable_error_set(err, CABLE_ERR_ALLOC, NULL, 0, NULL, "out of memory");
+    if (!t || !d || !tau || !st) rc = cable_error_set(err, CABLE_ERR_ALLOC, NULL, 0, NULL, "out of memory");
+    int passes, net, mixed;
+    if (!rc) rc = branch_passages(br, br->nsol - 1, &passes, &net, &mixed, tau, NULL, err);
     for (int i = 0; !rc && i < br->nsol; i++) {
       const cable_solution *s = br->sol[i];
       tube_distance_result td;
@@ -502,11 +565,12 @@ static int fn_overlap_free(int nargs, const script_value *args, script_value *ou
       t[i] = s->par[BP_T];
       d[i] = td.dmin;
     }
-    int m = rc ? 0 : free_stretches(t, d, br->nsol, st, OVERLAP_MAX_INTERVALS);
+    int m = rc ? 0 : free_stretches(t, d, tau, br->nsol, st, OVERLAP_MAX_INTERVALS);
     for (int k = 0; !rc && k < m && k < OVERLAP_MAX_INTERVALS; k++)
       if ((rc = stretch_append(&list, &st[k]))) cable_error_set(err, rc, NULL, 0, NULL, "out of memory");
     free(t);
     free(d);
+    free(tau);
     free(st);
   }
   if (rc) {

@@ -8,7 +8,8 @@
  * minus the writhe of the companion's minimal diagram, non-negative contact
  * pressure.  The paper's values are comparison targets only.
  *
- * First, compare() itself on a small case: two cheap flat branches with a UZ
+ * First, the axis-passage counter (axis_passages.h) on closed-form curves, and
+ * compare() itself on a small case: two cheap flat branches with a UZ
  * label each at the same T (different Delta, so different F); compare must take
  * the crossing whose F is nearest the target, and refuse rows it cannot match
  * without leaving a table file behind.
@@ -22,6 +23,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "axis_passages.h"
 #include "braid_resolver.h"
 #include "cable_error.h"
 #include "cable_status.h"
@@ -96,6 +98,67 @@ static const char *log_line(const char *log, const char *prefix, int k)
   for (const char *p = log; p && *p; p = strchr(p, '\n') ? strchr(p, '\n') + 1 : NULL)
     if (strncmp(p, prefix, strlen(prefix)) == 0 && k-- == 0) return p + strlen(prefix);
   return NULL;
+}
+
+/* ---- the axis-passage counter on closed-form curves ----------------------------- */
+
+#define NCURVE 400
+static const double PI = 3.14159265358979323846;
+
+/* A figure-eight-like closed curve (x, y) = (cos th, sin th cos th) whose one
+ * planar self-crossing (th = pi/2 and 3 pi/2) is lifted apart by z = eps sin th,
+ * or a trefoil projection (sin th + 2 sin 2th, cos th - 2 cos 2th) lifted by
+ * z = eps sin 3th at its three crossings; rot: a rotation about z. */
+static void test_curve(int trefoil, double eps, double rot, double *xyz, double *pos)
+{
+  for (int k = 0; k < NCURVE; k++) {
+    double th = 2 * PI * k / NCURVE, x, y, z;
+    if (trefoil) x = sin(th) + 2 * sin(2 * th), y = cos(th) - 2 * cos(2 * th), z = eps * sin(3 * th);
+    else x = cos(th), y = sin(th) * cos(th), z = eps * sin(th);
+    xyz[3 * k] = cos(rot) * x - sin(rot) * y;
+    xyz[3 * k + 1] = sin(rot) * x + cos(rot) * y;
+    xyz[3 * k + 2] = z;
+    pos[k] = (double)k / NCURVE;
+  }
+}
+
+static void test_curve_passages(void)
+{
+  static double a[3 * NCURVE], b[3 * NCURVE], c[3 * NCURVE], pos[NCURVE];
+  axis_passages ap, back;
+  /* window 0.05 of the period: the crossing parts are half a period apart */
+  test_curve(0, 0.1, 0, a, pos);
+  test_curve(0, -0.1, 0, b, pos);
+  test_int("passages: figure eight lifted to the other side: status", curve_passages(a, b, pos, NCURVE, 1, 0.05, &ap), 0);
+  test_int("  one passage", ap.count, 1);
+  test_int("  of one sign", abs(ap.net), 1);
+  /* the parts meet where eps (1 - 2 tau) = 0 */
+  test_abs("  halfway along the homotopy", ap.tau_first, 0.5, 1e-9);
+  curve_passages(b, a, pos, NCURVE, 1, 0.05, &back);
+  test_true("  and the way back has the opposite sign", back.count == 1 && back.net == -ap.net);
+  curve_passages(a, a, pos, NCURVE, 1, 0.05, &ap);
+  test_true("passages: no motion, none", ap.count == 0 && ap.net == 0 && isnan(ap.tau_first));
+  test_curve(0, 0.1, 0.2, c, pos);
+  curve_passages(a, c, pos, NCURVE, 1, 0.05, &ap);
+  test_int("passages: a rigid rotation passes nothing", ap.count, 0);
+  test_curve(0, 0.05, 0, c, pos);
+  curve_passages(a, c, pos, NCURVE, 1, 0.05, &ap);
+  test_int("passages: parts that approach without meeting pass nothing", ap.count, 0);
+  curve_passages(a, b, pos, NCURVE, 1, 0.6, &ap);
+  test_int("passages: parts closer than the window along the curve are not compared", ap.count, 0);
+  test_curve(0, 0.0, 0, c, pos);
+  test_curve(0, 0.0, 0.3, b, pos);
+  curve_passages(c, b, pos, NCURVE, 1, 0.05, &ap);
+  test_int("passages: two planar shapes (coplanar all along) pass nothing", ap.count, 0);
+  /* the trefoil's three crossings all change, and all the same way (a right
+     trefoil becomes a left one: each crossing's sign flips alike) */
+  test_curve(1, 0.5, 0, a, pos);
+  test_curve(1, -0.5, 0, b, pos);
+  curve_passages(a, b, pos, NCURVE, 1, 0.05, &ap);
+  test_true("passages: trefoil lifted to its mirror: three passages of one sign", ap.count == 3 && abs(ap.net) == 3);
+  test_int("passages: fewer than four points refused", curve_passages(a, b, pos, 3, 1, 0.05, &ap), CABLE_ERR_INPUT);
+  b[7] = NAN;
+  test_int("passages: a non-finite point refused", curve_passages(a, b, pos, NCURVE, 1, 0.05, &ap), CABLE_ERR_INPUT);
 }
 
 /* ---- compare() on a small case -------------------------------------------------- */
@@ -251,9 +314,9 @@ static void test_scene_acceptance(const scratch *sc)
   snprintf(text + n, cap - n,
            "], ref=flat('EP1'))\n"
            "for d in rows:\n"
-           "    print('row %%s %%d %%.17g %%.17g %%.17g %%.17g %%.17g %%s %%d %%d %%.17g %%d' %% (d['name'], d['LAB'],"
-           " d['T'], d['F'], d['rel'], d['Lk'], d['lk_in_tube'], d['knot'], d['hand'], d['crossings'], d['pmin'],"
-           " d['uz_at_T']))\n"
+           "    print('row %%s %%d %%.17g %%.17g %%.17g %%.17g %%.17g %%s %%d %%d %%.17g %%d %%d %%d %%.17g' %% (d['name'],"
+           " d['LAB'], d['T'], d['F'], d['rel'], d['Lk'], d['lk_in_tube'], d['knot'], d['hand'], d['crossings'],"
+           " d['pmin'], d['uz_at_T'], d['passes'], d['passes_net'], d['dLk_half']))\n"
            "print('bp %%d' %% len(flat('BP')))\n"
            "for m in [m1, m2, m3, m4]:\n"
            "    tmin = 1000.0\n"
@@ -271,11 +334,11 @@ static void test_scene_acceptance(const scratch *sc)
   for (int i = 0; i < NPOINTS; i++) {
     const paper_point *pp = &points[i];
     char name[16] = "", knot[32] = "";
-    int lab = -1, hand = -9, cross = -1, nuz = 0;
-    double T = NAN, F = NAN, rel = NAN, lk = NAN, lkt = NAN, pmin = NAN, tmin = NAN;
+    int lab = -1, hand = -9, cross = -1, nuz = 0, passes = -1, net = -99;
+    double T = NAN, F = NAN, rel = NAN, lk = NAN, lkt = NAN, pmin = NAN, tmin = NAN, dlk = NAN;
     l = log_line(log, "row ", i);
-    int ok = l && sscanf(l, "%15s %d %lf %lf %lf %lf %lf %31s %d %d %lf %d", name, &lab, &T, &F, &rel, &lk, &lkt, knot,
-                         &hand, &cross, &pmin, &nuz) == 12 &&
+    int ok = l && sscanf(l, "%15s %d %lf %lf %lf %lf %lf %31s %d %d %lf %d %d %d %lf", name, &lab, &T, &F, &rel, &lk, &lkt,
+                         knot, &hand, &cross, &pmin, &nuz, &passes, &net, &dlk) == 15 &&
              strcmp(name, pp->name) == 0;
     snprintf(buf, sizeof buf, "(%s): compared (label %d)", pp->name, lab);
     if (!test_true(buf, ok)) continue;
@@ -295,6 +358,12 @@ static void test_scene_acceptance(const scratch *sc)
     test_abs(buf, lkt, lk - hand * cross, 1e-12);
     snprintf(buf, sizeof buf, "(%s): minimum contact pressure non-negative (pmin = %.6g)", pp->name, pmin);
     test_true(buf, pmin >= 0.0);
+    /* self-passages of the braid axis, counted along the branch (axis_passages.h),
+       against the change of Lk since the flat knot: each passage changes Lk by 2 */
+    snprintf(buf, sizeof buf, "(%s): axis self-passages counted along the branch: %d, signed sum %d = (Lk - Lk_flat)/2 = %.4f",
+             pp->name, passes, net, dlk);
+    test_true(buf, fabs(dlk - net) < LK_TOL && passes == abs(net));
+    if (i == 0) test_int("(a): the axis passed itself once (the paper's figure-eight self-crossing)", passes, 1);
     /* the branch is followed through the point, to the fold beyond and back */
     l = log_line(log, "tmin ", i);
     ok = l && sscanf(l, "%lf", &tmin) == 1;
@@ -319,6 +388,7 @@ int main(void)
   scratch_path(&sc, "c.knot72sym", p, sizeof p);
   ok = ok && copy_file("runs/knot72/c.knot72sym", p);
   test_true("the scene's constants files copied to a scratch directory", ok);
+  test_curve_passages();
   if (ok) {
     test_compare_small(&sc);
     if (!getenv("CABLE_TEST_QUICK")) test_scene_acceptance(&sc);
