@@ -318,15 +318,18 @@ static int plot_markers(cairo_t *cr, const plot_branch *b, int nb, const plot_an
       int lab = b[i].label ? b[i].label[k] : 0;
       if (!bp && lab == 0) continue;
       plot_marker(cr, f, x, y, bp);
-      if (lab != 0 && marks) {
+      if (lab != 0) {
         snprintf(buf, sizeof buf, "%d", lab);
-        nm = plot_mark_add(marks, nm, cap, f, x, y, buf);
+        if (marks) nm = plot_mark_add(marks, nm, cap, f, x, y, buf);
+        else plot_marker_text(cr, f, x, y, buf, NULL, 0); /* out of memory: no joining or avoidance */
       }
     }
   for (int i = 0; i < na; i++)
     if (isfinite(an[i].x) && isfinite(an[i].y)) {
       plot_marker(cr, f, an[i].x, an[i].y, an[i].filled);
-      if (an[i].text && an[i].text[0] && marks) nm = plot_mark_add(marks, nm, cap, f, an[i].x, an[i].y, an[i].text);
+      if (!an[i].text || !an[i].text[0]) continue;
+      if (marks) nm = plot_mark_add(marks, nm, cap, f, an[i].x, an[i].y, an[i].text);
+      else plot_marker_text(cr, f, an[i].x, an[i].y, an[i].text, NULL, 0);
     }
   /* the annotations (a scene's named points) first: they get the best places */
   int nbox = 0;
