@@ -29,6 +29,20 @@ static int has_suffix(const char *s, const char *suf)
   return a >= b && strcmp(s + a - b, suf) == 0;
 }
 
+/* A picture's format follows its file name: a .svg name holding PNG bytes
+ * (or the reverse) is refused before anything is written.  Returns 0 or
+ * CABLE_ERR_INPUT with err naming the file and the option. */
+static int check_suffix(const char *path, const char *key, const char *const *suf, int nsuf, cable_error *err)
+{
+  for (int i = 0; i < nsuf; i++)
+    if (has_suffix(path, suf[i])) return 0;
+  char list[64] = "";
+  for (int i = 0; i < nsuf; i++)
+    snprintf(list + strlen(list), sizeof list - strlen(list), "%s%s", i ? " or " : "", suf[i]);
+  return cable_error_set(err, CABLE_ERR_INPUT, path, 0, key, "the file name must end in %s (the format it is written in)",
+                         list);
+}
+
 static int same_point(double x1, double y1, double x2, double y2)
 {
   return fabs(x1 - x2) <= 1e-9 * (1 + fabs(x1)) && fabs(y1 - y2) <= 1e-9 * (1 + fabs(y1));
@@ -38,6 +52,9 @@ int cable_plot_files(const char *dir, const char *const *bfiles, int nfiles, con
                      const plot_annotation *marks, int nmarks, const char *title, const char *out,
                      cable_error *err)
 {
+  static const char *const plot_suffixes[2] = {".png", ".svg"};
+  if (!out) return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, "o", "no output file");
+  if (check_suffix(out, "o", plot_suffixes, 2, err)) return err->status;
   if (nfiles < 1 || nfiles > 64) return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, "", "give 1 to 64 b-files");
   cable_bfile *files[64] = {NULL};
   plot_branch br[PLOT_MAX_BRANCHES];
@@ -181,6 +198,10 @@ static int picture_build(const cable_solution *s, braid_picture *bp)
 int cable_render_solution(const cable_solution *s, const render_options *o, const char *out, const char *vtp,
                           const char *ply, cable_error *err)
 {
+  static const char *const png[1] = {".png"}, *const vtk[1] = {".vtp"}, *const plyx[1] = {".ply"};
+  if ((out && check_suffix(out, "o", png, 1, err)) || (vtp && check_suffix(vtp, "vtp", vtk, 1, err)) ||
+      (ply && check_suffix(ply, "ply", plyx, 1, err)))
+    return err->status;
   if (s->ndim != BR_NDIM || s->npar <= BP_LTOT)
     return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, "", "label %d is not a braid solution (NDIM=%d)", s->lab,
                            s->ndim);

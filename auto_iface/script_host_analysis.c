@@ -18,12 +18,15 @@
  *       run directory) and prints the table: the reported point against the
  *       paper's statements, a row per labelled solution, the pressure sign
  *       changes.  Returns the reported point's label (None: no solution).
- *   compare('table.txt', rows, ref=sol, notes=['line', ...])
- *       rows: [[name, sol, F_target, Lk_target(, ref)], ...]; writes the comparison
- *       table (atomically, in the run directory) and prints it.  ref: a
- *       solution of the unbuckled branch; (Lk - Lk_ref)/2 counts the
- *       self-crossing passages of the braid axis since then.  notes: lines
- *       written after the table (the scene's own tabulations).
+ *   compare('table.txt', rows, ref=sol, notes=['line', ...])  -> [dict per row]
+ *       rows: [[name, x, T_target, F_target, Lk_target(, ref)], ...]; x a
+ *       result (its UZ label at T_target with F nearest F_target is taken) or
+ *       a solution at T_target.  Writes the comparison table (atomically, in
+ *       the run directory) and prints it.  ref: a solution of the unbuckled
+ *       branch; (Lk - Lk_ref)/2 is the net number of self-passages of the
+ *       braid axis that Lk implies.  Lk_tube is Lk minus the writhe of the
+ *       companion's minimal diagram (braid_topology.lk_in_tube).  notes:
+ *       lines written after the table (the scene's own tabulations).
  *   plot('fig.png', ['flat', 'mode1', ...], marks=[[sol, '(a)'], ...],
  *        x='T', y='F', title='...')
  *       a bifurcation diagram of the saved b-files b.flat, b.mode1, ... in the
@@ -31,17 +34,23 @@
  *   render(sol, 'fig.png', view=[x, y, z], size=600, thicken=0, color='pressure', vtp='f.vtp', ply='f.ply')
  *       a shaded picture of a braid solution with its pressure profiles
  *       (color='pressure': tubes coloured by it, blue < 0 < red)
- *   overlap_free(result)          -> [[T_from, T_to], ...]
- *       the stretches of each branch (in branch order, T at their ends) where
- *       the strand tubes do not overlap (dmin > 1), from the labelled
- *       solutions; an end between two labels is interpolated linearly in
- *       dmin, so its accuracy is the label spacing (NPR) */
+ *   overlap_free(result)          -> [[T_from, T_to, T_lo, T_hi, to_end, to_passage], ...]
+ *       the stretches of each branch (in branch order, T at their ends, the
+ *       range of T they cover, 1 when the branch ends inside, 1 when it ends at
+ *       a self-passage of the braid axis) where the strand tubes do not
+ *       overlap (dmin > 1), from the labelled solutions; an end between two
+ *       labels is interpolated linearly in dmin, so its accuracy is the label
+ *       spacing (NPR); a passage of the axis through itself between two labels
+ *       (axis_passages.h) ends a stretch at the passage's interpolated T even
+ *       when both labels are free (the overlap around it is narrower than the
+ *       label spacing) */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "atomic_file.h"
+#include "axis_passages.h"
 #include "braid_analysis.h"
 #include "braid_state.h"
 #include "cable_pictures.h"
@@ -433,99 +442,6 @@ static int fn_branch_table(cable_replay *r, int nargs, const script_value *args,
   return 0;
 }
 
-static void knot_text(const knot_type_result *k, char *buf, size_t len)
-{
-  snprintf(buf, len, "%s%s", k->handedness > 0 ? "right " : k->handedness < 0 ? "left " : "", k->name);
-}
-
-static int fn_compare(cable_replay *r, int nargs, const script_value *args, const script_kwargs *kw,
-                      cable_error *err)
-{
-  const char *file = nargs == 2 ? script_string_chars(&args[0]) : NULL;
-  const script_value *rows = nargs == 2 ? &args[1] : NULL;
-  if (!file || !rows || rows->type != SCRIPT_LIST)
-    return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, NULL,
-                           "compare('file', [[name, sol, F_target, Lk_target], ...], ref=sol)");
-  const script_value *refv = script_kwargs_find(kw, "ref");
-  const cable_solution *ref = refv ? handle_solution(refv) : NULL;
-  if (refv && !ref) return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, "ref", "ref must be a solution");
-  double lk_ref = NAN;
-  braid_analysis a;
-  int rc;
-  if (ref) {
-    if ((rc = analyze_solution(ref, &a, err))) return rc;
-    lk_ref = a.topo.lk;
-  }
-  char path[1100];
-  snprintf(path, sizeof path, "%s%s%s", r->opt.dir && r->opt.dir[0] ? r->opt.dir : "",
-           r->opt.dir && r->opt.dir[0] ? "/" : "", file);
-  cable_atomic_file *af = cable_atomic_open(path, 0, err);
-  if (!af) return err->status ? err->status : CABLE_ERR_IO;
-  FILE *f = cable_atomic_stream(af);
-  fprintf(f, "# point: the paper's point; T: its torque (the UZ label); F: paper and cable; rel: |dF|/F\n"
-             "# Lk = Tw + Wr of the contact-curve ribbon; pass: self-crossing passages of the braid axis\n"
-             "# since the reference, (Lk - Lk_ref)/2; Lk_tube: Lk minus the companion's crossing number\n"
-             "# (the paper's 'linking number', quoted in brackets); pmin: minimum contact force per length;\n"
-             "# dmin: closest approach of non-adjacent strand centrelines / Delta (< 1: tubes overlap);\n"
-             "# err: discretisation-error estimate of the stored solution\n");
-  fprintf(f, "%-5s %4s %12s %12s %14s %9s %9s %4s %15s %-22s %11s %7s %9s\n", "point", "LAB", "T", "F_paper",
-          "F_cable", "rel", "Lk", "pass", "Lk_tube(paper)", "braid axis", "pmin", "dmin", "err");
-  for (size_t i = 0; i < script_list_len(rows); i++) {
-    const script_value *row = script_list_get(rows, i);
-    size_t nrow = row && row->type == SCRIPT_LIST ? script_list_len(row) : 0;
-    const cable_solution *s = nrow == 4 || nrow == 5 ? handle_solution(script_list_get(row, 1)) : NULL;
-    const cable_solution *rref = nrow == 5 ? handle_solution(script_list_get(row, 4)) : NULL;
-    double lk_row_ref = lk_ref;
-    const char *name = s ? script_string_chars(script_list_get(row, 0)) : NULL;
-    const script_value *fv = s ? script_list_get(row, 2) : NULL, *lv = s ? script_list_get(row, 3) : NULL;
-    if (!s || !name || fv->type != SCRIPT_NUMBER || lv->type != SCRIPT_NUMBER) {
-      cable_atomic_abort(af);
-      return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, NULL,
-                             "compare: row %zu must be [name, solution, F_target, Lk_target(, reference solution)]",
-                             i + 1);
-    }
-    if (nrow == 5) {
-      if (!rref || (rc = analyze_solution(rref, &a, err))) {
-        cable_atomic_abort(af);
-        return rref ? rc : cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, NULL, "compare: row %zu: the reference must be a solution", i + 1);
-      }
-      lk_row_ref = a.topo.lk;
-    }
-    if ((rc = analyze_solution(s, &a, err))) {
-      cable_atomic_abort(af);
-      return rc;
-    }
-    double F = s->par[BP_F], Ft = fv->num;
-    char kt[64], tube[40];
-    knot_text(&a.topo.axis, kt, sizeof kt);
-    snprintf(tube, sizeof tube, "%.4g (%.4g)", a.topo.lk_in_tube, lv->num);
-    fprintf(f, "%-5s %4d %12.6f %12.6f %14.7f %9.2e %9.5f %4.0f %15s %-22s %11.4g %7.3f %9.2e\n", name, s->lab,
-            s->par[BP_T], Ft, F, fabs(F - Ft) / fabs(Ft), a.topo.lk, isnan(lk_row_ref) ? (double)NAN : (a.topo.lk - lk_row_ref) / 2,
-            tube, kt, fmin(a.pmin1, a.pmin2), a.tube.dmin, s->err_est);
-  }
-  const script_value *notes = script_kwargs_find(kw, "notes");
-  if (notes && notes->type != SCRIPT_LIST) {
-    cable_atomic_abort(af);
-    return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, "notes", "notes must be a list of strings");
-  }
-  if (notes && script_list_len(notes) > 0) fputc('\n', f);
-  for (size_t i = 0; notes && i < script_list_len(notes); i++) {
-    const char *line = script_string_chars(script_list_get(notes, i));
-    if (!line) {
-      cable_atomic_abort(af);
-      return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, "notes", "notes entry %zu is not a string", i + 1);
-    }
-    fprintf(f, "%s\n", line);
-  }
-  rc = cable_atomic_commit(af, err);
-  if (rc) return rc;
-  FILE *in = fopen(path, "r");
-  char line[512];
-  while (in && fgets(line, sizeof line, in)) fputs(line, r->opt.log ? r->opt.log : stdout);
-  if (in) fclose(in);
-  return 0;
-}
-
 static void run_path(const cable_replay *r, const char *file, char *buf, size_t len)
 {
   int rel = file[0] != '/' && r->opt.dir && r->opt.dir[0];
@@ -536,6 +452,287 @@ static const char *kw_str(const script_kwargs *kw, const char *name)
 {
   const script_value *v = script_kwargs_find(kw, name);
   return v ? script_string_chars(v) : NULL;
+}
+
+static void knot_text(const knot_type_result *k, char *buf, size_t len)
+{
+  snprintf(buf, len, "%s%s", k->handedness > 0 ? "right " : k->handedness < 0 ? "left " : "", k->name);
+}
+
+/* Self-passages of the braid axis between consecutive labelled solutions
+ * of a branch, solutions 0..upto (axis_passages.h).  Per interval only the
+ * net signed number is trusted: parts that pass and come back between two
+ * labels, or a straight-line homotopy that is no longer faithful (at folds,
+ * where distant parts of the axis come within a fraction of Delta), give
+ * events of both signs that cancel.  *passes: the sum of |net| over the
+ * intervals (a lower bound of the passages), *net: the signed sum (equal to
+ * (Lk(end) - Lk(start))/2, an independent check of Lk), *mixed: intervals
+ * with events of both signs.  tau/net_iv (may be NULL, [upto]): per interval
+ * i -> i+1, the homotopy parameter of its first passage (NAN: none) and its
+ * net count. */
+static int branch_passages(const rp_branch *br, int upto, int *passes, int *net, int *mixed, double *tau, int *net_iv,
+                           cable_error *err)
+{
+  *passes = *net = *mixed = 0;
+  for (int i = 0; i < upto && i + 1 < br->nsol; i++) {
+    axis_passages ap;
+    int rc = braid_axis_passages(br->sol[i], br->sol[i + 1], &ap);
+    if (rc)
+      return cable_error_set(err, rc, NULL, 0, NULL, "labels %d and %d: cannot follow the braid axis between them (%s)",
+                             br->sol[i]->lab, br->sol[i + 1]->lab, cable_status_message(rc));
+    *passes += abs(ap.net);
+    *net += ap.net;
+    *mixed += ap.count > abs(ap.net);
+    if (tau) tau[i] = ap.net != 0 ? ap.tau_first : (double)NAN;
+    if (net_iv) net_iv[i] = ap.net;
+  }
+  return 0;
+}
+
+/* A UZ label lies at the target T to the engine's location accuracy: the
+ * arclength of a located user zero converges to EPSS |DS| (1e-7 x DSMAX 5 in
+ * the knot scenes), so T is off by well under 1e-6; 1e-5 (relative above
+ * |T| = 1) leaves a margin and is still far below the T spacing of distinct
+ * stored points. */
+#define COMPARE_T_TOL 1e-5
+
+static int at_target_t(double t, double target)
+{
+  return fabs(t - target) <= COMPARE_T_TOL * fmax(1.0, fabs(target));
+}
+
+static int is_uz(const cable_solution *s)
+{
+  return strcmp(cable_type_name(s->itp), "UZ") == 0;
+}
+
+/* The solution a compare row refers to: a solution as given, or of a result
+ * the UZ label at T_target whose F is nearest F_target (a branch that passes
+ * the paper's T several times, e.g. out to a fold and back, crosses it at
+ * several labels; the paper's point is the one with its F).  nuz: UZ labels
+ * at T_target on the result (1 for a solution), k: the chosen one (1-based). */
+typedef struct compare_pick {
+  const rp_branch *br;
+  int isol;
+  int nuz, k;
+} compare_pick;
+
+static int compare_pick_solution(const script_value *x, double t_target, double f_target, size_t row,
+                                 compare_pick *p, cable_error *err)
+{
+  memset(p, 0, sizeof *p);
+  if (script_handle_kind(x) == SCRIPT_HANDLE_SOLUTION) {
+    const rp_sol *so = script_handle_ptr(x);
+    double t = so->br->sol[so->isol]->par[BP_T];
+    if (!at_target_t(t, t_target))
+      return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, NULL,
+                             "compare: row %zu: label %d has T = %.10g, not the target T = %.10g", row,
+                             so->br->sol[so->isol]->lab, t, t_target);
+    *p = (compare_pick){so->br, so->isol, 1, 1};
+    return 0;
+  }
+  if (script_handle_kind(x) != SCRIPT_HANDLE_RESULT)
+    return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, NULL,
+                           "compare: row %zu: the second entry must be a result or a solution", row);
+  const rp_result *res = script_handle_ptr(x);
+  double best = INFINITY;
+  for (int b = 0; b < res->nbr; b++)
+    for (int i = 0; i < res->br[b]->nsol; i++) {
+      const cable_solution *s = res->br[b]->sol[i];
+      if (!is_uz(s) || !at_target_t(s->par[BP_T], t_target)) continue;
+      p->nuz++;
+      double d = fabs(s->par[BP_F] - f_target);
+      if (d < best) {
+        best = d;
+        p->br = res->br[b];
+        p->isol = i;
+        p->k = p->nuz;
+      }
+    }
+  if (!p->br)
+    return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, NULL,
+                           "compare: row %zu: no UZ label at T = %.10g on that result (run it with UZR={'T': %.10g})",
+                           row, t_target, t_target);
+  return 0;
+}
+
+/* One row of the comparison, as written and as returned to the script. */
+typedef struct compare_row {
+  const char *name;
+  const cable_solution *s;
+  compare_pick pick;
+  double t_target, f_target, lk_target, rel;
+  double dlk_half;              /* (Lk - Lk_ref)/2, NAN without a reference */
+  int passes, net, mixed;       /* axis self-passages along the branch up to the point */
+  braid_analysis a;
+  char knot[64];
+} compare_row;
+
+static int compare_row_dict(const compare_row *w, script_value *out)
+{
+  script_value d;
+  int rc = script_dict_new(&d);
+  if (rc) return rc;
+  const knot_type_result *k = &w->a.topo.axis;
+  rc = dict_str(&d, "name", w->name);
+  if (!rc) rc = dict_num(&d, "LAB", w->s->lab);
+  if (!rc) rc = dict_num(&d, "T", w->s->par[BP_T]);
+  if (!rc) rc = dict_num(&d, "F", w->s->par[BP_F]);
+  if (!rc) rc = dict_num(&d, "T_paper", w->t_target);
+  if (!rc) rc = dict_num(&d, "F_paper", w->f_target);
+  if (!rc) rc = dict_num(&d, "rel", w->rel);
+  if (!rc) rc = dict_num(&d, "uz_at_T", w->pick.nuz);
+  if (!rc) rc = dict_num(&d, "uz_chosen", w->pick.k);
+  if (!rc) rc = dict_num(&d, "Lk", w->a.topo.lk);
+  if (!rc) rc = dict_num(&d, "lk_in_tube", w->a.topo.lk_in_tube);
+  if (!rc) rc = dict_num(&d, "lk_paper", w->lk_target);
+  if (!rc) rc = dict_num(&d, "dLk_half", w->dlk_half);
+  if (!rc) rc = dict_num(&d, "passes", w->passes);
+  if (!rc) rc = dict_num(&d, "passes_net", w->net);
+  if (!rc) rc = dict_num(&d, "passes_mixed", w->mixed);
+  if (!rc) rc = dict_str(&d, "knot", k->name);
+  if (!rc) rc = dict_num(&d, "hand", k->handedness);
+  if (!rc) rc = dict_num(&d, "crossings", k->crossing_number);
+  if (!rc) rc = dict_num(&d, "pmin", fmin(w->a.pmin1, w->a.pmin2));
+  if (!rc) rc = dict_num(&d, "dmin", w->a.tube.dmin);
+  if (!rc) rc = dict_num(&d, "err", w->s->err_est);
+  if (rc) {
+    script_value_release(&d);
+    return rc;
+  }
+  *out = d;
+  return 0;
+}
+
+static void compare_header(FILE *f)
+{
+  fprintf(f, "# point: the paper's point; T: its torque; F: paper and cable; rel: |dF|/F.  The cable point is\n"
+             "#   the UZ label at the paper's T on that branch whose F is nearest the paper's (uz: which of\n"
+             "#   the branch's UZ labels at that T was taken, of how many)\n"
+             "# Lk = Tw + Wr of the contact-curve ribbon; dLk/2: (Lk - Lk_ref)/2 against the unbuckled\n"
+             "#   reference, the net number of self-passages of the braid axis that Lk implies;\n"
+             "# pass: self-passages of the braid axis counted along the branch from its start to the point\n"
+             "#   (edges of the axis polyline that pass through each other between consecutive labels), and\n"
+             "#   their signed sum in brackets, which must equal dLk/2; '*': between some labels the axis\n"
+             "#   passed both ways (those cancel and are not counted)\n"
+             "# Lk_tube: Lk minus the writhe of the companion knot's minimal diagram (handedness x crossing\n"
+             "#   number for a torus knot: +3 right trefoil, -3 left), the paper's 'linking number', quoted\n"
+             "#   in brackets; pmin: minimum contact force per length;\n"
+             "# dmin: closest approach of non-adjacent strand centrelines / Delta (< 1: tubes overlap);\n"
+             "# err: discretisation-error estimate of the stored solution\n");
+  fprintf(f, "%-5s %4s %5s %12s %12s %14s %9s %9s %5s %9s %15s %-22s %11s %7s %9s\n", "point", "LAB", "uz", "T",
+          "F_paper", "F_cable", "rel", "Lk", "dLk/2", "pass", "Lk_tube(paper)", "braid axis", "pmin", "dmin", "err");
+}
+
+static void compare_line(FILE *f, const compare_row *w)
+{
+  char tube[40], uz[16], pass[24];
+  snprintf(tube, sizeof tube, "%.4g (%.4g)", w->a.topo.lk_in_tube, w->lk_target);
+  snprintf(uz, sizeof uz, "%d/%d", w->pick.k, w->pick.nuz);
+  snprintf(pass, sizeof pass, "%d (%d)%s", w->passes, w->net, w->mixed ? "*" : "");
+  fprintf(f, "%-5s %4d %5s %12.6f %12.6f %14.7f %9.2e %9.5f %5.1f %9s %15s %-22s %11.4g %7.3f %9.2e\n", w->name,
+          w->s->lab, uz, w->s->par[BP_T], w->f_target, w->s->par[BP_F], w->rel, w->a.topo.lk, w->dlk_half, pass, tube,
+          w->knot, fmin(w->a.pmin1, w->a.pmin2), w->a.tube.dmin, w->s->err_est);
+}
+
+static int row_number(const script_value *row, size_t k, double *x)
+{
+  const script_value *v = script_list_get(row, k);
+  if (!v || v->type != SCRIPT_NUMBER) return 0;
+  *x = v->num;
+  return 1;
+}
+
+/* Reads and evaluates row i (0-based) of compare's list. */
+static int compare_eval_row(const script_value *row, size_t i, double lk_ref, compare_row *w, cable_error *err)
+{
+  size_t nrow = row && row->type == SCRIPT_LIST ? script_list_len(row) : 0;
+  memset(w, 0, sizeof *w);
+  w->name = nrow == 5 || nrow == 6 ? script_string_chars(script_list_get(row, 0)) : NULL;
+  if (!w->name || !row_number(row, 2, &w->t_target) || !row_number(row, 3, &w->f_target) ||
+      !row_number(row, 4, &w->lk_target))
+    return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, NULL,
+                           "compare: row %zu must be [name, result or solution, T_target, F_target, Lk_target"
+                           "(, reference solution)]", i + 1);
+  int rc;
+  if (nrow == 6) {
+    const cable_solution *rref = handle_solution(script_list_get(row, 5));
+    if (!rref)
+      return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, NULL, "compare: row %zu: the reference must be a solution",
+                             i + 1);
+    if ((rc = analyze_solution(rref, &w->a, err))) return rc;
+    lk_ref = w->a.topo.lk;
+  }
+  if ((rc = compare_pick_solution(script_list_get(row, 1), w->t_target, w->f_target, i + 1, &w->pick, err)))
+    return rc;
+  w->s = w->pick.br->sol[w->pick.isol];
+  if ((rc = analyze_solution(w->s, &w->a, err))) return rc;
+  w->rel = fabs(w->s->par[BP_F] - w->f_target) / fabs(w->f_target);
+  w->dlk_half = isnan(lk_ref) ? (double)NAN : (w->a.topo.lk - lk_ref) / 2;
+  if ((rc = branch_passages(w->pick.br, w->pick.isol, &w->passes, &w->net, &w->mixed, NULL, NULL, err))) return rc;
+  knot_text(&w->a.topo.axis, w->knot, sizeof w->knot);
+  return 0;
+}
+
+static int fn_compare(cable_replay *r, int nargs, const script_value *args, const script_kwargs *kw,
+                      script_value *out, cable_error *err)
+{
+  const char *file = nargs == 2 ? script_string_chars(&args[0]) : NULL;
+  const script_value *rows = nargs == 2 ? &args[1] : NULL;
+  if (!file || !rows || rows->type != SCRIPT_LIST)
+    return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, NULL,
+                           "compare('file', [[name, result, T_target, F_target, Lk_target], ...], ref=sol)");
+  const script_value *refv = script_kwargs_find(kw, "ref");
+  const cable_solution *ref = refv ? handle_solution(refv) : NULL;
+  if (refv && !ref) return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, "ref", "ref must be a solution");
+  const script_value *notes = script_kwargs_find(kw, "notes");
+  if (notes && notes->type != SCRIPT_LIST)
+    return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, "notes", "notes must be a list of strings");
+  for (size_t i = 0; notes && i < script_list_len(notes); i++)
+    if (!script_string_chars(script_list_get(notes, i)))
+      return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, "notes", "notes entry %zu is not a string", i + 1);
+  double lk_ref = NAN;
+  compare_row w;
+  int rc;
+  if (ref) {
+    if ((rc = analyze_solution(ref, &w.a, err))) return rc;
+    lk_ref = w.a.topo.lk;
+  }
+  script_value list;
+  if ((rc = script_list_new(&list))) return cable_error_set(err, rc, NULL, 0, NULL, "out of memory");
+  char path[1200];
+  run_path(r, file, path, sizeof path);
+  cable_atomic_file *af = cable_atomic_open(path, 0, err);
+  if (!af) {
+    script_value_release(&list);
+    return err->status ? err->status : CABLE_ERR_IO;
+  }
+  FILE *f = cable_atomic_stream(af);
+  compare_header(f);
+  for (size_t i = 0; !rc && i < script_list_len(rows); i++) {
+    script_value d;
+    if ((rc = compare_eval_row(script_list_get(rows, i), i, lk_ref, &w, err))) break;
+    compare_line(f, &w);
+    if ((rc = compare_row_dict(&w, &d)) || (rc = script_list_append(&list, d))) {
+      script_value_release(&d);
+      cable_error_set(err, rc, NULL, 0, NULL, "out of memory");
+    }
+  }
+  if (!rc && notes && script_list_len(notes) > 0) fputc('\n', f);
+  for (size_t i = 0; !rc && notes && i < script_list_len(notes); i++)
+    fprintf(f, "%s\n", script_string_chars(script_list_get(notes, i)));
+  if (rc) cable_atomic_abort(af);
+  else rc = cable_atomic_commit(af, err);
+  if (rc) {
+    script_value_release(&list);
+    return rc;
+  }
+  FILE *in = fopen(path, "r");
+  char line[512];
+  while (in && fgets(line, sizeof line, in)) fputs(line, r->opt.log ? r->opt.log : stdout);
+  if (in) fclose(in);
+  *out = list;
+  return 0;
 }
 
 #define PLOT_MAX_FILES 64
@@ -612,13 +809,66 @@ static int fn_render(cable_replay *r, int nargs, const script_value *args, const
   return rc;
 }
 
-static int interval_append(script_value *list, double t0, double t1)
+/* One overlap-free stretch of a branch: T at its ends (in branch order), the
+ * range of T it covers (a fold inside it turns T back), whether it runs to
+ * the branch's last label (the branch ends inside it, so it may go on), and
+ * whether it ends at a self-passage of the braid axis. */
+typedef struct free_stretch {
+  double t_from, t_to, t_lo, t_hi;
+  int to_end, to_passage;
+} free_stretch;
+
+static void stretch_extend(free_stretch *st, double t)
+{
+  st->t_lo = fmin(st->t_lo, t);
+  st->t_hi = fmax(st->t_hi, t);
+}
+
+/* The stretches where d > 1 along samples (t[i], d[i]) in branch order; an
+ * end between two samples is the linear interpolant's crossing of d = 1.
+ * tau[i] (i < n-1, NAN: none): the braid axis passes through itself between
+ * samples i and i+1, at that fraction of the way: the tubes overlap there even
+ * if both samples are free, so a stretch ends (and the next begins) at the
+ * interpolated T of the passage.  Returns the count (it may exceed max; only
+ * max are stored). */
+static int free_stretches(const double *t, const double *d, const double *tau, int n, free_stretch *st, int max)
+{
+  int count = 0;
+  free_stretch cur = {0};
+#define STRETCH_CLOSE(T_END, END, PASS)        \
+  do {                                         \
+    cur.t_to = (T_END);                        \
+    stretch_extend(&cur, cur.t_to);            \
+    cur.to_end = (END), cur.to_passage = (PASS); \
+    if (count < max) st[count] = cur;          \
+    count++;                                   \
+  } while (0)
+  for (int i = 0; i < n; i++) {
+    int free_now = d[i] > 1.0, free_before = i > 0 && d[i - 1] > 1.0;
+    double cross = i > 0 && free_now != free_before ? t[i - 1] + (1.0 - d[i - 1]) * (t[i] - t[i - 1]) / (d[i] - d[i - 1])
+                                                    : t[i];
+    if (free_before && free_now && !isnan(tau[i - 1])) {
+      double tp = t[i - 1] + tau[i - 1] * (t[i] - t[i - 1]);
+      STRETCH_CLOSE(tp, 0, 1);
+      cur = (free_stretch){tp, tp, tp, tp, 0, 0};
+    }
+    if (free_now && !free_before) cur = (free_stretch){cross, cross, cross, cross, 0, 0};
+    if (free_now) stretch_extend(&cur, t[i]);
+    if (!free_now && free_before) STRETCH_CLOSE(cross, 0, 0);
+    else if (free_now && i == n - 1) STRETCH_CLOSE(t[i], 1, 0);
+  }
+#undef STRETCH_CLOSE
+  return count;
+}
+
+static int stretch_append(script_value *list, const free_stretch *st)
 {
   script_value iv;
   int rc = script_list_new(&iv);
   if (rc) return rc;
-  if ((rc = script_list_append(&iv, script_number(t0))) || (rc = script_list_append(&iv, script_number(t1))) ||
-      (rc = script_list_append(list, iv))) {
+  double v[6] = {st->t_from, st->t_to, st->t_lo, st->t_hi, st->to_end, st->to_passage};
+  for (int k = 0; k < 6 && !rc; k++) rc = script_list_append(&iv, script_number(v[k]));
+  if (rc || (rc = script_list_append(list, iv))) {
     script_value_release(&iv);
     return rc;
   }
@@ -638,9 +888,11 @@ static int fn_overlap_free(int nargs, const script_value *args, script_value *ou
   for (int b = 0; b < res->nbr && !rc; b++) {
     const rp_branch *br = res->br[b];
     size_t n = (size_t)(br->nsol > 0 ? br->nsol : 1);
-    double *t = malloc(n * sizeof *t), *d = malloc(n * sizeof *d);
-    double (*iv)[2] = malloc(OVERLAP_MAX_INTERVALS * sizeof *iv);
-    if (!t || !d || !iv) rc = cable_error_set(err, CABLE_ERR_ALLOC, NULL, 0, NULL, "out of memory");
+    double *t = malloc(n * sizeof *t), *d = malloc(n * sizeof *d), *tau = malloc(n * sizeof *tau);
+    free_stretch *st = malloc(OVERLAP_MAX_INTERVALS * sizeof *st);
+    if (!t || !d || !tau || !st) rc = cable_error_set(err, CABLE_ERR_ALLOC, NULL, 0, NULL, "out of memory");
+    int passes, net, mixed;
+    if (!rc) rc = branch_passages(br, br->nsol - 1, &passes, &net, &mixed, tau, NULL, err);
     for (int i = 0; !rc && i < br->nsol; i++) {
       const cable_solution *s = br->sol[i];
       tube_distance_result td;
@@ -650,12 +902,13 @@ static int fn_overlap_free(int nargs, const script_value *args, script_value *ou
       t[i] = s->par[BP_T];
       d[i] = td.dmin;
     }
-    int m = rc ? 0 : tube_free_intervals(t, d, br->nsol, iv, OVERLAP_MAX_INTERVALS);
+    int m = rc ? 0 : free_stretches(t, d, tau, br->nsol, st, OVERLAP_MAX_INTERVALS);
     for (int k = 0; !rc && k < m && k < OVERLAP_MAX_INTERVALS; k++)
-      if ((rc = interval_append(&list, iv[k][0], iv[k][1]))) cable_error_set(err, rc, NULL, 0, NULL, "out of memory");
+      if ((rc = stretch_append(&list, &st[k]))) cable_error_set(err, rc, NULL, 0, NULL, "out of memory");
     free(t);
     free(d);
-    free(iv);
+    free(tau);
+    free(st);
   }
   if (rc) {
     script_value_release(&list);
@@ -671,7 +924,7 @@ int rp_call(void *ctx, const char *name, int nargs, const script_value *args, co
   cable_replay *r = ctx;
   if (strcmp(name, "analyze") == 0) return fn_analyze(nargs, args, out, err);
   if (strcmp(name, "branch_table") == 0) return fn_branch_table(r, nargs, args, kw, out, err);
-  if (strcmp(name, "compare") == 0) return fn_compare(r, nargs, args, kw, err);
+  if (strcmp(name, "compare") == 0) return fn_compare(r, nargs, args, kw, out, err);
   if (strcmp(name, "plot") == 0) return fn_plot(r, nargs, args, kw, err);
   if (strcmp(name, "render") == 0) return fn_render(r, nargs, args, kw, err);
   if (strcmp(name, "overlap_free") == 0) return fn_overlap_free(nargs, args, out, err);

@@ -4,6 +4,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include <cairo/cairo-svg.h>
 #include <cairo/cairo.h>
@@ -32,6 +33,9 @@
 #define PLOT_TICK_SPACING 90.0
 #define PLOT_TICK_MIN 3
 #define PLOT_TICK_MAX 10
+/* Longest text drawn beside one marked point (several labels at one point
+ * are joined; the rest is cut). */
+#define PLOT_MARK_TEXT 96
 /* A plot area smaller than this many font sizes a side cannot show data. */
 #define PLOT_MIN_AREA 3.0
 
@@ -210,8 +214,7 @@ static void plot_lines(cairo_t *cr, const plot_branch *b, int nb, const plot_fra
   cairo_restore(cr);
 }
 
-static void plot_marker(cairo_t *cr, const plot_frame *f, double x, double y, int filled,
-                        const char *text)
+static void plot_marker(cairo_t *cr, const plot_frame *f, double x, double y, int filled)
 {
   double r = PLOT_MARKER_R * f->fs, px = plot_px(f, x), py = plot_py(f, y);
   cairo_new_path(cr);
@@ -221,16 +224,92 @@ static void plot_marker(cairo_t *cr, const plot_frame *f, double x, double y, in
   cairo_set_source_rgb(cr, 0, 0, 0);
   cairo_set_line_width(cr, 0.1 * f->fs);
   cairo_stroke(cr);
-  if (text && text[0]) {
-    graphics_text_font(cr, 0.9 * f->fs, 0);
-    graphics_text_show(cr, px + 1.3 * r, py - 1.3 * r, text, 0.0, 1.0);
-  }
 }
 
-static void plot_markers(cairo_t *cr, const plot_branch *b, int nb, const plot_annotation *an,
-                         int na, const plot_frame *f)
+/* A text box on the page: [x0, x1] x [y0, y1] in device units. */
+typedef struct {
+  double x0, y0, x1, y1;
+} plot_box;
+
+static int plot_box_overlap(const plot_box *a, const plot_box *b)
+{
+  return a->x0 < b->x1 && b->x0 < a->x1 && a->y0 < b->y1 && b->y0 < a->y1;
+}
+
+/* Draws a marker's text beside it, in the first of the four diagonal places
+ * (above right, above left, below right, below left) that keeps the whole
+ * text inside the plot area and clear of the texts placed before (placed[0..
+ * nplaced-1]); failing that, the first place inside the plot area, so a mark
+ * near the right or top edge keeps its label in the frame.  Returns the box
+ * used. */
+static plot_box plot_marker_text(cairo_t *cr, const plot_frame *f, double x, double y, const char *text,
+                                 const plot_box *placed, int nplaced)
+{
+  double r = PLOT_MARKER_R * f->fs, off = 1.3 * r, px = plot_px(f, x), py = plot_py(f, y);
+  graphics_text_font(cr, 0.9 * f->fs, 0);
+  cairo_text_extents_t e;
+  cairo_text_extents(cr, text, &e);
+  const int right[4] = {1, 0, 1, 0}, up[4] = {1, 1, 0, 0};
+  int inside_first = -1, chosen = -1;
+  plot_box box[4];
+  for (int k = 0; k < 4 && chosen < 0; k++) {
+    box[k].x0 = right[k] ? px + off : px - off - e.width;
+    box[k].x1 = box[k].x0 + e.width;
+    box[k].y1 = up[k] ? py - off : py + off + e.height;
+    box[k].y0 = box[k].y1 - e.height;
+    int inside = box[k].x0 >= f->left && box[k].x1 <= f->left + f->pw && box[k].y0 >= f->top &&
+                 box[k].y1 <= f->top + f->ph;
+    if (!inside) continue;
+    if (inside_first < 0) inside_first = k;
+    int clear = 1;
+    for (int i = 0; i < nplaced && clear; i++) clear = !plot_box_overlap(&box[k], &placed[i]);
+    if (clear) chosen = k;
+  }
+  if (chosen < 0) chosen = inside_first >= 0 ? inside_first : 0;
+  graphics_text_show(cr, right[chosen] ? px + off : px - off, up[chosen] ? py - off : py + off, text,
+                     right[chosen] ? 0.0 : 1.0, up[chosen] ? 1.0 : 0.0);
+  return box[chosen];
+}
+
+/* A marked point: its pixel position and its text (one of the markers at a
+ * pixel position carries the texts of all of them). */
+typedef struct {
+  double px, py, x, y;
+  char text[PLOT_MARK_TEXT];
+} plot_mark;
+
+/* Adds the text of a mark at (x, y) to marks[]: appended to an earlier mark
+ * within a marker radius on screen (branches that start at one point, e.g.
+ * both arms of a flat branch, label it twice: "1, 7" instead of two labels
+ * drawn over each other), else a new entry.  Returns the new count. */
+static int plot_mark_add(plot_mark *marks, int n, int cap, const plot_frame *f, double x, double y, const char *text)
+{
+  double px = plot_px(f, x), py = plot_py(f, y), r = PLOT_MARKER_R * f->fs;
+  for (int i = 0; i < n; i++)
+    if (fabs(marks[i].px - px) <= r && fabs(marks[i].py - py) <= r) {
+      size_t len = strlen(marks[i].text);
+      snprintf(marks[i].text + len, sizeof marks[i].text - len, "%s%s", len ? ", " : "", text);
+      return n;
+    }
+  if (n >= cap) return n;
+  marks[n] = (plot_mark){px, py, x, y, ""};
+  snprintf(marks[n].text, sizeof marks[n].text, "%s", text);
+  return n + 1;
+}
+
+/* Draws the markers, then their texts; *boxes (may be NULL when out of
+ * memory) receives the texts' boxes for the legend to keep clear of; returns
+ * their number. */
+static int plot_markers(cairo_t *cr, const plot_branch *b, int nb, const plot_annotation *an, int na,
+                        const plot_frame *f, plot_box **boxes)
 {
   char buf[32];
+  int cap = na;
+  for (int i = 0; i < nb; i++)
+    for (int k = 0; k < b[i].n; k++) cap += b[i].label && b[i].label[k] != 0;
+  plot_mark *marks = cap > 0 ? malloc((size_t)cap * sizeof *marks) : NULL;
+  *boxes = cap > 0 ? malloc((size_t)cap * sizeof **boxes) : NULL;
+  int nm = 0;
   for (int i = 0; i < nb; i++)
     for (int k = 0; k < b[i].n; k++) {
       double x = b[i].x[k], y = b[i].y[k];
@@ -238,17 +317,42 @@ static void plot_markers(cairo_t *cr, const plot_branch *b, int nb, const plot_a
       int bp = b[i].type && b[i].type[k] == CABLE_TY_BP;
       int lab = b[i].label ? b[i].label[k] : 0;
       if (!bp && lab == 0) continue;
-      if (lab != 0) snprintf(buf, sizeof buf, "%d", lab);
-      plot_marker(cr, f, x, y, bp, lab != 0 ? buf : NULL);
+      plot_marker(cr, f, x, y, bp);
+      if (lab != 0) {
+        snprintf(buf, sizeof buf, "%d", lab);
+        if (marks) nm = plot_mark_add(marks, nm, cap, f, x, y, buf);
+        else plot_marker_text(cr, f, x, y, buf, NULL, 0); /* out of memory: no joining or avoidance */
+      }
     }
   for (int i = 0; i < na; i++)
-    if (isfinite(an[i].x) && isfinite(an[i].y))
-      plot_marker(cr, f, an[i].x, an[i].y, an[i].filled, an[i].text);
+    if (isfinite(an[i].x) && isfinite(an[i].y)) {
+      plot_marker(cr, f, an[i].x, an[i].y, an[i].filled);
+      if (!an[i].text || !an[i].text[0]) continue;
+      if (marks) nm = plot_mark_add(marks, nm, cap, f, an[i].x, an[i].y, an[i].text);
+      else plot_marker_text(cr, f, an[i].x, an[i].y, an[i].text, NULL, 0);
+    }
+  /* the annotations (a scene's named points) first: they get the best places */
+  int nbox = 0;
+  plot_box tmp;
+  for (int pass = 0; pass < 2; pass++)
+    for (int i = 0; i < nm; i++) {
+      int is_annot = !(marks[i].text[0] >= '0' && marks[i].text[0] <= '9');
+      if (is_annot != (pass == 0)) continue;
+      tmp = plot_marker_text(cr, f, marks[i].x, marks[i].y, marks[i].text, *boxes, *boxes ? nbox : 0);
+      if (*boxes) (*boxes)[nbox++] = tmp;
+    }
+  free(marks);
+  return *boxes ? nbox : 0;
 }
 
-/* Number of data points that a legend box at (x, y, w, h) would hide. */
-static long plot_hidden(const plot_branch *b, int nb, const plot_frame *f, double x, double y,
-                        double w, double h)
+/* A text label under the legend costs as much as this many hidden data
+ * points: a label is read, a few points of a line are not missed. */
+#define PLOT_LEGEND_LABEL_COST 1000
+
+/* Data points, plus labels at PLOT_LEGEND_LABEL_COST each, that a legend box
+ * at (x, y, w, h) would hide. */
+static long plot_hidden(const plot_branch *b, int nb, const plot_box *boxes, int nbox, const plot_frame *f,
+                        double x, double y, double w, double h)
 {
   long c = 0;
   for (int i = 0; i < nb; i++)
@@ -257,10 +361,13 @@ static long plot_hidden(const plot_branch *b, int nb, const plot_frame *f, doubl
       double px = plot_px(f, b[i].x[k]), py = plot_py(f, b[i].y[k]);
       c += px >= x && px <= x + w && py >= y && py <= y + h;
     }
+  plot_box lg = {x, y, x + w, y + h};
+  for (int i = 0; i < nbox; i++) c += PLOT_LEGEND_LABEL_COST * plot_box_overlap(&lg, &boxes[i]);
   return c;
 }
 
-static void plot_legend(cairo_t *cr, const plot_branch *b, int nb, const plot_frame *f)
+static void plot_legend(cairo_t *cr, const plot_branch *b, int nb, const plot_box *boxes, int nbox,
+                        const plot_frame *f)
 {
   char buf[32];
   double fs = f->fs, row = PLOT_LEGEND_ROW * fs, sample = PLOT_LEGEND_SAMPLE * fs;
@@ -271,13 +378,13 @@ static void plot_legend(cairo_t *cr, const plot_branch *b, int nb, const plot_fr
     tw = fmax(tw, graphics_text_width(cr, b[i].name ? b[i].name : buf));
   }
   double w = sample + tw + 1.5 * fs, h = nb * row + 0.4 * fs, m = 0.5 * fs;
-  /* the corner that hides the fewest data points; top right on a tie */
+  /* the corner that hides the fewest data points and labels; top right on a tie */
   const double cx[4] = {f->left + f->pw - m - w, f->left + m, f->left + f->pw - m - w, f->left + m};
   const double cy[4] = {f->top + m, f->top + m, f->top + f->ph - m - h, f->top + f->ph - m - h};
   int best = 0;
-  long hid = plot_hidden(b, nb, f, cx[0], cy[0], w, h);
+  long hid = plot_hidden(b, nb, boxes, nbox, f, cx[0], cy[0], w, h);
   for (int c = 1; c < 4; c++) {
-    long hc = plot_hidden(b, nb, f, cx[c], cy[c], w, h);
+    long hc = plot_hidden(b, nb, boxes, nbox, f, cx[c], cy[c], w, h);
     if (hc < hid) hid = hc, best = c;
   }
   double x = cx[best], y = cy[best];
@@ -307,8 +414,10 @@ static void plot_draw(cairo_t *cr, const plot_branch *b, int nb, const plot_anno
   cairo_paint(cr);
   plot_axes(cr, opt, w, h, f);
   plot_lines(cr, b, nb, f);
-  plot_markers(cr, b, nb, an, na, f);
-  plot_legend(cr, b, nb, f);
+  plot_box *boxes = NULL;
+  int nbox = plot_markers(cr, b, nb, an, na, f, &boxes);
+  plot_legend(cr, b, nb, boxes, nbox, f);
+  free(boxes);
 }
 
 int plot_bifurcation_annotated(const plot_branch *branches, int nbranch,

@@ -8,5 +8,5 @@ start=$(date +%s)
 end=$(date +%s)
 echo
 echo "demo: knot72 scene done in $((end - start)) s"
-echo "demo: output in runs/knot72/: b.*, s.*, d.* (AUTO-07p formats), b.*.csv,"
-echo "      and the comparison with the paper in runs/knot72/knot72_compare.txt"
+echo "demo: output in runs/knot72/: b.*, s.*, d.* (AUTO-07p formats), the pictures"
+echo "      (knot72*.png) and the comparison with the paper in runs/knot72/knot72_compare.txt"

@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
-# make scenes: replay every scene in runs/ (each runs/NAME/NAME.auto).
+# make scenes: replay every scene in runs/ (each runs/NAME/NAME.auto), with the
+# time of each and of all of them together.
 set -uo pipefail
 cd "$(dirname "$0")/.."
 status=0
+all_start=$(date +%s)
 for script in runs/*/*.auto; do
   name=$(basename "$(dirname "$script")")
   [ "$script" = "runs/$name/$name.auto" ] || continue
@@ -14,4 +16,5 @@ for script in runs/*/*.auto; do
     echo "=== $name: FAILED"; status=1
   fi
 done
+echo "=== scenes: total $(( $(date +%s) - all_start )) s"
 exit $status

@@ -687,6 +687,83 @@ static void test_plot(void)
   test_true("plot error: nothing created", !file_exists(OUTDIR "/no"));
 }
 
+/* Bounding box [x0, x1] x [y0, y1] of the pixels that differ between two
+ * images of equal size; returns their number. */
+static long diff_bbox(cairo_surface_t *a, cairo_surface_t *b, int box[4])
+{
+  int w = cairo_image_surface_get_width(a), h = cairo_image_surface_get_height(a);
+  long n = 0;
+  box[0] = w, box[1] = h, box[2] = -1, box[3] = -1;
+  for (int y = 0; y < h; y++)
+    for (int x = 0; x < w; x++) {
+      int ca[3], cb[3];
+      rgb_at(a, x, y, ca);
+      rgb_at(b, x, y, cb);
+      if (ca[0] == cb[0] && ca[1] == cb[1] && ca[2] == cb[2]) continue;
+      n++;
+      if (x < box[0]) box[0] = x;
+      if (y < box[1]) box[1] = y;
+      if (x > box[2]) box[2] = x;
+      if (y > box[3]) box[3] = y;
+    }
+  return n;
+}
+
+static cairo_surface_t *plot_to_surface(const plot_branch *b, int nb, const plot_annotation *an, int na,
+                                        const char *path)
+{
+  plot_options o = {"T", "F", NULL, 400, 300, PLOT_FORMAT_PNG};
+  if (plot_bifurcation_annotated(b, nb, an, na, &o, path) != CABLE_SUCCESS) return NULL;
+  return cairo_image_surface_create_from_png(path);
+}
+
+/* Mark labels stay inside the plot area: a mark in the top right corner of
+ * the data (knot72_mirror.png's "(a) mirrored" was cut at the right edge) has
+ * its text to the left of and below the marker.  Two branches labelled at one
+ * point get one joined label ("1, 7": knot72.png's two flat arms at T = 0), not
+ * two labels drawn over each other. */
+static void test_plot_labels(void)
+{
+  double x[11], y[11];
+  for (int i = 0; i < 11; i++) x[i] = i, y[i] = 100 + 10 * i;
+  plot_branch b = {"line", 11, x, y, NULL, NULL};
+  plot_annotation bare = {10, 200, NULL, 0}, text = {10, 200, "(a) mirrored", 0};
+  cairo_surface_t *s0 = plot_to_surface(&b, 1, NULL, 0, OUTDIR "/lab0.png");
+  cairo_surface_t *s1 = plot_to_surface(&b, 1, &bare, 1, OUTDIR "/lab1.png");
+  cairo_surface_t *s2 = plot_to_surface(&b, 1, &text, 1, OUTDIR "/lab2.png");
+  int mk[4], tx[4];
+  long nm = s0 && s1 && s2 ? diff_bbox(s0, s1, mk) : 0, nt = nm ? diff_bbox(s1, s2, tx) : 0;
+  test_true("plot labels: the marker and its text are drawn", nm > 0 && nt > 0);
+  double cx = 0.5 * (mk[0] + mk[2]), cy = 0.5 * (mk[1] + mk[3]);
+  char buf[200];
+  /* the difference may include the legend, which moves away from the label */
+  snprintf(buf, sizeof buf, "plot labels: a top-right mark's text (and all else it changes) lies left of and below"
+           " it (changes x %d..%d y %d..%d, marker at %.0f, %.0f)", tx[0], tx[2], tx[1], tx[3], cx, cy);
+  test_true(buf, nt > 0 && tx[2] < cx && tx[1] > cy);
+  if (s0) cairo_surface_destroy(s0);
+  if (s1) cairo_surface_destroy(s1);
+  if (s2) cairo_surface_destroy(s2);
+
+  /* two branches starting at (0, 100), labelled 1 and 7 there */
+  int lab1[11] = {1}, lab7[11] = {7}, lab0[11] = {0};
+  plot_branch two[2] = {{"a", 11, x, y, NULL, lab1}, {"b", 11, x, y, NULL, lab7}};
+  plot_branch one[2] = {{"a", 11, x, y, NULL, lab1}, {"b", 11, x, y, NULL, lab0}};
+  plot_branch none[2] = {{"a", 11, x, y, NULL, lab0}, {"b", 11, x, y, NULL, lab0}};
+  cairo_surface_t *n0 = plot_to_surface(none, 2, NULL, 0, OUTDIR "/lab3.png");
+  cairo_surface_t *n1 = plot_to_surface(one, 2, NULL, 0, OUTDIR "/lab4.png");
+  cairo_surface_t *n2 = plot_to_surface(two, 2, NULL, 0, OUTDIR "/lab5.png");
+  int b1[4], b2[4];
+  long d1 = n0 && n1 && n2 ? diff_bbox(n0, n1, b1) : 0, d2 = d1 ? diff_bbox(n0, n2, b2) : 0;
+  /* ", 7" adds at least two character widths: at the smallest font (8 px)
+   * more than 6 px; labels drawn over each other add none */
+  snprintf(buf, sizeof buf, "plot labels: labels 1 and 7 at one point are joined (widths %d and %d px)",
+           d1 ? b1[2] - b1[0] + 1 : 0, d2 ? b2[2] - b2[0] + 1 : 0);
+  test_true(buf, d1 > 0 && d2 > 0 && (b2[2] - b2[0]) - (b1[2] - b1[0]) > 6);
+  if (n0) cairo_surface_destroy(n0);
+  if (n1) cairo_surface_destroy(n1);
+  if (n2) cairo_surface_destroy(n2);
+}
+
 /* ------------------------------------------------------------- render */
 
 typedef struct {
@@ -751,6 +828,66 @@ static double knot_coverage(const render_camera *cam, double R, double a, double
   return 2 * PI * R * width * cam->scale * cam->scale / ((double)cam->width * cam->height);
 }
 
+/* The pixel statistics a rendered (7,2) knot must show, each a yes/no:
+ * coverage within 15 % of the tube geometry's (boundary pixels count when a
+ * third covered, +-0.5 px on a band about 8 px wide, 6 %; ring facets,
+ * cos(pi/13) = 0.97, 3 %; the band's width varying along the knot), shading
+ * (>= 50 distinct colours), and each strand's colour on >= 25 % of the
+ * covered pixels (by symmetry each strand is in front half the time), with
+ * something covered at all. */
+#define KNOT_COVER_TOL 0.15
+#define KNOT_MIN_COLOURS 50
+
+typedef struct {
+  int coverage, shading, red, blue;
+} knot_verdict;
+
+static knot_verdict knot_pixel_checks(const pixel_stats *st, long npix, double want)
+{
+  double cover = (double)st->covered / (double)npix;
+  knot_verdict v;
+  v.coverage = isfinite(cover) && want > 0 && fabs(cover - want) <= KNOT_COVER_TOL * want;
+  v.shading = st->distinct >= KNOT_MIN_COLOURS;
+  v.red = st->covered > 0 && st->red >= st->covered / 4;
+  v.blue = st->covered > 0 && st->blue >= st->covered / 4;
+  return v;
+}
+
+/* The checks reject what is not a rendered knot: a blank image, an image of
+ * one colour, and a band of one flat colour covering exactly the knot's
+ * expected area (so only the shading and strand checks can catch it). */
+static void test_knot_checks_negative(double want)
+{
+  const char *path[3] = {OUTDIR "/blank.png", OUTDIR "/grey.png", OUTDIR "/flatband.png"};
+  for (int k = 0; k < 3; k++) {
+    cairo_surface_t *s = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, SIZE, SIZE);
+    cairo_t *cr = cairo_create(s);
+    cairo_set_antialias(cr, CAIRO_ANTIALIAS_NONE);
+    cairo_set_source_rgb(cr, k == 1 ? 0.5 : 1.0, k == 1 ? 0.5 : 1.0, k == 1 ? 0.5 : 1.0);
+    cairo_paint(cr);
+    if (k == 2) {
+      /* an annulus about the centre of area want x SIZE^2 and width 8 px */
+      double w = 8, rmid = want * SIZE * SIZE / (2 * PI * w);
+      cairo_set_source_rgb(cr, 0.85, 0.12, 0.10);
+      cairo_arc(cr, SIZE / 2.0, SIZE / 2.0, rmid + w / 2, 0, 2 * PI);
+      cairo_arc_negative(cr, SIZE / 2.0, SIZE / 2.0, rmid - w / 2, 2 * PI, 0);
+      cairo_fill(cr);
+    }
+    cairo_destroy(cr);
+    cairo_surface_write_to_png(s, path[k]);
+    cairo_surface_destroy(s);
+    pixel_stats st = image_stats(path[k]);
+    knot_verdict v = knot_pixel_checks(&st, (long)SIZE * SIZE, want);
+    char buf[200];
+    static const char *const what[3] = {"a blank image", "a single-colour image", "a flat one-colour band of the knot's area"};
+    snprintf(buf, sizeof buf, "render checks reject %s (covered %ld, %ld colours, red %ld, blue %ld: coverage %s,"
+             " shading %s, strands %s)", what[k], st.covered, st.distinct, st.red, st.blue, v.coverage ? "ok" : "fails",
+             v.shading ? "ok" : "fails", v.red && v.blue ? "ok" : "fail");
+    test_true(buf, !(v.coverage && v.shading && v.red && v.blue));
+    if (k == 2) test_true("  the band has the knot's coverage: only shading and strand colours reject it", v.coverage);
+  }
+}
+
 static void test_render_knot(void)
 {
   enum { N = 400 };
@@ -770,14 +907,12 @@ static void test_render_knot(void)
   double cover = (double)st.covered / (SIZE * SIZE), want = knot_coverage(&cam, R, a, a * cam.thicken);
   printf("     knot: covered %.4f (geometry %.4f), %ld colours, red %ld, blue %ld, thicken %g\n", cover,
          want, st.distinct, st.red, st.blue, cam.thicken);
-  /* 15 %: boundary pixels count when a third covered (+-0.5 px on a band
-   * about 8 px wide, 6 %), ring facets (cos(pi/13) = 0.97, 3 %), and the
-   * band's width varying along the knot */
-  test_rel("render: coverage matches the tube geometry", cover, want, 0.15);
-  test_true("render: shading gives >= 50 distinct colours", st.distinct >= 50);
-  /* by symmetry each strand is in front half the time */
-  test_true("render: strand 1 colour on >= 25 % of covered pixels", st.red >= st.covered / 4);
-  test_true("render: strand 2 colour on >= 25 % of covered pixels", st.blue >= st.covered / 4);
+  knot_verdict v = knot_pixel_checks(&st, (long)SIZE * SIZE, want);
+  test_true("render: coverage matches the tube geometry (within 15 %)", v.coverage);
+  test_true("render: shading gives >= 50 distinct colours", v.shading);
+  test_true("render: strand 1 colour on >= 25 % of covered pixels", v.red);
+  test_true("render: strand 2 colour on >= 25 % of covered pixels", v.blue);
+  test_knot_checks_negative(want);
 
   /* the paper's thin strands, automatic thickening: the drawn radius is
    * RENDER_MIN_RADIUS_PX, and the band is as wide as that predicts */
@@ -1119,6 +1254,7 @@ int main(void)
   test_frames();
   test_mesh();
   test_plot();
+  test_plot_labels();
   test_render_knot();
   test_render_depth();
   test_render_errors();

@@ -68,6 +68,13 @@ int main(void)
            CABLE_ERR_NOTFOUND);
   test_true("unknown column: message names the column", strcmp(err.key, "nosuch") == 0);
   test_true("unknown column: no picture written", file_size("tests/tmp/pictures/x.png") < 0);
+  cable_error_clear(&err);
+  test_int("plot to an unknown format (.jpg): CABLE_ERR_INPUT",
+           cable_plot_files("tests/tmp/pictures", files, 1, NULL, NULL, NULL, 0, NULL, "tests/tmp/pictures/x.jpg", &err),
+           CABLE_ERR_INPUT);
+  test_true("  the message names the file and o=, and says which suffixes",
+            strcmp(err.key, "o") == 0 && strstr(err.msg, ".png or .svg") != NULL);
+  test_true("  nothing written", file_size("tests/tmp/pictures/x.jpg") < 0);
   const char *missing[1] = {"b.does_not_exist"};
   cable_error_clear(&err);
   test_true("missing b-file: error", cable_plot_files("tests/tmp/pictures", missing, 1, NULL, NULL, NULL, 0, NULL,
@@ -97,6 +104,24 @@ int main(void)
     test_true("render: PNG", png_signature("tests/tmp/pictures/knot.png"));
     test_true("render: VTK file", file_size("tests/tmp/pictures/knot.vtp") > 10000);
     test_true("render: PLY file", file_size("tests/tmp/pictures/knot.ply") > 10000);
+    /* a file's format follows its name: a PNG is never written into an .svg
+     * (the CLI's o=x.svg did that silently), nor an export under another
+     * suffix; refused before anything is written */
+    static const struct {
+      const char *png, *vtp, *ply, *key;
+    } bad[] = {{"tests/tmp/pictures/k.svg", NULL, NULL, "o"},
+               {"tests/tmp/pictures/k2.png", "tests/tmp/pictures/k2.vtk", NULL, "vtp"},
+               {"tests/tmp/pictures/k3.png", NULL, "tests/tmp/pictures/k3.obj", "ply"}};
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+      cable_error_clear(&err);
+      char what[160];
+      snprintf(what, sizeof what, "render refuses %s: CABLE_ERR_INPUT naming the file and %s=",
+               bad[i].vtp ? bad[i].vtp : bad[i].ply ? bad[i].ply : bad[i].png, bad[i].key);
+      int rc = cable_render_solution(cable_cont_solution(cc), &o, bad[i].png, bad[i].vtp, bad[i].ply, &err);
+      test_true(what, rc == CABLE_ERR_INPUT && strcmp(err.key, bad[i].key) == 0 && strstr(err.file, "tests/tmp/pictures/k"));
+      test_true("  and writes nothing", file_size(bad[i].png) < 0 && (!bad[i].vtp || file_size(bad[i].vtp) < 0) &&
+                                           (!bad[i].ply || file_size(bad[i].ply) < 0));
+    }
   }
   cable_cont_free(cc);
   /* not a braid solution */
