@@ -237,7 +237,7 @@ static void check_circle_braid(int n)
   double chord = 2 * R * sin(TUBE_WINDOW_FACTOR * delta / (2 * R)) / delta;
   test_abs("circle braid: axis dmin = window-edge chord (within one segment)", r.axis_dmin, chord,
            2 * M_PI * R / (n - 1) / delta);
-  if (n >= 10000 && !getenv("CABLE_TEST_QUICK")) test_le("10^4 samples per strand in under a second", dt, 1.0);
+  /* the time is printed, never asserted: speed is measured by make bench */
   braid_curves_free(bc);
 }
 
