@@ -10,6 +10,7 @@
 #include <dirent.h>
 #include <unistd.h>
 
+#include "bench_util.h"
 #include "abd_solver.h"
 #include "aufile.h"
 #include "braid_problems.h"
@@ -23,25 +24,6 @@
 
 #define REPEATS 3
 #define STEPS 10
-
-static double now(void)
-{
-  struct timespec ts;
-  clock_gettime(CLOCK_MONOTONIC, &ts);
-  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
-static int cmp(const void *a, const void *b)
-{
-  double x = *(const double *)a, y = *(const double *)b;
-  return (x > y) - (x < y);
-}
-
-static double median(double *v, int n)
-{
-  qsort(v, (size_t)n, sizeof *v, cmp);
-  return v[n / 2];
-}
 
 typedef struct {
   cable_linsolver ls;
@@ -73,17 +55,17 @@ static double step_time(const cable_problem *pb, int ntst, step_setup su, double
     cable_cont *cc = cable_cont_alloc(pb, &c, &st);
     if (st == 0) st = cable_cont_set_start(cc, NULL);
     if (st == 0) st = cable_cont_step(cc); /* the start: not timed */
-    double t0 = now();
+    double t0 = bench_now();
     iters = steps = 0;
     while (st == 0 && (st = cable_cont_step(cc)) == 0) {
       iters += cable_cont_point(cc)->newton_iters;
       steps++;
     }
-    t[r] = (now() - t0) / (steps > 0 ? steps : 1);
+    t[r] = (bench_now() - t0) / (steps > 0 ? steps : 1);
     cable_cont_free(cc);
   }
   *newton_per_step = steps ? (double)iters / steps : 0;
-  return median(t, su.repeats);
+  return bench_median(t, su.repeats);
 }
 
 /* the writer's temporary directory and the files in it */
@@ -131,13 +113,13 @@ static double output_time(const cable_problem *pb, int ntst)
         sink = cable_aufile_sink(w);
       }
       int st;
-      double t0 = now();
+      double t0 = bench_now();
       cable_cont *cc = cable_cont_alloc(pb, &c, &st);
       if (st == 0) st = cable_cont_set_start(cc, NULL);
       if (st == 0) st = cable_cont_run(cc, &sink, 1, 1, NULL);
       cable_cont_free(cc);
       int cst = w ? cable_aufile_close(w, &err) : 0;
-      double t = (now() - t0) / (STEPS + 1);
+      double t = (bench_now() - t0) / (STEPS + 1);
       if (with_files) {
         remove_dir(dir);
         if (cst != 0) return (double)NAN;
@@ -148,7 +130,7 @@ static double output_time(const cable_problem *pb, int ntst)
       if (st < 0) return (double)NAN;
     }
   }
-  return median(tw, REPEATS) - median(tn, REPEATS);
+  return bench_median(tw, REPEATS) - bench_median(tn, REPEATS);
 }
 
 /* Medians (s) of the phases of one Newton iteration at the start point,
@@ -178,25 +160,25 @@ static phase_costs phase_times(const cable_problem *pb, int ntst)
   s->closing = COLLOC_CLOSE_FIXPAR;
   double tr[REPEATS], tj[REPEATS], tf[REPEATS], ts[REPEATS], tv[REPEATS];
   for (int r = 0; r < REPEATS; r++) {
-    double t0 = now();
+    double t0 = bench_now();
     colloc_system_residual(s, x, F);
-    double t1 = now();
+    double t1 = bench_now();
     colloc_system_jacobian(s, x, J);
-    double t2 = now();
+    double t2 = bench_now();
     abd_solver_factor(a, J);
-    double t3 = now();
+    double t3 = bench_now();
     abd_solver_solve(a, F);
-    double t4 = now();
+    double t4 = bench_now();
     double sv[2];
     abd_solver_smallest_sv(a, J, 2, sv, vecs, 12, 1e-6); /* the engine's CONT_SV_MAXIT, CONT_SV_RTOL */
-    double t5 = now();
+    double t5 = bench_now();
     tr[r] = t1 - t0; tj[r] = t2 - t1; tf[r] = t3 - t2; ts[r] = t4 - t3; tv[r] = t5 - t4;
   }
-  pc.residual = median(tr, REPEATS);
-  pc.assembly = median(tj, REPEATS);
-  pc.factor = median(tf, REPEATS);
-  pc.solve = median(ts, REPEATS);
-  pc.sv = median(tv, REPEATS);
+  pc.residual = bench_median(tr, REPEATS);
+  pc.assembly = bench_median(tj, REPEATS);
+  pc.factor = bench_median(tf, REPEATS);
+  pc.solve = bench_median(ts, REPEATS);
+  pc.sv = bench_median(tv, REPEATS);
   free(x); free(t); free(F); free(vecs);
   abd_solver_free(a);
   colloc_jac_free(J);

@@ -15,6 +15,7 @@
 #include <string.h>
 #include <time.h>
 
+#include "bench_util.h"
 #include "cable_constants.h"
 #include "engine_util.h"
 #include "test_problems.h"
@@ -33,19 +34,6 @@ static const int ntsts[] = {25, 50, 100, 200, 400};
 static const int ncols[] = {3, 4, 5, 7};
 #define NNTST ((int)(sizeof ntsts / sizeof ntsts[0]))
 #define NNCOL ((int)(sizeof ncols / sizeof ncols[0]))
-
-static double now(void)
-{
-  struct timespec ts;
-  clock_gettime(CLOCK_MONOTONIC, &ts);
-  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
-static int cmp(const void *a, const void *b)
-{
-  double x = *(const double *)a, y = *(const double *)b;
-  return (x > y) - (x < y);
-}
 
 typedef struct {
   double seconds;   /* median over REPEATS */
@@ -99,9 +87,9 @@ static bench_row measure(const cable_problem *pb, void (*setup)(cable_constants 
   for (int k = 0; k < REPEATS; k++) {
     cable_constants c;
     setup(&c, ntst, ncol);
-    double t0 = now();
+    double t0 = bench_now();
     int st = memrun_run(pb, &c, NULL, r);
-    t[k] = now() - t0;
+    t[k] = bench_now() - t0;
     if (k == 0) {
       row.steps = r->n;
       row.err = st > 0 ? error(r) : (double)NAN;
@@ -109,8 +97,7 @@ static bench_row measure(const cable_problem *pb, void (*setup)(cable_constants 
     }
     memrun_free(r);
   }
-  qsort(t, REPEATS, sizeof t[0], cmp);
-  row.seconds = t[REPEATS / 2];
+  row.seconds = bench_median(t, REPEATS);
   return row;
 }
 

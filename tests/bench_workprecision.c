@@ -17,6 +17,7 @@
 #include <string.h>
 #include <time.h>
 
+#include "bench_util.h"
 #include "braid_analysis.h"
 #include "braid_problems.h"
 #include "braid_start.h"
@@ -66,25 +67,6 @@ typedef struct {
   const cable_problem *knot, *sym;
   cable_constants cflat, csym;
 } scene;
-
-static double now(void)
-{
-  struct timespec ts;
-  clock_gettime(CLOCK_MONOTONIC, &ts);
-  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
-static int cmp(const void *a, const void *b)
-{
-  double x = *(const double *)a, y = *(const double *)b;
-  return (x > y) - (x < y);
-}
-
-static double median(double *v, int n)
-{
-  qsort(v, (size_t)n, sizeof *v, cmp);
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
 
 /* What `every point' costs: the sink a scene would use to analyse every
  * accepted solution (the engine itself hands only labelled ones to sinks). */
@@ -164,7 +146,7 @@ static void scene_run(const scene *sc, int ntst, int ncol, const cable_sink *sin
   cable_constants cf = sc->cflat, cs = sc->csym;
   cf.ntst = cs.ntst = ntst;
   cf.ncol = cs.ncol = ncol;
-  double t0 = now();
+  double t0 = bench_now();
   int st, steps = 0;
   cable_solution *bp = flat_to_bp1(sc, &cf, sink, &steps);
   if (!bp) return;
@@ -182,7 +164,7 @@ static void scene_run(const scene *sc, int ntst, int ncol, const cable_sink *sin
   }
   cable_cont_free(cc);
   cable_solution_free(bp);
-  r->seconds = now() - t0;
+  r->seconds = bench_now() - t0;
   r->steps = steps;
   /* T(BP1) at a tight location tolerance, outside the timing */
   cf.epss = EPSS_BP1;
@@ -208,7 +190,7 @@ static double scene_time(const scene *sc, int ntst, int ncol, const cable_sink *
     else if (x.ok != r->ok || memcmp(&x.f_a, &r->f_a, sizeof x.f_a) || memcmp(&x.t_bp1, &r->t_bp1, sizeof x.t_bp1))
       *consistent = 0;
   }
-  return median(t, n);
+  return bench_median(t, n);
 }
 
 static int load_constants(const char *path, const cable_problem *pb, cable_constants *c)
