@@ -44,14 +44,21 @@ static void test_bratu_fold(memrun *r)
   memrun_free(r);
 }
 
+/* The straight elastica's trivial branch to lambda = 100 with the determinant
+ * test: its branch points at (n pi)^2, n = 1, 2, 3, located to EPSS = 1e-10. */
+static void elastica_trivial_constants(cable_constants *c, int ntst, int ncol)
+{
+  engine_constants(c, ntst, ncol);
+  c->ds = 0.5; c->dsmin = 1e-6; c->dsmax = 4.0; c->nmx = 200;
+  c->rl1 = 100.0;
+  c->isp = 2; c->ilp = 0;
+  c->epss = 1e-10;
+}
+
 static void test_elastica(memrun *r)
 {
   cable_constants c;
-  engine_constants(&c, 50, 5);
-  c.ds = 0.5; c.dsmin = 1e-6; c.dsmax = 4.0; c.nmx = 200;
-  c.rl1 = 100.0;
-  c.isp = 2; c.ilp = 0;
-  c.epss = 1e-10;
+  elastica_trivial_constants(&c, 50, 5);
   memrun_run(cable_testproblem_elastica(), &c, NULL, r);
   test_true("elastica trivial branch ends at RL1", r->status == CABLE_END_BOUNDS);
   test_int("elastica: three branch points below lambda = 100", memrun_count(r, CABLE_TY_BP), 3);
@@ -108,11 +115,7 @@ static void test_elastica_exact_zero_pivot(memrun *r)
     int ntst = meshes[m][0], ncol = meshes[m][1];
     char what[700];
     cable_constants c;
-    engine_constants(&c, ntst, ncol);
-    c.ds = 0.5; c.dsmin = 1e-6; c.dsmax = 4.0; c.nmx = 200;
-    c.rl1 = 100.0;
-    c.isp = 2; c.ilp = 0;
-    c.epss = 1e-10;
+    elastica_trivial_constants(&c, ntst, ncol);
     memrun_run(cable_testproblem_elastica(), &c, NULL, r);
     snprintf(what, sizeof what, "elastica NTST=%d NCOL=%d: three branch points below lambda = 100", ntst, ncol);
     test_int(what, memrun_count(r, CABLE_TY_BP), 3);
@@ -267,11 +270,7 @@ static void test_integral_condition(memrun *r)
 static void test_stop(memrun *r)
 {
   cable_constants c;
-  engine_constants(&c, 50, 5);
-  c.ds = 0.5; c.dsmin = 1e-6; c.dsmax = 4.0; c.nmx = 200;
-  c.rl1 = 100.0;
-  c.isp = 2; c.ilp = 0;
-  c.epss = 1e-10;
+  elastica_trivial_constants(&c, 50, 5);
   c.nstop = 1; c.stop_on[0] = CABLE_TY_BP; c.stop_count[0] = 2;
   memrun_run(cable_testproblem_elastica(), &c, NULL, r);
   test_int("STOP=['BP2']: the branch ends with CABLE_END_STOP", r->status, CABLE_END_STOP);
