@@ -32,6 +32,9 @@
  * is kept twice, its function value is scaled by this factor (Dowell and
  * Jarratt 1971), which restores superlinear convergence. */
 #define CONT_ILLINOIS 0.5
+/* Alternative points tried when the corrector fails at a locating iterate
+ * (each halfway to the farther end of the bracket). */
+#define CONT_LOCATE_RETRIES 3
 
 static double param_value(const cable_cont *cc, const double *x, int k)
 {
@@ -94,7 +97,7 @@ static void branch_tangent(cable_cont *cc, double theta, double *out)
   cont_normalize(cc, out);
 }
 
-int cont_locate(cable_cont *cc, int type, int which, double seed)
+static int locate(cable_cont *cc, int type, int which, double seed, int plain)
 {
   double s0 = 0.0, f0 = test_value(&cc->tf, type, which);
   double s1 = cc->ds_used, f1 = test_value(&cc->tft, type, which);
@@ -118,12 +121,23 @@ int cont_locate(cable_cont *cc, int type, int which, double seed)
        secant through far-apart values of the kinked sigma_1 (regula falsi
        from the step's ends needed more than ITMX = 9 iterations for the
        elastica's BP1 from a 35-wide step). */
-    double s = fq != fp ? sq - fq * (sq - sp) / (fq - fp) : (double)NAN;
-    if (it == 0 && seed > lo && seed < hi) s = seed;
+    double s = !plain && fq != fp ? sq - fq * (sq - sp) / (fq - fp) : (double)NAN;
+    if (!plain && it == 0 && seed > lo && seed < hi) s = seed;
     if (!(s > lo && s < hi)) s = s1 - f1 * (s1 - s0) / (f1 - f0);
     if (!(s > lo && s < hi)) s = 0.5 * (s0 + s1);
     int rc = cont_correct(cc, cc->x, cc->xdot, s, xs);
     if (rc == CABLE_SUCCESS) rc = cont_tangent(cc, xs, cc->xdot, xds, &ts);
+    /* Next to a branch point the extended matrix is nearly singular and the
+       corrector can run out of ITNW iterations there (link62's simple BP at
+       T = 29.81, seeded by the pencil test right on it): move halfway to
+       the farther end of the bracket, where it is better conditioned, and
+       go on from there. */
+    for (int retry = 0; retry < CONT_LOCATE_RETRIES && (rc == CABLE_ERR_NEWTON || rc == CABLE_ERR_RECOVERABLE);
+         retry++) {
+      s = (s - lo > hi - s) ? 0.5 * (lo + s) : 0.5 * (s + hi);
+      rc = cont_correct(cc, cc->x, cc->xdot, s, xs);
+      if (rc == CABLE_SUCCESS) rc = cont_tangent(cc, xs, cc->xdot, xds, &ts);
+    }
     int nudged = 0;
     if (rc == CABLE_ERR_LINSOLVE) {
       /* The extended matrix is exactly singular at s (a zero pivot: s is
@@ -186,6 +200,26 @@ int cont_locate(cable_cont *cc, int type, int which, double seed)
   }
   cont_set_error(cc, "could not locate the %s within ITMX=%d iterations", what, cc->c.itmx);
   return CABLE_ERR_NEWTON;
+}
+
+/* Dekker's secant steps (seeded by the pencil test) first; when they do not
+ * converge (near a double branch point sign(det) sigma_1 follows different
+ * singular values and is not smooth: link62's simple BP at T = 29.81, 0.12
+ * from a double one), the plain Illinois regula falsi on the step's bracket,
+ * which keeps a bracket that shrinks every iteration. */
+int cont_locate(cable_cont *cc, int type, int which, double seed)
+{
+  int rc = locate(cc, type, which, seed, 0);
+  if (rc == CABLE_SUCCESS || rc == CABLE_ERR_CALLBACK) return rc;
+  char first[200];
+  snprintf(first, sizeof first, "%.190s", cc->err);
+  rc = locate(cc, type, which, (double)NAN, 1);
+  if (rc != CABLE_SUCCESS && rc != CABLE_ERR_CALLBACK) {
+    char second[200];
+    snprintf(second, sizeof second, "%.190s", cc->err);
+    cont_set_error(cc, "%s; regula falsi: %s", first, second);
+  }
+  return rc;
 }
 
 /* A dip counts when sigma_1 at the middle point is a local minimum below
