@@ -37,6 +37,17 @@ static inline void engine_constants(cable_constants *c, int ntst, int ncol)
   c->iad = 0;
 }
 
+/* The straight elastica's trivial branch to lambda = 100 with the determinant
+ * test: its branch points at (n pi)^2, n = 1, 2, 3, located to EPSS = 1e-10. */
+static inline void elastica_trivial_constants(cable_constants *c, int ntst, int ncol)
+{
+  engine_constants(c, ntst, ncol);
+  c->ds = 0.5; c->dsmin = 1e-6; c->dsmax = 4.0; c->nmx = 200;
+  c->rl1 = 100.0;
+  c->isp = 2; c->ilp = 0;
+  c->epss = 1e-10;
+}
+
 static inline int memrun_point(void *ctx, const cable_point *pt)
 {
   memrun *r = ctx;

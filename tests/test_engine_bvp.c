@@ -44,17 +44,6 @@ static void test_bratu_fold(memrun *r)
   memrun_free(r);
 }
 
-/* The straight elastica's trivial branch to lambda = 100 with the determinant
- * test: its branch points at (n pi)^2, n = 1, 2, 3, located to EPSS = 1e-10. */
-static void elastica_trivial_constants(cable_constants *c, int ntst, int ncol)
-{
-  engine_constants(c, ntst, ncol);
-  c->ds = 0.5; c->dsmin = 1e-6; c->dsmax = 4.0; c->nmx = 200;
-  c->rl1 = 100.0;
-  c->isp = 2; c->ilp = 0;
-  c->epss = 1e-10;
-}
-
 static void test_elastica(memrun *r)
 {
   cable_constants c;
@@ -286,16 +275,22 @@ static void test_stop(memrun *r)
   memrun_free(r);
 }
 
+/* Bratu's branch from u = 0, stopped (UZSTOP) at lambda = 1 on its lower part. */
+static void bratu_to_lambda1_constants(cable_constants *c, int ntst, int ncol)
+{
+  engine_constants(c, ntst, ncol);
+  c->ds = 0.1; c->dsmin = 1e-6; c->dsmax = 0.2; c->nmx = 100;
+  c->isp = 0; c->ilp = 0;
+  c->nuzr = 1;
+  c->uzr[0].par = 0; c->uzr[0].value = 1.0; c->uzr[0].stop = 1;
+  c->epss = 1e-10;
+}
+
 /* max mesh-point error of the Bratu solution at lambda ~ 1 */
 static double bratu_error(memrun *r, int ntst, int ncol)
 {
   cable_constants c;
-  engine_constants(&c, ntst, ncol);
-  c.ds = 0.1; c.dsmin = 1e-6; c.dsmax = 0.2; c.nmx = 100;
-  c.isp = 0; c.ilp = 0;
-  c.nuzr = 1;
-  c.uzr[0].par = 0; c.uzr[0].value = 1.0; c.uzr[0].stop = 1;
-  c.epss = 1e-10;
+  bratu_to_lambda1_constants(&c, ntst, ncol);
   memrun_run(cable_testproblem_bratu(), &c, NULL, r);
   const cable_solution *s = memrun_find(r, CABLE_TY_UZ, 0);
   double err = INFINITY;
@@ -331,12 +326,7 @@ static void test_error_estimate(memrun *r)
     for (int q = 0; q < 3; q++) {
       int ntst = meshes[ncol - 2][q];
       cable_constants c;
-      engine_constants(&c, ntst, ncol);
-      c.ds = 0.1; c.dsmin = 1e-6; c.dsmax = 0.2; c.nmx = 100;
-      c.isp = 0; c.ilp = 0;
-      c.nuzr = 1;
-      c.uzr[0].par = 0; c.uzr[0].value = 1.0; c.uzr[0].stop = 1;
-      c.epss = 1e-10;
+      bratu_to_lambda1_constants(&c, ntst, ncol);
       memrun_run(cable_testproblem_bratu(), &c, NULL, r);
       const cable_solution *s = memrun_find(r, CABLE_TY_UZ, 0);
       if (!s) {
