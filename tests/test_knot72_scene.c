@@ -28,6 +28,7 @@
 #include "cable_error.h"
 #include "cable_status.h"
 #include "harness.h"
+#include "test_files.h"
 #include "script.h"
 #include "script_host_cable.h"
 
@@ -43,18 +44,6 @@ typedef struct scratch {
 static void scratch_path(const scratch *sc, const char *name, char *buf, size_t len)
 {
   snprintf(buf, len, "%s/%s", sc->dir, name);
-}
-
-static int copy_file(const char *from, const char *to)
-{
-  FILE *a = fopen(from, "rb"), *b = a ? fopen(to, "wb") : NULL;
-  char buf[4096];
-  size_t n;
-  int ok = a && b;
-  while (ok && (n = fread(buf, 1, sizeof buf, a)) > 0) ok = fwrite(buf, 1, n, b) == n;
-  if (a) fclose(a);
-  if (b && fclose(b) != 0) ok = 0;
-  return ok;
 }
 
 static int file_exists(const char *path)

@@ -18,6 +18,7 @@
 #include "cable_status.h"
 #include "braid_resolver.h"
 #include "harness.h"
+#include "test_files.h"
 #include "script.h"
 #include "script_host_cable.h"
 
@@ -921,18 +922,6 @@ static const char *const replay_files[] = {"c.bratu", "b.bratu", "s.bratu", "d.b
 #define FILE_REL_TOL 1e-10
 
 static char plugin_dir[2048] = "build/release/plugins";
-
-static int copy_file(const char *from, const char *to)
-{
-  FILE *a = fopen(from, "rb"), *b = a ? fopen(to, "wb") : NULL;
-  char buf[4096];
-  size_t n;
-  int ok = a && b;
-  while (ok && (n = fread(buf, 1, sizeof buf, a)) > 0) ok = fwrite(buf, 1, n, b) == n;
-  if (a) fclose(a);
-  if (b && fclose(b) != 0) ok = 0;
-  return ok;
-}
 
 /* The whole file as a string (caller frees), NULL when unreadable. */
 static char *read_text(const char *path)
