@@ -1,0 +1,162 @@
+"""Running a sweep on Dask distributed (doc/atlas.md): a local cluster of
+this machine's cores by default, or the scheduler at an address.
+
+Each task is submitted under the Dask key atlas-KEY (KEY: the hash of its
+inputs).  Tasks whose directory OUT/tasks/NAME holds a result.json are not
+submitted (a resumed sweep recomputes nothing finished); failed ones only
+with retry_failed.  As each task finishes the table is rewritten
+(atomically) from every finished task of the sweep.  A worker that dies
+mid-task is replaced (local cluster: its nanny restarts it) and the
+scheduler gives its task to another worker; after Dask's allowed failures
+(distributed.scheduler.allowed-failures, 3) the task is recorded as failed.
+"""
+import json
+import os
+import shutil
+import sys
+import time
+
+from .atlas_output import write_outputs
+from .atlas_task import run_task
+
+
+def _result_path(sweep, t):
+    return os.path.join(sweep.output, 'tasks', t.name, 'result.json')
+
+
+def read_result(sweep, t):
+    """The finished result of task t (None: not finished)."""
+    p = _result_path(sweep, t)
+    if not os.path.exists(p):
+        return None
+    with open(p) as fh:
+        return json.load(fh)
+
+
+def _record_failure(sweep, t, error):
+    """A task Dask gave up on (its workers died): recorded as failed, as the
+    task itself records an error (a directory with result.json)."""
+    from .scenes import write_atomic
+    d = os.path.join(sweep.output, 'tasks', t.name)
+    os.makedirs(d, exist_ok=True)
+    result = {'name': t.name, 'status': 'failed', 'error': error, 'wall': float('nan'), 'rows': [],
+              'host': '', 'inputs': t.inputs}
+    write_atomic(os.path.join(d, 'result.json'), json.dumps(result, indent=1) + '\n')
+    return result
+
+
+def _fmt_time(s):
+    if s != s or s == float('inf'):
+        return '?'
+    s = int(round(s))
+    return '%dh%02dm' % (s // 3600, s % 3600 // 60) if s >= 3600 else '%dm%02ds' % (s // 60, s % 60)
+
+
+class Progress:
+    """Tasks done, running, failed and the estimated time left, on one line
+    (rewritten in place on a terminal, a new line per change otherwise)."""
+
+    def __init__(self, total, skipped, stream):
+        self.total, self.skipped, self.stream = total, skipped, stream
+        self.tty = hasattr(stream, 'isatty') and stream.isatty()
+        self.done = self.failed = 0
+        self.walls = []
+        self.last = None
+        self.t0 = time.time()
+
+    def line(self, running, threads):
+        left = self.total - self.skipped - self.done
+        eta = float('nan')
+        if self.walls and threads:
+            mean = sum(self.walls) / len(self.walls)
+            eta = left * mean / threads
+        elif left == 0:
+            eta = 0.0
+        return ('atlas: %d/%d done (%d earlier), %d running, %d failed, %s elapsed, ETA %s'
+                % (self.skipped + self.done, self.total, self.skipped, running, self.failed,
+                   _fmt_time(time.time() - self.t0), _fmt_time(eta)))
+
+    def show(self, running, threads, final=False):
+        text = self.line(running, threads)
+        key = text.split(', ETA')[0].rsplit(',', 1)[0]
+        if self.tty:
+            self.stream.write('\r' + text + ('\n' if final else ''))
+            self.stream.flush()
+        elif key != self.last or final:
+            self.stream.write(text + '\n')
+            self.stream.flush()
+        self.last = key
+
+
+def _client(scheduler, workers):
+    from distributed import Client, LocalCluster
+    if scheduler:
+        return Client(scheduler), None
+    n = workers or os.cpu_count() or 1
+    # one thread per worker process: a task owns its process's directory and stdout
+    cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=True, dashboard_address=None,
+                           silence_logs=40)
+    return Client(cluster), cluster
+
+
+def run_sweep(sweep, scheduler=None, workers=None, retry_failed=False, stream=None):
+    """Runs the tasks of sweep not yet finished; returns a dict with the
+    counts: total, skipped (finished before), computed, failed."""
+    from distributed import wait
+    from distributed.client import TimeoutError as DaskTimeout   # noqa: the name differs between versions
+    stream = stream or sys.stderr
+    os.makedirs(os.path.join(sweep.output, 'tasks'), exist_ok=True)
+    todo, skipped = [], 0
+    for t in sweep.tasks:
+        r = read_result(sweep, t)
+        if r is not None and (r['status'] == 'ok' or not retry_failed):
+            skipped += 1
+            continue
+        if r is not None:
+            shutil.rmtree(os.path.dirname(_result_path(sweep, t)))
+        todo.append(t)
+    prog = Progress(len(sweep.tasks), skipped, stream)
+    counts = {'total': len(sweep.tasks), 'skipped': skipped, 'computed': 0, 'failed': 0}
+    if not todo:
+        write_outputs(sweep)
+        prog.show(0, 0, final=True)
+        return counts
+    client, cluster = _client(scheduler, workers)
+    try:
+        by_key = {}
+        futures = []
+        for t in todo:
+            f = client.submit(run_task, t.inputs, t.name, sweep.output, key='atlas-' + t.key, pure=False)
+            by_key[f.key] = t
+            futures.append(f)
+        pending = set(futures)
+        while pending:
+            try:
+                done, pending = wait(pending, timeout=1.0, return_when='FIRST_COMPLETED')
+            except (DaskTimeout, TimeoutError):
+                done = set()
+            for f in done:
+                t = by_key[f.key]
+                if f.status == 'finished':
+                    r = f.result()
+                else:
+                    r = _record_failure(sweep, t, '%s: %s' % (type(f.exception()).__name__, f.exception()))
+                prog.done += 1
+                counts['computed'] += 1
+                if r['status'] != 'ok':
+                    prog.failed += 1
+                    counts['failed'] += 1
+                elif r['wall'] == r['wall']:
+                    prog.walls.append(r['wall'])
+            if done:
+                write_outputs(sweep)
+            threads = sum(client.nthreads().values())
+            proc = client.processing()
+            running = min(threads, sum(1 for ks in proc.values() for k in ks if k in by_key))
+            prog.show(running, threads)
+        prog.show(0, 0, final=True)
+    finally:
+        client.close()
+        if cluster is not None:
+            cluster.close()
+    return counts

@@ -1,0 +1,229 @@
+"""One atlas task, run on a Dask worker (or anywhere): the flat branch of a
+(p,2) torus knot or link on one arm up to its mode-th branch point, the
+branch from that point, and the rows of the cable knots or links found on
+it, each derived from the computed branch with the package's analysis
+(doc/atlas.md, 'What a row holds').
+
+The task works in OUT/tasks/.NAME.partial-HOST-PID and renames that to
+OUT/tasks/NAME when everything (b./s./d. files, log.txt, result.json) is
+written: a task directory without the .partial prefix is complete, and a
+worker that dies leaves only a partial directory, which nothing reads.
+"""
+import json
+import os
+import shutil
+import socket
+import sys
+import threading
+import time
+import traceback
+
+from . import _cable, scenes
+from .commands import Runner, constant_text
+from .scenes import write_atomic
+
+# A task changes the process's current directory and its standard output
+# (the engine prints to file descriptor 1): one task at a time per process.
+_PROCESS_LOCK = threading.Lock()
+
+_ICP = {('knot', False): ['T', 'L', 'L2', 'eps21', 'F', 'h', 'Ham'],
+        ('knot', True): ['T', 'L', 'L2', 'eps21', 'eps13', 'F', 'h', 'Ham'],
+        ('link', False): ['T', 'F', 'h', 'Ham', 'Phi'],
+        ('link', True): ['T', 'eps13', 'F', 'h', 'Ham', 'Phi']}
+
+ROW_FIELDS = ['family', 'kind', 'p', 'hand', 'Delta', 'arm', 'mode', 'bp_T', 'bp_F', 'bp_multiplicity',
+              'formulation', 'segment', 'passages', 'companion', 'crossings', 'Lk', 'Lk_tube', 'overlap_free',
+              'LAB_free', 'T_free', 'F_free', 'LAB_free_end', 'T_free_end', 'F_free_end', 'free_end', 'dmin',
+              'pmin', 'err', 'wall', 'status', 'error', 'task']
+
+
+def _constants_file(path, head, consts):
+    lines = [head] + [constant_text(k, v) for k, v in consts.items()]
+    write_atomic(path, '\n'.join(lines) + '\n')
+
+
+def _problem(inp, sym):
+    kind = inp['kind']
+    e = 'braid_%s%s' % (kind, '_sym' if sym else '')
+    par = {'Delta': inp['Delta'], 'T': 0.0}
+    par['Ltot' if kind == 'knot' else 'L'] = inp['length']
+    return e, par
+
+
+def _flat_constants(inp):
+    e, par = _problem(inp, False)
+    c = {'e': e, 'NDIM': 21, 'IPS': 4, 'ICP': _ICP[(inp['kind'], False)], 'TORUS': inp['p'], 'HAND': inp['hand'],
+         'PAR': par, 'NTST': inp['mesh']['NTST'], 'NCOL': inp['mesh']['NCOL'], 'JAC': 1, 'ISP': 2, 'ILP': 0,
+         'NSV': 2}
+    c.update(inp['flat'])
+    c['DS'] = inp['arm'] * abs(c['DS'])
+    c['STOP'] = ['BP%d' % inp['mode']]   # BPs of the other arm never come: the run goes one way from T = 0
+    return c
+
+
+def _branch_constants(inp, sym):
+    e, _ = _problem(inp, sym)
+    c = {'e': e, 'NDIM': 21, 'IPS': 4, 'ICP': _ICP[(inp['kind'], sym)], 'NTST': inp['mesh']['NTST'],
+         'NCOL': inp['mesh']['NCOL'], 'JAC': 1, 'ISW': -1, 'ISP': 0, 'ILP': 0}
+    c.update(inp['branch'])
+    return c
+
+
+def _family(inp):
+    return '%s(%d,2)' % (inp['kind'], inp['p'])
+
+
+def _knot_text(a):
+    return '%s%s' % ('right ' if a['hand'] > 0 else 'left ' if a['hand'] < 0 else '', a['knot'])
+
+
+def segments(br):
+    """Index ranges [i0, i1] of the labelled solutions of engine branch br
+    between which the braid axis does not pass through itself (cable's
+    axis-passage count between consecutive labels is 0): along each the
+    knot type of the axis and Lk cannot change.  The branch's first point
+    (its branch point) starts the first."""
+    out, i0 = [], 0
+    for i in range(br.nsol - 1):
+        count, _, _ = _cable.passages(br, i, br, i + 1)
+        if count:
+            out.append((i0, i))
+            i0 = i + 1
+    out.append((i0, br.nsol - 1))
+    return out
+
+
+def branch_rows(mode_result, bp, lk_bp, base):
+    """The rows of a mode branch: one per stretch without axis self-passage
+    (segments), from its analysis at the stretch's first overlap-free
+    labelled solution (dmin > 1) or, if the tubes overlap all along it, at
+    its last labelled solution."""
+    br = mode_result.branches[0]
+    sols = mode_result()
+    t = [s['T'] for s in sols]
+    t[0] = bp['T']   # the first point is the branch point (the switch's first record; see doc/atlas.md)
+    d = [_cable.tube_dmin(br, i) for i in range(br.nsol)]
+    rows = []
+    for k, (i0, i1) in enumerate(segments(br)):
+        free = [i for i in range(i0, i1 + 1) if d[i] > 1.0]
+        first = free[0] if free else None
+        at = first if first is not None else i1
+        try:
+            a = _cable.analyze(br, at)
+        except _cable.CableError as e:   # no knot type while the axis passes itself
+            rows.append(dict(base, segment=k, companion='not analysable: %s' % e, overlap_free=0))
+            continue
+        end = first
+        while end is not None and end + 1 <= i1 and d[end + 1] > 1.0:
+            end += 1
+        if end is None:
+            why = ''
+        elif end < i1:
+            why = 'overlap'
+        elif i1 == br.nsol - 1:
+            why = 'branch end'
+        else:
+            why = 'passage'
+        row = dict(base, segment=k, passages=(a['Lk'] - lk_bp) / 2, companion=_knot_text(a),
+                   crossings=a['crossings'], Lk=a['Lk'], Lk_tube=a['lk_in_tube'], overlap_free=int(first is not None),
+                   dmin=d[at], pmin=a['pmin'], err=a['err'], free_end=why)
+        if first is not None:
+            row.update(LAB_free=sols[first].LAB, T_free=t[first], F_free=sols[first]['F'],
+                       LAB_free_end=sols[end].LAB, T_free_end=t[end], F_free_end=sols[end]['F'])
+        rows.append(row)
+    return rows
+
+
+def compute(inp, log):
+    """The task's continuation and analysis in the current directory;
+    returns its rows (a failed step raises)."""
+    runner = Runner()
+    fc = _flat_constants(inp)
+    _constants_file('c.flat', '# flat branch of the atlas task (cable.atlas)', fc)
+    flat = runner.run(c='flat', sv='flat')
+    bps = [b for b in flat('BP') if b['T'] * inp['arm'] > 0]
+    if len(bps) < inp['mode']:
+        end = flat()[-1]
+        raise _cable.CableError('the flat branch has %d branch point(s) on the %s arm up to T = %.6g (NMX = %d, '
+                                'RL0..RL1 = %g..%g): no branch point %d'
+                                % (len(bps), '+' if inp['arm'] > 0 else '-', end['T'], fc['NMX'], fc['RL0'],
+                                   fc['RL1'], inp['mode']))
+    bp = bps[inp['mode'] - 1]
+    kind = scenes.bp_kind(bp)
+    sym = kind == 'double'   # doc/links.md, 2: double BPs switch in the S0-symmetric formulation
+    bc = _branch_constants(inp, sym)
+    _constants_file('c.branch', '# the branch from branch point %d (cable.atlas)' % inp['mode'], bc)
+    lk_bp = _cable.analyze(*bp.branch)['Lk']
+    mode = runner.run(bp, c='branch', sv='branch')
+    base = {'family': _family(inp), 'kind': inp['kind'], 'p': inp['p'], 'hand': inp['hand'], 'Delta': inp['Delta'],
+            'arm': inp['arm'], 'mode': inp['mode'], 'bp_T': bp['T'], 'bp_F': bp['F'],
+            'bp_multiplicity': 2 if sym else 1, 'formulation': bc['e']}
+    return branch_rows(mode, bp, lk_bp, base)
+
+
+def _redirect(path):
+    sys.stdout.flush()
+    sys.stderr.flush()
+    fd = os.open(path, os.O_WRONLY | os.O_CREAT | os.O_APPEND, 0o644)
+    saved = os.dup(1), os.dup(2)
+    os.dup2(fd, 1)
+    os.dup2(fd, 2)
+    os.close(fd)
+    return saved
+
+
+def _restore(saved):
+    sys.stdout.flush()
+    sys.stderr.flush()
+    os.dup2(saved[0], 1)
+    os.dup2(saved[1], 2)
+    os.close(saved[0])
+    os.close(saved[1])
+
+
+def run_task(inputs, name, out_dir):
+    """Runs one task into OUT/tasks/NAME (see the module's text) unless it
+    is there already; returns its result dict (status 'ok' or 'failed',
+    rows, wall time).  An error of the computation is recorded, not raised."""
+    final = os.path.join(out_dir, 'tasks', name)
+    done = os.path.join(final, 'result.json')
+    if os.path.exists(done):
+        with open(done) as fh:
+            return json.load(fh)
+    with _PROCESS_LOCK:
+        part = os.path.join(out_dir, 'tasks', '.%s.partial-%s-%d' % (name, socket.gethostname(), os.getpid()))
+        if os.path.exists(part):
+            shutil.rmtree(part)
+        os.makedirs(part)
+        write_atomic(os.path.join(part, 'task.json'), json.dumps(inputs, indent=1, sort_keys=True) + '\n')
+        write_atomic(os.path.join(part, 'pid'), '%d\n' % os.getpid())
+        here = os.getcwd()
+        t0 = time.time()
+        saved = _redirect(os.path.join(part, 'log.txt'))
+        try:
+            os.chdir(part)
+            rows, status, error = compute(inputs, None), 'ok', ''
+        except Exception as e:   # recorded in the result: the sweep goes on
+            traceback.print_exc()
+            rows, status, error = [], 'failed', '%s: %s' % (type(e).__name__, e)
+        finally:
+            os.chdir(here)
+            _restore(saved)
+        wall = time.time() - t0
+        for r in rows:
+            r.update(wall=wall, status=status, error='', task=name)
+        if not inputs.get('files', True):
+            for f in os.listdir(part):
+                if f[:2] in ('b.', 's.', 'd.'):
+                    os.remove(os.path.join(part, f))
+        result = {'name': name, 'status': status, 'error': error, 'wall': wall, 'rows': rows,
+                  'host': socket.gethostname(), 'inputs': inputs}
+        write_atomic(os.path.join(part, 'result.json'), json.dumps(result, indent=1) + '\n')
+        os.remove(os.path.join(part, 'pid'))
+        if os.path.exists(final):   # another worker finished it meanwhile (a retried task): keep the first
+            shutil.rmtree(part)
+            with open(done) as fh:
+                return json.load(fh)
+        os.rename(part, final)
+        return result
+
