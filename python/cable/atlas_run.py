@@ -45,6 +45,23 @@ def _record_failure(sweep, t, error):
     return result
 
 
+def remove_stale_partials(sweep):
+    """Removes the partial directories this host's dead worker processes
+    left (OUT/tasks/.NAME.partial-HOST-PID whose PID is not running)."""
+    import socket
+    d = os.path.join(sweep.output, 'tasks')
+    tag = '.partial-%s-' % socket.gethostname()
+    for n in os.listdir(d):
+        if n.startswith('.') and tag in n:
+            try:
+                pid = int(n.rsplit('-', 1)[1])
+                os.kill(pid, 0)
+            except ProcessLookupError:
+                shutil.rmtree(os.path.join(d, n), ignore_errors=True)
+            except (ValueError, PermissionError):
+                pass
+
+
 def _fmt_time(s):
     if s != s or s == float('inf'):
         return '?'
@@ -106,6 +123,7 @@ def run_sweep(sweep, scheduler=None, workers=None, retry_failed=False, stream=No
     from distributed.client import TimeoutError as DaskTimeout   # noqa: the name differs between versions
     stream = stream or sys.stderr
     os.makedirs(os.path.join(sweep.output, 'tasks'), exist_ok=True)
+    remove_stale_partials(sweep)
     todo, skipped = [], 0
     for t in sweep.tasks:
         r = read_result(sweep, t)
@@ -159,4 +177,5 @@ def run_sweep(sweep, scheduler=None, workers=None, retry_failed=False, stream=No
         client.close()
         if cluster is not None:
             cluster.close()
+        remove_stale_partials(sweep)
     return counts

@@ -241,9 +241,9 @@ def _family(w, f, i, top):
     lim = contact_limit(kind, float(length))
     for d in deltas:
         if d >= lim:
-            raise w.error('Delta = %g is impossible for a %s of length %g: the braid does not fit inside its '
-                          'axis (Delta < %.4g needed)' % (d, kind, length, lim),
-                          'deltas' if 'deltas' in f else 'kind', t, i)
+            msg = ('Delta = %g is impossible for a %s of length %g: the braid does not fit inside its axis '
+                   '(Delta < %.4g needed)' % (d, kind, length, lim))
+            raise w.error(msg, 'deltas', t, i) if 'deltas' in f else w.error(msg, 'deltas')
     modes = _modes(w, f['modes'], t, i) if 'modes' in f else top['modes']
     arms = _arms(w, f['arms'], t, i) if 'arms' in f else top['arms']
     return kind, ps, hands, float(length), deltas, modes, arms

@@ -1,0 +1,246 @@
+"""cable.atlas (doc/atlas.md): a tiny sweep (the (3,2) knot and the (4,2)
+link, one Delta, mode 1, a coarse mesh) on a local Dask cluster of two
+workers; the same sweep interrupted and resumed recomputes nothing finished;
+a worker killed during a task leaves the sweep complete with every finished
+row intact; bad sweep files are refused before any task starts."""
+import json
+import os
+import signal
+import subprocess
+import sys
+import time
+
+import pytest
+
+from cable import atlas
+
+from conftest import BUILD, PYTHON
+
+TINY = """\
+# the tiny sweep of tests/python/test_atlas.py
+deltas = [0.005]
+modes = [1]
+
+[[family]]
+kind = "knot"
+p = [3]
+
+[[family]]
+kind = "link"
+p = [4]
+
+[mesh]
+NTST = 20
+NCOL = 4
+
+[flat]
+DSMAX = 10.0
+
+[branch]
+NMX = 30
+NPR = 10
+"""
+
+# Lk = Tw + Wr of a closed ribbon: a half-integer for a knot, an integer for
+# a link; on the flat (p,2) braid and on the branch from its branch point
+# until the axis passes through itself it is hand x p/2.  The quadrature of
+# Tw and Wr on NTST = 20 is far better than 0.01; a wrong topology is off by 1.
+LK_TOL = 0.01
+TIMEOUT = 600
+
+
+def _write(work, text, name='tiny.toml'):
+    p = os.path.join(str(work), name)
+    with open(p, 'w') as f:
+        f.write(text)
+    return p
+
+
+def _env():
+    return dict(os.environ, PYTHONPATH=os.path.join(BUILD, 'python'), PYTHONDONTWRITEBYTECODE='1')
+
+
+def _start(path, workers=2):
+    return subprocess.Popen([PYTHON, '-m', 'cable.atlas', path, '--workers', str(workers)], env=_env(),
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+
+
+def _finish(proc):
+    out, err = proc.communicate(timeout=TIMEOUT)
+    return proc.returncode, out, err
+
+
+def _results(sweep):
+    """{task name: bytes of result.json} of the finished tasks."""
+    out = {}
+    for t in sweep.tasks:
+        p = os.path.join(sweep.output, 'tasks', t.name, 'result.json')
+        if os.path.exists(p):
+            with open(p, 'rb') as f:
+                out[t.name] = f.read()
+    return out
+
+
+def _wait_for(cond, proc, what):
+    t0 = time.time()
+    while not cond():
+        if proc.poll() is not None:
+            return False
+        if time.time() - t0 > TIMEOUT:
+            pytest.fail('timed out waiting for %s' % what)
+        time.sleep(0.1)
+    return True
+
+
+def _check_rows(sweep):
+    rows = atlas.read_csv(os.path.join(sweep.output, 'atlas.csv'))
+    by_family = {}
+    for r in rows:
+        by_family.setdefault(r['family'], []).append(r)
+    assert sorted(by_family) == ['knot(3,2)', 'link(4,2)']
+    for fam, rs in by_family.items():
+        kind, p, hand = ('knot', 3, 1) if fam.startswith('knot') else ('link', 4, -1)
+        for r in rs:
+            assert r['status'] == 'ok', r
+            assert (r['kind'], int(r['p']), int(r['hand'])) == (kind, p, hand)
+            assert float(r['Delta']) == 0.005 and int(r['mode']) == 1
+            # the knotting arm: a knot's own handedness, a link's opposite (T > 0 for both here)
+            assert int(r['arm']) == 1 and float(r['bp_T']) > 0
+            assert float(r['wall']) > 0
+        first = rs[0]
+        # the branch's first stretch: no axis self-passage yet, the flat braid's Lk and an unknotted axis
+        assert int(first['segment']) == 0 and abs(float(first['passages'])) < LK_TOL
+        assert abs(float(first['Lk']) - hand * p / 2) < LK_TOL
+        assert first['companion'] == 'unknot' and int(first['crossings']) == 0
+        # Lk inside the tube = Lk minus the writhe of the companion's minimal diagram (0 for the unknot)
+        assert abs(float(first['Lk_tube']) - float(first['Lk'])) < 1e-12
+        # every knot BP is double (D_p symmetry, p odd); the (4,2) link's mode 1 is its p/2-fold
+        # pattern, which splits into two simple BPs (doc/links.md, 2)
+        assert int(first['bp_multiplicity']) == (2 if kind == 'knot' else 1)
+        assert first['formulation'] == ('braid_knot_sym' if kind == 'knot' else 'braid_link')
+        # the first point of the stretch is the branch point; the tubes are apart there
+        assert int(first['overlap_free']) == 1 and float(first['T_free']) == float(first['bp_T'])
+        assert float(first['dmin']) > 1.0
+    return rows
+
+
+def test_tiny_sweep_interrupted_and_resumed(work):
+    path = _write(work, TINY)
+    sweep = atlas.load(path)
+    assert len(sweep.tasks) == 2
+    proc = _start(path)
+    # interrupt (Ctrl-C) as soon as the first task has finished
+    _wait_for(lambda: _results(sweep), proc, 'a finished task')
+    if proc.poll() is None:
+        proc.send_signal(signal.SIGINT)
+    rc, out, err = _finish(proc)
+    before = _results(sweep)
+    assert before, err
+    assert rc in (0, 130), err
+    rc, out, err = _finish(_start(path))
+    assert rc == 0, err
+    assert 'computed' in out
+    after = _results(sweep)
+    assert len(after) == 2
+    for name, data in before.items():   # finished before the interruption: not recomputed, not rewritten
+        assert after[name] == data, name
+    assert '%d finished earlier, %d computed (0 failed)' % (len(before), 2 - len(before)) in out, out
+    rows = _check_rows(sweep)
+    # a third run: everything is finished, nothing is computed, the table is the same
+    with open(os.path.join(sweep.output, 'atlas.csv')) as f:
+        table = f.read()
+    rc, out, err = _finish(_start(path))
+    assert rc == 0 and '2 finished earlier, 0 computed' in out, out + err
+    assert _results(sweep) == after
+    with open(os.path.join(sweep.output, 'atlas.csv')) as f:
+        assert f.read() == table
+    assert len(rows) >= 2
+    with open(os.path.join(sweep.output, 'summary.svg')) as f:
+        svg = f.read()
+    assert svg.startswith('<svg') and 'knot(3,2) R' in svg and 'link(4,2) L' in svg
+    for t in sweep.tasks:   # each task's b./s./d. files
+        for f in ('b.flat', 's.flat', 'd.flat', 'b.branch', 's.branch', 'd.branch', 'c.flat', 'c.branch'):
+            assert os.path.exists(os.path.join(sweep.output, 'tasks', t.name, f)), (t.name, f)
+    assert not [n for n in os.listdir(os.path.join(sweep.output, 'tasks')) if n.startswith('.')]
+
+
+def test_worker_killed_during_a_task(work):
+    path = _write(work, TINY)
+    sweep = atlas.load(path)
+    tasks_dir = os.path.join(sweep.output, 'tasks')
+    proc = _start(path)
+    # wait for one finished task and one running (a partial directory with its worker's pid)
+    state = {}
+
+    def ready():
+        state['done'] = _results(sweep)
+        if not state['done'] or not os.path.isdir(tasks_dir):
+            return False
+        for n in os.listdir(tasks_dir):
+            p = os.path.join(tasks_dir, n, 'pid')
+            if n.startswith('.') and os.path.exists(p):
+                try:
+                    state['pid'] = int(open(p).read())
+                    state['task'] = n
+                    return True
+                except ValueError:   # being written
+                    pass
+        return False
+
+    if not _wait_for(ready, proc, 'a finished and a running task') or len(state['done']) == 2:
+        _finish(proc)
+        pytest.fail('the sweep ended before a worker could be killed during a task')
+    os.kill(state['pid'], signal.SIGKILL)
+    rc, out, err = _finish(proc)
+    assert rc == 0, err
+    after = _results(sweep)
+    assert len(after) == 2
+    for name, data in state['done'].items():
+        assert after[name] == data, name
+    for name, data in after.items():
+        assert json.loads(data)['status'] == 'ok', name
+    _check_rows(sweep)
+    # the retried task ran in another worker process
+    killed = [n for n in after if state['task'].startswith('.' + n + '.partial')]
+    assert len(killed) == 1 and json.loads(after[killed[0]])['rows']
+
+
+BAD = [
+    # (what is wrong, text replaced, by what, line and key in the message)
+    ('unknown top-level key', 'modes = [1]\n', 'modes = [1]\nmodez = [2]\n', 'tiny.toml:4: modez: unknown key'),
+    ('unknown family key', 'p = [3]\n', 'p = [3]\nhand = 1\n', 'tiny.toml:8: family[1].hand: unknown key'),
+    ('even knot', 'p = [3]\n', 'p = [3, 4]\n', 'tiny.toml:7: family[1].p: no (4,2) torus knot'),
+    ('odd link', 'p = [4]\n', 'p = [5]\n', 'tiny.toml:11: family[2].p: no (5,2) torus link'),
+    ('Delta beyond contact', 'deltas = [0.005]', 'deltas = [0.005, 0.2]', 'tiny.toml:2: deltas: Delta = 0.2 is impossible for a knot'),
+    ('mode 0', 'modes = [1]', 'modes = [0]', 'tiny.toml:3: modes: a mode is'),
+    ('unknown constant', 'NMX = 30\n', 'NMX = 30\nNTSR = 3\n', 'tiny.toml:22: branch.NTSR: unknown key'),
+    ('bad mesh', 'NCOL = 4', 'NCOL = 9', 'tiny.toml:15: mesh.NCOL: out of range'),
+    ('not TOML', 'NCOL = 4', 'NCOL = = 4', 'tiny.toml: not a TOML file'),
+]
+
+
+@pytest.mark.parametrize('what,old,new,msg', BAD, ids=[b[0] for b in BAD])
+def test_bad_sweep_file(work, what, old, new, msg):
+    assert old in TINY
+    path = _write(work, TINY.replace(old, new, 1))
+    with pytest.raises(atlas.SweepError) as e:
+        atlas.load(path)
+    assert msg in str(e.value), str(e.value)
+    # the command line says the same, exits non-zero and starts nothing
+    p = subprocess.run([PYTHON, '-m', 'cable.atlas', path, '--workers', '1'], env=_env(), capture_output=True,
+                       text=True, timeout=120)
+    assert p.returncode == 1 and msg in p.stderr, p.stderr
+    assert not os.path.exists(os.path.join(str(work), 'tiny'))
+
+
+def test_task_keys_follow_inputs(work):
+    """A task's key is a hash of its inputs: the same sweep gives the same
+    keys, a changed mesh or constant changes every key, a reordered file
+    does not."""
+    k1 = [t.key for t in atlas.load(_write(work, TINY)).tasks]
+    assert [t.key for t in atlas.load(_write(work, TINY, 'b.toml')).tasks] == k1
+    k2 = [t.key for t in atlas.load(_write(work, TINY.replace('NMX = 30', 'NMX = 31'), 'c.toml')).tasks]
+    assert not set(k1) & set(k2)
+    swapped = TINY.replace('[flat]\nDSMAX = 10.0\n\n', '') + '\n[flat]\nDSMAX = 10.0\n'
+    assert sorted(t.key for t in atlas.load(_write(work, swapped, 'd.toml')).tasks) == sorted(k1)
+    assert len(set(k1)) == 2
