@@ -81,6 +81,11 @@ trap 'rm -f "$tmp"' EXIT
   echo "(exit status $stress_rc)"
   echo
   cat "$build/stress.md"
+  # the atlas part (its own script; CABLE_BENCH_ATLAS=0 leaves it out, make bench-atlas runs it alone)
+  if [ "${CABLE_BENCH_ATLAS:-1}" != 0 ]; then
+    echo
+    bash scripts/bench-atlas.sh "$build"
+  fi
 } > "$tmp"
 mv "$tmp" "$out"
 trap - EXIT

@@ -177,10 +177,12 @@ def summary_md(sweep, results, rows):
     return '\n'.join(lines) + '\n'
 
 
-def write_outputs(sweep):
+def write_outputs(sweep, results=None):
     """Rewrites atlas.csv, atlas.parquet (pyarrow present), summary.svg and
-    summary.md from the finished tasks."""
-    results = finished_results(sweep)
+    summary.md from the finished tasks: results, [(task, result)] in the
+    sweep's order (None: read from OUT/tasks)."""
+    if results is None:
+        results = finished_results(sweep)
     rows = table_rows(results)
     write_atomic(os.path.join(sweep.output, 'atlas.csv'), csv_text(rows))
     if importlib.util.find_spec('pyarrow') is not None:

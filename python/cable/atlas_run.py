@@ -20,6 +20,10 @@ from .atlas_output import write_outputs
 from .atlas_task import run_task
 
 
+# seconds between rewrites of the table and summary while tasks finish
+TABLE_INTERVAL = 1.0
+
+
 def _result_path(sweep, t):
     return os.path.join(sweep.output, 'tasks', t.name, 'result.json')
 
@@ -60,6 +64,14 @@ def remove_stale_partials(sweep):
                 shutil.rmtree(os.path.join(d, n), ignore_errors=True)
             except (ValueError, PermissionError):
                 pass
+
+
+def priority(t):
+    """Dask priority (higher first): lower modes first, then smaller p (the
+    cheap tasks; a sweep stopped early has the first modes of many
+    families), then the sweep file's order (Dask keeps submission order
+    among equal priorities)."""
+    return -(1000 * t.inputs['mode'] + t.inputs['p'])
 
 
 def _fmt_time(s):
@@ -125,26 +137,34 @@ def run_sweep(sweep, scheduler=None, workers=None, retry_failed=False, stream=No
     os.makedirs(os.path.join(sweep.output, 'tasks'), exist_ok=True)
     remove_stale_partials(sweep)
     todo, skipped = [], 0
+    known = {}   # task name -> result of the finished tasks (the table is made from these)
     for t in sweep.tasks:
         r = read_result(sweep, t)
         if r is not None and (r['status'] == 'ok' or not retry_failed):
             skipped += 1
+            known[t.name] = r
             continue
         if r is not None:
             shutil.rmtree(os.path.dirname(_result_path(sweep, t)))
         todo.append(t)
     prog = Progress(len(sweep.tasks), skipped, stream)
     counts = {'total': len(sweep.tasks), 'skipped': skipped, 'computed': 0, 'failed': 0}
+
+    def table():
+        write_outputs(sweep, [(t, known[t.name]) for t in sweep.tasks if t.name in known])
+
     if not todo:
-        write_outputs(sweep)
+        table()
         prog.show(0, 0, final=True)
         return counts
     client, cluster = _client(scheduler, workers)
+    dirty, written = False, 0.0
     try:
         by_key = {}
         futures = []
         for t in todo:
-            f = client.submit(run_task, t.inputs, t.name, sweep.output, key='atlas-' + t.key, pure=False)
+            f = client.submit(run_task, t.inputs, t.name, sweep.output, key='atlas-' + t.key, pure=False,
+                              priority=priority(t))
             by_key[f.key] = t
             futures.append(f)
         pending = set(futures)
@@ -159,6 +179,7 @@ def run_sweep(sweep, scheduler=None, workers=None, retry_failed=False, stream=No
                     r = f.result()
                 else:
                     r = _record_failure(sweep, t, '%s: %s' % (type(f.exception()).__name__, f.exception()))
+                known[t.name] = r
                 prog.done += 1
                 counts['computed'] += 1
                 if r['status'] != 'ok':
@@ -166,14 +187,20 @@ def run_sweep(sweep, scheduler=None, workers=None, retry_failed=False, stream=No
                     counts['failed'] += 1
                 elif r['wall'] == r['wall']:
                     prog.walls.append(r['wall'])
+            # the table at most once a second (and at the end): each task's own result is on disk already
             if done:
-                write_outputs(sweep)
+                dirty = True
+            if dirty and (not pending or time.time() - written >= TABLE_INTERVAL):
+                table()
+                dirty, written = False, time.time()
             threads = sum(client.nthreads().values())
             proc = client.processing()
             running = min(threads, sum(1 for ks in proc.values() for k in ks if k in by_key))
             prog.show(running, threads)
         prog.show(0, 0, final=True)
     finally:
+        if dirty:   # interrupted: the table of what finished
+            table()
         client.close()
         if cluster is not None:
             cluster.close()

@@ -199,12 +199,24 @@ def _mesh(w, v):
     for k, x in v.items():
         if k not in out:
             raise w.error('unknown key (NTST, NCOL)', k, 'mesh')
+        if k == 'NTST' and x == 'auto':
+            out[k] = x
+            continue
         if not isinstance(x, int) or isinstance(x, bool):
-            raise w.error('must be an integer', k, 'mesh')
+            raise w.error('must be an integer%s' % (' or "auto"' if k == 'NTST' else ''), k, 'mesh')
         if (k == 'NCOL' and not 2 <= x <= 7) or (k == 'NTST' and x < 2):
             raise w.error('out of range (NTST >= 2, 2 <= NCOL <= 7)', k, 'mesh')
         out[k] = x
     return out
+
+
+def auto_ntst(kind, p):
+    """NTST = "auto": the flat braid turns p/2 times about its axis, and
+    the torus scene's measurements (runs/torus/c.knot, c.link: |Lk - p/2|
+    below 1e-6 at NCOL 4) ask for NTST = max(60, 4p) for knots and
+    max(60, 6p) for links; the atlas takes 30 as the floor, the knot72
+    scene's NTST (its NCOL 7 meets 1e-8 in F there, doc/benchmarks.md)."""
+    return max(30, (4 if kind == 'knot' else 6) * p)
 
 
 def _family(w, f, i, top):
@@ -296,9 +308,10 @@ def load(path):
                 for d in deltas:
                     for a in arms:
                         sign = knotting_arm(kind, h) if a == 'knotting' else (1 if a == '+' else -1)
+                        me = dict(mesh, NTST=auto_ntst(kind, p) if mesh['NTST'] == 'auto' else mesh['NTST'])
                         for m in modes:
                             t = Task({'version': TASK_VERSION, 'kind': kind, 'p': p, 'hand': h, 'Delta': d,
-                                      'length': length, 'arm': sign, 'mode': m, 'mesh': mesh, 'flat': flat,
+                                      'length': length, 'arm': sign, 'mode': m, 'mesh': me, 'flat': flat,
                                       'branch': branch, 'files': record['files']})
                             if t.key not in seen:
                                 seen.add(t.key)

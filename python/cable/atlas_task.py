@@ -9,6 +9,7 @@ OUT/tasks/NAME when everything (b./s./d. files, log.txt, result.json) is
 written: a task directory without the .partial prefix is complete, and a
 worker that dies leaves only a partial directory, which nothing reads.
 """
+import ctypes
 import json
 import os
 import shutil
@@ -140,7 +141,9 @@ def compute(inp, log):
     runner = Runner()
     fc = _flat_constants(inp)
     _constants_file('c.flat', '# flat branch of the atlas task (cable.atlas)', fc)
-    flat = runner.run(c='flat', sv='flat')
+    # e= is given to run() as well: from a start solution the runner keeps the start's problem over a
+    # constants file's e (measured: c.branch's e = 'braid_knot_sym' alone left the switch in braid_knot)
+    flat = runner.run(c='flat', e=fc['e'], sv='flat')
     bps = [b for b in flat('BP') if b['T'] * inp['arm'] > 0]
     if len(bps) < inp['mode']:
         end = flat()[-1]
@@ -154,16 +157,22 @@ def compute(inp, log):
     bc = _branch_constants(inp, sym)
     _constants_file('c.branch', '# the branch from branch point %d (cable.atlas)' % inp['mode'], bc)
     lk_bp = _cable.analyze(*bp.branch)['Lk']
-    mode = runner.run(bp, c='branch', sv='branch')
+    mode = runner.run(bp, c='branch', e=bc['e'], sv='branch')
     base = {'family': _family(inp), 'kind': inp['kind'], 'p': inp['p'], 'hand': inp['hand'], 'Delta': inp['Delta'],
             'arm': inp['arm'], 'mode': inp['mode'], 'bp_T': bp['T'], 'bp_F': bp['F'],
             'bp_multiplicity': 2 if sym else 1, 'formulation': bc['e']}
     return branch_rows(mode, bp, lk_bp, base)
 
 
-def _redirect(path):
+def _flush_all():
+    """Python's and C's buffered standard streams (the engine prints with C's stdio)."""
     sys.stdout.flush()
     sys.stderr.flush()
+    ctypes.CDLL(None).fflush(None)
+
+
+def _redirect(path):
+    _flush_all()
     fd = os.open(path, os.O_WRONLY | os.O_CREAT | os.O_APPEND, 0o644)
     saved = os.dup(1), os.dup(2)
     os.dup2(fd, 1)
@@ -173,8 +182,7 @@ def _redirect(path):
 
 
 def _restore(saved):
-    sys.stdout.flush()
-    sys.stderr.flush()
+    _flush_all()
     os.dup2(saved[0], 1)
     os.dup2(saved[1], 2)
     os.close(saved[0])
