@@ -2,7 +2,7 @@
 tasks of a sweep: OUT/atlas.csv (one row per cable knot or link found, plus
 one row per failed task), OUT/atlas.parquet when pyarrow is installed,
 OUT/summary.svg (families against Delta, one cell per arm and mode, coloured
-by the companion knot type of its last overlap-free stretch) and
+by the companion knot type and Lk the branch reaches: cell_outcome) and
 OUT/summary.md (counts and the picture)."""
 import csv
 import importlib.util
@@ -77,14 +77,16 @@ _PALETTE = ['#4e79a7', '#f28e2b', '#e15759', '#76b7b2', '#59a14f', '#edc948', '#
 
 
 def cell_outcome(rows):
-    """What a task's cell shows: the companion of its last stretch that is
-    free of overlap ('no overlap-free stretch' when none is, 'failed')."""
+    """What a task's cell shows: the cable knot or link the branch reaches,
+    the overlap-free stretch furthest from the flat braid (the most net
+    self-passages of the axis; the first of equals): its companion and Lk
+    ('no overlap-free stretch' when none is free of overlap, 'failed')."""
     if not rows or rows[0].get('status') != 'ok':
         return 'failed'
-    free = [r for r in rows if r.get('overlap_free') == 1]
+    free = [r for r in rows if r.get('overlap_free') == 1 and r.get('passages') is not None]
     if not free:
         return 'no overlap-free stretch'
-    r = free[-1]
+    r = max(free, key=lambda x: (round(abs(x['passages'])), -x['segment']))
     return '%s (Lk %g)' % (r['companion'], round(2 * r['Lk']) / 2)
 
 
@@ -120,14 +122,14 @@ def summary_svg(results):
             colour[v] = _PALETTE[k % len(_PALETTE)]
             k += 1
     cw, ch, left, top = 18, 18, 130, 60
-    gw = len(cols) * cw + 12
-    width = left + len(deltas) * gw + 20
+    gw = max(len(cols) * cw + 12, 110)
+    width = max(left + len(deltas) * gw + 20, 560)
     height = top + len(fams) * ch + 30 + 16 * len(kinds)
     out = ['<svg xmlns="http://www.w3.org/2000/svg" width="%d" height="%d" font-family="sans-serif" '
            'font-size="11">' % (width, height),
            '<rect width="100%" height="100%" fill="white"/>',
-           '<text x="8" y="16" font-size="13">cable atlas: companion knot type of the last overlap-free stretch '
-           '(cells: arm, mode)</text>']
+           '<text x="8" y="16" font-size="13">cable atlas: companion knot type and Lk reached '
+           '(the overlap-free stretch with most axis passages; cells: arm, mode)</text>']
     for j, d in enumerate(deltas):
         x = left + j * gw
         out.append('<text x="%d" y="%d">Delta = %g</text>' % (x, top - 22, d))
