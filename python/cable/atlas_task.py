@@ -212,7 +212,9 @@ def run_task(inputs, name, out_dir):
             os.chdir(part)
             rows, status, error = compute(inputs, None), 'ok', ''
         except Exception as e:   # recorded in the result: the sweep goes on
-            traceback.print_exc()
+            _flush_all()
+            with open(os.path.join(part, 'log.txt'), 'a') as fh:
+                fh.write(traceback.format_exc())
             rows, status, error = [], 'failed', '%s: %s' % (type(e).__name__, e)
         finally:
             os.chdir(here)

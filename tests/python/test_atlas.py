@@ -244,3 +244,24 @@ def test_task_keys_follow_inputs(work):
     swapped = TINY.replace('[flat]\nDSMAX = 10.0\n\n', '') + '\n[flat]\nDSMAX = 10.0\n'
     assert sorted(t.key for t in atlas.load(_write(work, swapped, 'd.toml')).tasks) == sorted(k1)
     assert len(set(k1)) == 2
+
+
+def test_failing_task_is_recorded(work):
+    """A task whose flat branch stops before its branch point (NMX = 2)
+    records the error as its result; the table lists it as failed."""
+    path = _write(work, TINY.replace('DSMAX = 10.0', 'DSMAX = 10.0\nNMX = 2').replace('p = [4]', 'p = [6]'))
+    sweep = atlas.load(path)
+    t = sweep.tasks[0]
+    r = atlas.run_task(t.inputs, t.name, sweep.output)
+    assert r['status'] == 'failed' and r['rows'] == []
+    assert 'no branch point 1' in r['error'] and 'NMX = 2' in r['error'], r['error']
+    d = os.path.join(sweep.output, 'tasks', t.name)
+    with open(os.path.join(d, 'result.json')) as f:
+        assert json.load(f)['error'] == r['error']
+    assert os.path.exists(os.path.join(d, 'b.flat')) and 'Traceback' in open(os.path.join(d, 'log.txt')).read()
+    # finished (failed) tasks are not run again: the same call returns the recorded result
+    assert atlas.run_task(t.inputs, t.name, sweep.output) == r
+    rows = atlas.write_outputs(sweep)
+    assert len(rows) == 1 and rows[0]['status'] == 'failed' and rows[0]['task'] == t.name
+    table = atlas.read_csv(os.path.join(sweep.output, 'atlas.csv'))
+    assert table[0]['status'] == 'failed' and table[0]['error'] == r['error'] and table[0]['Lk'] == ''
