@@ -130,7 +130,10 @@ def _client(scheduler, workers):
 
 def run_sweep(sweep, scheduler=None, workers=None, retry_failed=False, stream=None):
     """Runs the tasks of sweep not yet finished; returns a dict with the
-    counts: total, skipped (finished before), computed, failed."""
+    counts: total, skipped (finished before), computed, failed, and when
+    tasks ran: cluster_start (s to start or reach the cluster), elapsed (s
+    from the first submission to the last result), threads (the cluster's
+    worker threads at the end)."""
     from distributed import wait
     from distributed.client import TimeoutError as DaskTimeout   # noqa: the name differs between versions
     stream = stream or sys.stderr
@@ -157,7 +160,10 @@ def run_sweep(sweep, scheduler=None, workers=None, retry_failed=False, stream=No
         table()
         prog.show(0, 0, final=True)
         return counts
+    t_start = time.time()
     client, cluster = _client(scheduler, workers)
+    counts['cluster_start'] = time.time() - t_start
+    t_submit = time.time()
     dirty, written = False, 0.0
     try:
         by_key = {}
@@ -197,6 +203,8 @@ def run_sweep(sweep, scheduler=None, workers=None, retry_failed=False, stream=No
             proc = client.processing()
             running = min(threads, sum(1 for ks in proc.values() for k in ks if k in by_key))
             prog.show(running, threads)
+        counts['elapsed'] = time.time() - t_submit
+        counts['threads'] = sum(client.nthreads().values())
         prog.show(0, 0, final=True)
     finally:
         if dirty:   # interrupted: the table of what finished
