@@ -22,7 +22,10 @@ LIBS    := -lsundials_kinsol -lsundials_sunlinsolklu -lsundials_sunmatrixsparse 
            -lgsl -llapacke -llapack -lblas -lcairo -ldl -lm
 
 LIB_SRCS := $(filter-out auto_iface/cable_main.c,$(wildcard $(addsuffix /*.c,$(MODULES))))
-LIB_OBJS := $(LIB_SRCS:%.c=$(BUILD)/%.o)
+LIB_OBJS := $(LIB_SRCS:%.c=$(BUILD)/%.o) $(BUILD)/gen/autoeq_compat_text.o
+# auto_iface/auto_compat: the files cable writes next to an AUTO equation file it
+# compiles (auto_iface/autoeq_build.c), embedded as C strings
+COMPAT_FILES := $(sort $(wildcard auto_iface/auto_compat/*))
 TEST_SRCS := $(wildcard tests/test_*.c)
 TEST_BINS := $(TEST_SRCS:tests/%.c=$(BUILD)/tests/%)
 BENCH_SRCS := $(wildcard tests/bench_*.c)
@@ -45,6 +48,19 @@ deps: $(DEPS_OK)
 $(BUILD)/%.o: %.c | $(DEPS_OK)
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) -c $< -o $@
+
+$(BUILD)/gen/autoeq_compat_text.c: $(COMPAT_FILES) Makefile
+	@mkdir -p $(dir $@)
+	@{ echo '#include "autoeq_impl.h"'; \
+	   echo 'const cable_autoeq_compat_file cable_autoeq_compat_files[] = {'; \
+	   for f in $(COMPAT_FILES); do \
+	     printf '{"%s",\n' "$$(basename $$f)"; \
+	     sed -e 's/\\/\\\\/g' -e 's/"/\\"/g' -e 's/^/"/' -e 's/$$/\\n"/' $$f; \
+	     echo '},'; \
+	   done; \
+	   echo '};'; \
+	   echo 'const int cable_autoeq_compat_nfiles = (int)(sizeof cable_autoeq_compat_files / sizeof cable_autoeq_compat_files[0]);'; \
+	 } > $@.tmp && mv $@.tmp $@
 
 $(LIBCABLE): $(LIB_OBJS)
 	@rm -f $@

@@ -26,6 +26,8 @@ typedef struct cable_solution {
    * means "unknown": PVLS then computes everything. */
   const int *pvls_icp;
   int pvls_nicp;
+  double pvls_ds;  /* while the engine calls PVLS: the step that reached this point (AUTO's
+                      GETP('STP')); 0 otherwise */
 } cable_solution;
 
 /* Every field zeroed except the sizes; arrays allocated; NULL on failure. */
