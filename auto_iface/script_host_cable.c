@@ -578,6 +578,28 @@ static int engine_run(cable_replay *r, rp_setup *s, rp_branch **out, cable_error
   int rc = find_problem(r, s->e, &s->c, s->start == NULL, &prob, err);
   if (rc) return rc;
   const cable_problem *pb = prob.pb;
+  if (!prob.autoeq) {
+    /* a built-in or plug-in problem's dimensions are its own: a constants
+       value that says otherwise is an error at its line, never ignored */
+    const struct {
+      const char *key;
+      int value, want;
+      const cable_key_origin *o;
+    } dims[] = {{"NDIM", s->c.ndim, pb->ndim, &s->c.origin_ndim},
+                {"NBC", s->c.nbc, pb->nbc, &s->c.origin_nbc},
+                {"NINT", s->c.nint, pb->nint, &s->c.origin_nint}};
+    for (size_t k = 0; k < sizeof dims / sizeof dims[0]; k++)
+      if ((dims[k].o->file[0] || dims[k].o->line) && dims[k].value != dims[k].want) {
+        cable_error_set(err, CABLE_ERR_INPUT, dims[k].o->file, dims[k].o->line, dims[k].key,
+                        "%s=%d contradicts problem '%s', which has %s=%d (the problem fixes it: remove the "
+                        "line, or write the equations as an AUTO file NAME.f90 or NAME.c)",
+                        dims[k].key, dims[k].value, pb->name, dims[k].key, dims[k].want);
+        problem_release(r, &prob);
+        return CABLE_ERR_INPUT;
+      }
+  }
+  if (s->c.ignored[0])
+    fprintf(rp_log(r), "  note: accepted and ignored, as AUTO does for boundary-value problems: %s\n", s->c.ignored);
   cable_names_fill(&s->names, pb->parnames, pb->npar, pb->unames, pb->ndim);
   int st = 0;
   cable_cont *cc = cable_cont_alloc(pb, &s->c, &st);
