@@ -19,7 +19,7 @@
 #include <unistd.h>
 
 #include "autoeq_impl.h"
-#include "cable_status.h"
+#include "cable/cable_status.h"
 
 #define AUTOEQ_SRC_MAX (16L << 20)   /* an equation file larger than this is refused */
 #define AUTOEQ_EXEC_FAILED 127       /* the child's exit status when exec fails */

@@ -5,7 +5,7 @@
 #define CABLE_AUTOEQ_IMPL_H
 
 #include "auto_compat/cable_getp.h"
-#include "autoeq.h"
+#include "cable/cable_autoeq.h"
 
 #define AUTOEQ_PATH_MAX 1024
 #define AUTOEQ_MAX_ICP (CABLE_MAX_ICP + 8)

@@ -6,7 +6,7 @@
 #include <sys/stat.h>
 
 #include "autoeq_impl.h"
-#include "cable_status.h"
+#include "cable/cable_status.h"
 
 /* AUTO's order: NAME.f90, NAME.f, NAME.c */
 static const char *const suffixes[] = {".f90", ".f", ".c"};

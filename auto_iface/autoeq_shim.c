@@ -12,8 +12,8 @@
 #include <strings.h>
 
 #include "autoeq_impl.h"
-#include "cable_solution.h"
-#include "cable_status.h"
+#include "cable/cable_solution.h"
+#include "cable/cable_status.h"
 #include "colloc_basis.h"
 
 /* ICP as AUTO passes it: 1-based, the free parameters the engine uses first,

@@ -20,9 +20,9 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "aufile.h"
-#include "autoeq.h"
-#include "cable_status.h"
+#include "cable/cable_aufile.h"
+#include "cable/cable_autoeq.h"
+#include "cable/cable_status.h"
 #include "harness.h"
 #include "script_host_cable.h"
 #include "test_files.h"

@@ -23,9 +23,11 @@
 
 #include <stddef.h>
 
-#include "cable_constants.h"
-#include "cable_error.h"
-#include "cable_problem.h"
+#include "cable/cable_api.h"
+
+#include "cable/cable_constants.h"
+#include "cable/cable_error.h"
+#include "cable/cable_problem.h"
 
 typedef struct cable_autoeq cable_autoeq;
 
@@ -33,14 +35,14 @@ typedef struct cable_autoeq cable_autoeq;
  * dir/name.f90, dir/name.f, dir/name.c, the first that exists, into path.
  * A name ending in one of these suffixes is taken as the file itself.
  * 0, or CABLE_ERR_NOTFOUND (path untouched). */
-int cable_autoeq_find(const char *dir, const char *name, char *path, size_t len);
+CABLE_API int cable_autoeq_find(const char *dir, const char *name, char *path, size_t len);
 
 /* Builds src (or takes the cached build of the same content) and loads it.
  * NULL with err on failure: CABLE_ERR_IO (unreadable file, no cache
  * directory), CABLE_ERR_PLUGIN (the compiler rejected the file: err names the
  * file and line of the first error; a routine is missing or has arguments
  * that are not AUTO's), CABLE_ERR_ALLOC. */
-cable_autoeq *cable_autoeq_open(const char *src, cable_error *err);
+CABLE_API cable_autoeq *cable_autoeq_open(const char *src, cable_error *err);
 
 /* The problem for a run with constants c: NDIM, NBC, NINT and NPAR from c
  * (AUTO's rule), the parameter and component names from names (may be NULL),
@@ -49,17 +51,17 @@ cable_autoeq *cable_autoeq_open(const char *src, cable_error *err);
  * call with m or cable_autoeq_close.  c NULL: a problem that only carries the
  * name (for reading constants before a run; never run it).  0 or an error naming the constants key
  * (NDIM missing) or the routine the run needs but the file lacks. */
-int cable_autoeq_problem(cable_autoeq *m, const cable_constants *c, const char *dat, const cable_problem **pb,
+CABLE_API int cable_autoeq_problem(cable_autoeq *m, const cable_constants *c, const char *dat, const cable_problem **pb,
                          cable_error *err);
 
 /* The source file and the module built from it. */
-const char *cable_autoeq_source(const cable_autoeq *m);
-const char *cable_autoeq_module(const cable_autoeq *m);
+CABLE_API const char *cable_autoeq_source(const cable_autoeq *m);
+CABLE_API const char *cable_autoeq_module(const cable_autoeq *m);
 /* 1 when the last open built the module, 0 when it came from the cache. */
-int cable_autoeq_was_built(const cable_autoeq *m);
+CABLE_API int cable_autoeq_was_built(const cable_autoeq *m);
 
 /* Unloads the module; every problem pointer from it becomes invalid.  NULL is
  * a no-op. */
-void cable_autoeq_close(cable_autoeq *m);
+CABLE_API void cable_autoeq_close(cable_autoeq *m);
 
 #endif
