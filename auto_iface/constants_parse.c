@@ -1123,9 +1123,10 @@ static int finalize(pctx *x)
     if (c->thl[k].index >= c->npar)
       return perr(x, CABLE_ERR_INPUT, x->line_of[L_THL], "THL", "PAR(%d) is beyond NPAR=%d", c->thl[k].index + 1,
                   c->npar);
-  if (c->iplt != 0 && (c->iplt < 0 || (c->ndim > 0 && c->iplt > c->ndim)))
-    return perr(x, CABLE_ERR_UNSUPPORTED, x->line_of[L_IPLT], "IPLT",
-                "IPLT=%d is not supported by cable: use 0 (L2-norm) or 1..NDIM (maximum of U(IPLT))", c->iplt);
+  if (c->ndim > 0 && (c->iplt < -c->ndim || c->iplt > 3 * c->ndim))
+    return perr(x, CABLE_ERR_INPUT, x->line_of[L_IPLT], "IPLT",
+                "IPLT=%d is outside -NDIM..3*NDIM = %d..%d (0: L2-norm; i: max of U(i); -i: min of U(i); NDIM+i: "
+                "integral of U(i); 2*NDIM+i: L2-norm of U(i))", c->iplt, -c->ndim, 3 * c->ndim);
   if (x->thu_set) {
     /* cable keeps one weight for all components: accept THU only when it
      * says that (all listed weights 1, AUTO's default, or every component

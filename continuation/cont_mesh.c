@@ -252,6 +252,7 @@ void cont_store_solution(cable_cont *cc, int itp, int lab)
   pt->icp = cc->c.icp;
   pt->par = sol->par;
   pt->l2norm = sqrt(l2);
+  pt->measure = cable_solution_measure(sol, cc->c.iplt, pt->l2norm);
   pt->umax = cc->umax;
   pt->newton_iters = cc->newton_iters;
   pt->ds = cc->ds_used;

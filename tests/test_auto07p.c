@@ -47,6 +47,7 @@ static const case_t cases[] = {
   {"elastica_f", "elastica.auto", "elastica", {"elastica.f", "c.elastica", "elastica.auto", NULL}},
   {"bratuint_f90", "bratuint.auto", "bratuint", {"bratuint.f90", "c.bratuint", "bratuint.auto", NULL}},
   {"bratuint_c", "bratuint.auto", "bratuint", {"bratuint.c", "c.bratuint", "bratuint.auto", NULL}},
+  {"bratu_iplt", "bratu.auto", "bratu", {"bratu.f90", "c.bratu", "bratu.auto", NULL}},
 };
 
 static char cable_bin[3 * PATH_MAX], root[PATH_MAX];

@@ -193,6 +193,34 @@ static void bratu_integral_getp(const char *folder, const char *src)
   cable_bfile_free(bf);
 }
 
+/* IPLT = NDIM + 1: the second column is the integral of U(1), and A1 bounds
+ * it (AUTO's principal solution measure). */
+static void iplt_integral(void)
+{
+  const char *files[] = {"bratu.f90", "c.bratu", "bratu.auto", NULL};
+  stage("bratu_iplt", files);
+  cable_error err;
+  int rc = replay("bratu_iplt", "bratu.auto", &err);
+  test_true("IPLT=3: runs", rc == 0);
+  cable_bfile *bf = cable_bfile_read(TMP "/bratu_iplt/b.bratu", &err);
+  if (!test_true("IPLT=3: b.bratu was written", bf != NULL)) return;
+  const cable_bfile_branch *br = &bf->branch[0];
+  /* the lower solution at lambda = 1: 8 s^2 / cosh^2 s = 1 with s < 1.2 (bisection) */
+  double lo = 0.0, hi = 1.2;
+  for (int i = 0; i < 200; i++) {
+    double m = 0.5 * (lo + hi);
+    if (8 * m * m / (cosh(m) * cosh(m)) < 1) lo = m;
+    else hi = m;
+  }
+  test_rel("IPLT=3: column INTEGRAL U(1) at the UZ lambda = 1 is the integral of u", col(br, "INTEGRAL U(1)", row_of(br, -4, 0)),
+           bratu_integral(0.5 * (lo + hi), 1), 1e-6);
+  int last = br->nrow - 1;
+  test_true("IPLT=3, A1=0.5: the run ends (EP) once the integral passes 0.5, before the fold",
+            last > 0 && br->ty[last] == 9 && col(br, "INTEGRAL U(1)", last) > 0.5 &&
+                col(br, "INTEGRAL U(1)", last - 1) <= 0.5 && row_of(br, 5, 0) < 0);
+  cable_bfile_free(bf);
+}
+
 static void cache(void)
 {
   const char *files[] = {"bratu.f90", "c.bratu", "bratu.auto", NULL};
@@ -262,6 +290,7 @@ int main(void)
   elastica_bps();
   bratu_integral_getp("bratuint_f90", "bratuint.f90");
   bratu_integral_getp("bratuint_c", "bratuint.c");
+  iplt_integral();
   cache();
   bad_file("syntax", "syntax.f90", 8, "array reference");
   bad_file("nofunc", "nofunc.f90", 0, "does not define SUBROUTINE FUNC");
