@@ -175,6 +175,59 @@ static void definition_lines(const char *src, int *lines)
   }
 }
 
+/* GETP codes cable provides (autoeq_shim.c) and why it refuses the others. */
+static const char *const getp_codes[] = {"NRM", "INT", "MAX", "MIN", "BV0", "BV1", "STP"};
+static const struct {
+  const char *code, *why;
+} getp_refused[] = {
+  {"FLD", "AUTO's fold test-function value has no counterpart in cable's engine"},
+  {"BIF", "AUTO's branch-point test-function value has no counterpart in cable's engine"},
+  {"HBF", "Hopf test functions belong to AUTO's ODE and periodic problems, not to boundary-value problems"},
+  {"SPB", "period-doubling and torus test functions belong to AUTO's periodic problems"},
+  {"EIG", "eigenvalues and Floquet multipliers belong to AUTO's ODE and periodic problems"},
+  {"STA", "stability counts belong to AUTO's ODE and periodic problems"},
+};
+
+/* Every literal GETP('XXX', ...) in the source (comment lines skipped) must
+ * name a code cable provides; file and line of the first that does not. */
+static int check_getp_codes(const cable_autoeq *m, const char *src, cable_error *err)
+{
+  int line = 1;
+  for (const char *p = src; *p; line++) {
+    const char *eol = strchr(p, '\n');
+    size_t n = eol ? (size_t)(eol - p) : strlen(p);
+    const char *q = p;
+    while (q < p + n && (*q == ' ' || *q == '\t')) q++;
+    int comment = *q == '!' || (q < p + n - 1 && q[0] == '/' && (q[1] == '/' || q[1] == '*')) || *q == '*' ||
+                  (m->lang == AUTOEQ_FORTRAN && q == p && (*p == 'c' || *p == 'C') && m->src[strlen(m->src) - 1] == 'f');
+    for (const char *g = p; !comment && g + 4 < p + n; g++) {
+      if (strncasecmp(g, "getp", 4) != 0 || (g > p && (isalnum((unsigned char)g[-1]) || g[-1] == '_'))) continue;
+      const char *a = g + 4;
+      while (a < p + n && (*a == ' ' || *a == '\t')) a++;
+      if (a >= p + n || *a != '(') continue;
+      a++;
+      while (a < p + n && (*a == ' ' || *a == '\t')) a++;
+      if (a >= p + n || (*a != '\'' && *a != '"')) continue;
+      char code[4] = "";
+      int k = 0;
+      for (const char *c = a + 1; c < p + n && *c != *a && k < 3; c++) code[k++] = (char)toupper((unsigned char)*c);
+      code[k] = '\0';
+      int ok = 0;
+      for (size_t i = 0; i < sizeof getp_codes / sizeof getp_codes[0]; i++) ok |= strcmp(code, getp_codes[i]) == 0;
+      if (ok) continue;
+      const char *why = "not a GETP code of AUTO's";
+      for (size_t i = 0; i < sizeof getp_refused / sizeof getp_refused[0]; i++)
+        if (strcmp(code, getp_refused[i].code) == 0) why = getp_refused[i].why;
+      return cable_error_set(err, CABLE_ERR_PLUGIN, m->src, line, "GETP",
+                             "'%s': cable does not provide it (%s); it provides NRM, INT, MAX, MIN, BV0, BV1 and STP",
+                             code, why);
+    }
+    if (!eol) break;
+    p = eol + 1;
+  }
+  return 0;
+}
+
 /* Checks gfortran's prototypes of the file's external procedures against
  * AUTO's argument lists; fills m->nargs (-1 absent, 0 a dummy). */
 static int check_fortran_prototypes(cable_autoeq *m, const char *proto, cable_error *err)
@@ -319,6 +372,10 @@ int autoeq_build(cable_autoeq *m, cable_error *err)
   if (!src) return err->status;
   for (int r = 0; r < AE_NROUTINES; r++) m->def_line[r] = 0;
   if (m->lang == AUTOEQ_FORTRAN) definition_lines(src, m->def_line);
+  if (check_getp_codes(m, src, err)) {
+    free(src);
+    return err->status;
+  }
   uint64_t h = fnv1a(0xcbf29ce484222325ULL, AUTOEQ_CACHE_TAG, sizeof AUTOEQ_CACHE_TAG);
   const char *cc = compiler(m->lang);
   h = fnv1a(h, cc, strlen(cc) + 1);

@@ -214,7 +214,7 @@ int autoeq_make_problem(cable_autoeq *m, const cable_constants *c, cable_error *
 {
   if (c->ndim <= 0)
     return cable_error_set(err, CABLE_ERR_INPUT, m->src, 0, "NDIM", "equations from an AUTO file take NDIM from the "
-                           "constants (NDIM=%d is missing there)", c->ndim);
+                           "constants (there is no NDIM there)");
   char why[64];
   int rc = 0;
   snprintf(why, sizeof why, "NBC=%d", c->nbc);

@@ -38,7 +38,7 @@
 
 typedef struct {
   const char *folder, *script, *name;
-  const char *files[4];
+  const char *files[5];
 } case_t;
 
 static const case_t cases[] = {
@@ -48,6 +48,7 @@ static const case_t cases[] = {
   {"bratuint_f90", "bratuint.auto", "bratuint", {"bratuint.f90", "c.bratuint", "bratuint.auto", NULL}},
   {"bratuint_c", "bratuint.auto", "bratuint", {"bratuint.c", "c.bratuint", "bratuint.auto", NULL}},
   {"bratu_iplt", "bratu.auto", "bratu", {"bratu.f90", "c.bratu", "bratu.auto", NULL}},
+  {"bratu_dat", "dat.auto", "bratudat", {"bratu.f90", "bratu.dat", "c.bratudat", "dat.auto"}},
 };
 
 static char cable_bin[3 * PATH_MAX], root[PATH_MAX];

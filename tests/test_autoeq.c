@@ -221,6 +221,55 @@ static void iplt_integral(void)
   cable_bfile_free(bf);
 }
 
+/* dat='bratu.dat': AUTO's start data (t and U(1), U(2) per row) instead of
+ * STPNT's u = 0: the exact upper solution at s = 2 (lambda = 32/cosh^2 2),
+ * continued towards smaller lambda, gives the upper solution at lambda = 1,
+ * which STPNT's start never reaches with DS < 0. */
+static void dat_start(void)
+{
+  const char *files[] = {"bratu.f90", NULL};
+  stage("bratu_f90", files);
+  double s0 = 2.0, lam0 = 8 * s0 * s0 / (cosh(s0) * cosh(s0));
+  FILE *f = fopen(TMP "/bratu_f90/bratu.dat", "w");
+  for (int i = 0; f && i <= 200; i++) {
+    double x = i / 200.0;
+    /* t in the data's own units, [0, 2]: AUTO rescales it to [0, 1] */
+    fprintf(f, "%.17g %.17g %.17g\n", 2 * x, 2 * log(cosh(s0)) - 2 * log(cosh(s0 * (2 * x - 1))),
+            -4 * s0 * tanh(s0 * (2 * x - 1)));
+  }
+  if (f) fclose(f);
+  f = fopen(TMP "/bratu_f90/c.bratudat", "w");
+  if (f) {
+    fprintf(f, "e='bratu', dat='bratu.dat'\nNDIM=2, IPS=4, IRS=0, ICP=[1], NBC=2, NINT=0, IPLT=3\n"
+               "NTST=20, NCOL=4, NMX=60, DS=-0.01, DSMAX=0.5, RL0=0.5, RL1=4\nPAR={1: %.17g}\nUZR={1: 1.0}\n",
+            lam0);
+    fclose(f);
+  }
+  f = fopen(TMP "/bratu_f90/dat.auto", "w");
+  if (f) {
+    fputs("r = run(c='bratudat', sv='bratudat')\n", f);
+    fclose(f);
+  }
+  cable_error err;
+  char buf[1200];
+  int rc = replay("bratu_f90", "dat.auto", &err);
+  test_report(rc == 0, "dat=: runs (%s)", rc ? cable_error_format(&err, buf, sizeof buf) : "ok");
+  cable_bfile *bf = cable_bfile_read(TMP "/bratu_f90/b.bratudat", &err);
+  if (!test_true("dat=: b.bratudat was written", bf != NULL)) return;
+  const cable_bfile_branch *br = &bf->branch[0];
+  double lo = 1.2, hi = 6.0;   /* the upper root of 8 s^2 / cosh^2 s = 1 */
+  for (int i = 0; i < 200; i++) {
+    double m = 0.5 * (lo + hi);
+    if (8 * m * m / (cosh(m) * cosh(m)) > 1) lo = m;
+    else hi = m;
+  }
+  test_rel("dat=: the start is the table's solution (integral of u at s = 2)", col(br, "INTEGRAL U(1)", 0),
+           bratu_integral(s0, 1), 1e-6);
+  test_rel("dat=: the UZ at lambda = 1 is the upper solution (its integral)", col(br, "INTEGRAL U(1)", row_of(br, -4, 0)),
+           bratu_integral(0.5 * (lo + hi), 1), 1e-6);
+  cable_bfile_free(bf);
+}
+
 static void cache(void)
 {
   const char *files[] = {"bratu.f90", "c.bratu", "bratu.auto", NULL};
@@ -247,18 +296,20 @@ static void cache(void)
            CABLE_ERR_NOTFOUND);
 }
 
-static void bad_file(const char *name, const char *src, int line, const char *needle)
+/* name: the script's e= and c= (e_name NULL: the same); src: the file the
+ * error must name (the equation file or the constants file). */
+static void bad_run(const char *name, const char *e_name, const char *src, int status, int line, const char *needle)
 {
   char c[64], script[64];
   snprintf(c, sizeof c, "c.%s", name);
   snprintf(script, sizeof script, "%s.auto", name);
   const char *files[] = {src, c, NULL};
-  stage("bad", files);
+  stage("bad", strcmp(src, c) == 0 ? files + 1 : files);
   char sp[512];
   snprintf(sp, sizeof sp, "%s/bad/%s", TMP, script);
   FILE *f = fopen(sp, "w");
   if (f) {
-    fprintf(f, "run(e='%s', c='%s', sv='%s')\n", name, name, name);
+    fprintf(f, "run(e='%s', c='%s', sv='%s')\n", e_name ? e_name : name, name, name);
     fclose(f);
   }
   cable_error err;
@@ -266,7 +317,7 @@ static void bad_file(const char *name, const char *src, int line, const char *ne
   int rc = replay("bad", script, &err);
   char buf[1200];
   cable_error_format(&err, buf, sizeof buf);
-  test_report(rc == CABLE_ERR_PLUGIN && strstr(buf, src) && strstr(buf, needle), "%s: refused: %s", src, buf);
+  test_report(rc == status && strstr(buf, src) && strstr(buf, needle), "%s: refused: %s", src, buf);
   char want[64];
   snprintf(want, sizeof want, "%s:%d:", src, line);
   if (line > 0) test_report(strstr(buf, want) != NULL, "%s: the error names line %d of the file", src, line);
@@ -277,6 +328,11 @@ static void bad_file(const char *name, const char *src, int line, const char *ne
     none &= !exists(sp);
   }
   test_true("no b./s./d. file written", none);
+}
+
+static void bad_file(const char *name, const char *src, int line, const char *needle)
+{
+  bad_run(name, NULL, src, CABLE_ERR_PLUGIN, line, needle);
 }
 
 int main(void)
@@ -291,11 +347,17 @@ int main(void)
   bratu_integral_getp("bratuint_f90", "bratuint.f90");
   bratu_integral_getp("bratuint_c", "bratuint.c");
   iplt_integral();
+  dat_start();
   cache();
   bad_file("syntax", "syntax.f90", 8, "array reference");
   bad_file("nofunc", "nofunc.f90", 0, "does not define SUBROUTINE FUNC");
   bad_file("wrongsig", "wrongsig.f90", 2, "has 7 arguments, AUTO passes 8");
   bad_file("wrongsigc", "wrongsigc.c", 5, "conflicting types for");
   bad_file("nopvls", "nopvls.c", 0, "pvls: the equation file does not define it");
+  bad_file("getpfld", "getpfld.f90", 55, "GETP: 'FLD': cable does not provide it");
+  /* constants as AUTO reads them */
+  bad_run("nintbuiltin", "bratu", "c.nintbuiltin", CABLE_ERR_INPUT, 3,
+          "NINT: NINT=1 contradicts problem 'bratu', which has NINT=0");
+  bad_run("nondim", NULL, "nondim.f90", CABLE_ERR_INPUT, 0, "NDIM: equations from an AUTO file take NDIM from the constants");
   return test_summary();
 }
