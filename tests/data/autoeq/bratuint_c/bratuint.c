@@ -5,6 +5,10 @@
 int func(integer ndim, const doublereal *u, const integer *icp, const doublereal *par, integer ijac,
          doublereal *f, doublereal *dfdu, doublereal *dfdp)
 {
+  /* ICP as AUTO passes it: 1-based, the free parameters PAR(1), PAR(2) first,
+     then the printed ones; cable treats a negative return as fatal (AUTO
+     ignores the return value) */
+  if (icp[0] != 1 || icp[1] != 2 || icp[2] != 3 || icp[7] != 8) return -1;
   f[0] = u[1];
   f[1] = -par[0] * exp(u[0]);
   return 0;
