@@ -1,6 +1,8 @@
 """cable.atlas (doc/atlas.md): a tiny sweep (the (3,2) knot and the (4,2)
 link, one Delta, mode 1, a coarse mesh) on a local Dask cluster of two
-workers; the same sweep interrupted and resumed recomputes nothing finished;
+workers; the same sweep interrupted and resumed (on a cluster of `dask
+scheduler` and `dask worker` reached by its address) recomputes nothing
+finished;
 a worker killed during a task leaves the sweep complete with every finished
 row intact; bad sweep files are refused before any task starts."""
 import json
@@ -59,9 +61,40 @@ def _env():
     return dict(os.environ, PYTHONPATH=os.path.join(BUILD, 'python'), PYTHONDONTWRITEBYTECODE='1')
 
 
-def _start(path, workers=2):
-    return subprocess.Popen([PYTHON, '-m', 'cable.atlas', path, '--workers', str(workers)], env=_env(),
+def _start(path, workers=2, scheduler=None):
+    how = ['--scheduler', scheduler] if scheduler else ['--workers', str(workers)]
+    return subprocess.Popen([PYTHON, '-m', 'cable.atlas', path] + how, env=_env(),
                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+
+
+class _Cluster:
+    """A Dask cluster as on a real machine: `dask scheduler` and one
+    single-threaded `dask worker`, separate processes, stopped at the end."""
+
+    def __init__(self, work):
+        self.file = os.path.join(str(work), 'scheduler.json')
+        log = open(os.path.join(str(work), 'cluster.log'), 'w')
+        self.procs = [subprocess.Popen(['dask', 'scheduler', '--scheduler-file', self.file, '--host', '127.0.0.1',
+                                        '--port', '0', '--no-dashboard'], env=_env(), stdout=log, stderr=log)]
+        t0 = time.time()
+        while not os.path.exists(self.file) and time.time() - t0 < 120:
+            time.sleep(0.1)
+        time.sleep(0.2)
+        with open(self.file) as f:
+            self.address = json.load(f)['address']
+        self.procs.append(subprocess.Popen(['dask', 'worker', self.address, '--nthreads', '1', '--nworkers', '1',
+                                            '--no-dashboard', '--local-directory', str(work)], env=_env(),
+                                           stdout=log, stderr=log))
+
+    def stop(self):
+        for p in reversed(self.procs):
+            p.terminate()
+        for p in self.procs:
+            try:
+                p.wait(timeout=30)
+            except subprocess.TimeoutExpired:
+                p.kill()
+                p.wait()
 
 
 def _finish(proc):
@@ -136,9 +169,13 @@ def test_tiny_sweep_interrupted_and_resumed(work):
     before = _results(sweep)
     assert before, err
     assert rc in (0, 130), err
-    rc, out, err = _finish(_start(path))
+    # resumed on a cluster reached by its scheduler's address
+    cluster = _Cluster(work)
+    try:
+        rc, out, err = _finish(_start(path, scheduler=cluster.address))
+    finally:
+        cluster.stop()
     assert rc == 0, err
-    assert 'computed' in out
     after = _results(sweep)
     assert len(after) == 2
     for name, data in before.items():   # finished before the interruption: not recomputed, not rewritten
