@@ -262,10 +262,10 @@ def test_bad_sweep_file(work, what, old, new, msg):
     with pytest.raises(atlas.SweepError) as e:
         atlas.load(path)
     assert msg in str(e.value), str(e.value)
-    # the command line says the same, exits non-zero and starts nothing
-    p = subprocess.run([PYTHON, '-m', 'cable.atlas', path, '--workers', '1'], env=_env(), capture_output=True,
+    # the command line (cable atlas) says the same, exits non-zero and starts nothing
+    p = subprocess.run([os.path.join(BUILD, 'cable'), 'atlas', path, '--workers', '1'], capture_output=True,
                        text=True, timeout=120)
-    assert p.returncode == 1 and msg in p.stderr, p.stderr
+    assert p.returncode == 1 and 'cable atlas: ' + msg in p.stderr, p.stderr
     assert not os.path.exists(os.path.join(str(work), 'tiny'))
 
 
