@@ -265,7 +265,7 @@ def test_bad_sweep_file(work, what, old, new, msg):
     # the command line (cable atlas) says the same, exits non-zero and starts nothing
     p = subprocess.run([os.path.join(BUILD, 'cable'), 'atlas', path, '--workers', '1'], capture_output=True,
                        text=True, timeout=120)
-    assert p.returncode == 1 and 'cable atlas: ' + msg in p.stderr, p.stderr
+    assert p.returncode == 1 and p.stderr.startswith('cable atlas: ') and msg in p.stderr, p.stderr
     assert not os.path.exists(os.path.join(str(work), 'tiny'))
 
 
