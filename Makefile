@@ -3,6 +3,9 @@
 
 CC      ?= gcc
 MODE    ?= release
+# The Debian interpreter (another python3 without Debian's numpy may come first on PATH)
+PYTHON  ?= /usr/bin/python3
+PREFIX  ?= /usr/local
 BUILD   := build/$(MODE)
 
 MODULES := continuation auto_iface equations bc graphics
@@ -14,14 +17,15 @@ INCS    := $(addprefix -I,$(MODULES)) -Itests -I/usr/include/suitesparse
 OPT_release := -O2 -g
 OPT_asan    := -O1 -g -fno-omit-frame-pointer -fsanitize=address,undefined -fno-sanitize-recover=all
 OPT_fuzz    := -O1 -g -fsanitize=fuzzer-no-link,address,undefined
-CFLAGS  := $(CSTD) $(WARN) $(OPT_$(MODE)) $(INCS) -MMD -MP -fPIC $(EXTRA_CFLAGS)
+CFLAGS  := $(CSTD) $(WARN) $(OPT_$(MODE)) $(INCS) -MMD -MP -fPIC -DCABLE_PYTHON='"$(PYTHON)"' $(EXTRA_CFLAGS)
 SAN_LD_asan := -fsanitize=address,undefined
 LDFLAGS := $(SAN_LD_$(MODE)) $(EXTRA_LDFLAGS)
 LIBS    := -lsundials_kinsol -lsundials_sunlinsolklu -lsundials_sunmatrixsparse \
            -lsundials_nvecserial -lsundials_generic -lklu \
            -lgsl -llapacke -llapack -lblas -lcairo -ldl -lm
 
-LIB_SRCS := $(filter-out auto_iface/cable_main.c,$(wildcard $(addsuffix /*.c,$(MODULES))))
+PY_SRCS  := $(wildcard auto_iface/pycable_*.c)
+LIB_SRCS := $(filter-out auto_iface/cable_main.c $(PY_SRCS),$(wildcard $(addsuffix /*.c,$(MODULES))))
 LIB_OBJS := $(LIB_SRCS:%.c=$(BUILD)/%.o)
 TEST_SRCS := $(wildcard tests/test_*.c)
 TEST_BINS := $(TEST_SRCS:tests/%.c=$(BUILD)/tests/%)
@@ -32,9 +36,19 @@ PLUGINS  := $(PLUGIN_SRCS:tests/plugins/%.c=$(BUILD)/plugins/%.so)
 LIBCABLE := $(BUILD)/libcable.a
 DEPS_OK  := build/.deps-ok
 
-.PHONY: all check asan valgrind demo scenes bench stress fuzz clean help deps tests-build
+# The Python package: python/cable/*.py and the extension cable._cable
+# (auto_iface/pycable_*.c over libcable), put together in $(BUILD)/python
+# where `cable replay` and the tests find it.
+PY_INC   = $(shell $(PYTHON) -c "import sysconfig; print(sysconfig.get_paths()['include'])")
+NP_INC   = $(shell $(PYTHON) -c "import numpy; print(numpy.get_include())")
+PY_OBJS  := $(PY_SRCS:%.c=$(BUILD)/%.o)
+PYPKG    := $(BUILD)/python/cable
+PY_FILES := $(patsubst python/cable/%,$(PYPKG)/%,$(wildcard python/cable/*.py))
+PY_SO    := $(PYPKG)/_cable.so
 
-all: cable
+.PHONY: all check asan valgrind demo scenes bench stress fuzz clean help deps tests-build python install
+
+all: cable python
 
 # Dependencies come from Debian; the script installs only what is missing.
 $(DEPS_OK): scripts/install-deps.sh
@@ -45,6 +59,27 @@ deps: $(DEPS_OK)
 $(BUILD)/%.o: %.c | $(DEPS_OK)
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) -c $< -o $@
+
+$(PY_OBJS): $(BUILD)/%.o: %.c | $(DEPS_OK)
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) -isystem $(PY_INC) -isystem $(NP_INC) -c $< -o $@
+
+$(PY_SO): $(PY_OBJS) $(LIBCABLE)
+	@mkdir -p $(dir $@)
+	$(CC) -shared $(LDFLAGS) $^ $(LIBS) -o $@
+
+$(PYPKG)/%.py: python/cable/%.py
+	@mkdir -p $(dir $@)
+	cp $< $@
+
+python: $(PY_SO) $(PY_FILES)
+
+# cable and the package under PREFIX: bin/cable finds PREFIX/lib/cable/python
+install: cable python
+	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/lib/cable/python/cable
+	install -m 755 $(BUILD)/cable $(DESTDIR)$(PREFIX)/bin/cable
+	install -m 644 $(PY_FILES) $(DESTDIR)$(PREFIX)/lib/cable/python/cable/
+	install -m 755 $(PY_SO) $(DESTDIR)$(PREFIX)/lib/cable/python/cable/
 
 $(LIBCABLE): $(LIB_OBJS)
 	@rm -f $@
@@ -63,7 +98,7 @@ $(BUILD)/plugins/%.so: tests/plugins/%.c | $(DEPS_OK)
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) -shared $< -o $@
 
-tests-build: $(TEST_BINS) $(PLUGINS) $(BUILD)/cable cable
+tests-build: $(TEST_BINS) $(PLUGINS) $(BUILD)/cable cable python
 
 # The README's test command: build and run every test program, one summary line.
 check: tests-build
@@ -79,10 +114,10 @@ valgrind: tests-build
 	  CABLE_TEST_QUICK=1 bash scripts/run-tests.sh $(BUILD)
 
 # The README's main job: the paper's knot scene on its defaults.
-demo: cable
+demo: cable python
 	@bash scripts/demo.sh
 
-scenes: cable
+scenes: cable python
 	@bash scripts/scenes.sh
 
 bench: cable tests-build $(BENCH_BINS)
@@ -92,7 +127,7 @@ bench: cable tests-build $(BENCH_BINS)
 stress: cable tests-build
 	@bash scripts/stress.sh $(BUILD)
 
-# Fuzzing of the constants, script and s-file parsers (clang's libFuzzer).
+# Fuzzing of the constants and s-file parsers (clang's libFuzzer).
 fuzz:
 	@bash scripts/fuzz.sh
 
@@ -100,7 +135,8 @@ clean:
 	rm -rf build cable
 
 help:
-	@echo "make            build ./cable"
+	@echo "make            build ./cable and the Python package (build/release/python)"
+	@echo "make install    cable and the package under PREFIX (default /usr/local)"
 	@echo "make check      build and run the test suite (summary: N passed, M failed)"
 	@echo "make demo       build and run the main job (the paper's knot scene)"
 	@echo "make asan       tests under AddressSanitizer + UBSan"
@@ -111,4 +147,4 @@ help:
 	@echo "make fuzz       fuzz the parsers (libFuzzer, 10 minutes)"
 
 .PRECIOUS: $(BUILD)/%.o $(BUILD)/tests/%.o
--include $(LIB_OBJS:.o=.d) $(TEST_BINS:=.d) $(BENCH_BINS:=.d) $(PLUGINS:.so=.d) $(BUILD)/auto_iface/cable_main.d
+-include $(LIB_OBJS:.o=.d) $(PY_OBJS:.o=.d) $(TEST_BINS:=.d) $(BENCH_BINS:=.d) $(PLUGINS:.so=.d) $(BUILD)/auto_iface/cable_main.d

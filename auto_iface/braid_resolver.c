@@ -81,6 +81,6 @@ static void braid_release(void *ctx, const cable_problem *pb)
   free((void *)pb); /* pb is the first member of the braid_instance we allocated */
 }
 
-static const cable_replay_problems resolver = {NULL, braid_find, braid_release};
+static const cable_session_problems resolver = {NULL, braid_find, braid_release};
 
-const cable_replay_problems *cable_braid_resolver(void) { return &resolver; }
+const cable_session_problems *cable_braid_resolver(void) { return &resolver; }

@@ -5,10 +5,10 @@
 #ifndef CABLE_BRAID_RESOLVER_H
 #define CABLE_BRAID_RESOLVER_H
 
-#include "script_host_cable.h"
+#include "cable_session.h"
 
-/* A resolver object for cable_replay_options.problems (no state of its own:
+/* A resolver object for cable_session_options.problems (no state of its own:
  * each problem it hands out owns its prepared starting parameters). */
-const cable_replay_problems *cable_braid_resolver(void);
+const cable_session_problems *cable_braid_resolver(void);
 
 #endif

@@ -64,7 +64,8 @@ static const char *type_name(int itp)
   }
 }
 
-static void emit(cable_cont *cc, const cable_sink *sink, int ibr, int *lab)
+/* Hands the point to the sink; 1 when the sink asks to stop (returns > 0). */
+static int emit(cable_cont *cc, const cable_sink *sink, int ibr, int *lab)
 {
   cable_point *pt = &cc->pt;
   int labelled = pt->itp != CABLE_TY_NONE;
@@ -78,7 +79,7 @@ static void emit(cable_cont *cc, const cable_sink *sink, int ibr, int *lab)
   cc->sol->ibr = ibr;
   cc->sol->lab = pt->lab;
   cc->sol->itp = pt->itp;
-  if (sink && sink->point) sink->point(sink->ctx, pt);
+  int stop = sink && sink->point ? sink->point(sink->ctx, pt) : 0;
   if (labelled && sink && sink->solution) sink->solution(sink->ctx, pt, cc->sol);
   if (sink && sink->diag) {
     char line[320];
@@ -88,6 +89,7 @@ static void emit(cable_cont *cc, const cable_sink *sink, int ibr, int *lab)
              pt->newton_iters, pt->err_est, pt->det_sign, pt->sv1, pt->sv2);
     sink->diag(sink->ctx, line);
   }
+  return stop > 0;
 }
 
 /* AUTO's STOP = ['BP2', 'UZ3', ...]: end the branch at the n-th labelled
@@ -107,16 +109,19 @@ int cable_cont_run(cable_cont *cc, const cable_sink *sink, int ibr, int first_la
   int lab = first_label, rc;
   int seen[sizeof cc->c.stop_on / sizeof cc->c.stop_on[0]] = {0};
   while ((rc = cable_cont_step(cc)) == CABLE_SUCCESS) {
-    emit(cc, sink, ibr, &lab);
+    if (emit(cc, sink, ibr, &lab)) {
+      rc = CABLE_ERR_INTERRUPTED;   /* the caller stopped the run (its files stay as they were) */
+      break;
+    }
     if (stop_reached(cc, seen)) {
       cc->ended = 1;
       cc->end_status = CABLE_END_STOP;
     }
   }
-  if (rc < 0 && cc->npt > 0) {
+  if (rc < 0 && rc != CABLE_ERR_INTERRUPTED && cc->npt > 0) {
     /* the branch ends abnormally: the last good point is stored as MX */
     cc->pt.itp = CABLE_TY_MX;
-    emit(cc, sink, ibr, &lab);
+    (void)emit(cc, sink, ibr, &lab);
   }
   if (rc < 0 && sink && sink->diag) {
     char line[640];

@@ -8,7 +8,7 @@
 
 #include "aufile.h"
 #include "cable_status.h"
-#include "script_host_impl.h"
+#include "cable_session_impl.h"
 
 rp_branch *rp_branch_alloc(int ibr, const cable_constants *c, const cable_names *names, const char *e)
 {
@@ -158,7 +158,7 @@ void rp_result_free(rp_result *r)
   free(r);
 }
 
-void rp_path(const cable_replay *r, const char *type, const char *name, char *buf, size_t len)
+void rp_path(const cable_session *r, const char *type, const char *name, char *buf, size_t len)
 {
   const char *dir = r->opt.dir && r->opt.dir[0] ? r->opt.dir : NULL;
   if (dir && name[0] != '/') snprintf(buf, len, "%s/%s.%s", dir, type, name);
@@ -167,7 +167,7 @@ void rp_path(const cable_replay *r, const char *type, const char *name, char *bu
 
 /* ---- files ------------------------------------------------------------------- */
 
-int rp_result_write(const cable_replay *r, const rp_result *res, const char *name, int append,
+int rp_result_write(const cable_session *r, const rp_result *res, const char *name, int append,
                     cable_error *err)
 {
   if (res->nbr == 0)
@@ -213,7 +213,7 @@ static double l2norm_estimate(const cable_solution *s)
   return sqrt(sum);
 }
 
-int rp_result_read(const cable_replay *r, const char *name, const cable_constants *c,
+int rp_result_read(const cable_session *r, const char *name, const cable_constants *c,
                    const cable_names *names, const char *e, rp_result **out, cable_error *err)
 {
   char path[1024];

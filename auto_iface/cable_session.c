@@ -1,8 +1,7 @@
-/* The engine host: AUTO-07p's script commands on cable's continuation engine,
- * constants parser and b./s./d. files.  Results live in memory
- * (script_host_store.c); files are written only by sv=, ap=, save, and
- * merge/relabel of file names. */
-#include "script_host_cable.h"
+/* The session: AUTO-07p's runner on cable's continuation engine, constants
+ * parser and b./s./d. files.  Branches live in memory (cable_session_store.c);
+ * files are written only by sv=, ap=, save, and merge/relabel of file names. */
+#include "cable_session.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -18,15 +17,15 @@
 #include "cable_cont.h"
 #include "cable_status.h"
 #include "constants_parse.h"
-#include "script_host_impl.h"
+#include "cable_session_impl.h"
 #include "test_problems.h"
 
-void cable_replay_options_init(cable_replay_options *o)
+void cable_session_options_init(cable_session_options *o)
 {
   memset(o, 0, sizeof *o);
 }
 
-static FILE *rp_log(const cable_replay *r) { return r->opt.log ? r->opt.log : stdout; }
+static FILE *rp_log(const cable_session *r) { return r->opt.log ? r->opt.log : stdout; }
 
 static int file_exists(const char *path)
 {
@@ -41,7 +40,7 @@ typedef struct rp_problem {
   int user;   /* from opt.problems: released after use */
 } rp_problem;
 
-static void problem_release(cable_replay *r, rp_problem *p)
+static void problem_release(cable_session *r, rp_problem *p)
 {
   if (p->user && r->opt.problems && r->opt.problems->release)
     r->opt.problems->release(r->opt.problems->ctx, p->pb);
@@ -51,7 +50,7 @@ static void problem_release(cable_replay *r, rp_problem *p)
 
 /* A plug-in for e=NAME: NAME.so (or NAME itself when it ends in .so), opened
  * once per session. */
-static int plugin_problem(cable_replay *r, const char *e, const cable_problem **pb, cable_error *err)
+static int plugin_problem(cable_session *r, const char *e, const cable_problem **pb, cable_error *err)
 {
   for (int i = 0; i < r->nplugins; i++)
     if (strcmp(r->plugin_name[i], e) == 0) {
@@ -75,14 +74,14 @@ static int plugin_problem(cable_replay *r, const char *e, const cable_problem **
 }
 
 /* The problem for e=NAME.  c NULL: only its names are needed. */
-static int find_problem(cable_replay *r, const char *e, const cable_constants *c, int from_stpnt,
+static int find_problem(cable_session *r, const char *e, const cable_constants *c, int from_stpnt,
                         rp_problem *out, cable_error *err)
 {
   out->pb = NULL;
   out->user = 0;
   if (!e[0])
     return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, "e", "no problem given (e='NAME' in the call or the constants file)");
-  const cable_replay_problems *up = r->opt.problems;
+  const cable_session_problems *up = r->opt.problems;
   if (up && up->find) {
     int rc = up->find(up->ctx, e, c, from_stpnt, &out->pb, err);
     if (rc == 0) {
@@ -121,46 +120,6 @@ static int find_problem(cable_replay *r, const char *e, const cable_constants *c
   return rc;
 }
 
-/* ---- handles ------------------------------------------------------------------- */
-
-static int wrap_result(cable_replay *r, rp_result *res, script_value *out, cable_error *err)
-{
-  if (!res) return cable_error_set(err, CABLE_ERR_ALLOC, NULL, 0, NULL, "out of memory");
-  int rc = script_handle_new(out, &r->host, SCRIPT_HANDLE_RESULT, res);
-  return rc ? cable_error_set(err, rc, NULL, 0, NULL, "out of memory") : 0;
-}
-
-static int wrap_solution(cable_replay *r, rp_branch *b, int isol, script_value *out, cable_error *err)
-{
-  rp_sol *s = malloc(sizeof *s);
-  if (!s) return cable_error_set(err, CABLE_ERR_ALLOC, NULL, 0, NULL, "out of memory");
-  b->refs++;
-  s->br = b;
-  s->isol = isol;
-  int rc = script_handle_new(out, &r->host, SCRIPT_HANDLE_SOLUTION, s);
-  return rc ? cable_error_set(err, rc, NULL, 0, NULL, "out of memory") : 0;
-}
-
-static void rp_release(void *ctx, void *ptr, int kind)
-{
-  (void)ctx;
-  if (kind == SCRIPT_HANDLE_RESULT) {
-    rp_result_free(ptr);
-  } else {
-    rp_sol *s = ptr;
-    rp_branch_decref(s->br);
-    free(s);
-  }
-}
-
-/* The handle's result, or NULL (with err) when it is something else. */
-static const rp_result *as_result(const script_value *v, const char *what, cable_error *err)
-{
-  if (script_handle_kind(v) == SCRIPT_HANDLE_RESULT) return script_handle_ptr(v);
-  cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, NULL, "%s needs a result, got a %s", what, script_type_name(v));
-  return NULL;
-}
-
 /* ---- run setup: constants, problem, start ----------------------------------------- */
 
 typedef struct rp_setup {
@@ -182,7 +141,7 @@ static void setup_free(rp_setup *s)
 /* The problem's parameter names, for constants that name parameters.  A
  * problem that cannot be had (unknown name, rejected plug-in) is reported
  * here, before its constants are read.  Release p after use. */
-static int problem_names(cable_replay *r, const char *e, rp_problem *p, const char *const **parnames,
+static int problem_names(cable_session *r, const char *e, rp_problem *p, const char *const **parnames,
                          int *npar, cable_error *err)
 {
   *parnames = NULL;
@@ -229,7 +188,7 @@ static void peek_problem_name(const char *path, char *e, size_t len)
   fclose(f);
 }
 
-static int read_constants_file(cable_replay *r, const char *name, rp_setup *s, int required,
+static int read_constants_file(cable_session *r, const char *name, rp_setup *s, int required,
                                cable_error *err)
 {
   char path[1024];
@@ -254,7 +213,7 @@ static int read_constants_file(cable_replay *r, const char *name, rp_setup *s, i
   return rc;
 }
 
-static int read_solutions_file(cable_replay *r, const char *name, rp_setup *s, cable_error *err)
+static int read_solutions_file(cable_session *r, const char *name, rp_setup *s, cable_error *err)
 {
   char path[1024];
   rp_path(r, "s", name, path, sizeof path);
@@ -265,43 +224,6 @@ static int read_solutions_file(cable_replay *r, const char *name, rp_setup *s, c
 }
 
 /* KEY=VALUE text for the constants parser: Python's repr is its syntax. */
-static int kw_text(const script_kwarg *k, char *buf, size_t len, cable_error *err)
-{
-  const script_value *v = &k->value;
-  char val[4096];
-  switch (v->type) {
-  case SCRIPT_BOOL: snprintf(val, sizeof val, "%d", v->num != 0); break;
-  case SCRIPT_NUMBER:
-  case SCRIPT_LIST:
-  case SCRIPT_DICT: script_value_format(v, NULL, val, sizeof val); break;
-  case SCRIPT_STRING: {
-    const char *s = script_string_chars(v);
-    char q = strchr(s, '\'') ? '"' : '\'';
-    if (strchr(s, '\'') && strchr(s, '"'))
-      return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, k->name, "a value cannot contain both quote characters");
-    snprintf(val, sizeof val, "%c%s%c", q, s, q);
-    break;
-  }
-  default:
-    return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, k->name, "a %s is not a constants value",
-                           script_type_name(v));
-  }
-  if ((size_t)snprintf(buf, len, "%s=%s", k->name, val) >= len)
-    return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, k->name, "value too long");
-  return 0;
-}
-
-static int kw_string(const script_kwarg *k, char *dst, size_t len, cable_error *err)
-{
-  if (k->value.type != SCRIPT_STRING || script_string_len(&k->value) == 0 ||
-      script_string_len(&k->value) >= len)
-    return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, k->name, "must be a non-empty name, got a %s",
-                           script_type_name(&k->value));
-  snprintf(dst, len, "%s", script_string_chars(&k->value));
-  return 0;
-}
-
-/* The last labelled solution of a result. */
 static const cable_solution *result_last(const rp_result *res)
 {
   for (int k = res->nbr - 1; k >= 0; k--)
@@ -325,21 +247,34 @@ static const cable_solution *result_irs(const rp_result *res, const cable_consta
 /* AUTO's load/run argument handling: the base constants from the data (or
  * the runner), then c=, e=, s=, sv=, ap=, then every other keyword as an
  * override, then the start. */
-static int build_setup(cable_replay *r, const script_value *data, const script_kwargs *kw, int nover,
-                       const char *const *over, rp_setup *s, cable_error *err)
+/* A name argument (e=, c=, s=, sv=, ap=): non-empty and short enough. */
+static int name_arg(const char *key, const char *v, char *dst, size_t len, cable_error *err)
+{
+  if (!v[0] || strlen(v) >= len)
+    return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, key, "must be a non-empty name of at most %zu characters",
+                           len - 1);
+  snprintf(dst, len, "%s", v);
+  return 0;
+}
+
+/* AUTO's load/run argument handling: the base constants from the start (or
+ * the runner), then c=, e=, s=, sv=, ap=, then every override, then the
+ * start. */
+static int build_setup(cable_session *r, const cable_run_args *a, rp_setup *s, cable_error *err)
 {
   memset(s, 0, sizeof *s);
+  rp_result view = {a->nbranch, (rp_branch **)a->branches};
   const rp_result *res = NULL;
   int rc = 0;
-  if (data && data->type == SCRIPT_HANDLE) {
+  if (a->sol_branch || a->nbranch > 0) {
     const rp_branch *b;
-    if (script_handle_kind(data) == SCRIPT_HANDLE_SOLUTION) {
-      const rp_sol *so = script_handle_ptr(data);
-      b = so->br;
-      s->start = b->sol[so->isol];
+    if (a->sol_branch) {
+      b = a->sol_branch;
+      if (a->sol_index < 0 || a->sol_index >= b->nsol)
+        return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, NULL, "no such solution in the branch");
+      s->start = b->sol[a->sol_index];
     } else {
-      res = script_handle_ptr(data);
-      if (res->nbr == 0) return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, NULL, "the result is empty");
+      res = &view;
       b = res->br[res->nbr - 1];
     }
     s->c = b->c;
@@ -354,45 +289,40 @@ static int build_setup(cable_replay *r, const script_value *data, const script_k
     snprintf(s->e, sizeof s->e, "%s", r->cur_e);
   }
   s->c.s[0] = s->c.sv[0] = '\0';   /* one-off, like IRS: set below for this run */
-  const script_kwarg *ke = NULL, *kc = NULL, *ks = NULL;
-  for (int i = 0; kw && i < kw->n && !rc; i++) {
-    const script_kwarg *k = &kw->items[i];
-    if (strcmp(k->name, "e") == 0) ke = k;
-    else if (strcmp(k->name, "c") == 0) kc = k;
-    else if (strcmp(k->name, "s") == 0) ks = k;
-    else if (strcmp(k->name, "sv") == 0) rc = kw_string(k, s->sv, sizeof s->sv, err);
-    else if (strcmp(k->name, "ap") == 0) rc = kw_string(k, s->ap, sizeof s->ap, err);
-  }
-  if (!rc && ke) rc = kw_string(ke, s->e, sizeof s->e, err);
+  if (a->sv) rc = name_arg("sv", a->sv, s->sv, sizeof s->sv, err);
+  if (!rc && a->ap) rc = name_arg("ap", a->ap, s->ap, sizeof s->ap, err);
+  if (!rc && a->e) rc = name_arg("e", a->e, s->e, sizeof s->e, err);
   /* a constants file's s= and sv= count for the run that reads it, under
      the keywords (AUTO: keyword arguments override the c-file) */
   char cfile_s[CABLE_NAME_MAX] = "", cfile_sv[CABLE_NAME_MAX] = "";
-  if (!rc && data && data->type == SCRIPT_STRING) {
+  if (!rc && a->name) {
     /* run('name'): c.NAME (when present) and s.NAME, as AUTO */
-    const char *name = script_string_chars(data);
-    if (!ke) s->e[0] = '\0';
-    rc = read_constants_file(r, name, s, 0, err);
+    char name[CABLE_NAME_MAX];
+    rc = name_arg("run", a->name, name, sizeof name, err);
+    if (!rc && !a->e) s->e[0] = '\0';
+    if (!rc) rc = read_constants_file(r, name, s, 0, err);
     if (!rc) snprintf(cfile_sv, sizeof cfile_sv, "%s", s->c.sv);
     if (!rc) rc = read_solutions_file(r, name, s, err);
     if (!rc) snprintf(s->c.s, sizeof s->c.s, "%s", name);
     if (!rc && !s->e[0]) snprintf(s->e, sizeof s->e, "%s", name);
   }
-  if (!rc && kc) {
+  if (!rc && a->c) {
     char name[CABLE_NAME_MAX];
-    rc = kw_string(kc, name, sizeof name, err);
+    rc = name_arg("c", a->c, name, sizeof name, err);
     if (!rc) rc = read_constants_file(r, name, s, 1, err);
-    if (!rc && ke) snprintf(s->e, sizeof s->e, "%s", script_string_chars(&ke->value));
+    if (!rc && a->e) snprintf(s->e, sizeof s->e, "%s", a->e);
     if (!rc) {
       snprintf(cfile_s, sizeof cfile_s, "%s", s->c.s);
       snprintf(cfile_sv, sizeof cfile_sv, "%s", s->c.sv);
     }
   }
-  if (!rc && ks) {
+  int has_start = a->sol_branch || a->nbranch > 0 || a->name;
+  if (!rc && a->s) {
     char name[CABLE_NAME_MAX];
-    rc = kw_string(ks, name, sizeof name, err);
+    rc = name_arg("s", a->s, name, sizeof name, err);
     if (!rc) rc = read_solutions_file(r, name, s, err);
     if (!rc) snprintf(s->c.s, sizeof s->c.s, "%s", name);
-  } else if (!rc && cfile_s[0] && !data) {
+  } else if (!rc && cfile_s[0] && !has_start) {
     rc = read_solutions_file(r, cfile_s, s, err);   /* an explicit start wins over the file's s= */
   } else if (!rc && !s->sf) {
     s->c.s[0] = '\0';
@@ -404,17 +334,10 @@ static int build_setup(cable_replay *r, const script_value *data, const script_k
   int npar;
   rp_problem p;
   rc = problem_names(r, s->e, &p, &parnames, &npar, err);
-  for (int i = 0; kw && i < kw->n && !rc; i++) {
-    const script_kwarg *k = &kw->items[i];
-    if (k == ke || k == kc || k == ks || strcmp(k->name, "sv") == 0 || strcmp(k->name, "ap") == 0) continue;
-    char text[4200];
-    rc = kw_text(k, text, sizeof text, err);
-    if (!rc) rc = cable_constants_parse_override(text, &s->c, &s->names, parnames, npar, err);
-  }
-  for (int i = 0; i < nover && !rc; i++) {
-    rc = cable_constants_parse_override(over[i], &s->c, &s->names, parnames, npar, err);
-    if (rc && err && !err->file[0]) {
-      snprintf(err->file, sizeof err->file, "<command line>");
+  for (int i = 0; i < a->nover && !rc; i++) {
+    rc = cable_constants_parse_override(a->over[i], &s->c, &s->names, parnames, npar, err);
+    if (rc && err && !err->file[0] && a->over_file) {
+      snprintf(err->file, sizeof err->file, "%s", a->over_file);
       err->line = 0;   /* the message quotes the argument */
     }
   }
@@ -447,6 +370,9 @@ typedef struct collector {
   FILE *diag;
   int rc;
   int tty;          /* stderr is a terminal: show the progress line */
+  int (*interrupt)(void *ctx);   /* the session's interrupt check (NULL: none) */
+  void *interrupt_ctx;
+  int interrupted;
 } collector;
 
 static double now_seconds(void)
@@ -472,6 +398,8 @@ static int collect_point(void *ctx, const cable_point *pt)
   progress(c, pt);
   if (c->diag && pt->note) fprintf(c->diag, "%s\n", pt->note);
   /* a labelled point's solution comes next, with the same point: add both then */
+  if (c->interrupt && c->interrupt(c->interrupt_ctx)) c->interrupted = 1;
+  if (c->interrupted) return 1;   /* the engine stops here (CABLE_ERR_INTERRUPTED) */
   if (pt->lab > 0) return 0;
   if (!c->rc) c->rc = rp_branch_add(c->b, pt, NULL);
   return c->rc;
@@ -498,7 +426,7 @@ static const char *par_name(const cable_names *n, int k, char *buf, size_t len)
 }
 
 /* AUTO prints every labelled point of a run; so does the host. */
-static void log_branch(const cable_replay *r, const rp_branch *b, int status, const char *why, double seconds)
+static void log_branch(const cable_session *r, const rp_branch *b, int status, const char *why, double seconds)
 {
   FILE *f = rp_log(r);
   char nm[64];
@@ -531,7 +459,7 @@ static void log_branch(const cable_replay *r, const rp_branch *b, int status, co
   fprintf(f, "\n");
 }
 
-static int engine_run(cable_replay *r, rp_setup *s, rp_branch **out, cable_error *err)
+static int engine_run(cable_session *r, rp_setup *s, rp_branch **out, cable_error *err)
 {
   *out = NULL;
   rp_problem prob;
@@ -554,7 +482,8 @@ static int engine_run(cable_replay *r, rp_setup *s, rp_branch **out, cable_error
   }
   int ibr = ++r->next_branch;
   double t_start = now_seconds();
-  collector col = {rp_branch_alloc(ibr, &s->c, &s->names, s->e), r->opt.diag, 0, isatty(fileno(stderr))};
+  collector col = {rp_branch_alloc(ibr, &s->c, &s->names, s->e), r->opt.diag, 0, isatty(fileno(stderr)),
+                   r->opt.interrupt, r->opt.interrupt_ctx, 0};
   if (!col.b) {
     cable_cont_free(cc);
     problem_release(r, &prob);
@@ -570,16 +499,22 @@ static int engine_run(cable_replay *r, rp_setup *s, rp_branch **out, cable_error
   if (!col.rc && st < 0) col.rc = rp_branch_set_end_note(col.b, end_note);
   cable_cont_free(cc);
   problem_release(r, &prob);
+  if (col.tty) fprintf(stderr, "\r%*s\r", 100, "");
   if (col.rc) {
     rp_branch_decref(col.b);
     return cable_error_set(err, CABLE_ERR_ALLOC, NULL, 0, NULL, "out of memory keeping the branch");
+  }
+  if (st == CABLE_ERR_INTERRUPTED) {
+    int npt = col.b->npt;
+    rp_branch_decref(col.b);
+    return cable_error_set(err, st, NULL, 0, NULL, "branch %d interrupted after %d points (nothing written for it)",
+                           ibr, npt);
   }
   if (st < 0 && col.b->npt == 0) {
     rp_branch_decref(col.b);
     return cable_error_set(err, st, NULL, 0, NULL, "no point converged: %s", why[0] ? why : cable_status_message(st));
   }
   /* like AUTO, a branch that ends abnormally (MX) is still a result */
-  if (col.tty) fprintf(stderr, "\r%*s\r", 100, "");
   log_branch(r, col.b, st, why, now_seconds() - t_start);
   *out = col.b;
   return 0;
@@ -587,7 +522,7 @@ static int engine_run(cable_replay *r, rp_setup *s, rp_branch **out, cable_error
 
 /* AUTO's runner keeps the constants of the last run, except the one-off
  * start and save settings. */
-static void remember(cable_replay *r, const rp_setup *s)
+static void remember(cable_session *r, const rp_setup *s)
 {
   r->cur = s->c;
   r->cur.irs = 0;
@@ -599,19 +534,19 @@ static void remember(cable_replay *r, const rp_setup *s)
 
 /* ---- label and branch numbers ------------------------------------------------------- */
 
-static void note_label(cable_replay *r, int lab, int ibr)
+static void note_label(cable_session *r, int lab, int ibr)
 {
   if (lab > r->last_label) r->last_label = lab;
   if (ibr > r->next_branch) r->next_branch = ibr;
 }
 
-static void note_sfile(cable_replay *r, const cable_sfile *sf)
+static void note_sfile(cable_session *r, const cable_sfile *sf)
 {
   for (int i = 0; sf && i < cable_sfile_count(sf); i++) note_label(r, cable_sfile_get(sf, i)->lab, cable_sfile_get(sf, i)->ibr);
 }
 
 /* Labels and branch numbers already in b./s.NAME (when they exist). */
-static int note_files(cable_replay *r, const char *name, cable_error *err)
+static int note_files(cable_session *r, const char *name, cable_error *err)
 {
   char path[1024];
   rp_path(r, "s", name, path, sizeof path);
@@ -637,212 +572,63 @@ static int note_files(cable_replay *r, const char *name, cable_error *err)
  * branch number.  cable also continues after the labels of the files an
  * ap= run appends to (AUTO can repeat a label there), and after every label
  * of the session, so that no s-file receives a label twice. */
-static int continue_numbering(cable_replay *r, const rp_setup *s, cable_error *err)
+static int continue_numbering(cable_session *r, const rp_setup *s, cable_error *err)
 {
   note_sfile(r, s->sf);
   return s->ap[0] ? note_files(r, s->ap, err) : 0;
 }
 
-static int run_with(cable_replay *r, const script_value *start, const script_kwargs *kw, int nover,
-                    const char *const *over, script_value *out, cable_error *err)
+int cable_session_run(cable_session *r, const cable_run_args *a, cable_branch **out, cable_error *err)
 {
   rp_setup s;
   rp_branch *b = NULL;
-  int rc = build_setup(r, start, kw, nover, over, &s, err);
+  *out = NULL;
+  int rc = build_setup(r, a, &s, err);
   if (!rc) rc = continue_numbering(r, &s, err);
   if (!rc) rc = engine_run(r, &s, &b, err);
-  rp_result *res = NULL;
-  if (!rc) {
-    remember(r, &s);
-    res = rp_result_alloc(1);
-    if (res) res->br[0] = b;
-    else rp_branch_decref(b);
-    rc = wrap_result(r, res, out, err);
-  }
-  if (!rc && s.sv[0]) rc = rp_result_write(r, res, s.sv, 0, err);
-  if (!rc && s.ap[0]) rc = rp_result_write(r, res, s.ap, 1, err);
+  if (!rc) remember(r, &s);
+  rp_result res = {1, &b};
+  if (!rc && s.sv[0]) rc = rp_result_write(r, &res, s.sv, 0, err);
+  if (!rc && s.ap[0]) rc = rp_result_write(r, &res, s.ap, 1, err);
   if (!rc && (s.sv[0] || s.ap[0]))
     fprintf(rp_log(r), "  %s b.%s, s.%s, d.%s\n", s.sv[0] ? "saved to" : "appended to", s.sv[0] ? s.sv : s.ap,
             s.sv[0] ? s.sv : s.ap, s.sv[0] ? s.sv : s.ap);
   setup_free(&s);
+  if (rc) rp_branch_decref(b);
+  else *out = b;
   return rc;
 }
 
-static int rp_run(void *ctx, const script_value *start, const script_kwargs *kw, script_value *out,
-                  cable_error *err)
+/* ---- files: save, load, merge, relabel ------------------------------------------------ */
+
+int cable_session_save(cable_session *r, cable_branch *const *branches, int n, int sol_index, const char *name,
+                       int append, cable_error *err)
 {
-  return run_with(ctx, start, kw, 0, NULL, out, err);
-}
-
-int cable_replay_run_cli(cable_replay *r, const script_kwargs *names, int nover, const char *const *overrides,
-                         cable_error *err)
-{
-  script_value out = script_none();
-  int rc = run_with(r, NULL, names, nover, overrides, &out, err);
-  script_value_release(&out);
-  return rc;
-}
-
-/* ---- label selection, iteration, '+' ---------------------------------------------- */
-
-static int rp_select(void *ctx, const script_value *result, const script_value *spec, script_value *out,
-                     cable_error *err)
-{
-  cable_replay *r = ctx;
-  const rp_result *res = as_result(result, "label selection", err);
-  if (!res) return CABLE_ERR_INPUT;
-  long lab = 0;
-  int type = 0, nth = 0, list = 0;
-  char key[64] = "";
-  if (!spec) {
-    list = 1;
-  } else if (spec->type == SCRIPT_NUMBER) {
-    if (script_value_to_long(spec, &lab) || lab <= 0)
-      return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, NULL, "a label number must be a positive integer");
-    snprintf(key, sizeof key, "%ld", lab);
-  } else {
-    const char *t = script_string_chars(spec);
-    snprintf(key, sizeof key, "%s", t);
-    if (cable_label_spec_parse(t, &type, &nth) != 0) {
-      type = cable_type_code(t);
-      list = 1;
-      if (!type)
-        return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, key,
-                               "not a label: use a number, a type (BP, LP, UZ, EP, MX) or a type and count (BP1)");
-    }
-  }
-  int rc = list ? script_list_new(out) : 0;
-  for (int k = 0; k < res->nbr && !rc; k++)
-    for (int i = 0; i < res->br[k]->nsol && !rc; i++) {
-      const cable_solution *s = res->br[k]->sol[i];
-      int match = !spec || (lab ? s->lab == lab : cable_type_base(s->itp) == type);
-      if (!match || (!list && nth > 1 && --nth > 0)) continue;
-      if (!list) return wrap_solution(r, res->br[k], i, out, err);
-      script_value v;
-      rc = wrap_solution(r, res->br[k], i, &v, err);
-      if (!rc && script_list_append(out, v)) rc = cable_error_set(err, CABLE_ERR_ALLOC, NULL, 0, NULL, "out of memory");
-    }
-  if (!list && !rc) return cable_error_set(err, CABLE_ERR_NOTFOUND, NULL, 0, key, "no such label in the result");
-  return rc;
-}
-
-static int rp_add(void *ctx, const script_value *a, const script_value *b, script_value *out, cable_error *err)
-{
-  cable_replay *r = ctx;
-  const rp_result *x = as_result(a, "'+'", err), *y = x ? as_result(b, "'+'", err) : NULL;
-  if (!x || !y) return CABLE_ERR_INPUT;
-  rp_result *res = rp_result_alloc(x->nbr + y->nbr);
-  if (!res) return cable_error_set(err, CABLE_ERR_ALLOC, NULL, 0, NULL, "out of memory");
-  for (int k = 0; k < x->nbr + y->nbr; k++) {
-    rp_branch *br = k < x->nbr ? x->br[k] : y->br[k - x->nbr];
-    br->refs++;
-    res->br[k] = br;
-  }
-  return wrap_result(r, res, out, err);
-}
-
-static int branch_result(cable_replay *r, rp_branch *b, script_value *out, cable_error *err)
-{
-  rp_result *res = rp_result_alloc(1);
-  if (res) {
-    b->refs++;
-    res->br[0] = b;
-  }
-  return wrap_result(r, res, out, err);
-}
-
-static int rp_items(void *ctx, const script_value *h, script_value *list, cable_error *err)
-{
-  cable_replay *r = ctx;
-  const rp_result *res = as_result(h, "iteration", err);
-  if (!res) return CABLE_ERR_INPUT;
-  int rc = script_list_new(list);
-  for (int k = 0; k < res->nbr && !rc; k++) {
-    script_value v;
-    rc = branch_result(r, res->br[k], &v, err);
-    if (!rc && script_list_append(list, v)) rc = cable_error_set(err, CABLE_ERR_ALLOC, NULL, 0, NULL, "out of memory");
-  }
-  return rc;
-}
-
-static int rp_getitem(void *ctx, const script_value *h, const script_value *key, script_value *out,
-                      cable_error *err)
-{
-  cable_replay *r = ctx;
-  long i;
-  if (script_handle_kind(h) == SCRIPT_HANDLE_RESULT) {
-    const rp_result *res = script_handle_ptr(h);
-    if (script_value_to_long(key, &i)) return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, NULL, "a branch index must be an integer");
-    if (i < 0) i += res->nbr;
-    if (i < 0 || i >= res->nbr)
-      return cable_error_set(err, CABLE_ERR_NOTFOUND, NULL, 0, NULL, "branch index out of range (the result has %d)", res->nbr);
-    return branch_result(r, res->br[i], out, err);
-  }
-  const rp_sol *so = script_handle_ptr(h);
-  const cable_solution *s = so->br->sol[so->isol];
-  const char *k = script_string_chars(key);
-  if (!k) return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, NULL, "a solution is indexed by a name ('T', 'LAB', 'PAR(3)')");
-  int idx = -1;
-  if (strcmp(k, "LAB") == 0) *out = script_integer(s->lab);
-  else if (strcmp(k, "BR") == 0) *out = script_integer(s->ibr);
-  else if (strcmp(k, "PT") == 0) *out = script_integer(s->ntot);
-  else if (strcmp(k, "TY") == 0) return script_string_new(out, cable_type_name(s->itp), strlen(cable_type_name(s->itp)));
-  else if (sscanf(k, "PAR(%d)", &idx) == 1 && idx >= 1 && idx <= s->npar) *out = script_number(s->par[idx - 1]);
-  else if ((idx = cable_names_par_index(&so->br->names, k, NULL, 0)) >= 0 && idx < s->npar) *out = script_number(s->par[idx]);
-  else return cable_error_set(err, CABLE_ERR_NOTFOUND, NULL, 0, k, "no such parameter (names: the problem's parnames, PAR(k), LAB, BR, PT, TY)");
-  return 0;
-}
-
-static void rp_describe(void *ctx, const script_value *h, char *buf, size_t len)
-{
-  (void)ctx;
-  if (script_handle_kind(h) == SCRIPT_HANDLE_RESULT) {
-    const rp_result *res = script_handle_ptr(h);
-    int nsol = 0;
-    for (int k = 0; k < res->nbr; k++) nsol += res->br[k]->nsol;
-    snprintf(buf, len, "<result: %d branch%s, %d labelled solution%s>", res->nbr, res->nbr == 1 ? "" : "es", nsol,
-             nsol == 1 ? "" : "s");
-  } else {
-    const rp_sol *so = script_handle_ptr(h);
-    const cable_solution *s = so->br->sol[so->isol];
-    const char *ty = cable_type_name(s->itp);
-    snprintf(buf, len, "<solution %s label %d, branch %d>", ty[0] ? ty : "-", s->lab, s->ibr);
-  }
-}
-
-static void rp_print(void *ctx, const char *line)
-{
-  cable_replay *r = ctx;
-  fprintf(rp_log(r), "%s\n", line);
-}
-
-/* ---- files: save, load, merge, relabel, clean ------------------------------------------ */
-
-static int rp_save(void *ctx, const script_value *data, const char *name, cable_error *err)
-{
-  cable_replay *r = ctx;
-  int rc;
-  if (script_handle_kind(data) == SCRIPT_HANDLE_SOLUTION) {
+  char nm[CABLE_NAME_MAX];
+  int rc = name_arg("save", name, nm, sizeof nm, err);
+  if (rc) return rc;
+  if (sol_index >= 0) {
     /* one solution: a one-point result */
-    const rp_sol *so = script_handle_ptr(data);
-    rp_branch *b = rp_branch_alloc(so->br->ibr, &so->br->c, &so->br->names, so->br->e);
-    const cable_point *pt = rp_sol_point(so->br, so->isol);
-    rp_result *res = rp_result_alloc(1);
-    rc = b && pt && res ? rp_branch_add(b, pt, so->br->sol[so->isol]) : CABLE_ERR_ALLOC;
-    if (res) res->br[0] = b;
-    else rp_branch_decref(b);
-    if (!rc) rc = rp_result_write(r, res, name, 0, err);
+    const rp_branch *src = n > 0 ? branches[0] : NULL;
+    if (!src || sol_index >= src->nsol)
+      return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, NULL, "no such solution in the branch");
+    rp_branch *b = rp_branch_alloc(src->ibr, &src->c, &src->names, src->e);
+    const cable_point *pt = rp_sol_point(src, sol_index);
+    rc = b && pt ? rp_branch_add(b, pt, src->sol[sol_index]) : CABLE_ERR_ALLOC;
+    rp_result one = {1, &b};
+    if (!rc) rc = rp_result_write(r, &one, nm, append, err);
     else cable_error_set(err, rc, NULL, 0, NULL, "out of memory");
-    rp_result_free(res);
+    rp_branch_decref(b);
   } else {
-    rc = rp_result_write(r, script_handle_ptr(data), name, 0, err);
+    rp_result res = {n, (rp_branch **)branches};
+    rc = rp_result_write(r, &res, nm, append, err);
   }
-  if (!rc) fprintf(rp_log(r), "  saved to b.%s, s.%s, d.%s\n", name, name, name);
+  if (!rc) fprintf(rp_log(r), "  %s b.%s, s.%s, d.%s\n", append ? "appended to" : "saved to", nm, nm, nm);
   return rc;
 }
 
 /* Branch numbers and labels of files read in: new runs continue after them. */
-static void note_result(cable_replay *r, const rp_result *res)
+static void note_result(cable_session *r, const rp_result *res)
 {
   for (int k = 0; k < res->nbr; k++) {
     note_label(r, 0, res->br[k]->ibr);
@@ -850,38 +636,59 @@ static void note_result(cable_replay *r, const rp_result *res)
   }
 }
 
-static int read_named(cable_replay *r, const char *name, rp_result **res, cable_error *err)
+static int read_named(cable_session *r, const char *name, rp_result **res, cable_error *err)
 {
   rp_setup s;
   memset(&s, 0, sizeof s);
   s.c = r->cur;
   s.names = r->cur_names;
   snprintf(s.e, sizeof s.e, "%s", r->cur_e);
-  int rc = read_constants_file(r, name, &s, 0, err);
-  if (!rc) rc = rp_result_read(r, name, &s.c, &s.names, s.e, res, err);
+  char nm[CABLE_NAME_MAX];
+  int rc = name_arg("loadbd", name, nm, sizeof nm, err);
+  if (!rc) rc = read_constants_file(r, nm, &s, 0, err);
+  if (!rc) rc = rp_result_read(r, nm, &s.c, &s.names, s.e, res, err);
   if (!rc) note_result(r, *res);
   return rc;
 }
 
-static int rp_load(void *ctx, int what, const script_value *data, const script_kwargs *kw, script_value *out,
-                   cable_error *err)
+/* The branches of a result handed over to a caller's list (the result freed). */
+static int result_to_list(rp_result *res, cable_branch ***out, int *n, cable_error *err)
 {
-  cable_replay *r = ctx;
-  if (what == SCRIPT_LOAD_RESULT) {
-    if (!data || data->type != SCRIPT_STRING)
-      return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, NULL, "loadbd needs a name (files b.NAME, s.NAME)");
-    if (kw && kw->n) return cable_error_set(err, CABLE_ERR_UNSUPPORTED, NULL, 0, kw->items[0].name, "loadbd takes no keywords");
-    rp_result *res = NULL;
-    int rc = read_named(r, script_string_chars(data), &res, err);
-    return rc ? rc : wrap_result(r, res, out, err);
+  *out = calloc((size_t)(res->nbr > 0 ? res->nbr : 1), sizeof **out);
+  if (!*out) {
+    rp_result_free(res);
+    return cable_error_set(err, CABLE_ERR_ALLOC, NULL, 0, NULL, "out of memory");
   }
-  /* load(...): a solution with its constants; also the runner's new state */
+  *n = res->nbr;
+  for (int k = 0; k < res->nbr; k++) {
+    (*out)[k] = res->br[k];
+    res->br[k] = NULL;
+  }
+  res->nbr = 0;
+  rp_result_free(res);
+  return 0;
+}
+
+int cable_session_loadbd(cable_session *r, const char *name, cable_branch ***out, int *n, cable_error *err)
+{
+  rp_result *res = NULL;
+  *out = NULL;
+  *n = 0;
+  int rc = read_named(r, name, &res, err);
+  return rc ? rc : result_to_list(res, out, n, err);
+}
+
+int cable_session_load(cable_session *r, const cable_run_args *a, cable_branch **out, cable_error *err)
+{
   rp_setup s;
-  int rc = build_setup(r, data, kw, 0, NULL, &s, err);
+  *out = NULL;
+  int rc = build_setup(r, a, &s, err);
   /* AUTO's load('name') / load(s='name') without IRS: the file's last solution */
   int n = s.sf ? cable_sfile_count(s.sf) : 0;
   if (!rc && !s.start && n > 0 && s.c.irs == 0 && !s.c.irs_name[0]) s.start = cable_sfile_get(s.sf, n - 1);
-  if (!rc && s.start) {
+  if (!rc && !s.start)
+    rc = cable_error_set(err, CABLE_ERR_NOTFOUND, NULL, 0, "load", "no solution to load (give a start, a name or s=)");
+  if (!rc) {
     rp_branch *b = rp_branch_alloc(s.start->ibr, &s.c, &s.names, s.e);
     cable_point pt;
     memset(&pt, 0, sizeof pt);
@@ -895,98 +702,83 @@ static int rp_load(void *ctx, int what, const script_value *data, const script_k
     pt.icp = s.c.nicp > 0 ? s.c.icp : s.start->icp;
     pt.par = s.start->par;
     rc = b ? rp_branch_add(b, &pt, s.start) : CABLE_ERR_ALLOC;
-    if (!rc) rc = wrap_solution(r, b, 0, out, err);
-    else cable_error_set(err, rc, NULL, 0, NULL, "out of memory");
-    rp_branch_decref(b);
+    if (rc) {
+      cable_error_set(err, rc, NULL, 0, NULL, "out of memory");
+      rp_branch_decref(b);
+    } else {
+      *out = b;
+    }
   }
   if (!rc) remember(r, &s);
   setup_free(&s);
   return rc;
 }
 
-static int transform(cable_replay *r, const script_value *data, script_value *out, cable_error *err,
-                     int (*fn)(const rp_result *, rp_result **))
+int cable_session_transform(cable_session *r, cable_branch *const *in, int n, int relabel, cable_branch ***out,
+                            int *nout, cable_error *err)
 {
-  rp_result *res = NULL;
-  if (data->type == SCRIPT_STRING) {   /* files rewritten in place */
-    const char *name = script_string_chars(data);
-    int rc = read_named(r, name, &res, err);
-    rp_result *t = NULL;
-    if (!rc && (rc = fn(res, &t))) cable_error_set(err, rc, NULL, 0, NULL, "out of memory");
-    if (!rc) rc = rp_result_write(r, t, name, 0, err);
-    rp_result_free(res);
-    rp_result_free(t);
-    return rc;
-  }
-  const rp_result *in = as_result(data, "merge/relabel", err);
-  if (!in) return CABLE_ERR_INPUT;
-  int rc = fn(in, &res);
+  (void)r;
+  rp_result view = {n, (rp_branch **)in}, *res = NULL;
+  *out = NULL;
+  *nout = 0;
+  int rc = relabel ? rp_result_relabel(&view, &res) : rp_result_merge(&view, &res);
   if (rc) return cable_error_set(err, rc, NULL, 0, NULL, "out of memory");
-  return wrap_result(r, res, out, err);
+  return result_to_list(res, out, nout, err);
 }
 
-static int rp_merge(void *ctx, const script_value *data, script_value *out, cable_error *err)
+int cable_session_transform_files(cable_session *r, const char *name, int relabel, cable_error *err)
 {
-  return transform(ctx, data, out, err, rp_result_merge);
+  rp_result *res = NULL, *t = NULL;
+  int rc = read_named(r, name, &res, err);
+  if (!rc && (rc = relabel ? rp_result_relabel(res, &t) : rp_result_merge(res, &t)))
+    cable_error_set(err, rc, NULL, 0, NULL, "out of memory");
+  if (!rc) rc = rp_result_write(r, t, name, 0, err);
+  rp_result_free(res);
+  rp_result_free(t);
+  return rc;
 }
 
-static int rp_relabel(void *ctx, const script_value *data, script_value *out, cable_error *err)
+void cable_session_path(const cable_session *r, const char *type, const char *name, char *buf, size_t len)
 {
-  return transform(ctx, data, out, err, rp_result_relabel);
+  if (type) {
+    rp_path(r, type, name, buf, len);
+    return;
+  }
+  int rel = name[0] != '/' && r->opt.dir && r->opt.dir[0];
+  snprintf(buf, len, "%s%s%s", rel ? r->opt.dir : "", rel ? "/" : "", name);
 }
 
-static int rp_clean(void *ctx, cable_error *err)
+void cable_branch_incref(cable_branch *b)
 {
-  (void)err;
-  fprintf(rp_log(ctx), "  clean: nothing to delete (cable writes no fort.* or object files)\n");
-  return 0;
+  b->refs++;
+}
+
+void cable_branch_decref(cable_branch *b)
+{
+  rp_branch_decref(b);
+}
+
+void cable_branch_list_free(cable_branch **list, int n)
+{
+  for (int k = 0; list && k < n; k++) rp_branch_decref(list[k]);
+  free(list);
 }
 
 /* ---- session ---------------------------------------------------------------------- */
 
-cable_replay *cable_replay_alloc(const cable_replay_options *opt)
+cable_session *cable_session_alloc(const cable_session_options *opt)
 {
-  cable_replay *r = calloc(1, sizeof *r);
+  cable_session *r = calloc(1, sizeof *r);
   if (!r) return NULL;
   if (opt) r->opt = *opt;
   cable_constants_init(&r->cur);
   cable_names_init(&r->cur_names);
-  script_host *h = &r->host;
-  h->ctx = r;
-  h->run = rp_run;
-  h->select = rp_select;
-  h->add = rp_add;
-  h->items = rp_items;
-  h->getitem = rp_getitem;
-  h->load = rp_load;
-  h->save = rp_save;
-  h->merge = rp_merge;
-  h->relabel = rp_relabel;
-  h->clean = rp_clean;
-  h->describe = rp_describe;
-  h->print = rp_print;
-  h->release = rp_release;
-  h->call = rp_call;
   return r;
 }
 
-void cable_replay_free(cable_replay *r)
+void cable_session_free(cable_session *r)
 {
   if (!r) return;
   for (int i = 0; i < r->nplugins; i++) cable_plugin_close(r->plugin[i]);
   free(r);
-}
-
-const script_host *cable_replay_host(cable_replay *r)
-{
-  return &r->host;
-}
-
-int cable_replay_run_file(const char *path, const cable_replay_options *opt, cable_error *err)
-{
-  cable_replay *r = cable_replay_alloc(opt);
-  if (!r) return cable_error_set(err, CABLE_ERR_ALLOC, path, 0, "", "out of memory");
-  int rc = script_run_file(path, &r->host, err);
-  cable_replay_free(r);
-  return rc;
 }

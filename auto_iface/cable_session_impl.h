@@ -1,11 +1,11 @@
-/* Internals of the engine host (script_host_cable.c, script_host_store.c). */
+/* Internals of the session (cable_session.c, cable_session_store.c). */
 #ifndef CABLE_SCRIPT_HOST_IMPL_H
 #define CABLE_SCRIPT_HOST_IMPL_H
 
 #include "cable_output.h"
 #include "names.h"
 #include "plugin_loader.h"
-#include "script_host_cable.h"
+#include "cable_session.h"
 
 /* One computed point (a b-file row) with its own copies of the arrays. */
 typedef struct rp_point {
@@ -45,9 +45,8 @@ typedef struct rp_sol {
 
 #define RP_MAX_PLUGINS 16
 
-struct cable_replay {
-  cable_replay_options opt;
-  script_host host;
+struct cable_session {
+  cable_session_options opt;
   /* AUTO's runner state: the constants, names and problem of the last run */
   cable_constants cur;
   cable_names cur_names;
@@ -58,11 +57,7 @@ struct cable_replay {
   cable_plugin *plugin[RP_MAX_PLUGINS];
 };
 
-/* ---- scene functions (script_host_analysis.c): analyze(), compare() ---------------- */
-int rp_call(void *ctx, const char *name, int nargs, const script_value *args, const script_kwargs *kw,
-            script_value *out, cable_error *err);
-
-/* ---- store (script_host_store.c) ------------------------------------------------- */
+/* ---- store (cable_session_store.c) ------------------------------------------------- */
 
 rp_branch *rp_branch_alloc(int ibr, const cable_constants *c, const cable_names *names, const char *e);
 void rp_branch_decref(rp_branch *b);   /* frees at zero; NULL is a no-op */
@@ -79,15 +74,15 @@ void rp_result_free(rp_result *r);     /* drops its branch references */
 const cable_point *rp_sol_point(const rp_branch *b, int isol);
 
 /* The path of a file TYPE.NAME ("c", "s", "b") in the session directory. */
-void rp_path(const cable_replay *r, const char *type, const char *name, char *buf, size_t len);
+void rp_path(const cable_session *r, const char *type, const char *name, char *buf, size_t len);
 
 /* b./s./d.NAME from a result (append: AUTO's ap). */
-int rp_result_write(const cable_replay *r, const rp_result *res, const char *name, int append,
+int rp_result_write(const cable_session *r, const rp_result *res, const char *name, int append,
                     cable_error *err);
 /* A result from s.NAME (and b.NAME when present, for the norms of the
  * labelled rows): one branch per branch number, labelled points only.
  * c/names: the constants the branches get. */
-int rp_result_read(const cable_replay *r, const char *name, const cable_constants *c,
+int rp_result_read(const cable_session *r, const char *name, const cable_constants *c,
                    const cable_names *names, const char *e, rp_result **out, cable_error *err);
 
 /* AUTO's merge: a branch that starts where the previous one started (the two
