@@ -143,7 +143,7 @@ static PyObject *branch_solution(PyObject *self, PyObject *arg)
   for (int k = 0; icp && k < s->nfpr; k++) PyList_SET_ITEM(icp, k, PyLong_FromLong(s->icp[k] + 1));
   if (par && t && u && icp) {
     memcpy(PyArray_DATA((PyArrayObject *)u), s->u, (size_t)(n * s->ndim) * sizeof(double));
-    d = Py_BuildValue("{sisisissisOsOsOsisisOsd}", "LAB", s->lab, "BR", s->ibr, "PT", s->ntot, "TY",
+    d = Py_BuildValue("{sisisisssisOsOsOsisisOsd}", "LAB", s->lab, "BR", s->ibr, "PT", s->ntot, "TY",
                       cable_type_name(s->itp), "itp", s->itp, "par", par, "t", t, "u", u, "ntst", s->ntst, "ncol",
                       s->ncol, "icp", icp, "err", s->err_est);
   }

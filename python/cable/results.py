@@ -168,6 +168,12 @@ class Solution:
             return False
         return True
 
+    def __eq__(self, other):
+        return isinstance(other, Solution) and self._br is other._br and self._i == other._i
+
+    def __hash__(self):
+        return hash((id(self._br), self._i))
+
     def __repr__(self):
         return '<solution %s label %d, branch %d, point %d>' % (self._ty or '-', self._lab, self._ibr, self._pt)
 

@@ -59,13 +59,14 @@ def py2_prints(text):
                     j += 1
                 last = toks[j - 1] if j - 1 > k else None
                 end = toks[j] if j < len(toks) else None
-                edits.append((t.end[0], t.end[1], '('))
+                gap = nxt.start[1] if nxt and nxt.start[0] == t.end[0] else t.end[1]
+                edits.append((t.end[0], t.end[1], gap, '('))
                 if last is not None and tokenize.tok_name[last.type] == 'OP' and last.string == ',':
                     edits.append((last.start[0], last.start[1], last.end[1], ", end=' ')"))
                 elif last is not None:
                     edits.append((last.end[0], last.end[1], ')'))
                 else:
-                    edits[-1] = (t.end[0], t.end[1], '()')
+                    edits[-1] = (t.end[0], t.end[1], t.end[1], '()')
                 del end
         if kind not in ('COMMENT', 'NL') or prev is None:
             prev = kind if kind != 'OP' else t.string
