@@ -5,19 +5,34 @@ CC      ?= gcc
 MODE    ?= release
 # The Debian interpreter (another python3 without Debian's numpy may come first on PATH)
 PYTHON  ?= /usr/bin/python3
-PREFIX  ?= /usr/local
 BUILD   := build/$(MODE)
 
-MODULES := continuation auto_iface equations bc graphics
+# Layers, lowest first.  Each folder is compiled with the public headers
+# (include/) and the folders of its own and lower layers only, so an upward
+# #include does not compile (doc/api.md has the picture; tests/test_layers.c
+# checks the sources too).
+LAYERS  := continuation equations bc graphics auto_iface
+MODULES := $(LAYERS)
 WARN    := -Wall -Wextra -Werror -Wshadow -Wpointer-arith -Wcast-align \
            -Wstrict-prototypes -Wmissing-prototypes -Wwrite-strings \
            -Wundef -Wformat=2 -Wvla -Wdouble-promotion -Wnull-dereference
 CSTD    := -std=c11 -D_POSIX_C_SOURCE=200809L
-INCS    := $(addprefix -I,$(MODULES)) -Itests -I/usr/include/suitesparse
+SYSINCS := -I/usr/include/suitesparse
+PUBINC  := -Iinclude
+INCS_continuation := $(PUBINC) -Icontinuation
+INCS_equations    := $(INCS_continuation) -Iequations
+INCS_bc           := $(INCS_equations) -Ibc
+INCS_graphics     := $(INCS_bc) -Igraphics
+INCS_auto_iface   := $(INCS_graphics) -Iauto_iface
+INCS_tests        := $(INCS_auto_iface) -Itests
+# the folder's include path: the first path component of the source
+layer_incs = $(INCS_$(firstword $(subst /, ,$(1)))) $(SYSINCS)
 OPT_release := -O2 -g
 OPT_asan    := -O1 -g -fno-omit-frame-pointer -fsanitize=address,undefined -fno-sanitize-recover=all
 OPT_fuzz    := -O1 -g -fsanitize=fuzzer-no-link,address,undefined
-CFLAGS  := $(CSTD) $(WARN) $(OPT_$(MODE)) $(INCS) -MMD -MP -fPIC -DCABLE_PYTHON='"$(PYTHON)"' $(EXTRA_CFLAGS)
+CFLAGS  := $(CSTD) $(WARN) $(OPT_$(MODE)) -MMD -MP -fPIC $(EXTRA_CFLAGS)
+# the library exports only what include/cable/ declares CABLE_API
+LIBFLAGS := -fvisibility=hidden
 SAN_LD_asan := -fsanitize=address,undefined
 LDFLAGS := $(SAN_LD_$(MODE)) $(EXTRA_LDFLAGS)
 LIBS    := -lsundials_kinsol -lsundials_sunlinsolklu -lsundials_sunmatrixsparse \
@@ -34,11 +49,15 @@ BENCH_BINS := $(BENCH_SRCS:tests/%.c=$(BUILD)/tests/%)
 PLUGIN_SRCS := $(wildcard tests/plugins/*.c)
 PLUGINS  := $(PLUGIN_SRCS:tests/plugins/%.c=$(BUILD)/plugins/%.so)
 LIBCABLE := $(BUILD)/libcable.a
+LIBSO    := $(BUILD)/libcable.so
+SONAME   := libcable.so.0
+VERSION  := $(shell sed -n 's/^\#define CABLE_VERSION "\(.*\)"/\1/p' include/cable/cable_version.h)
+PREFIX   ?= /usr/local
 DEPS_OK  := build/.deps-ok
 
 # The Python package: python/cable/*.py and the extension cable._cable
-# (auto_iface/pycable_*.c over libcable), put together in $(BUILD)/python
-# where `cable replay` and the tests find it.
+# (auto_iface/pycable_*.c, the public API only, linked with libcable.a), put
+# together in $(BUILD)/python where `cable replay` and the tests find it.
 PY_INC   = $(shell $(PYTHON) -c "import sysconfig; print(sysconfig.get_paths()['include'])")
 NP_INC   = $(shell $(PYTHON) -c "import numpy; print(numpy.get_include())")
 PY_OBJS  := $(PY_SRCS:%.c=$(BUILD)/%.o)
@@ -46,9 +65,9 @@ PYPKG    := $(BUILD)/python/cable
 PY_FILES := $(patsubst python/cable/%,$(PYPKG)/%,$(wildcard python/cable/*.py))
 PY_SO    := $(PYPKG)/_cable.so
 
-.PHONY: all check asan valgrind demo scenes bench stress fuzz clean help deps tests-build python install
+.PHONY: all lib python install check asan valgrind demo scenes bench stress fuzz clean help deps tests-build
 
-all: cable python
+all: cable $(LIBSO) python
 
 # Dependencies come from Debian; the script installs only what is missing.
 $(DEPS_OK): scripts/install-deps.sh
@@ -56,13 +75,32 @@ $(DEPS_OK): scripts/install-deps.sh
 	@mkdir -p build && touch $@
 deps: $(DEPS_OK)
 
-$(BUILD)/%.o: %.c | $(DEPS_OK)
+$(LIB_OBJS): $(BUILD)/%.o: %.c | $(DEPS_OK)
 	@mkdir -p $(dir $@)
-	$(CC) $(CFLAGS) -c $< -o $@
+	$(CC) $(CFLAGS) $(LIBFLAGS) $(call layer_incs,$<) -c $< -o $@
 
+# The extension sees the public headers and its own folder only.
 $(PY_OBJS): $(BUILD)/%.o: %.c | $(DEPS_OK)
 	@mkdir -p $(dir $@)
-	$(CC) $(CFLAGS) -isystem $(PY_INC) -isystem $(NP_INC) -c $< -o $@
+	$(CC) $(CFLAGS) $(PUBINC) -Iauto_iface -isystem $(PY_INC) -isystem $(NP_INC) -c $< -o $@
+
+$(BUILD)/auto_iface/cable_main.o: EXTRA_DEFS := -DCABLE_PYTHON='"$(PYTHON)"'
+
+$(BUILD)/%.o: %.c | $(DEPS_OK)
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) $(EXTRA_DEFS) $(call layer_incs,$<) -c $< -o $@
+
+# The static library serves the test programs (they reach private functions);
+# programs and plug-ins outside the tree use libcable.so.
+$(LIBCABLE): $(LIB_OBJS)
+	@rm -f $@
+	ar rcs $@ $^
+
+$(LIBSO): $(LIB_OBJS)
+	$(CC) $(LDFLAGS) -shared -Wl,-soname,$(SONAME) $^ $(LIBS) -o $@
+	@ln -sf libcable.so $(BUILD)/$(SONAME)
+
+lib: $(LIBSO) $(LIBCABLE)
 
 $(PY_SO): $(PY_OBJS) $(LIBCABLE)
 	@mkdir -p $(dir $@)
@@ -74,17 +112,6 @@ $(PYPKG)/%.py: python/cable/%.py
 
 python: $(PY_SO) $(PY_FILES)
 
-# cable and the package under PREFIX: bin/cable finds PREFIX/lib/cable/python
-install: cable python
-	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/lib/cable/python/cable
-	install -m 755 $(BUILD)/cable $(DESTDIR)$(PREFIX)/bin/cable
-	install -m 644 $(PY_FILES) $(DESTDIR)$(PREFIX)/lib/cable/python/cable/
-	install -m 755 $(PY_SO) $(DESTDIR)$(PREFIX)/lib/cable/python/cable/
-
-$(LIBCABLE): $(LIB_OBJS)
-	@rm -f $@
-	ar rcs $@ $^
-
 $(BUILD)/cable: $(BUILD)/auto_iface/cable_main.o $(LIBCABLE)
 	$(CC) $(LDFLAGS) -rdynamic $^ $(LIBS) -o $@
 
@@ -94,11 +121,12 @@ cable: $(BUILD)/cable
 $(BUILD)/tests/%: $(BUILD)/tests/%.o $(LIBCABLE)
 	$(CC) $(LDFLAGS) -rdynamic $^ $(LIBS) -o $@
 
+# Plug-ins see the public headers only.
 $(BUILD)/plugins/%.so: tests/plugins/%.c | $(DEPS_OK)
 	@mkdir -p $(dir $@)
-	$(CC) $(CFLAGS) -shared $< -o $@
+	$(CC) $(CFLAGS) $(PUBINC) -Itests/plugins -shared $< -o $@
 
-tests-build: $(TEST_BINS) $(PLUGINS) $(BUILD)/cable cable python
+tests-build: $(TEST_BINS) $(PLUGINS) $(BUILD)/cable cable $(LIBSO) python
 
 # The README's test command: build and run every test program, one summary line.
 check: tests-build
@@ -131,12 +159,29 @@ stress: cable tests-build
 fuzz:
 	@bash scripts/fuzz.sh
 
+# Headers, library, pkg-config file, cable and its Python package under PREFIX
+# (default /usr/local; bin/cable finds PREFIX/lib/cable/python):
+#   make install PREFIX=$HOME/.local
+#   cc app.c $(pkg-config --cflags --libs cable)
+install: $(LIBSO) $(BUILD)/cable python
+	install -d $(DESTDIR)$(PREFIX)/include/cable $(DESTDIR)$(PREFIX)/lib/pkgconfig $(DESTDIR)$(PREFIX)/bin \
+	  $(DESTDIR)$(PREFIX)/lib/cable/python/cable
+	install -m 644 $(PY_FILES) $(DESTDIR)$(PREFIX)/lib/cable/python/cable/
+	install -m 755 $(PY_SO) $(DESTDIR)$(PREFIX)/lib/cable/python/cable/
+	install -m 644 include/cable/*.h $(DESTDIR)$(PREFIX)/include/cable/
+	install -m 755 $(LIBSO) $(DESTDIR)$(PREFIX)/lib/$(SONAME)
+	ln -sf $(SONAME) $(DESTDIR)$(PREFIX)/lib/libcable.so
+	install -m 755 $(BUILD)/cable $(DESTDIR)$(PREFIX)/bin/cable
+	sed -e 's|@PREFIX@|$(PREFIX)|' -e 's|@VERSION@|$(VERSION)|' cable.pc.in \
+	  > $(DESTDIR)$(PREFIX)/lib/pkgconfig/cable.pc
+
 clean:
 	rm -rf build cable
 
 help:
-	@echo "make            build ./cable and the Python package (build/release/python)"
-	@echo "make install    cable and the package under PREFIX (default /usr/local)"
+	@echo "make            build ./cable, libcable.so and the Python package (build/MODE/python)"
+	@echo "make lib        build build/MODE/libcable.so (and the static libcable.a)"
+	@echo "make install    headers, libcable.so, cable.pc, cable and the Python package under PREFIX"
 	@echo "make check      build and run the test suite (summary: N passed, M failed)"
 	@echo "make demo       build and run the main job (the paper's knot scene)"
 	@echo "make asan       tests under AddressSanitizer + UBSan"

@@ -4,13 +4,12 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "aufile.h"
-#include "braid_analysis.h"
-#include "braid_resolver.h"
+#include "cable/cable_aufile.h"
+#include "cable/cable_analysis.h"
 #include "braid_state.h"
-#include "cable_status.h"
-#include "names.h"
-#include "cable_session.h"
+#include "cable/cable_names.h"
+#include "cable/cable_session.h"
+#include "cable/cable_status.h"
 
 /* The run's keywords that take names: their slot in the arguments, or NULL. */
 static const char **name_slot(cable_run_args *a, const char *key)
@@ -86,7 +85,7 @@ int cable_cmd_run(int argc, char **argv, cable_error *err)
     cable_session_options o;
     cable_session_options_init(&o);
     o.dir = ".";
-    o.problems = cable_braid_resolver();
+    o.problems = cable_session_braid_problems();
     cable_session *r = cable_session_alloc(&o);
     a.nover = nover;
     a.over = over;

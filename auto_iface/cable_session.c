@@ -1,7 +1,7 @@
 /* The session: AUTO-07p's runner on cable's continuation engine, constants
  * parser and b./s./d. files.  Branches live in memory (cable_session_store.c);
  * files are written only by sv=, ap=, save, and merge/relabel of file names. */
-#include "cable_session.h"
+#include "cable/cable_session.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -11,14 +11,13 @@
 #include <time.h>
 #include <unistd.h>
 
-#include "aufile.h"
-#include "braid_analysis.h"
+#include "cable/cable_analysis.h"
+#include "cable/cable_aufile.h"
+#include "cable/cable_constants.h"
+#include "cable/cable_cont.h"
+#include "cable/cable_status.h"
 #include "braid_problems.h"
-#include "cable_cont.h"
-#include "cable_status.h"
-#include "constants_parse.h"
 #include "cable_session_impl.h"
-#include "test_problems.h"
 
 void cable_session_options_init(cable_session_options *o)
 {
@@ -90,20 +89,11 @@ static int find_problem(cable_session *r, const char *e, const cable_constants *
     }
     if (rc != CABLE_ERR_NOTFOUND) return rc;
   }
-  static const struct {
-    const char *name;
-    const cable_problem *(*get)(void);
-  } tests[] = {{"bratu", cable_testproblem_bratu},
-               {"bratu_int", cable_testproblem_bratu_int},
-               {"elastica", cable_testproblem_elastica},
-               {"layer", cable_testproblem_layer},
-               {"stiff", cable_testproblem_stiff}};
-  for (size_t i = 0; i < sizeof tests / sizeof tests[0]; i++)
-    if (strcmp(e, tests[i].name) == 0) {
-      out->pb = tests[i].get();
-      return 0;
-    }
-  const cable_problem *braid = braid_problem_find(e);
+  const cable_problem *braid = braid_problem_find(e), *builtin = cable_problem_builtin(e);
+  if (builtin && !braid) {   /* the engine's test problems */
+    out->pb = builtin;
+    return 0;
+  }
   if (braid) {
     if (c && from_stpnt)
       return cable_error_set(err, CABLE_ERR_UNSUPPORTED, NULL, 0, "e",

@@ -2,10 +2,10 @@
 #ifndef CABLE_SCRIPT_HOST_IMPL_H
 #define CABLE_SCRIPT_HOST_IMPL_H
 
-#include "cable_output.h"
-#include "names.h"
-#include "plugin_loader.h"
-#include "cable_session.h"
+#include "cable/cable_names.h"
+#include "cable/cable_output.h"
+#include "cable/cable_plugin.h"
+#include "cable/cable_session.h"
 
 /* One computed point (a b-file row) with its own copies of the arrays. */
 typedef struct rp_point {
@@ -18,7 +18,7 @@ typedef struct rp_point {
 /* One branch: what one run computed, with the constants, names and problem
  * it was computed with.  Immutable once built and shared between results by
  * reference counting. */
-typedef struct rp_branch {
+typedef struct cable_branch {
   long refs;
   int ibr;
   cable_constants c;

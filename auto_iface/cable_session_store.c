@@ -6,8 +6,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "aufile.h"
-#include "cable_status.h"
+#include "cable/cable_aufile.h"
+#include "cable/cable_status.h"
 #include "cable_session_impl.h"
 
 rp_branch *rp_branch_alloc(int ibr, const cable_constants *c, const cable_names *names, const char *e)
@@ -383,4 +383,31 @@ int rp_result_relabel(const rp_result *in, rp_result **out)
   }
   *out = r;
   return 0;
+}
+
+/* ---- what a branch holds (cable_session.h) ------------------------------------------ */
+
+int cable_branch_number(const cable_branch *b) { return b->ibr; }
+int cable_branch_npoints(const cable_branch *b) { return b->npt; }
+int cable_branch_nsolutions(const cable_branch *b) { return b->nsol; }
+const cable_names *cable_branch_names(const cable_branch *b) { return &b->names; }
+const cable_constants *cable_branch_constants(const cable_branch *b) { return &b->c; }
+const char *cable_branch_problem(const cable_branch *b) { return b->e; }
+const char *cable_branch_end_note(const cable_branch *b) { return b->end_note; }
+
+const cable_point *cable_branch_point(const cable_branch *b, int i)
+{
+  return i >= 0 && i < b->npt ? &b->pts[i].pt : NULL;
+}
+
+const cable_solution *cable_branch_solution(const cable_branch *b, int i)
+{
+  return i >= 0 && i < b->nsol ? b->sol[i] : NULL;
+}
+
+const char *cable_branch_solution_note(const cable_branch *b, int i)
+{
+  for (int k = 0; k < b->npt; k++)
+    if (b->pts[k].sol == i) return b->pts[k].note;
+  return NULL;
 }

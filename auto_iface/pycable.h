@@ -1,15 +1,13 @@
-/* Internals of the extension module cable._cable (auto_iface/pycable_*.c). */
+/* Internals of the extension module cable._cable (auto_iface/pycable_*.c).
+ * It uses libcable's public API only (include/cable/). */
 #ifndef CABLE_PYCABLE_H
 #define CABLE_PYCABLE_H
 
 #define PY_SSIZE_T_CLEAN
 #include <Python.h>
 
-#include "cable_error.h"
-#include "cable_session.h"
-#include "cable_session_impl.h"
-#include "cable_status.h"
-#include "names.h"
+#include "cable/cable.h"
+#include "cable/cable_session.h"
 
 /* A Branch object: one reference of a session branch. */
 typedef struct pyc_branch {

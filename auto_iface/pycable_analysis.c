@@ -6,9 +6,6 @@
 
 #include <math.h>
 
-#include "axis_passages.h"
-#include "braid_analysis.h"
-#include "cable_pictures.h"
 
 static int set_num(PyObject *d, const char *key, double x)
 {

@@ -77,11 +77,9 @@ const cable_solution *pyc_solution_arg(PyObject *branch, int i)
     return NULL;
   }
   const cable_branch *b = ((pyc_branch *)branch)->b;
-  if (i < 0 || i >= b->nsol) {
-    PyErr_Format(PyExc_IndexError, "solution %d of a branch with %d", i, b->nsol);
-    return NULL;
-  }
-  return b->sol[i];
+  const cable_solution *s = cable_branch_solution(b, i);
+  if (!s) PyErr_Format(PyExc_IndexError, "solution %d of a branch with %d", i, cable_branch_nsolutions(b));
+  return s;
 }
 
 /* A new 1-d double array copied from x[0..n-1]. */
@@ -97,9 +95,9 @@ static PyObject *branch_points(PyObject *self, PyObject *unused)
 {
   (void)unused;
   const cable_branch *b = ((pyc_branch *)self)->b;
-  npy_intp npt = b->npt, npar = 0;
-  for (int i = 0; i < b->npt; i++)
-    if (b->pts[i].pt.npar > npar) npar = b->pts[i].pt.npar;
+  npy_intp npt = cable_branch_npoints(b), npar = 0;
+  for (int i = 0; i < npt; i++)
+    if (cable_branch_point(b, i)->npar > npar) npar = cable_branch_point(b, i)->npar;
   npy_intp dims[2] = {npt, npar};
   PyObject *par = PyArray_ZEROS(2, dims, NPY_DOUBLE, 0), *l2 = PyArray_SimpleNew(1, &npt, NPY_DOUBLE);
   PyObject *pt = PyArray_SimpleNew(1, &npt, NPY_LONG), *lab = PyArray_SimpleNew(1, &npt, NPY_LONG);
@@ -110,7 +108,7 @@ static PyObject *branch_points(PyObject *self, PyObject *unused)
     long *T = PyArray_DATA((PyArrayObject *)pt), *B = PyArray_DATA((PyArrayObject *)lab);
     long *Y = PyArray_DATA((PyArrayObject *)ty), *R = PyArray_DATA((PyArrayObject *)br);
     for (npy_intp i = 0; i < npt; i++) {
-      const cable_point *p = &b->pts[i].pt;
+      const cable_point *p = cable_branch_point(b, (int)i);
       for (int k = 0; k < p->npar; k++) P[i * npar + k] = p->par[k];
       L[i] = p->l2norm;
       T[i] = p->pt;
@@ -154,26 +152,19 @@ static PyObject *branch_solution(PyObject *self, PyObject *arg)
   return d;
 }
 
-/* The engine's remark on solution i's point (d-file note), or NULL. */
-static const char *solution_note(const cable_branch *b, int i)
-{
-  for (int k = 0; k < b->npt; k++)
-    if (b->pts[k].sol == i) return b->pts[k].note;
-  return NULL;
-}
-
 /* Labels, types and the parameters of the labelled solutions, cheaply:
  * [(LAB, TY, BR, PT, par ndarray, note or None), ...]. */
 static PyObject *branch_labels(PyObject *self, PyObject *unused)
 {
   (void)unused;
   const cable_branch *b = ((pyc_branch *)self)->b;
-  PyObject *out = PyList_New(b->nsol);
-  for (int i = 0; out && i < b->nsol; i++) {
-    const cable_solution *s = b->sol[i];
+  int n = cable_branch_nsolutions(b);
+  PyObject *out = PyList_New(n);
+  for (int i = 0; out && i < n; i++) {
+    const cable_solution *s = cable_branch_solution(b, i);
     PyObject *par = array1(s->par, s->npar);
     PyObject *t = par ? Py_BuildValue("(isiiNz)", s->lab, cable_type_name(s->itp), s->ibr, s->ntot, par,
-                                      solution_note(b, i))
+                                      cable_branch_solution_note(b, i))
                       : NULL;
     if (!t) {
       Py_DECREF(out);
@@ -204,34 +195,38 @@ static PyObject *branch_get_parnames(PyObject *self, void *closure)
   (void)closure;
   const cable_branch *b = ((pyc_branch *)self)->b;
   int n = 0;
-  for (int i = 0; i < b->npt; i++)
-    if (b->pts[i].pt.npar > n) n = b->pts[i].pt.npar;
-  for (int i = 0; i < b->nsol; i++)
-    if (b->sol[i]->npar > n) n = b->sol[i]->npar;
-  return names_list(b->names.par, n < CABLE_NAMES_MAX ? n : CABLE_NAMES_MAX);
+  for (int i = 0; i < cable_branch_npoints(b); i++)
+    if (cable_branch_point(b, i)->npar > n) n = cable_branch_point(b, i)->npar;
+  for (int i = 0; i < cable_branch_nsolutions(b); i++)
+    if (cable_branch_solution(b, i)->npar > n) n = cable_branch_solution(b, i)->npar;
+  return names_list(cable_branch_names(b)->par, n < CABLE_NAMES_MAX ? n : CABLE_NAMES_MAX);
 }
 
 static PyObject *branch_get_unames(PyObject *self, void *closure)
 {
   (void)closure;
   const cable_branch *b = ((pyc_branch *)self)->b;
-  int n = b->nsol > 0 ? b->sol[0]->ndim : b->npt > 0 ? b->pts[0].pt.ndim : 0;
-  return names_list(b->names.u, n < CABLE_NAMES_MAX ? n : CABLE_NAMES_MAX);
+  int n = cable_branch_nsolutions(b) > 0 ? cable_branch_solution(b, 0)->ndim
+          : cable_branch_npoints(b) > 0   ? cable_branch_point(b, 0)->ndim
+                                          : 0;
+  return names_list(cable_branch_names(b)->u, n < CABLE_NAMES_MAX ? n : CABLE_NAMES_MAX);
 }
 
 static PyObject *branch_get_int(PyObject *self, void *closure)
 {
   const cable_branch *b = ((pyc_branch *)self)->b;
   const char *what = closure;
-  long v = strcmp(what, "ibr") == 0 ? b->ibr : strcmp(what, "npt") == 0 ? b->npt : b->nsol;
+  long v = strcmp(what, "ibr") == 0   ? cable_branch_number(b)
+           : strcmp(what, "npt") == 0 ? cable_branch_npoints(b)
+                                      : cable_branch_nsolutions(b);
   return PyLong_FromLong(v);
 }
 
 static PyObject *branch_get_str(PyObject *self, void *closure)
 {
   const cable_branch *b = ((pyc_branch *)self)->b;
-  if (strcmp(closure, "e") == 0) return PyUnicode_FromString(b->e);
-  if (b->end_note) return PyUnicode_FromString(b->end_note);
+  if (strcmp(closure, "e") == 0) return PyUnicode_FromString(cable_branch_problem(b));
+  if (cable_branch_end_note(b)) return PyUnicode_FromString(cable_branch_end_note(b));
   Py_RETURN_NONE;
 }
 
@@ -239,9 +234,9 @@ static PyObject *branch_get_str(PyObject *self, void *closure)
 static PyObject *branch_get_icp(PyObject *self, void *closure)
 {
   (void)closure;
-  const cable_branch *b = ((pyc_branch *)self)->b;
-  PyObject *out = PyList_New(b->c.nicp);
-  for (int k = 0; out && k < b->c.nicp; k++) PyList_SET_ITEM(out, k, PyLong_FromLong(b->c.icp[k] + 1));
+  const cable_constants *c = cable_branch_constants(((pyc_branch *)self)->b);
+  PyObject *out = PyList_New(c->nicp);
+  for (int k = 0; out && k < c->nicp; k++) PyList_SET_ITEM(out, k, PyLong_FromLong(c->icp[k] + 1));
   return out;
 }
 

@@ -9,9 +9,8 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "braid_resolver.h"
-#include "cable_session.h"
-#include "cable_status.h"
+#include "cable/cable_session.h"
+#include "cable/cable_status.h"
 
 #define SESSION_LINE_MAX 32
 
@@ -74,7 +73,7 @@ static cable_session *session_open(const char *dir, FILE **log)
   cable_session_options o;
   cable_session_options_init(&o);
   o.dir = dir;
-  o.problems = cable_braid_resolver();
+  o.problems = cable_session_braid_problems();
   *log = fopen("/dev/null", "w");
   o.log = *log;
   return cable_session_alloc(&o);

@@ -8,7 +8,7 @@
 #include <stdlib.h>
 
 #include "axis_passages.h"
-#include "cable_status.h"
+#include "cable/cable_status.h"
 #include "harness.h"
 
 /* ---- the axis-passage counter on closed-form curves ----------------------------- */

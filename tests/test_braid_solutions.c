@@ -26,12 +26,11 @@
 
 #include <gsl/gsl_math.h>
 
-#include "aufile.h"
-#include "braid_analysis.h"
-#include "braid_resolver.h"
+#include "cable/cable_aufile.h"
+#include "cable/cable_analysis.h"
 #include "braid_problems.h"
 #include "braid_start.h"
-#include "cable_cont.h"
+#include "cable/cable_cont.h"
 #include "harness.h"
 #include "ribbon.h"
 #include "session_util.h"
@@ -201,11 +200,11 @@ static void test_pvls_columns(void)
   cable_error err;
   memset(&err, 0, sizeof err);
   /* from STPNT, a restart from a stored label, and a run without the columns */
-  cable_branch *k = NULL;
-  int rc = r ? session_line(r, "e=braid_knot c=pvls sv=pvls", NULL, &k, &err) : -1;
-  if (!rc) rc = session_line(r, "e=braid_knot c=pvlsr IRS='EP2' NMX=3 sv=pvls2", k, NULL, &err);
+  cable_branch *first = NULL;
+  int rc = r ? session_line(r, "e=braid_knot c=pvls sv=pvls", NULL, &first, &err) : -1;
+  if (!rc) rc = session_line(r, "e=braid_knot c=pvlsr IRS='EP2' NMX=3 sv=pvls2", first, NULL, &err);
   if (!rc) rc = session_line(r, "e=braid_knot c=pvls ICP=['T', 'L', 'L2', 'eps21'] NMX=2 sv=pvls3", NULL, NULL, &err);
-  cable_branch_decref(k);
+  cable_branch_decref(first);
   session_close(r, log);
   test_int("PVLS runs: the runs succeed", rc, 0);
   if (rc != 0) printf("  %s\n", err.msg);

@@ -11,9 +11,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "aufile.h"
-#include "cable_status.h"
-#include "constants_parse.h"
+#include "cable/cable_aufile.h"
+#include "cable/cable_status.h"
+#include "cable/cable_constants.h"
 #include "harness.h"
 
 #define REGRESSION_DIR "tests/data/fuzz_regressions"

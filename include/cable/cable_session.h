@@ -1,5 +1,6 @@
 /* A session of AUTO-07p's runner on cable's engine: what the Python package
- * (python/cable, its C side auto_iface/pycable_*.c) and `cable run` use.
+ * (python/cable, its C side auto_iface/pycable_*.c) and `cable run` use;
+ * everything a script can do goes through it.
  *
  *   run             constants (c=NAME reads c.NAME; KEY=VALUE overrides, as in
  *                   AUTO), the problem (e=NAME), the start (STPNT, a solution,
@@ -19,9 +20,13 @@
 
 #include <stdio.h>
 
-#include "cable_constants.h"
-#include "cable_error.h"
-#include "cable_problem.h"
+#include "cable/cable_api.h"
+#include "cable/cable_constants.h"
+#include "cable/cable_error.h"
+#include "cable/cable_names.h"
+#include "cable/cable_output.h"
+#include "cable/cable_problem.h"
+#include "cable/cable_solution.h"
 
 /* Where e=NAME problems come from.  The session always knows the engine's
  * test problems (bratu, elastica, layer, stiff), the braid templates when a
@@ -54,16 +59,19 @@ typedef struct cable_session_options {
   void *interrupt_ctx;
 } cable_session_options;
 
-void cable_session_options_init(cable_session_options *o);
+CABLE_API void cable_session_options_init(cable_session_options *o);
+/* The braid problems from STPNT (TORUS, HAND, PAR of the constants): the
+ * problem source `cable run` and the Python package use. */
+CABLE_API const cable_session_problems *cable_session_braid_problems(void);
 
 typedef struct cable_session cable_session;
-typedef struct rp_branch cable_branch;
+typedef struct cable_branch cable_branch;
 
 /* The options are copied (the FILE pointers and problems must outlive s). */
-cable_session *cable_session_alloc(const cable_session_options *opt);
+CABLE_API cable_session *cable_session_alloc(const cable_session_options *opt);
 /* Frees the session: plug-ins it opened are closed.  NULL is a no-op.
  * Branches live on independently of the session. */
-void cable_session_free(cable_session *s);
+CABLE_API void cable_session_free(cable_session *s);
 
 /* The arguments of AUTO's run(...) and load(...).  The start is at most one
  * of: a solution (sol_branch, sol_index), a result (branches[0..nbranch-1]:
@@ -88,29 +96,45 @@ typedef struct cable_run_args {
 /* One continuation run; *out: the new branch (also when it ended abnormally,
  * MX).  0 or a negative cable_status with err (CABLE_ERR_INTERRUPTED when
  * the interrupt callback stopped it: no file is written then). */
-int cable_session_run(cable_session *s, const cable_run_args *a, cable_branch **out, cable_error *err);
+CABLE_API int cable_session_run(cable_session *s, const cable_run_args *a, cable_branch **out, cable_error *err);
 /* AUTO's load: the start a run with the same arguments would use, as a
  * one-solution branch, and the runner state of that run.  A name without IRS
  * gives the file's last solution. */
-int cable_session_load(cable_session *s, const cable_run_args *a, cable_branch **out, cable_error *err);
+CABLE_API int cable_session_load(cable_session *s, const cable_run_args *a, cable_branch **out, cable_error *err);
 /* b./s./d.NAME from branches (append: AUTO's ap=).  sol_index >= 0: only that
  * solution of branches[0] (a one-point file). */
-int cable_session_save(cable_session *s, cable_branch *const *branches, int n, int sol_index, const char *name,
+CABLE_API int cable_session_save(cable_session *s, cable_branch *const *branches, int n, int sol_index, const char *name,
                        int append, cable_error *err);
 /* The labelled solutions of s.NAME (with b.NAME's rows for their norms), one
  * branch per branch number: *out (free with cable_branch_list_free). */
-int cable_session_loadbd(cable_session *s, const char *name, cable_branch ***out, int *n, cable_error *err);
+CABLE_API int cable_session_loadbd(cable_session *s, const char *name, cable_branch ***out, int *n, cable_error *err);
 /* AUTO's merge (relabel 0) and relabel (1) of branches: *out as loadbd's. */
-int cable_session_transform(cable_session *s, cable_branch *const *in, int n, int relabel, cable_branch ***out,
+CABLE_API int cable_session_transform(cable_session *s, cable_branch *const *in, int n, int relabel, cable_branch ***out,
                             int *nout, cable_error *err);
 /* The same on files b./s./d.NAME, rewritten in place. */
-int cable_session_transform_files(cable_session *s, const char *name, int relabel, cable_error *err);
+CABLE_API int cable_session_transform_files(cable_session *s, const char *name, int relabel, cable_error *err);
 /* The path of TYPE.NAME ("c", "s", "b", "d") or of a plain file (type NULL)
  * in the session's directory. */
-void cable_session_path(const cable_session *s, const char *type, const char *name, char *buf, size_t len);
+CABLE_API void cable_session_path(const cable_session *s, const char *type, const char *name, char *buf, size_t len);
 
-void cable_branch_incref(cable_branch *b);
-void cable_branch_decref(cable_branch *b);   /* NULL is a no-op */
-void cable_branch_list_free(cable_branch **list, int n);
+CABLE_API void cable_branch_incref(cable_branch *b);
+CABLE_API void cable_branch_decref(cable_branch *b);   /* NULL is a no-op */
+CABLE_API void cable_branch_list_free(cable_branch **list, int n);
+
+/* What a branch holds: its number, its points (the b-file rows, with the
+ * engine's notes), its labelled solutions and the constants, names and
+ * problem they were computed with.  Pointers stay valid while b lives. */
+CABLE_API int cable_branch_number(const cable_branch *b);
+CABLE_API int cable_branch_npoints(const cable_branch *b);
+CABLE_API const cable_point *cable_branch_point(const cable_branch *b, int i);
+CABLE_API int cable_branch_nsolutions(const cable_branch *b);
+CABLE_API const cable_solution *cable_branch_solution(const cable_branch *b, int i);
+/* The engine's remark on solution i's point (the d-file note), NULL: none. */
+CABLE_API const char *cable_branch_solution_note(const cable_branch *b, int i);
+CABLE_API const cable_names *cable_branch_names(const cable_branch *b);
+CABLE_API const cable_constants *cable_branch_constants(const cable_branch *b);
+CABLE_API const char *cable_branch_problem(const cable_branch *b);
+/* Why the branch ended abnormally (the d-file's note), NULL: a normal end. */
+CABLE_API const char *cable_branch_end_note(const cable_branch *b);
 
 #endif
