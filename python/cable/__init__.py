@@ -41,4 +41,5 @@ for _n in ('run', 'r', 'load', 'ld', 'loadbd', 'bd', 'save', 'sv', 'merge', 'mb'
 del _n
 
 branch_points = scenes.branch_points
+branch_point = scenes.branch_point
 mirror_table = scenes.mirror_table

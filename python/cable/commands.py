@@ -286,6 +286,7 @@ class Runner:
             ns[name] = fn
             for a in aliases:
                 ns[a] = fn
-        ns.update({'CableError': CableError, 'branch_points': scenes.branch_points,
+        ns.update({'CableError': CableError, 'branch_points': scenes.branch_points, 'bp_kind': scenes.bp_kind,
+                   'branch_point': _command('branch_point')(scenes.branch_point),
                    'mirror_table': scenes.mirror_table})
         return ns

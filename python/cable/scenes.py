@@ -4,6 +4,7 @@ analysis of one solution (Lk, writhe, knot type, tube distance, pressure,
 axis self-passages) is C (cable._cable); what is done with it is here.
 
   branch_points(r, T=(lo, hi), kind='double')   branch points chosen by what they are
+  branch_point(r, T=(lo, hi), kind='simple')    exactly one of them
   compare('table.txt', rows, ref=sol, notes=[...])
   overlap_free(result)
   branch_table('table.txt', result, paper={...}, title='...')
@@ -69,6 +70,18 @@ def branch_points(result, T=None, kind=None):
             continue
         out.append(s)
     return out
+
+
+def branch_point(result, T, kind=None):
+    """The one branch point of the result in the T window (lo, hi) of the
+    given kind; a CableError listing what is there when there is not exactly
+    one."""
+    found = branch_points(result, T=T, kind=kind)
+    if len(found) != 1:
+        have = ', '.join('LAB %d at T = %.6g (%s)' % (s.LAB, s['T'], bp_kind(s)) for s in result('BP')) or 'none'
+        raise CableError('%d %sbranch points with T in [%g, %g] (the branch has: %s)'
+                         % (len(found), kind + ' ' if kind else '', min(T), max(T), have))
+    return found[0]
 
 
 # ---- self-passages of the braid axis along a branch ---------------------------------------

@@ -84,10 +84,12 @@ def test_branch_points_by_kind(work):
     """The flat (7,2) knot's branch points are double (D7 symmetry, located by
     the singular-value test, doc/knot72.md): selected by kind and T window."""
     copy_in(work, 'runs/knot72/c.knot72')
-    r = cable.Runner().run(e='braid_knot', c='knot72', NTST=20, NCOL=4, NMX=20)
+    r = cable.Runner().run(e='braid_knot', c='knot72', NTST=20, NCOL=4, NMX=20, sv='flat')
     bps = r('BP')
     assert len(bps) >= 2
     assert all(scenes.bp_kind(b) == 'double' for b in bps)
+    # the engine's notes reach the d-file too
+    assert open('d.flat').read().count('NOTE: double branch point') >= len(bps)
     assert scenes.branch_points(r, kind='double') == bps and scenes.branch_points(r, kind='simple') == []
     t1 = bps[1]['T']
     assert [b['LAB'] for b in scenes.branch_points(r, T=(t1 - 1e-9, t1 + 1e-9))] == [bps[1]['LAB']]
