@@ -21,6 +21,7 @@
 #include "cable/cable_names.h"
 
 static char cable_bin[3 * PATH_MAX];   /* BUILD/cable, absolute */
+static char python_ext[3 * PATH_MAX];  /* BUILD/python/cable/_cable.so: `cable replay` needs it */
 static char work[2 * PATH_MAX];        /* tests/tmp/cli.PID, absolute */
 
 static int exists(const char *path)
@@ -251,14 +252,19 @@ static void test_bad_input(void)
   bad(&snap, "cable table of a missing b-file", "table b.nosuch", "b.nosuch", "cannot open");
   bad(&snap, "render of a missing label", "render s.good LAB99", "s.good", "LAB99");
   /* scripts */
-  /* scripts: Python through `cable replay` (python/cable/script.py) */
-  bad(&snap, "missing script", "replay nosuch.auto", "nosuch.auto", "cannot open the script");
-  bad_lines(&snap, "bad script line", "replay badsyntax.auto", "badsyntax.auto:2:", "SyntaxError: invalid syntax", 2);
-  bad_lines(&snap, "bad indentation in a script", "replay badindent.auto", "badindent.auto:2:", "IndentationError", 2);
-  bad_lines(&snap, "unknown label in a script", "replay badlabel.auto", "badlabel.auto:2:", "BP7: no such label", 2);
-  bad_lines(&snap, "unknown problem in a script", "replay badproblem.auto", "badproblem.auto:1:", "run: e: unknown problem 'nosuch'", 2);
-  bad_lines(&snap, "bad override in a script", "replay badoverride.auto", "badoverride.auto:2:", "run: NTST: must be an integer >= 1", 2);
-  bad_lines(&snap, "unknown function in a script", "replay badfunc.auto", "badfunc.auto:2:", "NameError: name 'foo' is not defined", 2);
+  /* scripts: Python through `cable replay` (python/cable/script.py).  A
+     sanitizer build has no Python package (CPython cannot load an
+     instrumented extension): make asan checks the rest. */
+  if (!exists(python_ext)) printf("no %s (a sanitizer build): the script cases are skipped\n", python_ext);
+  else {
+    bad(&snap, "missing script", "replay nosuch.auto", "nosuch.auto", "cannot open the script");
+    bad_lines(&snap, "bad script line", "replay badsyntax.auto", "badsyntax.auto:2:", "SyntaxError: invalid syntax", 2);
+    bad_lines(&snap, "bad indentation in a script", "replay badindent.auto", "badindent.auto:2:", "IndentationError", 2);
+    bad_lines(&snap, "unknown label in a script", "replay badlabel.auto", "badlabel.auto:2:", "BP7: no such label", 2);
+    bad_lines(&snap, "unknown problem in a script", "replay badproblem.auto", "badproblem.auto:1:", "run: e: unknown problem 'nosuch'", 2);
+    bad_lines(&snap, "bad override in a script", "replay badoverride.auto", "badoverride.auto:2:", "run: NTST: must be an integer >= 1", 2);
+    bad_lines(&snap, "unknown function in a script", "replay badfunc.auto", "badfunc.auto:2:", "NameError: name 'foo' is not defined", 2);
+  }
   bad(&snap, "unknown command", "frobnicate", "frobnicate", "unknown command");
   snap_free(&snap);
   remove_outputs("bad");
@@ -513,6 +519,8 @@ static int setup(const char *argv0)
   snprintf(build, sizeof build, "%.*s", t ? (int)(t - argv0) : 0, argv0);
   if (!t) snprintf(build, sizeof build, "build/release");
   snprintf(cable_bin, sizeof cable_bin, "%s%s%s/cable", build[0] == '/' ? "" : cwd, build[0] == '/' ? "" : "/", build);
+  snprintf(python_ext, sizeof python_ext, "%s%s%s/python/cable/_cable.so", build[0] == '/' ? "" : cwd,
+           build[0] == '/' ? "" : "/", build);
   snprintf(work, sizeof work, "%s/tests/tmp/cli.%ld", cwd, (long)getpid());
   char cmd[8 * PATH_MAX];
   snprintf(cmd, sizeof cmd,

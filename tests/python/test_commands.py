@@ -189,8 +189,11 @@ def test_ctrl_c_stops_a_run(work):
                 "print('long run starts', flush=True)\n"
                 "long = run(first('EP1'), DS=1e-6, DSMIN=1e-7, DSMAX=1e-6, NMX=100000000, NPR=0, sv='long')\n")
     env = dict(os.environ, PYTHONPATH=os.path.join(BUILD, 'python'))
+    # SIGINT as at a terminal, even when the test itself runs in a background
+    # job (which inherits SIGINT ignored, and CPython then keeps it ignored)
     p = subprocess.Popen([os.path.join(BUILD, 'cable'), 'replay', 'long.auto'], stdout=subprocess.PIPE,
-                         stderr=subprocess.PIPE, text=True, env=env, start_new_session=True)
+                         stderr=subprocess.PIPE, text=True, env=env, start_new_session=True,
+                         preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
     line = ''
     while 'long run starts' not in line:
         line = p.stdout.readline()
@@ -198,7 +201,12 @@ def test_ctrl_c_stops_a_run(work):
     time.sleep(1.0)
     t0 = time.monotonic()
     p.send_signal(signal.SIGINT)
-    out, err = p.communicate(timeout=120)
+    try:
+        out, err = p.communicate(timeout=120)
+    finally:
+        if p.poll() is None:   # never leave the long run behind
+            p.kill()
+            p.wait()
     assert p.returncode == 130
     assert err.startswith('cable: long.auto:3: interrupted'), err
     assert 'branch 2 interrupted after' in err or 'interrupted' in err
