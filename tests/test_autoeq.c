@@ -324,6 +324,7 @@ static void bad_run(const char *name, const char *e_name, const char *src, int s
   snprintf(want, sizeof want, "%s:%d:", src, line);
   if (line > 0) test_report(strstr(buf, want) != NULL, "%s: the error names line %d of the file", src, line);
   const char *outs[] = {"b.", "s.", "d."};
+  char sp[512];
   int none = 1;
   for (int k = 0; k < 3; k++) {
     snprintf(sp, sizeof sp, "%s/bad/%s%s", TMP, outs[k], name);
