@@ -353,6 +353,9 @@ int main(void)
   bad_file("nofunc", "nofunc.f90", 0, "does not define SUBROUTINE FUNC");
   bad_file("wrongsig", "wrongsig.f90", 2, "has 7 arguments, AUTO passes 8");
   bad_file("wrongsigc", "wrongsigc.c", 5, "conflicting types for");
+  bad_file("toomany", "toomany.f90", 6, "has 9 arguments, AUTO passes 8");
+  test_true("a Fortran MODULE leaves no .mod file in the working or the run directory",
+            !exists("bratu_consts.mod") && !exists(TMP "/bad/bratu_consts.mod"));
   bad_file("nopvls", "nopvls.c", 0, "pvls: the equation file does not define it");
   bad_file("getpfld", "getpfld.f90", 55, "GETP: 'FLD': cable does not provide it");
   /* constants as AUTO reads them */
