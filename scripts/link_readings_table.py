@@ -7,6 +7,8 @@ comparison targets (the paper's Figs. 12.7-12.9), never inputs of a run.
 Usage: /usr/bin/python3 scripts/link_readings_table.py SCRATCH_DIR
 """
 import os
+import re
+import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -26,10 +28,20 @@ def labelled(path, types=(UZ,)):
     return [s for s in read_sfile(path) if s['itp'] in types]
 
 
-def row(s, fpub):
+CABLE = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), 'cable')
+
+
+def dmin_of(d, sname, lab):
+    """closest approach of non-adjacent tube parts / Delta (cable analyze)"""
+    out = subprocess.run([CABLE, 'analyze', sname, str(lab)], cwd=d, capture_output=True, text=True)
+    m = re.search(r'closest non-adjacent approach ([0-9.eE+-]+) Delta', out.stdout)
+    return float(m.group(1)) if m else float('nan')
+
+
+def row(s, fpub, dmin=None):
     p = s['par']
     return '%6d %14.8f %14.8f %12.4e %14.10g %8.4f %12.6g %12.6g' % (
-        s['lab'], p[T], p[F], p[F] / fpub - 1, p[DELTA], p[DMIN], p[H], p[HAM])
+        s['lab'], p[T], p[F], p[F] / fpub - 1, p[DELTA], p[DMIN] if dmin is None else dmin, p[H], p[HAM])
 
 
 def main(top):
@@ -48,14 +60,15 @@ def main(top):
                 for s in labelled(os.path.join(d, n)):
                     print(row(s, fpub))
         for k in ('', '1', '2'):
-            pts = labelled(os.path.join(d, 's.d%s_dn' % k)) + labelled(os.path.join(d, 's.d%s_up' % k))
+            pts = [('s.d%s_%s' % (k, w), s) for w in ('dn', 'up')
+                   for s in labelled(os.path.join(d, 's.d%s_%s' % (k, w)))]
             if not pts:
                 continue
-            pts.sort(key=lambda s: s['par'][DELTA])
+            pts.sort(key=lambda x: x[1]['par'][DELTA])
             print('\nF(Delta) at T = %g%s:' % (tpub, {'': '', '1': ' (DS > 0 half)', '2': ' (DS < 0 half)'}[k]))
             print(head)
-            for s in pts:
-                print(row(s, fpub))
+            for name, s in pts:
+                print(row(s, fpub, dmin_of(d, name, s['lab'])))
         for n, what in (('s.rc2', 'C1 = C2 = B/(2(1+nu))'), ('s.rl2', 'L2 = 1 - 2 pi Delta')):
             pts = labelled(os.path.join(d, n))
             if pts:
