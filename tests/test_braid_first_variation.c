@@ -21,9 +21,9 @@
 #include <math.h>
 #include <string.h>
 
-#include "aufile.h"
+#include "cable/cable_aufile.h"
 #include "braid_model.h"
-#include "cable_error.h"
+#include "cable/cable_error.h"
 #include "harness.h"
 
 enum { NBASIS = 8, NFIELD = 5, NDIR = 4 * NBASIS + (NBASIS - 1), NCON = 7, NSUB = 2 };

@@ -14,10 +14,10 @@
 #include <stdint.h>
 #include <string.h>
 
-#include "aufile.h"
+#include "cable/cable_aufile.h"
 #include "braid_bc.h"
 #include "braid_exchange.h"
-#include "cable_error.h"
+#include "cable/cable_error.h"
 #include "harness.h"
 
 /* Derivative of the map along the flow by Richardson-extrapolated central

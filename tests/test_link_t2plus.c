@@ -8,11 +8,9 @@
 #include <string.h>
 
 #include "braid_bc.h"
-#include "braid_model.h"
-#include "braid_problems.h"
-#include "cable_error.h"
+#include "cable/cable_error.h"
 #include "harness.h"
-#include "plugin_loader.h"
+#include "cable/cable_plugin.h"
 
 /* rows are the same operations on the same numbers: exact */
 static const double same_tol = 0.0;
@@ -49,10 +47,12 @@ int main(int argc, char **argv)
     return test_summary();
   test_true("link_t2plus: name, NDIM 21, NBC 21", strcmp(pb->name, "link_t2plus") == 0 &&
             pb->ndim == BR_NDIM && pb->nbc == BL_NBC);
-  /* (the references also make the linker keep braid_func and braid_pvls in
-     this program, where the plug-in resolves them) */
-  test_true("link_t2plus: FUNC and PVLS are the built-in braid ones",
-            pb->func == braid_func && pb->pvls == braid_pvls);
+  /* the plug-in's layout constants are braid_link's (the rows below check
+     ROW_T20, U_T2 and PAR_T) */
+  const cable_problem *bl = cable_problem_builtin("braid_link");
+  test_true("link_t2plus: NPAR and the parameter names are braid_link's",
+            bl != NULL && pb->npar == bl->npar && pb->npar == BP_NPAR &&
+            strcmp(pb->parnames[BP_T], "T") == 0 && strcmp(pb->parnames[BP_NPAR - 1], bl->parnames[BP_NPAR - 1]) == 0);
 
   static double dbc[BL_NBC * NCOLS];
   double worst_same = 0.0, worst_fd = 0.0, worst_row = 0.0;
