@@ -20,7 +20,13 @@ run_fig() { # NAME SCENE: constants of runs/SCENE, the two scripts of NAME
   mkdir -p "$d"
   cp "$here"/runs/"$2"/c.* "$d"/
   cp "$here"/scripts/link_readings/"$1"_*.auto "$d"/
-  for s in branch delta; do
+  local stages="branch delta"
+  if [ "$1" = fig127 ]; then # the reading t20 = +t10 needs the plug-in beside the run
+    cp "$here"/build/release/plugins/link_t2plus.so "$d"/ ||
+      { echo "link_readings.sh: build the plug-in first (make tests-build)" >&2; exit 1; }
+    stages="branch delta t2plus"
+  fi
+  for s in $stages; do
     echo "== $1 $s (log: $d/$s.log)"
     (cd "$d" && nice -n 10 "$cable" replay "$1_$s.auto" >"$s.log" 2>&1) ||
       { echo "link_readings.sh: $1_$s.auto failed, see $d/$s.log" >&2; tail -n 5 "$d/$s.log" >&2; exit 1; }
