@@ -368,13 +368,30 @@ static int build_setup(cable_replay *r, const script_value *data, const script_k
      the keywords (AUTO: keyword arguments override the c-file) */
   char cfile_s[CABLE_NAME_MAX] = "", cfile_sv[CABLE_NAME_MAX] = "";
   if (!rc && data && data->type == SCRIPT_STRING) {
-    /* run('name'): c.NAME (when present) and s.NAME, as AUTO */
+    /* run('NAME') is AUTO's e='NAME', c='NAME', s='NAME': the equations
+       NAME (an explicit e= wins), c.NAME and s.NAME when they exist.  When
+       there is no problem NAME, the c-file's e names it (cable's
+       extension: c.knot72 says e='braid_knot'). */
     const char *name = script_string_chars(data);
-    if (!ke) s->e[0] = '\0';
-    rc = read_constants_file(r, name, s, 0, err);
+    if (!ke) {
+      rp_problem p;
+      s->e[0] = '\0';
+      rc = find_problem(r, name, NULL, 0, &p, err);
+      if (rc == 0) snprintf(s->e, sizeof s->e, "%s", name);
+      problem_release(r, &p);
+      if (rc == CABLE_ERR_NOTFOUND) {
+        rc = 0;
+        cable_error_clear(err);
+      }
+    }
+    if (!rc) rc = read_constants_file(r, name, s, 0, err);
     if (!rc) snprintf(cfile_sv, sizeof cfile_sv, "%s", s->c.sv);
-    if (!rc) rc = read_solutions_file(r, name, s, err);
-    if (!rc) snprintf(s->c.s, sizeof s->c.s, "%s", name);
+    char spath[1024];
+    rp_path(r, "s", name, spath, sizeof spath);
+    if (!rc && file_exists(spath)) {
+      rc = read_solutions_file(r, name, s, err);
+      if (!rc) snprintf(s->c.s, sizeof s->c.s, "%s", name);
+    }
     if (!rc && !s->e[0]) snprintf(s->e, sizeof s->e, "%s", name);
   }
   if (!rc && kc) {
@@ -674,11 +691,14 @@ static int rp_run(void *ctx, const script_value *start, const script_kwargs *kw,
   return run_with(ctx, start, kw, 0, NULL, out, err);
 }
 
-int cable_replay_run_cli(cable_replay *r, const script_kwargs *names, int nover, const char *const *overrides,
-                         cable_error *err)
+int cable_replay_run_cli(cable_replay *r, const char *name, const script_kwargs *names, int nover,
+                         const char *const *overrides, cable_error *err)
 {
-  script_value out = script_none();
-  int rc = run_with(r, NULL, names, nover, overrides, &out, err);
+  script_value out = script_none(), data = script_none();
+  if (name && script_string_new(&data, name, strlen(name)))
+    return cable_error_set(err, CABLE_ERR_ALLOC, NULL, 0, NULL, "out of memory");
+  int rc = run_with(r, name ? &data : NULL, names, nover, overrides, &out, err);
+  script_value_release(&data);
   script_value_release(&out);
   return rc;
 }
