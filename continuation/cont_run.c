@@ -1,8 +1,10 @@
 /* Starting a branch and the driver loop that hands points to a sink. */
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
+#include "cable_fold.h"
 #include "cont_impl.h"
 
 int cable_cont_set_start(cable_cont *cc, const cable_solution *start)
@@ -53,7 +55,7 @@ int cable_cont_set_start(cable_cont *cc, const cable_solution *start)
 
 static const char *type_name(int itp)
 {
-  switch (itp) {
+  switch (itp >= 0 ? itp % 10 : -((-itp) % 10)) {
   case CABLE_TY_BP: return "BP";
   case CABLE_TY_LP: return "LP";
   case CABLE_TY_UZ: return "UZ";
@@ -72,6 +74,9 @@ static void emit(cable_cont *cc, const cable_sink *sink, int ibr, int *lab)
     pt->itp = CABLE_TY_RG;
     labelled = 1;
   }
+  /* AUTO's types on a fold curve (ISW = 2): the point's type + 10 ITPST */
+  if (cc->c.isw == 2 && pt->itp != CABLE_TY_NONE && abs(pt->itp) < 10)
+    pt->itp += pt->itp > 0 ? 10 * CABLE_FOLD_ITPST : -10 * CABLE_FOLD_ITPST;
   pt->ibr = ibr;
   pt->lab = labelled ? (*lab)++ : 0;
   pt->note = cc->note[0] ? cc->note : NULL;
