@@ -16,6 +16,7 @@
 #include "braid_analysis.h"
 #include "braid_problems.h"
 #include "cable_cont.h"
+#include "cable_fold.h"
 #include "cable_status.h"
 #include "constants_parse.h"
 #include "script_host_impl.h"
@@ -555,25 +556,44 @@ static int engine_run(cable_replay *r, rp_setup *s, rp_branch **out, cable_error
   int rc = find_problem(r, s->e, &s->c, s->start == NULL, &prob, err);
   if (rc) return rc;
   const cable_problem *pb = prob.pb;
-  cable_names_fill(&s->names, pb->parnames, pb->npar, pb->unames, pb->ndim);
   int st = 0;
-  cable_cont *cc = cable_cont_alloc(pb, &s->c, &st);
+  /* ISW = 2 at an LP: the fold's extended problem, its constants (ICP with
+     the null vector's parameter slots) and its own start (cable_fold.h) */
+  cable_fold *fold = NULL;
+  const cable_constants *crun = &s->c;
+  const cable_solution *start = s->start;
+  if (s->c.isw == 2) {
+    char msg[400];
+    fold = cable_fold_alloc(pb, &s->c, s->start, &st, msg, sizeof msg);
+    if (!fold) {
+      problem_release(r, &prob);
+      return cable_error_set(err, st, NULL, 0, "ISW", "%s", msg);
+    }
+    pb = cable_fold_problem(fold);
+    crun = cable_fold_constants(fold);
+    start = NULL;
+  }
+  cable_names_fill(&s->names, pb->parnames, pb->npar, pb->unames, pb->ndim);
+  cable_cont *cc = cable_cont_alloc(pb, crun, &st);
   if (!cc) {
+    cable_fold_free(fold);
     problem_release(r, &prob);
     return cable_error_set(err, CABLE_ERR_ALLOC, NULL, 0, NULL, "out of memory");
   }
-  if (st == 0) st = cable_cont_set_start(cc, s->start);
+  if (st == 0) st = cable_cont_set_start(cc, start);
   if (st) {
     cable_error_set(err, st, NULL, 0, NULL, "%s", cable_cont_error(cc)[0] ? cable_cont_error(cc) : cable_status_message(st));
     cable_cont_free(cc);
+    cable_fold_free(fold);
     problem_release(r, &prob);
     return st;
   }
   int ibr = ++r->next_branch;
   double t_start = now_seconds();
-  collector col = {rp_branch_alloc(ibr, &s->c, &s->names, s->e), r->opt.diag, 0, isatty(fileno(stderr))};
+  collector col = {rp_branch_alloc(ibr, crun, &s->names, s->e), r->opt.diag, 0, isatty(fileno(stderr))};
   if (!col.b) {
     cable_cont_free(cc);
+    cable_fold_free(fold);
     problem_release(r, &prob);
     return cable_error_set(err, CABLE_ERR_ALLOC, NULL, 0, NULL, "out of memory");
   }
@@ -586,6 +606,7 @@ static int engine_run(cable_replay *r, rp_setup *s, rp_branch **out, cable_error
   snprintf(end_note, sizeof end_note, "branch %d ended: %s: %s", ibr, cable_status_message(st), why);
   if (!col.rc && st < 0) col.rc = rp_branch_set_end_note(col.b, end_note);
   cable_cont_free(cc);
+  cable_fold_free(fold);
   problem_release(r, &prob);
   if (col.rc) {
     rp_branch_decref(col.b);

@@ -186,7 +186,7 @@ static const bad_case bad_cases[] = {
   {"c.sp", "SP = ['LP0']\n", CABLE_ERR_UNSUPPORTED, 1, "SP", "not supported by cable"},
   {"c.homcont", "NUNSTAB = 1\n", CABLE_ERR_UNSUPPORTED, 1, "NUNSTAB", "HomCont"},
   {"c.ips2", "IPS = 2\n", CABLE_ERR_UNSUPPORTED, 1, "IPS", "IPS=4 boundary-value problems only"},
-  {"c.isw2", "ISW = 2\n", CABLE_ERR_UNSUPPORTED, 1, "ISW", "not supported"},
+  {"c.isw3", "ISW = 3\n", CABLE_ERR_UNSUPPORTED, 1, "ISW", "not supported"},
   {"c.iplt_neg", "IPLT = -1\n", CABLE_ERR_UNSUPPORTED, 1, "IPLT", "not supported"},
   {"c.rl_order", "RL0 = 5\nRL1 = 1\n", CABLE_ERR_INPUT, 2, "RL1", "less than RL1"},
   {"c.ds_order", "DSMIN = 0.5, DSMAX = 0.1\n", CABLE_ERR_INPUT, 1, "DSMAX", "must not exceed"},
