@@ -580,6 +580,16 @@ static int engine_run(cable_replay *r, rp_setup *s, rp_branch **out, cable_error
     problem_release(r, &prob);
     return cable_error_set(err, CABLE_ERR_ALLOC, NULL, 0, NULL, "out of memory");
   }
+  if (st == 0 && fold) {
+    /* the fold run starts on the LP's mesh */
+    double *mesh = malloc((size_t)(crun->ntst + 1) * sizeof *mesh);
+    if (!mesh) st = CABLE_ERR_ALLOC;
+    if (mesh) {
+      cable_fold_mesh(fold, crun->ntst, mesh);
+      st = cable_cont_set_mesh(cc, mesh);
+      free(mesh);
+    }
+  }
   if (st == 0) st = cable_cont_set_start(cc, start);
   if (st) {
     cable_error_set(err, st, NULL, 0, NULL, "%s", cable_cont_error(cc)[0] ? cable_cont_error(cc) : cable_status_message(st));

@@ -16,6 +16,7 @@
  *
  *   cable_fold *f = cable_fold_alloc(pb, &c, lp_solution, &status, msg, len);
  *   cable_cont *cc = cable_cont_alloc(cable_fold_problem(f), cable_fold_constants(f), &st);
+ *   cable_fold_mesh(f, NTST, mesh); cable_cont_set_mesh(cc, mesh);   // the LP's mesh
  *   cable_cont_set_start(cc, NULL);   // STPNT: the LP solution and its null vector
  *   ...
  *   cable_cont_free(cc); cable_fold_free(f);
@@ -56,6 +57,11 @@ void cable_fold_free(cable_fold *f);   /* NULL is a no-op */
 
 /* The extended problem and the constants of its run (ICP with the w slots
  * after p1, q, p2..pk; NDIM, NBC, NINT, NPAR of the extended problem). */
+/* The start's mesh density resampled to ntst intervals (as a restart keeps
+ * it, cont_mesh.c) into mesh[0..ntst]: the fold run's mesh, so that the
+ * fold curve starts on the discrete problem the LP was located on. */
+void cable_fold_mesh(const cable_fold *f, int ntst, double *mesh);
+
 const cable_problem *cable_fold_problem(const cable_fold *f);
 const cable_constants *cable_fold_constants(const cable_fold *f);
 

@@ -253,6 +253,21 @@ void cable_fold_free(cable_fold *f)
   free(f);
 }
 
+void cable_fold_mesh(const cable_fold *f, int ntst, double *mesh)
+{
+  const cable_solution *s = f->start;
+  int ntold = s->ntst, nc = s->ncol;
+  for (int j = 0; j <= ntst; j++) {
+    double q = (double)j * ntold / ntst;
+    int a = (int)q;
+    if (a >= ntold) a = ntold - 1;
+    double w = q - a;
+    mesh[j] = (1 - w) * s->t[a * nc] + w * s->t[(a + 1) * nc];
+  }
+  mesh[0] = 0.0;
+  mesh[ntst] = 1.0;
+}
+
 const cable_problem *cable_fold_problem(const cable_fold *f) { return &f->pb; }
 const cable_constants *cable_fold_constants(const cable_fold *f) { return &f->c; }
 

@@ -7,6 +7,20 @@
 #include "cable_fold.h"
 #include "cont_impl.h"
 
+int cable_cont_set_mesh(cable_cont *cc, const double *mesh)
+{
+  if (cc->ended) return cc->end_status;
+  int nt = cc->sys->ntst;
+  int ok = mesh[0] == 0.0 && mesh[nt] == 1.0;
+  for (int j = 0; j < nt && ok; j++) ok = mesh[j + 1] > mesh[j];
+  if (!ok) {
+    cont_set_error(cc, "the mesh must increase from 0 to 1 in NTST = %d intervals", nt);
+    return CABLE_ERR_INPUT;
+  }
+  memcpy(cc->sys->mesh, mesh, (size_t)(nt + 1) * sizeof *mesh);
+  return CABLE_SUCCESS;
+}
+
 int cable_cont_set_start(cable_cont *cc, const cable_solution *start)
 {
   if (cc->ended) return cc->end_status;
