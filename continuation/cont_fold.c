@@ -1,14 +1,14 @@
 /* Fold continuation: the extended problem of cable_fold.h, a cable_problem
  * whose callbacks evaluate the original problem and its derivative in the
  * direction of the null vector.  doc/fold-continuation.md derives it. */
-#include "cable_fold.h"
+#include "cable/cable_fold.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "cable_status.h"
+#include "cable/cable_status.h"
 
 struct cable_fold {
   cable_problem pb;             /* the extended problem; params = this struct */

@@ -4,7 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "cable_fold.h"
+#include "cable/cable_fold.h"
 #include "cont_impl.h"
 
 int cable_cont_set_mesh(cable_cont *cc, const double *mesh)

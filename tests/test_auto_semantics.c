@@ -11,7 +11,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "cable_cont.h"
+#include "cable/cable_cont.h"
 #include "engine_util.h"
 #include "harness.h"
 #include "test_problems.h"

@@ -15,8 +15,8 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "cable_cont.h"
-#include "cable_fold.h"
+#include "cable/cable_cont.h"
+#include "cable/cable_fold.h"
 #include "engine_util.h"
 #include "harness.h"
 

@@ -21,10 +21,10 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "aufile.h"
-#include "braid_resolver.h"
-#include "cable_error.h"
-#include "cable_status.h"
+#include "cable/cable_aufile.h"
+#include "replay_braid.h"
+#include "cable/cable_error.h"
+#include "cable/cable_status.h"
 #include "harness.h"
 #include "script.h"
 #include "script_host_cable.h"

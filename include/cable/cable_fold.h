@@ -26,9 +26,10 @@
 
 #include <stddef.h>
 
-#include "cable_constants.h"
-#include "cable_problem.h"
-#include "cable_solution.h"
+#include "cable/cable_api.h"
+#include "cable/cable_constants.h"
+#include "cable/cable_problem.h"
+#include "cable/cable_solution.h"
 
 /* Central-difference step of the directional derivatives, relative to
  * 1 + max|u| over the unit direction: eps^(1/3) balances truncation
@@ -51,18 +52,18 @@ typedef struct cable_fold cable_fold;
  * an LP of the problem's branch (its stored direction is the null vector),
  * or a point of a fold curve of the same problem (NDIM = 2 NDIM).  NULL
  * with *status and msg on error. */
-cable_fold *cable_fold_alloc(const cable_problem *pb, const cable_constants *c, const cable_solution *start,
-                             int *status, char *msg, size_t len);
-void cable_fold_free(cable_fold *f);   /* NULL is a no-op */
+CABLE_API cable_fold *cable_fold_alloc(const cable_problem *pb, const cable_constants *c, const cable_solution *start,
+                                       int *status, char *msg, size_t len);
+CABLE_API void cable_fold_free(cable_fold *f);   /* NULL is a no-op */
 
 /* The extended problem and the constants of its run (ICP with the w slots
  * after p1, q, p2..pk; NDIM, NBC, NINT, NPAR of the extended problem). */
 /* The start's mesh density resampled to ntst intervals (as a restart keeps
  * it, cont_mesh.c) into mesh[0..ntst]: the fold run's mesh, so that the
  * fold curve starts on the discrete problem the LP was located on. */
-void cable_fold_mesh(const cable_fold *f, int ntst, double *mesh);
+CABLE_API void cable_fold_mesh(const cable_fold *f, int ntst, double *mesh);
 
-const cable_problem *cable_fold_problem(const cable_fold *f);
-const cable_constants *cable_fold_constants(const cable_fold *f);
+CABLE_API const cable_problem *cable_fold_problem(const cable_fold *f);
+CABLE_API const cable_constants *cable_fold_constants(const cable_fold *f);
 
 #endif
