@@ -19,9 +19,10 @@ static void usage(FILE *out)
 {
   fputs("usage: cable COMMAND [ARGS]\n"
         "commands:\n"
-        "  run [c=NAME] [e=PROBLEM] [s=NAME] [sv=NAME] [KEY=VALUE ...]\n"
-        "                     one continuation run, AUTO's run(...) semantics; KEY=VALUE\n"
-        "                     overrides the constants file c.NAME\n"
+        "  run [NAME] [c=NAME] [e=PROBLEM] [s=NAME] [sv=NAME] [KEY=VALUE ...]\n"
+        "                     one continuation run, AUTO's run(...) semantics (a first\n"
+        "                     NAME is run('NAME'): e=NAME c=NAME); KEY=VALUE overrides\n"
+        "                     the constants file c.NAME\n"
         "  replay SCRIPT      run a script in Python with AUTO's commands (the cable\n"
         "                     package, as `python3 -m cable SCRIPT`); output files go\n"
         "                     to the script's directory\n"
