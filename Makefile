@@ -3,6 +3,8 @@
 
 CC      ?= gcc
 MODE    ?= release
+# The Debian interpreter (another python3 without Debian's numpy may come first on PATH)
+PYTHON  ?= /usr/bin/python3
 BUILD   := build/$(MODE)
 
 # Layers, lowest first.  Each folder is compiled with the public headers
@@ -37,7 +39,8 @@ LIBS    := -lsundials_kinsol -lsundials_sunlinsolklu -lsundials_sunmatrixsparse 
            -lsundials_nvecserial -lsundials_generic -lklu \
            -lgsl -llapacke -llapack -lblas -lcairo -ldl -lm
 
-LIB_SRCS := $(filter-out auto_iface/cable_main.c,$(wildcard $(addsuffix /*.c,$(MODULES))))
+PY_SRCS  := $(wildcard auto_iface/pycable_*.c)
+LIB_SRCS := $(filter-out auto_iface/cable_main.c $(PY_SRCS),$(wildcard $(addsuffix /*.c,$(MODULES))))
 LIB_OBJS := $(LIB_SRCS:%.c=$(BUILD)/%.o)
 GEN_OBJS := $(BUILD)/gen/autoeq_compat_text.o
 # auto_iface/auto_compat: the files cable writes next to an AUTO equation file it
@@ -56,9 +59,19 @@ VERSION  := $(shell sed -n 's/^\#define CABLE_VERSION "\(.*\)"/\1/p' include/cab
 PREFIX   ?= /usr/local
 DEPS_OK  := build/.deps-ok
 
-.PHONY: all lib install check asan valgrind demo scenes bench stress fuzz clean help deps tests-build
+# The Python package: python/cable/*.py and the extension cable._cable
+# (auto_iface/pycable_*.c, the public API only, linked with libcable.a), put
+# together in $(BUILD)/python where `cable replay` and the tests find it.
+PY_INC   = $(shell $(PYTHON) -c "import sysconfig; print(sysconfig.get_paths()['include'])")
+NP_INC   = $(shell $(PYTHON) -c "import numpy; print(numpy.get_include())")
+PY_OBJS  := $(PY_SRCS:%.c=$(BUILD)/%.o)
+PYPKG    := $(BUILD)/python/cable
+PY_FILES := $(patsubst python/cable/%,$(PYPKG)/%,$(wildcard python/cable/*.py))
+PY_SO    := $(PYPKG)/_cable.so
 
-all: cable $(LIBSO)
+.PHONY: all lib python install check asan valgrind demo scenes bench stress fuzz clean help deps tests-build
+
+all: cable $(LIBSO) python
 
 # Dependencies come from Debian; the script installs only what is missing.
 $(DEPS_OK): scripts/install-deps.sh
@@ -70,9 +83,16 @@ $(LIB_OBJS): $(BUILD)/%.o: %.c | $(DEPS_OK)
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) $(LIBFLAGS) $(call layer_incs,$<) -c $< -o $@
 
+# The extension sees the public headers and its own folder only.
+$(PY_OBJS): $(BUILD)/%.o: %.c | $(DEPS_OK)
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) $(PUBINC) -Iauto_iface -isystem $(PY_INC) -isystem $(NP_INC) -c $< -o $@
+
+$(BUILD)/auto_iface/cable_main.o: EXTRA_DEFS := -DCABLE_PYTHON='"$(PYTHON)"'
+
 $(BUILD)/%.o: %.c | $(DEPS_OK)
 	@mkdir -p $(dir $@)
-	$(CC) $(CFLAGS) $(call layer_incs,$<) -c $< -o $@
+	$(CC) $(CFLAGS) $(EXTRA_DEFS) $(call layer_incs,$<) -c $< -o $@
 
 $(BUILD)/gen/autoeq_compat_text.c: $(COMPAT_FILES) Makefile
 	@mkdir -p $(dir $@)
@@ -102,6 +122,16 @@ $(LIBSO): $(LIB_OBJS) $(GEN_OBJS)
 
 lib: $(LIBSO) $(LIBCABLE)
 
+$(PY_SO): $(PY_OBJS) $(LIBCABLE)
+	@mkdir -p $(dir $@)
+	$(CC) -shared $(LDFLAGS) $^ $(LIBS) -o $@
+
+$(PYPKG)/%.py: python/cable/%.py
+	@mkdir -p $(dir $@)
+	cp $< $@
+
+python: $(PY_SO) $(PY_FILES)
+
 $(BUILD)/cable: $(BUILD)/auto_iface/cable_main.o $(LIBCABLE)
 	$(CC) $(LDFLAGS) -rdynamic $^ $(LIBS) -o $@
 
@@ -116,7 +146,9 @@ $(BUILD)/plugins/%.so: tests/plugins/%.c | $(DEPS_OK)
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) $(PUBINC) -Itests/plugins -shared $< -o $@
 
-tests-build: $(TEST_BINS) $(PLUGINS) $(BUILD)/cable cable $(LIBSO)
+# the Python package only in release builds (CPython cannot load a sanitized extension)
+PY_TARGET_release := python
+tests-build: $(TEST_BINS) $(PLUGINS) $(BUILD)/cable cable $(LIBSO) $(PY_TARGET_$(MODE))
 
 # The README's test command: build and run every test program, one summary line.
 check: tests-build
@@ -132,10 +164,10 @@ valgrind: tests-build
 	  CABLE_TEST_QUICK=1 bash scripts/run-tests.sh $(BUILD)
 
 # The README's main job: the paper's knot scene on its defaults.
-demo: cable
+demo: cable python
 	@bash scripts/demo.sh
 
-scenes: cable
+scenes: cable python
 	@bash scripts/scenes.sh
 
 bench: cable tests-build $(BENCH_BINS)
@@ -145,15 +177,19 @@ bench: cable tests-build $(BENCH_BINS)
 stress: cable tests-build
 	@bash scripts/stress.sh $(BUILD)
 
-# Fuzzing of the constants, script and s-file parsers (clang's libFuzzer).
+# Fuzzing of the constants and s-file parsers (clang's libFuzzer).
 fuzz:
 	@bash scripts/fuzz.sh
 
-# Headers, library and pkg-config file under PREFIX (default /usr/local):
+# Headers, library, pkg-config file, cable and its Python package under PREFIX
+# (default /usr/local; bin/cable finds PREFIX/lib/cable/python):
 #   make install PREFIX=$HOME/.local
 #   cc app.c $(pkg-config --cflags --libs cable)
-install: $(LIBSO) $(BUILD)/cable
-	install -d $(DESTDIR)$(PREFIX)/include/cable $(DESTDIR)$(PREFIX)/lib/pkgconfig $(DESTDIR)$(PREFIX)/bin
+install: $(LIBSO) $(BUILD)/cable python
+	install -d $(DESTDIR)$(PREFIX)/include/cable $(DESTDIR)$(PREFIX)/lib/pkgconfig $(DESTDIR)$(PREFIX)/bin \
+	  $(DESTDIR)$(PREFIX)/lib/cable/python/cable
+	install -m 644 $(PY_FILES) $(DESTDIR)$(PREFIX)/lib/cable/python/cable/
+	install -m 755 $(PY_SO) $(DESTDIR)$(PREFIX)/lib/cable/python/cable/
 	install -m 644 include/cable/*.h $(DESTDIR)$(PREFIX)/include/cable/
 	install -m 755 $(LIBSO) $(DESTDIR)$(PREFIX)/lib/$(SONAME)
 	ln -sf $(SONAME) $(DESTDIR)$(PREFIX)/lib/libcable.so
@@ -165,9 +201,9 @@ clean:
 	rm -rf build cable
 
 help:
-	@echo "make            build ./cable"
+	@echo "make            build ./cable, libcable.so and the Python package (build/MODE/python)"
 	@echo "make lib        build build/MODE/libcable.so (and the static libcable.a)"
-	@echo "make install    headers, libcable.so, cable and cable.pc under PREFIX"
+	@echo "make install    headers, libcable.so, cable.pc, cable and the Python package under PREFIX"
 	@echo "make check      build and run the test suite (summary: N passed, M failed)"
 	@echo "make demo       build and run the main job (the paper's knot scene)"
 	@echo "make asan       tests under AddressSanitizer + UBSan"
@@ -178,4 +214,4 @@ help:
 	@echo "make fuzz       fuzz the parsers (libFuzzer, 10 minutes)"
 
 .PRECIOUS: $(BUILD)/%.o $(BUILD)/tests/%.o
--include $(LIB_OBJS:.o=.d) $(GEN_OBJS:.o=.d) $(TEST_BINS:=.d) $(BENCH_BINS:=.d) $(PLUGINS:.so=.d) $(BUILD)/auto_iface/cable_main.d
+-include $(LIB_OBJS:.o=.d) $(GEN_OBJS:.o=.d) $(PY_OBJS:.o=.d) $(TEST_BINS:=.d) $(BENCH_BINS:=.d) $(PLUGINS:.so=.d) $(BUILD)/auto_iface/cable_main.d

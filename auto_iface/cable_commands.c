@@ -6,20 +6,19 @@
 
 #include "cable/cable_aufile.h"
 #include "cable/cable_analysis.h"
-#include "replay_braid.h"
 #include "braid_state.h"
-#include "cable/cable_status.h"
 #include "cable/cable_names.h"
-#include "script.h"
-#include "script_host_cable.h"
+#include "cable/cable_session.h"
+#include "cable/cable_status.h"
 
-/* Keys whose values are names: the run's keywords, not constants.  The
- * table's own spelling of key, or NULL. */
-static const char *name_key(const char *key)
+/* The run's keywords that take names: their slot in the arguments, or NULL. */
+static const char **name_slot(cable_run_args *a, const char *key)
 {
-  static const char *const names[] = {"c", "e", "s", "sv", "ap"};
-  for (size_t i = 0; i < sizeof names / sizeof names[0]; i++)
-    if (strcmp(key, names[i]) == 0) return names[i];
+  if (strcmp(key, "c") == 0) return &a->c;
+  if (strcmp(key, "e") == 0) return &a->e;
+  if (strcmp(key, "s") == 0) return &a->s;
+  if (strcmp(key, "sv") == 0) return &a->sv;
+  if (strcmp(key, "ap") == 0) return &a->ap;
   return NULL;
 }
 
@@ -40,17 +39,23 @@ int cable_cmd_run(int argc, char **argv, cable_error *err)
 {
   if (argc > CLI_MAX_ARGS)
     return cable_error_set(err, CABLE_ERR_INPUT, "<command line>", 0, NULL, "more than %d arguments", CLI_MAX_ARGS);
-  script_kwarg kwv[8];
-  int nkw = 0, nover = 0, rc = 0;
+  cable_run_args a;
+  memset(&a, 0, sizeof a);
+  char names[5][CABLE_NAME_MAX];
+  int nnames = 0, nover = 0, rc = 0;
   const char **over = calloc((size_t)argc + 1, sizeof *over);
   char **owned = calloc((size_t)argc + 1, sizeof *owned);
   if (!over || !owned) rc = cable_error_set(err, CABLE_ERR_ALLOC, NULL, 0, NULL, "out of memory");
-  for (int i = 0; i < argc && !rc; i++) {
+  /* `cable run NAME ...` is AUTO's run('NAME'): e='NAME', c='NAME' */
+  const char *runname = argc > 0 && !strchr(argv[0], '=') ? argv[0] : NULL;
+  if (runname && (!runname[0] || strlen(runname) >= CABLE_NAME_MAX))
+    rc = cable_error_set(err, CABLE_ERR_INPUT, "<command line>", 0, runname, "not a run name");
+  for (int i = runname ? 1 : 0; i < argc && !rc; i++) {
     const char *eq = strchr(argv[i], '=');
     char key[64];
     if (!eq || eq == argv[i] || (size_t)(eq - argv[i]) >= sizeof key) {
       rc = cable_error_set(err, CABLE_ERR_INPUT, "<command line>", 0, argv[i],
-                           "arguments are KEY=VALUE (for example c=knot72 NMX=50)");
+                           "arguments are NAME (first) and KEY=VALUE (for example c=knot72 NMX=50)");
       break;
     }
     snprintf(key, sizeof key, "%.*s", (int)(eq - argv[i]), argv[i]);
@@ -63,16 +68,10 @@ int cable_cmd_run(int argc, char **argv, cable_error *err)
         rc = cable_error_set(err, CABLE_ERR_INPUT, "<command line>", 0, key, "given twice ('%s' and '%s')", argv[j],
                              argv[i]);
     if (rc) break;
-    if (name_key(key)) {
-      char name[CABLE_NAME_MAX];
-      unquote(eq + 1, name, sizeof name);
-      script_kwarg *k = &kwv[nkw];
-      k->name = name_key(key);
-      if (script_string_new(&k->value, name, strlen(name))) {
-        rc = cable_error_set(err, CABLE_ERR_ALLOC, NULL, 0, NULL, "out of memory");
-        break;
-      }
-      nkw++;
+    const char **slot = name_slot(&a, key);
+    if (slot) {
+      unquote(eq + 1, names[nnames], sizeof names[nnames]);
+      *slot = names[nnames++];
     } else if (strcmp(eq + 1, "-") == 0) {
       size_t len = strlen(argv[i]) + 3;
       if (!(owned[nover] = malloc(len))) {
@@ -87,35 +86,24 @@ int cable_cmd_run(int argc, char **argv, cable_error *err)
     }
   }
   if (!rc) {
-    cable_replay_options o;
-    cable_replay_options_init(&o);
+    cable_session_options o;
+    cable_session_options_init(&o);
     o.dir = ".";
-    o.problems = cable_braid_resolver();
-    cable_replay *r = cable_replay_alloc(&o);
-    script_kwargs kw = {nkw, kwv};
-    rc = r ? cable_replay_run_cli(r, &kw, nover, over, err)
-           : cable_error_set(err, CABLE_ERR_ALLOC, NULL, 0, NULL, "out of memory");
-    cable_replay_free(r);
+    o.problems = cable_session_braid_problems();
+    cable_session *r = cable_session_alloc(&o);
+    a.name = runname;
+    a.nover = nover;
+    a.over = over;
+    a.over_file = "<command line>";
+    cable_branch *b = NULL;
+    rc = r ? cable_session_run(r, &a, &b, err) : cable_error_set(err, CABLE_ERR_ALLOC, NULL, 0, NULL, "out of memory");
+    cable_branch_decref(b);
+    cable_session_free(r);
   }
-  for (int k = 0; k < nkw; k++) script_value_release(&kwv[k].value);
   for (int k = 0; owned && k < argc; k++) free(owned[k]);
   free(owned);
   free(over);
   return rc;
-}
-
-int cable_cmd_replay(const char *script, cable_error *err)
-{
-  char dir[1024];
-  snprintf(dir, sizeof dir, "%s", script);
-  char *slash = strrchr(dir, '/');
-  if (slash) *slash = '\0';
-  else snprintf(dir, sizeof dir, ".");
-  cable_replay_options o;
-  cable_replay_options_init(&o);
-  o.dir = dir;
-  o.problems = cable_braid_resolver();
-  return cable_replay_run_file(script, &o, err);
 }
 
 int cable_cmd_table(const char *bfile, FILE *out, cable_error *err)

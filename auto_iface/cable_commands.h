@@ -7,10 +7,8 @@
 
 #include "cable/cable_error.h"
 
-/* cable run KEY=VALUE ...: one run(...) of the script host in the current directory. */
+/* cable run KEY=VALUE ...: one run(...) of a session in the current directory. */
 int cable_cmd_run(int argc, char **argv, cable_error *err);
-/* cable replay SCRIPT: output in the script's directory. */
-int cable_cmd_replay(const char *script, cable_error *err);
 /* cable table b.NAME */
 int cable_cmd_table(const char *bfile, FILE *out, cable_error *err);
 /* cable list s.NAME (error estimates from d.NAME when present) */

@@ -1,26 +1,31 @@
 /* The `cable` command line: uses only the public API and reports every error
- * on one line with file, line and key, exiting non-zero. */
+ * on one line with file, line and key, exiting non-zero.  `cable replay`
+ * runs a script in CPython with the cable package (python/cable). */
+#include <errno.h>
+#include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include "cable/cable_aufile.h"
 #include "cable_commands.h"
 #include "cable/cable_pictures.h"
 #include "cable/cable_status.h"
 #include "cable/cable_version.h"
-#include "script.h"
-#include "script_host_cable.h"
 
 static void usage(FILE *out)
 {
   fputs("usage: cable COMMAND [ARGS]\n"
         "commands:\n"
-        "  run [c=NAME] [e=PROBLEM] [s=NAME] [sv=NAME] [KEY=VALUE ...]\n"
-        "                     one continuation run, AUTO's run(...) semantics; KEY=VALUE\n"
-        "                     overrides the constants file c.NAME\n"
-        "  replay SCRIPT      replay a run script (a subset of AUTO's Python CLI); output\n"
-        "                     files go to the script's directory\n"
+        "  run [NAME] [c=NAME] [e=PROBLEM] [s=NAME] [sv=NAME] [KEY=VALUE ...]\n"
+        "                     one continuation run, AUTO's run(...) semantics (a first\n"
+        "                     NAME is run('NAME'): e=NAME c=NAME); KEY=VALUE overrides\n"
+        "                     the constants file c.NAME\n"
+        "  replay SCRIPT      run a script in Python with AUTO's commands (the cable\n"
+        "                     package, as `python3 -m cable SCRIPT`); output files go\n"
+        "                     to the script's directory\n"
         "  table b.NAME       the branch table of a b-file\n"
         "  list s.NAME        the labelled solutions of an s-file\n"
         "  analyze s.NAME LABEL...\n"
@@ -43,6 +48,47 @@ static int report(int rc, const cable_error *err)
   char buf[1400];
   if (rc == 0) return 0;
   fprintf(stderr, "cable: %s\n", err->msg[0] ? cable_error_format(err, buf, sizeof buf) : cable_status_message(rc));
+  return 1;
+}
+
+#ifndef CABLE_PYTHON
+#define CABLE_PYTHON "/usr/bin/python3"
+#endif
+
+/* The directory holding the package cable/ beside this program: BINDIR/python
+ * (the build tree) or BINDIR/../lib/cable/python (make install). */
+static int find_package(char *dir, size_t len)
+{
+  char exe[PATH_MAX];
+  ssize_t n = readlink("/proc/self/exe", exe, sizeof exe - 1);
+  if (n <= 0) return -1;
+  exe[n] = '\0';
+  char *slash = strrchr(exe, '/');
+  if (!slash) return -1;
+  *slash = '\0';
+  static const char *const rel[] = {"python", "../lib/cable/python"};
+  for (size_t i = 0; i < sizeof rel / sizeof rel[0]; i++) {
+    char probe[PATH_MAX + 64];
+    struct stat st;
+    snprintf(probe, sizeof probe, "%s/%s/cable/__init__.py", exe, rel[i]);
+    if (stat(probe, &st) == 0 && (size_t)snprintf(dir, len, "%s/%s", exe, rel[i]) < len) return 0;
+  }
+  return -1;
+}
+
+/* cable replay SCRIPT: exec CABLE_PYTHON -m cable SCRIPT with the package on PYTHONPATH. */
+static int replay(const char *script)
+{
+  char dir[PATH_MAX + 64], path[2 * PATH_MAX + 128];
+  if (find_package(dir, sizeof dir) != 0) {
+    fprintf(stderr, "cable: the Python package (cable/) is not beside this program (build it with make)\n");
+    return 1;
+  }
+  const char *old = getenv("PYTHONPATH");
+  snprintf(path, sizeof path, "%s%s%s", dir, old && old[0] ? ":" : "", old && old[0] ? old : "");
+  setenv("PYTHONPATH", path, 1);
+  execl(CABLE_PYTHON, CABLE_PYTHON, "-m", "cable", script, (char *)NULL);
+  fprintf(stderr, "cable: cannot run %s: %s\n", CABLE_PYTHON, strerror(errno));
   return 1;
 }
 
@@ -70,7 +116,7 @@ int main(int argc, char **argv)
       fprintf(stderr, "cable: usage: cable replay SCRIPT\n");
       return 2;
     }
-    return report(cable_cmd_replay(argv[2], &err), &err);
+    return replay(argv[2]);
   }
   if (strcmp(cmd, "table") == 0) {
     if (argc != 3) {

@@ -1,9 +1,25 @@
 /* Starting a branch and the driver loop that hands points to a sink. */
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
+#include "cable/cable_fold.h"
 #include "cont_impl.h"
+
+int cable_cont_set_mesh(cable_cont *cc, const double *mesh)
+{
+  if (cc->ended) return cc->end_status;
+  int nt = cc->sys->ntst;
+  int ok = mesh[0] == 0.0 && mesh[nt] == 1.0;
+  for (int j = 0; j < nt && ok; j++) ok = mesh[j + 1] > mesh[j];
+  if (!ok) {
+    cont_set_error(cc, "the mesh must increase from 0 to 1 in NTST = %d intervals", nt);
+    return CABLE_ERR_INPUT;
+  }
+  memcpy(cc->sys->mesh, mesh, (size_t)(nt + 1) * sizeof *mesh);
+  return CABLE_SUCCESS;
+}
 
 int cable_cont_set_start(cable_cont *cc, const cable_solution *start)
 {
@@ -53,7 +69,7 @@ int cable_cont_set_start(cable_cont *cc, const cable_solution *start)
 
 static const char *type_name(int itp)
 {
-  switch (itp) {
+  switch (itp >= 0 ? itp % 10 : -((-itp) % 10)) {
   case CABLE_TY_BP: return "BP";
   case CABLE_TY_LP: return "LP";
   case CABLE_TY_UZ: return "UZ";
@@ -64,7 +80,8 @@ static const char *type_name(int itp)
   }
 }
 
-static void emit(cable_cont *cc, const cable_sink *sink, int ibr, int *lab)
+/* Hands the point to the sink; 1 when the sink asks to stop (returns > 0). */
+static int emit(cable_cont *cc, const cable_sink *sink, int ibr, int *lab)
 {
   cable_point *pt = &cc->pt;
   int labelled = pt->itp != CABLE_TY_NONE;
@@ -72,13 +89,16 @@ static void emit(cable_cont *cc, const cable_sink *sink, int ibr, int *lab)
     pt->itp = CABLE_TY_RG;
     labelled = 1;
   }
+  /* AUTO's types on a fold curve (ISW = 2): the point's type + 10 ITPST */
+  if (cc->c.isw == 2 && pt->itp != CABLE_TY_NONE && abs(pt->itp) < 10)
+    pt->itp += pt->itp > 0 ? 10 * CABLE_FOLD_ITPST : -10 * CABLE_FOLD_ITPST;
   pt->ibr = ibr;
   pt->lab = labelled ? (*lab)++ : 0;
   pt->note = cc->note[0] ? cc->note : NULL;
   cc->sol->ibr = ibr;
   cc->sol->lab = pt->lab;
   cc->sol->itp = pt->itp;
-  if (sink && sink->point) sink->point(sink->ctx, pt);
+  int stop = sink && sink->point ? sink->point(sink->ctx, pt) : 0;
   if (labelled && sink && sink->solution) sink->solution(sink->ctx, pt, cc->sol);
   if (sink && sink->diag) {
     char line[320];
@@ -88,6 +108,7 @@ static void emit(cable_cont *cc, const cable_sink *sink, int ibr, int *lab)
              pt->newton_iters, pt->err_est, pt->det_sign, pt->sv1, pt->sv2);
     sink->diag(sink->ctx, line);
   }
+  return stop > 0;
 }
 
 /* AUTO's STOP = ['BP2', 'UZ3', ...]: end the branch at the n-th labelled
@@ -107,16 +128,19 @@ int cable_cont_run(cable_cont *cc, const cable_sink *sink, int ibr, int first_la
   int lab = first_label, rc;
   int seen[sizeof cc->c.stop_on / sizeof cc->c.stop_on[0]] = {0};
   while ((rc = cable_cont_step(cc)) == CABLE_SUCCESS) {
-    emit(cc, sink, ibr, &lab);
+    if (emit(cc, sink, ibr, &lab)) {
+      rc = CABLE_ERR_INTERRUPTED;   /* the caller stopped the run (its files stay as they were) */
+      break;
+    }
     if (stop_reached(cc, seen)) {
       cc->ended = 1;
       cc->end_status = CABLE_END_STOP;
     }
   }
-  if (rc < 0 && cc->npt > 0) {
+  if (rc < 0 && rc != CABLE_ERR_INTERRUPTED && cc->npt > 0) {
     /* the branch ends abnormally: the last good point is stored as MX */
     cc->pt.itp = CABLE_TY_MX;
-    emit(cc, sink, ibr, &lab);
+    (void)emit(cc, sink, ibr, &lab);
   }
   if (rc < 0 && sink && sink->diag) {
     char line[640];

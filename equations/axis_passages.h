@@ -26,13 +26,8 @@
 #ifndef CABLE_AXIS_PASSAGES_H
 #define CABLE_AXIS_PASSAGES_H
 
+#include "cable/cable_analysis.h"   /* axis_passages, braid_axis_passages */
 #include "cable/cable_solution.h"
-
-typedef struct axis_passages {
-  int count;          /* passages: segment pairs that pass through each other */
-  int net;            /* the sum of their signs */
-  double tau_first;   /* homotopy parameter of the first passage, NAN without one */
-} axis_passages;
 
 /* Two shapes a, b [3n] of one closed curve (point n-1 joins point 0; do not
  * repeat the first point), sampled at positions pos[n] (increasing, in
@@ -47,10 +42,5 @@ int curve_passages(const double *a, const double *b, const double *pos, int n, d
  * passage must close. */
 #define AXIS_PASSAGE_SAMPLES_PER_DELTA 2
 #define AXIS_PASSAGE_MIN_SAMPLES 200
-
-/* Passages of the braid axis (contact curve) between solutions a and b of
- * one branch (same problem, closed axes).  The window is pi Delta.  0 or a
- * cable_status (not braid solutions, CABLE_ERR_ALLOC). */
-int braid_axis_passages(const cable_solution *a, const cable_solution *b, axis_passages *out);
 
 #endif

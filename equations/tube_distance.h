@@ -72,10 +72,7 @@ int braid_tube_distance(const braid_curves *bc, tube_distance_result *out);
  * about each other have kappa <= 2/Delta, so h = Delta/10 bounds the error
  * of dmin by Delta/400 (0.25 %). */
 #define TUBE_SAMPLES_PER_DELTA 10
-/* The same for a braid solution sampled at n points (0: default
- * TUBE_SAMPLES_PER_DELTA * L / Delta + 1, at least 1001), plus the maximum
- * curvature of the contact curve at those points (for PVLS output). */
-int braid_tube_distance_solution(const cable_solution *sol, int n, tube_distance_result *out);
+/* braid_tube_distance_solution: in cable/cable_analysis.h (public). */
 
 /* Along a branch sampled at n points with torque t[i] and tube distance d[i]
  * (in units of Delta): the stretches where d > 1 (tubes apart), as [from, to]

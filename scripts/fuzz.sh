@@ -1,9 +1,8 @@
 #!/usr/bin/env bash
-# Fuzz cable's input parsers with libFuzzer (clang-14), ASan and UBSan:
+# Fuzz cable's input parsers (run scripts are Python: CPython parses them) with libFuzzer (clang-14), ASan and UBSan:
 #   constants  cable_constants_parse_string (+ parse_override)   auto_iface/constants_parse.h
-#   script     script_run_string with a host that fails/returns None/dummies  auto_iface/script.h
 #   sfile      cable_sfile_read on a temporary file               auto_iface/aufile.h
-# Usage: scripts/fuzz.sh [TARGET ...]       (default: all three, one after the other)
+# Usage: scripts/fuzz.sh [TARGET ...]       (default: both, one after the other)
 # Env:   FUZZ_SECONDS  total fuzzing time, shared equally by the targets (default 600)
 #        FUZZ_JOBS     1 (default): sequential; N > 1: N targets at once (same share each)
 # Output: build/fuzz/<target> binaries, build/fuzz/corpus/<target>/ (grown corpus),
@@ -19,7 +18,7 @@ out=build/fuzz
 total=${FUZZ_SECONDS:-600}
 jobs=${FUZZ_JOBS:-1}
 targets=("$@")
-[ ${#targets[@]} -eq 0 ] && targets=(constants script sfile)
+[ ${#targets[@]} -eq 0 ] && targets=(constants sfile)
 
 # ---- toolchain: clang-14 with the libFuzzer runtime (Debian: clang-14, libclang-rt-14-dev)
 need=()
@@ -44,17 +43,15 @@ FLAGS=(-std=c11 -D_POSIX_C_SOURCE=200809L -g -O1 -fno-omit-frame-pointer
 common=(continuation/cable_error.c continuation/cable_status.c)
 srcs_constants=(auto_iface/constants_parse.c auto_iface/names.c continuation/cable_constants.c
                 auto_iface/aufile_read.c continuation/cable_solution.c)
-srcs_script=(auto_iface/script_builtins.c auto_iface/script_eval.c auto_iface/script_format.c
-             auto_iface/script_lex.c auto_iface/script_parse.c auto_iface/script_value.c)
 srcs_sfile=(auto_iface/aufile_read.c auto_iface/names.c continuation/cable_constants.c
             continuation/cable_solution.c)
-# inputs longer than this are cut: real constants files and scripts are a few
+# inputs longer than this are cut: real constants files are a few
 # kB; s-files are larger, and a few solutions of a small NTST cover the reader
-declare -A maxlen=([constants]=4096 [script]=4096 [sfile]=16384)
+declare -A maxlen=([constants]=4096 [sfile]=16384)
 
 mkdir -p "$out"
 for t in "${targets[@]}"; do
-  case $t in constants|script|sfile) ;; *) echo "fuzz: unknown target $t" >&2; exit 2 ;; esac
+  case $t in constants|sfile) ;; *) echo "fuzz: unknown target $t" >&2; exit 2 ;; esac
   declare -n srcs="srcs_$t"
   echo "fuzz: building $out/$t"
   $CC "${FLAGS[@]}" "tests/fuzz/fuzz_$t.c" "${srcs[@]}" "${common[@]}" -lm -o "$out/$t" || exit 1
@@ -75,11 +72,7 @@ for t in "${targets[@]}"; do
     [ -f "$f" ] && cp "$f" "$out/corpus/$t/"
   done
   case $t in
-    constants) for f in tests/data/c.* tests/data/scripts/c.* runs/*/c.*; do seed constants "$f"; done ;;
-    script)    # the first byte picks the host's behaviour (tests/fuzz/fuzz_script.c): all four
-               for f in tests/data/scripts/*.auto runs/*/*.auto; do
-                 for m in 0 1 2 3; do seed script "$f" "$m"; done
-               done ;;
+    constants) for f in tests/data/c.* runs/*/c.*; do seed constants "$f"; done ;;
     sfile)     for f in tests/data/s.* runs/*/s.*; do seed sfile "$f"; done ;;
   esac
 done

@@ -15,6 +15,10 @@ probes=(
   "/usr/include/cairo/cairo.h:libcairo2-dev"
   "/usr/bin/gfortran:gfortran"
   "/usr/bin/auto-07p:auto-07p"
+  "/usr/bin/python3:python3"
+  "/usr/include/python3*/Python.h:python3-dev"
+  "/usr/lib/python3/dist-packages/numpy/core/include/numpy/arrayobject.h:python3-numpy"
+  "/usr/lib/python3/dist-packages/pytest/__init__.py:python3-pytest"
 )
 
 arch_dir=$(dpkg-architecture -qDEB_HOST_MULTIARCH 2>/dev/null || echo x86_64-linux-gnu)
@@ -22,7 +26,8 @@ missing=()
 for p in "${probes[@]}"; do
   file=${p%%:*}; pkg=${p##*:}
   file=${file//x86_64-linux-gnu/$arch_dir}
-  [ -e "$file" ] || missing+=("$pkg")
+  # shellcheck disable=SC2086  # a probe may be a glob (python3.X)
+  compgen -G "$file" >/dev/null || missing+=("$pkg")
 done
 # de-duplicate
 mapfile -t missing < <(printf '%s\n' "${missing[@]}" | sed '/^$/d' | sort -u)

@@ -27,5 +27,26 @@ for t in "$build"/tests/test_*; do
   printf '%-32s %4d passed, %d failed\n' "$name" "$p" "$f"
   passed=$((passed + p)); failed=$((failed + f))
 done
+# The Python package's tests (tests/python, pytest): each test function counts
+# once.  Not under a wrapper (valgrind) or a sanitizer build: CPython would
+# load the instrumented extension without its runtime.
+pyc=$(ls "$build"/python/cable/_cable*.so 2>/dev/null | head -n 1)
+if [ -z "${CABLE_TEST_WRAPPER:-}" ] && [ "$build" = build/release ] && [ -n "$pyc" ]; then
+  log=tests/tmp/pytest.log
+  PYTHONPATH="$build/python" PYTHONDONTWRITEBYTECODE=1 CABLE_BUILD="$build" \
+    ${PYTHON:-/usr/bin/python3} -m pytest -q -p no:cacheprovider tests/python >"$log" 2>&1
+  rc=$?
+  summary=$(tail -n 1 "$log")
+  p=$(echo "$summary" | grep -o '[0-9]* passed' | grep -o '[0-9]*'); p=${p:-0}
+  f=$(echo "$summary" | grep -o '[0-9]* \(failed\|error\)' | awk '{s += $1} END {print s + 0}')
+  grep -E '^(FAILED|ERROR) ' "$log" | sed 's/^/pytest: /'
+  if [ "$rc" -ne 0 ] && [ "$f" -eq 0 ]; then
+    echo "pytest: exited with status $rc (see $log):"; tail -n 20 "$log" | sed 's/^/    /'; f=1
+  fi
+  printf '%-32s %4d passed, %d failed\n' "pytest tests/python" "$p" "$f"
+  passed=$((passed + p)); failed=$((failed + f))
+else
+  echo "pytest tests/python: skipped (wrapper, sanitizer build or no extension in $build)"
+fi
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

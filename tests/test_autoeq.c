@@ -24,7 +24,7 @@
 #include "cable/cable_autoeq.h"
 #include "cable/cable_status.h"
 #include "harness.h"
-#include "script_host_cable.h"
+#include "cable/cable_session.h"
 #include "test_files.h"
 
 #define DATA "tests/data/autoeq"
@@ -56,20 +56,38 @@ static void stage(const char *folder, const char *const *files)
   }
 }
 
-/* Runs TMP/folder/script; 0 or the error. */
-static int replay(const char *folder, const char *script, cable_error *err)
+/* What the scripts tests/data/autoeq/FOLDER/NAME.auto say (run(e=E, c=C)
+ * and save as SV), on a session in TMP/folder; 0 or the error. */
+static int replay_over(const char *folder, const char *e, const char *c, const char *sv, int nover,
+                       const char *const *over, cable_error *err)
 {
-  char path[1100], dir[512];
+  char dir[512];
   snprintf(dir, sizeof dir, "%s/%s", TMP, folder);
-  snprintf(path, sizeof path, "%s/%s", dir, script);
-  cable_replay_options o;
-  cable_replay_options_init(&o);
+  cable_session_options o;
+  cable_session_options_init(&o);
   o.dir = dir;
   FILE *log = fopen(TMP "/log.txt", "a");
   o.log = log;
-  int rc = cable_replay_run_file(path, &o, err);
+  cable_session *r = cable_session_alloc(&o);
+  cable_run_args a;
+  memset(&a, 0, sizeof a);
+  a.e = e;
+  a.c = c;
+  a.sv = sv;
+  a.nover = nover;
+  a.over = over;
+  cable_branch *b = NULL;
+  cable_error_clear(err);
+  int rc = r ? cable_session_run(r, &a, &b, err) : CABLE_ERR_ALLOC;
+  cable_branch_decref(b);
+  cable_session_free(r);
   if (log) fclose(log);
   return rc;
+}
+
+static int replay(const char *folder, const char *e, const char *c, const char *sv, cable_error *err)
+{
+  return replay_over(folder, e, c, sv, 0, NULL, err);
 }
 
 /* The b-file row of the k-th point of type ty (AUTO code), or -1. */
@@ -114,7 +132,7 @@ static void bratu_fold(const char *folder, const char *src)
   stage(folder, files);
   cable_error err;
   cable_error_clear(&err);
-  int rc = replay(folder, "bratu.auto", &err);
+  int rc = replay(folder, "bratu", "bratu", "bratu", &err);
   char buf[1200];
   test_report(rc == 0, "%s: e='bratu' runs (%s)", src, rc ? cable_error_format(&err, buf, sizeof buf) : "ok");
   char b[512];
@@ -141,7 +159,7 @@ static void elastica_bps(void)
   const char *files[] = {"elastica.f", "c.elastica", "elastica.auto", NULL};
   stage("elastica_f", files);
   cable_error err;
-  int rc = replay("elastica_f", "elastica.auto", &err);
+  int rc = replay("elastica_f", "elastica", "elastica", "elastica", &err);
   char buf[1200];
   test_report(rc == 0, "elastica.f (fixed form): runs (%s)", rc ? cable_error_format(&err, buf, sizeof buf) : "ok");
   cable_bfile *bf = cable_bfile_read(TMP "/elastica_f/b.elastica", &err);
@@ -159,7 +177,7 @@ static void bratu_integral_getp(const char *folder, const char *src)
   const char *files[] = {src, "c.bratuint", "bratuint.auto", NULL};
   stage(folder, files);
   cable_error err;
-  int rc = replay(folder, "bratuint.auto", &err);
+  int rc = replay(folder, "bratuint", "bratuint", "bratuint", &err);
   char buf[1200], b[512], what[200];
   test_report(rc == 0, "%s: runs (%s)", src, rc ? cable_error_format(&err, buf, sizeof buf) : "ok");
   snprintf(b, sizeof b, "%s/%s/b.bratuint", TMP, folder);
@@ -191,6 +209,32 @@ static void bratu_integral_getp(const char *folder, const char *src)
   snprintf(what, sizeof what, "%s: GETP('INT') equals the ICND value along the branch", src);
   test_le(what, worst, 1e-9);
   cable_bfile_free(bf);
+  if (strstr(src, ".f90")) {
+    /* GETP('STP') into PAR(9) (s-file only): the step that reached each
+       labelled point, which the d-file's DS column prints to 6 digits */
+    char sp[512], dp[512], line[512];
+    snprintf(sp, sizeof sp, "%s/%s/s.bratuint", TMP, folder);
+    snprintf(dp, sizeof dp, "%s/%s/d.bratuint", TMP, folder);
+    cable_sfile *sf = cable_sfile_read(sp, &err);
+    int nchk = 0, bad = 0;
+    for (int i = 0; sf && i < cable_sfile_count(sf); i++) {
+      const cable_solution *x = cable_sfile_get(sf, i);
+      FILE *d = fopen(dp, "r");
+      while (d && fgets(line, sizeof line, d)) {
+        int ibr, pt, it;
+        double par, l2, ds;
+        if (sscanf(line, "%d %d %d %lf %lf %lf", &ibr, &pt, &it, &par, &l2, &ds) == 6 && pt == x->ntot) {
+          nchk++;
+          bad += fabs(x->par[8] - ds) > 5e-6 * fmax(fabs(ds), 1e-300) + 1e-300;
+          break;
+        }
+      }
+      if (d) fclose(d);
+    }
+    cable_sfile_free(sf);
+    snprintf(what, sizeof what, "%s: GETP('STP') is the d-file's DS at every stored solution (%d checked)", src, nchk);
+    test_true(what, nchk >= 3 && bad == 0);
+  }
 }
 
 /* IPLT = NDIM + 1: the second column is the integral of U(1), and A1 bounds
@@ -200,7 +244,7 @@ static void iplt_integral(void)
   const char *files[] = {"bratu.f90", "c.bratu", "bratu.auto", NULL};
   stage("bratu_iplt", files);
   cable_error err;
-  int rc = replay("bratu_iplt", "bratu.auto", &err);
+  int rc = replay("bratu_iplt", "bratu", "bratu", "bratu", &err);
   test_true("IPLT=3: runs", rc == 0);
   cable_bfile *bf = cable_bfile_read(TMP "/bratu_iplt/b.bratu", &err);
   if (!test_true("IPLT=3: b.bratu was written", bf != NULL)) return;
@@ -218,6 +262,112 @@ static void iplt_integral(void)
   test_true("IPLT=3, A1=0.5: the run ends (EP) once the integral passes 0.5, before the fold",
             last > 0 && br->ty[last] == 9 && col(br, "INTEGRAL U(1)", last) > 0.5 &&
                 col(br, "INTEGRAL U(1)", last - 1) <= 0.5 && row_of(br, 5, 0) < 0);
+  cable_bfile_free(bf);
+}
+
+/* Bratu's branch through s: lambda(s) = 8 s^2/cosh^2 s; the unit tangent in
+ * the engine's norm (integral over [0,1] of u_s^2 + v_s^2, plus lambda_s^2,
+ * THU = THL = 1) has the lambda component lambda_s / sqrt(that), which is
+ * what GETP('FLD') returns (doc/auto-users.md).  With x' = 2x - 1:
+ * u_s = 2 tanh s - 2 x' tanh(s x'), v = u' = -4 s tanh(s x'),
+ * v_s = -4 tanh(s x') - 4 s x' / cosh^2(s x'),
+ * lambda_s = 16 s (1 - s tanh s) / cosh^2 s.  Simpson, 20000 panels. */
+static double bratu_fld(double s)
+{
+  int n = 20000;
+  double sum = 0;
+  for (int i = 0; i <= n; i++) {
+    double x = 2.0 * i / n - 1, c = cosh(s * x);
+    double us = 2 * tanh(s) - 2 * x * tanh(s * x), vs = -4 * tanh(s * x) - 4 * s * x / (c * c);
+    double w = (i == 0 || i == n) ? 1 : (i % 2 ? 4 : 2);
+    sum += w * (us * us + vs * vs);
+  }
+  double ls = 16 * s * (1 - s * tanh(s)) / (cosh(s) * cosh(s));
+  return ls / sqrt(sum / (3.0 * n) + ls * ls);
+}
+
+/* s on the lower (upper = 0) or upper branch with lambda(s) = lam (bisection). */
+static double bratu_s(double lam, int upper)
+{
+  double sf = fold_s(), lo = upper ? sf : 0.0, hi = upper ? 10.0 : sf;
+  for (int i = 0; i < 200; i++) {
+    double m = 0.5 * (lo + hi), f = 8 * m * m / (cosh(m) * cosh(m)) - lam;
+    if ((f < 0) == !upper) lo = m;
+    else hi = m;
+  }
+  return 0.5 * (lo + hi);
+}
+
+/* GETP('FLD') and GETP('BIF') (fldbif/: equation files written for this
+ * test, PVLS stores them in PAR(2) and PAR(3)). */
+static void fold_bp_functions(void)
+{
+  const char *files[] = {"bratufb.f90", "elasfb.f90", "c.bratufb", "c.elasfb", "fldbif.auto", NULL};
+  stage("fldbif", files);
+  cable_error err;
+  cable_error_clear(&err);
+  /* what fldbif.auto says */
+  static const char *const e0[] = {"ISP=0", "NMX=5"};
+  int rc = replay("fldbif", "bratufb", "bratufb", "bratufb", &err);
+  if (!rc) rc = replay("fldbif", "elasfb", "elasfb", "elasfb", &err);
+  if (!rc) rc = replay_over("fldbif", "elasfb", "elasfb", "elasfb0", 2, e0, &err);
+  char buf[1200];
+  test_report(rc == 0, "fldbif.auto: runs (%s)", rc ? cable_error_format(&err, buf, sizeof buf) : "ok");
+  cable_bfile *bf = cable_bfile_read(TMP "/fldbif/b.bratufb", &err);
+  if (test_true("b.bratufb was written", bf != NULL && bf->nbranch == 1)) {
+    const cable_bfile_branch *br = &bf->branch[0];
+    /* UZ at lambda = 1, 3 (lower), 3 (upper): the closed form; NTST=20 collocation
+       is accurate far below 1e-7, the UZ located to ~1e-10 in lambda */
+    const struct { int k, upper; double lam; } uz[] = {{0, 0, 1.0}, {1, 0, 3.0}, {2, 1, 3.0}};
+    for (int i = 0; i < 3; i++) {
+      char what[160];
+      snprintf(what, sizeof what, "GETP('FLD') at the UZ lambda = %g (%s branch) = lambda_s/|(u_s, v_s, lambda_s)|",
+               uz[i].lam, uz[i].upper ? "upper" : "lower");
+      test_abs(what, col(br, "PAR(2)", row_of(br, -4, uz[i].k)), bratu_fld(bratu_s(uz[i].lam, uz[i].upper)), 1e-7);
+    }
+    /* at the located fold the test function vanishes to the location accuracy */
+    test_abs("GETP('FLD') = 0 at the LP", col(br, "PAR(2)", row_of(br, 5, 0)), 0.0, 1e-8);
+    int lp = row_of(br, 5, 0), signs_ok = lp > 1;
+    for (int r = 1; r < br->nrow && lp > 1; r++)
+      if (r != lp) signs_ok &= (r < lp) == (col(br, "PAR(2)", r) > 0);
+    test_true("GETP('FLD') > 0 before the fold and < 0 after it, at every point", signs_ok);
+    /* no BP on Bratu's branch: the BP function keeps its sign and is nonzero */
+    double b0 = col(br, "PAR(3)", 0);
+    int same = b0 != 0;
+    for (int r = 1; r < br->nrow; r++) same &= col(br, "PAR(3)", r) * b0 > 0;
+    test_true("GETP('BIF') keeps its sign on Bratu's branch (no BP)", same);
+  }
+  cable_bfile_free(bf);
+  bf = cable_bfile_read(TMP "/fldbif/b.elasfb", &err);
+  if (test_true("b.elasfb was written", bf != NULL && bf->nbranch == 1)) {
+    const cable_bfile_branch *br = &bf->branch[0];
+    /* the straight rod: the tangent is (0, 1) in (theta, P), so FLD = 1 exactly */
+    double dmax = 0;
+    for (int r = 0; r < br->nrow; r++) dmax = fmax(dmax, fabs(col(br, "PAR(2)", r) - 1.0));
+    test_abs("GETP('FLD') = 1 at every point of the straight elastica", dmax, 0.0, 1e-12);
+    /* BIF vanishes at each located BP and changes sign there, nowhere else */
+    int bp[2] = {row_of(br, 6, 0), row_of(br, 6, 1)};
+    double away = 0;
+    int changes = 0, at_bp = 0;
+    for (int r = 0; r < br->nrow; r++) {
+      double b = col(br, "PAR(3)", r);
+      if (r != bp[0] && r != bp[1]) away = away == 0 ? fabs(b) : fmin(away, fabs(b));
+      int q = r + 1 + (r + 1 == bp[0] || r + 1 == bp[1]);
+      if (q < br->nrow && r != bp[0] && r != bp[1] && col(br, "PAR(3)", q) * b < 0) changes++;
+      at_bp += (r == bp[0] || r == bp[1]) && fabs(b) < 1e-9;
+    }
+    test_int("GETP('BIF') is below 1e-9 at both BPs", at_bp, 2);
+    test_int("GETP('BIF') changes sign exactly at the two BPs", changes, 2);
+    test_true("GETP('BIF') is not small away from the BPs (> 1e-4)", away > 1e-4);
+  }
+  cable_bfile_free(bf);
+  bf = cable_bfile_read(TMP "/fldbif/b.elasfb0", &err);
+  if (test_true("b.elasfb0 (ISP=0) was written", bf != NULL && bf->nbranch == 1)) {
+    const cable_bfile_branch *br = &bf->branch[0];
+    double m = 0;
+    for (int r = 0; r < br->nrow; r++) m = fmax(m, fabs(col(br, "PAR(3)", r)));
+    test_abs("GETP('BIF') = 0 when ISP=0 (no branch-point test, as in AUTO)", m, 0.0, 0.0);
+  }
   cable_bfile_free(bf);
 }
 
@@ -252,7 +402,7 @@ static void dat_start(void)
   }
   cable_error err;
   char buf[1200];
-  int rc = replay("bratu_f90", "dat.auto", &err);
+  int rc = replay("bratu_f90", "bratu", "bratudat", "bratudat", &err);
   test_report(rc == 0, "dat=: runs (%s)", rc ? cable_error_format(&err, buf, sizeof buf) : "ok");
   cable_bfile *bf = cable_bfile_read(TMP "/bratu_f90/b.bratudat", &err);
   if (!test_true("dat=: b.bratudat was written", bf != NULL)) return;
@@ -296,25 +446,17 @@ static void cache(void)
            CABLE_ERR_NOTFOUND);
 }
 
-/* name: the script's e= and c= (e_name NULL: the same); src: the file the
+/* name: the run's e= and c= (e_name NULL: the same); src: the file the
  * error must name (the equation file or the constants file). */
 static void bad_run(const char *name, const char *e_name, const char *src, int status, int line, const char *needle)
 {
-  char c[64], script[64];
+  char c[64];
   snprintf(c, sizeof c, "c.%s", name);
-  snprintf(script, sizeof script, "%s.auto", name);
   const char *files[] = {src, c, NULL};
   stage("bad", strcmp(src, c) == 0 ? files + 1 : files);
-  char sp[512];
-  snprintf(sp, sizeof sp, "%s/bad/%s", TMP, script);
-  FILE *f = fopen(sp, "w");
-  if (f) {
-    fprintf(f, "run(e='%s', c='%s', sv='%s')\n", e_name ? e_name : name, name, name);
-    fclose(f);
-  }
   cable_error err;
   cable_error_clear(&err);
-  int rc = replay("bad", script, &err);
+  int rc = replay("bad", e_name ? e_name : name, name, name, &err);
   char buf[1200];
   cable_error_format(&err, buf, sizeof buf);
   test_report(rc == status && strstr(buf, src) && strstr(buf, needle), "%s: refused: %s", src, buf);
@@ -322,6 +464,7 @@ static void bad_run(const char *name, const char *e_name, const char *src, int s
   snprintf(want, sizeof want, "%s:%d:", src, line);
   if (line > 0) test_report(strstr(buf, want) != NULL, "%s: the error names line %d of the file", src, line);
   const char *outs[] = {"b.", "s.", "d."};
+  char sp[512];
   int none = 1;
   for (int k = 0; k < 3; k++) {
     snprintf(sp, sizeof sp, "%s/bad/%s%s", TMP, outs[k], name);
@@ -347,14 +490,18 @@ int main(void)
   bratu_integral_getp("bratuint_f90", "bratuint.f90");
   bratu_integral_getp("bratuint_c", "bratuint.c");
   iplt_integral();
+  fold_bp_functions();
   dat_start();
   cache();
   bad_file("syntax", "syntax.f90", 8, "array reference");
   bad_file("nofunc", "nofunc.f90", 0, "does not define SUBROUTINE FUNC");
   bad_file("wrongsig", "wrongsig.f90", 2, "has 7 arguments, AUTO passes 8");
   bad_file("wrongsigc", "wrongsigc.c", 5, "conflicting types for");
+  bad_file("toomany", "toomany.f90", 6, "has 9 arguments, AUTO passes 8");
+  test_true("a Fortran MODULE leaves no .mod file in the working or the run directory",
+            !exists("bratu_consts.mod") && !exists(TMP "/bad/bratu_consts.mod"));
   bad_file("nopvls", "nopvls.c", 0, "pvls: the equation file does not define it");
-  bad_file("getpfld", "getpfld.f90", 55, "GETP: 'FLD': cable does not provide it");
+  bad_file("getphbf", "getphbf.f90", 55, "GETP: 'HBF': cable does not provide it");
   /* constants as AUTO reads them */
   bad_run("nintbuiltin", "bratu", "c.nintbuiltin", CABLE_ERR_INPUT, 3,
           "NINT: NINT=1 contradicts problem 'bratu', which has NINT=0");

@@ -7,9 +7,9 @@
  *  - the flat (6,2) link at T = 17.5, whose contact pressure changes sign:
  *    the positions must have the solution's symmetries (S0 and the 3-fold
  *    rotation) and agree between the two strands' independent pressures;
- *  - braid_branch_settled on made-up branches, and the error paths;
- *  - the scene functions analyze() and branch_table() through a run script
- *    on a short flat-knot branch. */
+ *  - braid_branch_settled on made-up branches, and the error paths.
+ * The scene functions analyze() and branch_table() are tested through the
+ * Python package (tests/python/test_scenes.py). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -21,12 +21,9 @@
 
 #include "cable/cable_analysis.h"
 #include "braid_problems.h"
-#include "replay_braid.h"
 #include "braid_start.h"
 #include "engine_util.h"
 #include "harness.h"
-#include "script.h"
-#include "script_host_cable.h"
 
 static const double KNOT_DELTA = 0.0051364907419, KNOT_LTOT = 1.98889;
 static const double LINK_DELTA = 0.016016913268;
@@ -252,117 +249,6 @@ static void check_errors(const cable_solution *knot)
   free(a);
 }
 
-/* Runs a script in dir on a fresh engine-host session; the log comes back in
- * *log (free it). */
-static int replay_text(const char *dir, const char *text, char **log, cable_error *err)
-{
-  size_t len;
-  FILE *f = open_memstream(log, &len);
-  cable_replay_options o;
-  cable_replay_options_init(&o);
-  o.dir = dir;
-  o.problems = cable_braid_resolver();
-  o.log = f;
-  cable_replay *r = cable_replay_alloc(&o);
-  int rc = script_run_string("t.auto", text, cable_replay_host(r), err);
-  cable_replay_free(r);
-  fclose(f);
-  return rc;
-}
-
-static char *slurp(const char *path)
-{
-  FILE *f = fopen(path, "r");
-  if (!f) return NULL;
-  char *buf = calloc(1, 1 << 20);
-  if (buf) buf[fread(buf, 1, (1 << 20) - 1, f)] = 0;
-  fclose(f);
-  return buf;
-}
-
-/* A flat knot branch: unknotted axis, no overlap, p > 0 throughout.  The
- * final type and the reported point come from the branch (its first label:
- * the whole branch is one overlap-free unknot stretch); a paper target that
- * does not hold must show as NO. */
-#define FLAT_KNOT_RUN \
-  "r = run(e='braid_knot', TORUS=7, HAND=1, PAR={'Delta': 0.0051364907419, 'Ltot': 1.98889, 'T': 0}," \
-  " ICP=['T', 'L', 'L2', 'eps21', 'F'], NTST=40, NCOL=4, DS=1, DSMAX=1, NMX=6, NPR=2, ISP=0, ILP=0)\n"
-
-static void check_scene_functions(void)
-{
-  char dir[200], path[300], buf[1200];
-  snprintf(dir, sizeof dir, "tests/tmp/braid_analysis.%ld", (long)getpid());
-  mkdir("tests/tmp", 0777);
-  mkdir(dir, 0777);
-  char *log = NULL;
-  cable_error err;
-  int rc = replay_text(dir,
-                       FLAT_KNOT_RUN
-                       "lab = branch_table('t_compare.txt', r, paper={'knot': 'unknot', 'Lk': 3.5, 'psign': False,"
-                       " 'linked': True}, title='flat knot')\n"
-                       "a = analyze(r(lab))\n"
-                       "print('rep', lab, r('EP1')['LAB'], a['psign'], len(a['psign_s1']), len(a['overlap']), a['closure2'],"
-                       " a['axis_kappa_max'], a['pmin1'], a['Lk_defect'])\n"
-                       "x = branch_table('t2_compare.txt', r, paper={'knot': 'right trefoil', 'Lk': 4.5})\n",
-                       &log, &err);
-  if (rc) printf("  error: %s\n", cable_error_format(&err, buf, sizeof buf));
-  test_int("branch_table on a flat knot branch: script runs", rc, 0);
-  const char *l = log ? strstr(log, "rep ") : NULL;
-  int lab = -1, ep = -2, np = -1, nl = -1, nov = -1;
-  double c2 = -1, kap = 0, pmin1 = 0, lkd = 1;
-  test_true("analyze() keys printed",
-            l && sscanf(l, "rep %d %d %d %d %d %lf %lf %lf %lf", &lab, &ep, &np, &nl, &nov, &c2, &kap, &pmin1, &lkd) == 9);
-  test_int("branch_table returns the first label (the branch is one overlap-free unknot stretch)", lab, ep);
-  test_true("analyze(): no sign change, empty position and overlap lists, closure2 0 for a knot",
-            np == 0 && nl == 0 && nov == 0 && c2 == 0);
-  /* Lk_defect: the ribbon quadrature on a converged NTST 40 knot, 1e-6 as
-     in test_braid_solutions */
-  test_true("analyze(): axis_kappa_max > 0, pmin1 > 0, Lk half-integer", kap > 0 && pmin1 > 0 && lkd < 1e-6);
-  snprintf(path, sizeof path, "%s/t_compare.txt", dir);
-  char *t = slurp(path);
-  test_true("table written in the run directory", t != NULL);
-  test_true("table: final type decided from the branch",
-            t && strstr(t, "final knot type of the braid axis (decided from the branch): unknot") != NULL);
-  test_true("table: the sign convention of T is stated", t && strstr(t, "T = T1(0) = -T2(0)") != NULL);
-  test_true("table: agreeing targets say yes (knot, Lk 3.5, no sign change)",
-            t && strstr(t, "unknot           yes") && strstr(t, "3.5              yes") &&
-                strstr(t, "no               yes"));
-  /* the flat knot's strands form a (7,2) torus knot around the unknotted
-     axis: Lk_tube = 3.5 != 0, linked */
-  test_true("table: linked inside the tube (Lk_tube 3.5)", t && strstr(t, "yes (Lk_tube = 3.5)"));
-  free(t);
-  snprintf(path, sizeof path, "%s/t2_compare.txt", dir);
-  t = slurp(path);
-  test_true("table: targets that do not hold say NO", t && strstr(t, "right trefoil    NO") && strstr(t, "4.5              NO"));
-  free(t);
-  remove(path);
-  free(log);
-  log = NULL;
-  /* bad input: a clear error naming the key, and no file */
-  rc = replay_text(dir, FLAT_KNOT_RUN "branch_table('t3_compare.txt', r, paper={'Knot': 'unknot'})\n", &log, &err);
-  test_int("branch_table: unknown paper key refused", rc, CABLE_ERR_INPUT);
-  test_true("  the message names the key", strstr(cable_error_format(&err, buf, sizeof buf), "Knot") != NULL);
-  snprintf(path, sizeof path, "%s/t3_compare.txt", dir);
-  test_true("  and no table file is written", access(path, F_OK) != 0);
-  free(log);
-  log = NULL;
-  rc = replay_text(dir, FLAT_KNOT_RUN "branch_table('t3_compare.txt', r('EP1'))\n", &log, &err);
-  test_int("branch_table(file, solution) refused", rc, CABLE_ERR_INPUT);
-  test_true("  and no table file is written", access(path, F_OK) != 0);
-  free(log);
-  log = NULL;
-  rc = replay_text(dir, FLAT_KNOT_RUN "render(r('EP1'), 't.png', color='rainbow')\n", &log, &err);
-  test_int("render: unknown colour map refused", rc, CABLE_ERR_INPUT);
-  test_true("  the message names the key", strstr(cable_error_format(&err, buf, sizeof buf), "color") != NULL);
-  free(log);
-  const char *files[] = {"t_compare.txt", "b.", "s.", "d."};
-  for (size_t i = 0; i < sizeof files / sizeof files[0]; i++) {
-    snprintf(path, sizeof path, "%s/%s", dir, files[i]);
-    remove(path);
-  }
-  rmdir(dir);
-}
-
 int main(void)
 {
   memrun *r = malloc(sizeof *r);
@@ -378,7 +264,6 @@ int main(void)
   cable_solution_free(left);
   check_flat_link(r);
   check_settled();
-  check_scene_functions();
   free(r);
   return test_summary();
 }

@@ -28,14 +28,12 @@
 
 #include "cable/cable_aufile.h"
 #include "cable/cable_analysis.h"
-#include "replay_braid.h"
 #include "braid_problems.h"
 #include "braid_start.h"
 #include "cable/cable_cont.h"
 #include "harness.h"
 #include "ribbon.h"
-#include "script.h"
-#include "script_host_cable.h"
+#include "session_util.h"
 
 /* Continue from the torus guess in T to T = target; returns the solution there. */
 static cable_solution *flat_at(const char *name, int p, int hand, double delta, double length, double target,
@@ -197,25 +195,18 @@ static void test_pvls_columns(void)
                    "'T1', 'T2', 'FM', 'h', 'qnorm', 'Ham']\n"
                    "NTST = 40, NCOL = 4, IAD = 3, JAC = 1, ISP = 0, ILP = 0\n"
                    "DS = 1.0, DSMIN = 1e-6, DSMAX = 5.0, NMX = 4, NPR = 2\n");
-  cable_replay_options o;
-  cable_replay_options_init(&o);
-  o.dir = dir;
-  o.problems = cable_braid_resolver();
-  FILE *log = fopen("/dev/null", "w");
-  o.log = log;
-  cable_replay *r = cable_replay_alloc(&o);
+  FILE *log;
+  cable_session *r = session_open(dir, &log);
   cable_error err;
   memset(&err, 0, sizeof err);
   /* from STPNT, a restart from a stored label, and a run without the columns */
-  int rc = r ? script_run_string("<pvls test>",
-                                 "k = run(e='braid_knot', c='pvls', sv='pvls')\n"
-                                 "k2 = run(k('EP2'), e='braid_knot', c='pvlsr', NMX=3, sv='pvls2')\n"
-                                 "k3 = run(e='braid_knot', c='pvls', ICP=['T', 'L', 'L2', 'eps21'], NMX=2, sv='pvls3')\n",
-                                 cable_replay_host(r), &err)
-             : -1;
-  cable_replay_free(r);
-  if (log) fclose(log);
-  test_int("PVLS runs: the script runs", rc, 0);
+  cable_branch *first = NULL;
+  int rc = r ? session_line(r, "e=braid_knot c=pvls sv=pvls", NULL, &first, &err) : -1;
+  if (!rc) rc = session_line(r, "e=braid_knot c=pvlsr IRS='EP2' NMX=3 sv=pvls2", first, NULL, &err);
+  if (!rc) rc = session_line(r, "e=braid_knot c=pvls ICP=['T', 'L', 'L2', 'eps21'] NMX=2 sv=pvls3", NULL, NULL, &err);
+  cable_branch_decref(first);
+  session_close(r, log);
+  test_int("PVLS runs: the runs succeed", rc, 0);
   if (rc != 0) printf("  %s\n", err.msg);
   const char *names[2] = {"pvls", "pvls2"};
   for (int k = 0; k < 2 && rc == 0; k++) {
@@ -302,23 +293,15 @@ static void test_branch_lk(void)
                    "NTST = 20, NCOL = 6, IAD = 3, JAC = 1, ISW = -1, ISP = 0, ILP = 0\n"
                    "DS = 0.05, DSMIN = 1e-6, DSMAX = 2.0, NMX = 800, NPR = 1, RL0 = -30.0, RL1 = 40.0\n"
                    "EPSL = 1e-7, EPSU = 1e-7, EPSS = 1e-7\n");
-  cable_replay_options o;
-  cable_replay_options_init(&o);
-  o.dir = dir;
-  o.problems = cable_braid_resolver();
-  FILE *log = fopen("/dev/null", "w");
-  o.log = log;
-  cable_replay *r = cable_replay_alloc(&o);
+  FILE *log;
+  cable_session *r = session_open(dir, &log);
   cable_error err;
   memset(&err, 0, sizeof err);
-  int rc = r ? script_run_string("<Lk branch test>",
-                                 "flat = run(e='braid_knot', c='br', sv='brflat')\n"
-                                 "m1 = run(flat('BP1'), e='braid_knot_sym', c='brsym', UZSTOP={'T': -2.10752}, "
-                                 "sv='brmode1')\n",
-                                 cable_replay_host(r), &err)
-             : -1;
-  cable_replay_free(r);
-  if (log) fclose(log);
+  cable_branch *flat = NULL;
+  int rc = r ? session_line(r, "e=braid_knot c=br sv=brflat", NULL, &flat, &err) : -1;
+  if (!rc) rc = session_line(r, "e=braid_knot_sym c=brsym IRS='BP1' UZSTOP={'T': -2.10752} sv=brmode1", flat, NULL, &err);
+  cable_branch_decref(flat);
+  session_close(r, log);
   test_int("Lk branch: the runs succeed", rc, 0);
   snprintf(path, sizeof path, "%s/s.brmode1", dir);
   cable_sfile *s = rc == 0 ? cable_sfile_read(path, &err) : NULL;
@@ -391,20 +374,23 @@ static const char knot_constants[] =
     "NTST = 60, NCOL = 4, IAD = 3, JAC = 1, ISP = 0, ILP = 0\n"
     "DS = 1.0, DSMIN = 1e-6, DSMAX = 5.0, NMX = 3, NPR = 5\n";
 
-/* Run a script in dir; 0 or the error (err filled). */
-static int replay_in(const char *dir, const char *script, cable_error *err)
+/* Run the `cable run`-style lines (one per line of text) in dir, each
+ * restarting from nothing; 0 or the error (err filled). */
+static int replay_in(const char *dir, const char *lines, cable_error *err)
 {
-  cable_replay_options o;
-  cable_replay_options_init(&o);
-  o.dir = dir;
-  o.problems = cable_braid_resolver();
-  FILE *log = fopen("/dev/null", "w");
-  o.log = log;
-  cable_replay *r = cable_replay_alloc(&o);
+  FILE *log;
+  cable_session *r = session_open(dir, &log);
+  char buf[1024];
+  int rc = r ? 0 : CABLE_ERR_ALLOC;
   memset(err, 0, sizeof *err);
-  int rc = r ? script_run_string("<test script>", script, cable_replay_host(r), err) : -1;
-  cable_replay_free(r);
-  if (log) fclose(log);
+  for (const char *p = lines; !rc && *p;) {
+    const char *nl = strchr(p, '\n');
+    size_t n = nl ? (size_t)(nl - p) : strlen(p);
+    snprintf(buf, sizeof buf, "%.*s", (int)n, p);
+    rc = session_line(r, buf, NULL, NULL, err);
+    p += n + (nl != NULL);
+  }
+  session_close(r, log);
   return rc;
 }
 
@@ -423,7 +409,7 @@ static void test_link_phi_and_starts(void)
   cable_error err;
 
   /* the flat left-handed (6,2) link (Phi = -6 pi) continued in Phi at T = 0 */
-  int rc = replay_in(dir, "p = run(e='braid_link', c='lk', ICP=['Phi', 'F'], DS=0.2, NMX=8, NPR=2, sv='phi')\n",
+  int rc = replay_in(dir, "e=braid_link c=lk ICP=['Phi', 'F'] DS=0.2 NMX=8 NPR=2 sv=phi\n",
                      &err);
   test_int("link continued in Phi: the run succeeds", rc, 0);
   if (rc) printf("  %s\n", err.msg);
@@ -457,11 +443,11 @@ static void test_link_phi_and_starts(void)
   cable_sfile_free(s);
 
   /* the two rings are a degenerate start of braid_link: refused, naming TORUS */
-  rc = replay_in(dir, "r = run(e='braid_link', c='lk', TORUS=0, sv='rings')\n", &err);
+  rc = replay_in(dir, "e=braid_link c=lk TORUS=0 sv=rings\n", &err);
   test_true("TORUS=0 for braid_link is refused", rc != 0);
   printf("  message: %s (key %s)\n", err.msg, err.key);
-  /* the run host reports it as "run: TORUS: ..." (the script function is the key) */
-  test_true("... the error names the key TORUS", strncmp(err.msg, "TORUS: ", 7) == 0);
+  /* the session reports the key in the message ("TORUS: ...") */
+  test_true("... the error names the key TORUS", strcmp(err.key, "TORUS") == 0);
   test_true("... and says why (TORUS=0, the two rings)", strstr(err.msg, "TORUS=0") && strstr(err.msg, "rings"));
   snprintf(path, sizeof path, "%s/s.rings", dir);
   FILE *f = fopen(path, "r");
@@ -470,8 +456,8 @@ static void test_link_phi_and_starts(void)
 
   /* the (1,2) torus knot (an unknot with d1 turning by pi): the guess is 30 %
      off, so Newton needs more full steps than AUTO's defaults allow */
-  rc = replay_in(dir, "k = run(e='braid_knot', c='kn', TORUS=1, ITNW=10, NWTN=10, sv='k12')\n"
-                      "l = run(e='braid_knot', c='kn', TORUS=1, HAND=-1, DS=-1.0, ITNW=10, NWTN=10, sv='k12l')\n",
+  rc = replay_in(dir, "e=braid_knot c=kn TORUS=1 ITNW=10 NWTN=10 sv=k12\n"
+                      "e=braid_knot c=kn TORUS=1 HAND=-1 DS=-1.0 ITNW=10 NWTN=10 sv=k12l\n",
                  &err);
   test_int("(1,2) torus knot converges with ITNW = NWTN = 10", rc, 0);
   const char *kn[2] = {"k12", "k12l"};

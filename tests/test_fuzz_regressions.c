@@ -1,7 +1,6 @@
 /* Replays the fuzzing regression inputs (tests/data/fuzz_regressions/<target>/)
  * through the same entry points as the libFuzzer targets in tests/fuzz/:
  *   constants/  cable_constants_parse_string, then parse_override on the first half
- *   script/     script_run_string (first byte: host mode, see tests/fuzz/fuzz_script.c)
  *   sfile/      cable_sfile_read on the file itself
  * Each input must come back with 0 or a negative cable_status and, on error,
  * a message (a clear diagnostic); the crashes themselves show up under
@@ -16,7 +15,6 @@
 #include "cable/cable_status.h"
 #include "cable/cable_constants.h"
 #include "harness.h"
-#include "script.h"
 
 #define REGRESSION_DIR "tests/data/fuzz_regressions"
 #define REGRESSION_MAX_BYTES (1 << 20)
@@ -65,36 +63,6 @@ static void regression_constants(const char *path)
   free(text);
 }
 
-static int regression_fail(void *ctx, cable_error *err)
-{
-  (void)ctx;
-  return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, "fuzz", "host refuses");
-}
-static int regression_run(void *ctx, const script_value *s, const script_kwargs *kw, script_value *out, cable_error *err)
-{
-  (void)s; (void)kw; (void)out;
-  return regression_fail(ctx, err);
-}
-
-static void regression_script(const char *path)
-{
-  size_t len;
-  char *text = regression_slurp(path, &len);
-  if (!test_true(path, text != NULL)) return;
-  /* the host that refuses every run (mode 0 of the fuzz target); other
-     callbacks absent: a script that needs them stops with UNSUPPORTED */
-  script_host host;
-  memset(&host, 0, sizeof host);
-  host.run = regression_run;
-  cable_error err;
-  cable_error_clear(&err);
-  int st = script_run_string("fuzz.auto", len > 0 ? text + 1 : text, &host, &err);
-  char what[700];
-  snprintf(what, sizeof what, "%s: script interpreter returns %s (%s)", path, cable_status_name(st), err.msg);
-  test_true(what, regression_error_ok(path, st, &err));
-  free(text);
-}
-
 static void regression_sfile(const char *path)
 {
   cable_error err;
@@ -108,10 +76,10 @@ static void regression_sfile(const char *path)
 
 int main(void)
 {
-  static const char *const targets[] = {"constants", "script", "sfile"};
-  void (*const replay[])(const char *) = {regression_constants, regression_script, regression_sfile};
+  static const char *const targets[] = {"constants", "sfile"};
+  void (*const replay[])(const char *) = {regression_constants, regression_sfile};
   int total = 0;
-  for (int t = 0; t < 3; t++) {
+  for (int t = 0; t < 2; t++) {
     char dir[256];
     snprintf(dir, sizeof dir, "%s/%s", REGRESSION_DIR, targets[t]);
     DIR *d = opendir(dir);

@@ -315,10 +315,10 @@ static void test_broken(void)
   cable_error err;
   char buf[1200];
   const cable_problem *pb;
-  cable_plugin *p = cable_plugin_open("tests/data/scripts/knot72.auto", &pb, &err);
+  cable_plugin *p = cable_plugin_open("runs/knot72/knot72.auto", &pb, &err);
   test_true("a text file is rejected", p == NULL && pb == NULL);
   cable_error_format(&err, buf, sizeof buf);
-  const char *head = "tests/data/scripts/knot72.auto: not a loadable shared object: ";
+  const char *head = "runs/knot72/knot72.auto: not a loadable shared object: ";
   if (strncmp(buf, head, strlen(head)) != 0) printf("  got: %s\n", buf);
   test_true("text file: message", strncmp(buf, head, strlen(head)) == 0 && err.status == CABLE_ERR_PLUGIN);
   p = cable_plugin_open("tests", &pb, &err);
@@ -412,7 +412,7 @@ static void test_validate(void)
 
 /* ---- the documented one-line build ------------------------------------------------------ */
 
-/* Bratu's fold (30-digit mpmath value, as in tests/test_script.c). */
+/* Bratu's fold (30-digit mpmath value). */
 #define BRATU_FOLD_LAMBDA 3.5138307191251612062
 /* With NTST=20, NCOL=4, EPSS=1e-7 tests/test_engine_bvp.c bounds the fold's
  * lambda by 1e-9 (discretisation O(h^8) ~ 1e-11, location to EPSS). */

@@ -124,4 +124,23 @@ CABLE_API int braid_axis_same_type(const braid_analysis *a, const braid_analysis
  * whose tubes do not overlap (tube.dmin > 1), or -1 when it has none. */
 CABLE_API int braid_branch_settled(const braid_analysis *const *a, int n, int *first);
 
+/* The tube distance of a braid solution sampled at n points (0: default,
+ * about two samples per Delta of length, at least 1001): dmin (closest
+ * approach of non-adjacent strand parts / Delta), overlap intervals, the
+ * maximum curvature of the contact curve.  0 or a cable_status. */
+CABLE_API int braid_tube_distance_solution(const cable_solution *sol, int n, tube_distance_result *out);
+
+/* Self-passages of the braid axis (contact curve) between two solutions a and
+ * b of one branch, under the straight-line homotopy between them
+ * (equations/axis_passages.h has the method). */
+typedef struct axis_passages {
+  int count;          /* passages: segment pairs that pass through each other */
+  int net;            /* the sum of their signs */
+  double tau_first;   /* homotopy parameter of the first passage, NAN without one */
+} axis_passages;
+
+/* Same problem, closed axes; the window is pi Delta.  0 or a cable_status
+ * (not braid solutions, CABLE_ERR_ALLOC). */
+CABLE_API int braid_axis_passages(const cable_solution *a, const cable_solution *b, axis_passages *out);
+
 #endif

@@ -46,7 +46,9 @@ typedef struct cable_point {
 
 typedef struct cable_sink {
   void *ctx;
-  /* every point the engine accepts (the caller applies NPR/IPLT choices) */
+  /* every point the engine accepts (the caller applies NPR/IPLT choices); a
+     positive return stops the run there (cable_cont_run returns
+     CABLE_ERR_INTERRUPTED); a negative one is the sink's own error to report */
   int (*point)(void *ctx, const cable_point *pt);
   /* labelled solutions; sol->lab matches the point's lab */
   int (*solution)(void *ctx, const cable_point *pt, const cable_solution *sol);

@@ -25,7 +25,8 @@
   X(CABLE_ERR_NOTFOUND,   -12, "not found") \
   X(CABLE_ERR_UNSUPPORTED,-13, "not supported by cable") \
   X(CABLE_ERR_NONFINITE,  -14, "a NaN or Inf appeared") \
-  X(CABLE_ERR_SWITCH,     -15, "branch switching failed")
+  X(CABLE_ERR_SWITCH,     -15, "branch switching failed") \
+  X(CABLE_ERR_INTERRUPTED,-16, "interrupted")
 
 enum cable_status {
 #define CABLE_STATUS_ENUM(name, value, msg) name = value,

@@ -1,0 +1,885 @@
+/* The session: AUTO-07p's runner on cable's continuation engine, constants
+ * parser and b./s./d. files.  Branches live in memory (cable_session_store.c);
+ * files are written only by sv=, ap=, save, and merge/relabel of file names. */
+#include "cable/cable_session.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "cable/cable_analysis.h"
+#include "cable/cable_aufile.h"
+#include "cable/cable_constants.h"
+#include "cable/cable_cont.h"
+#include "cable/cable_fold.h"
+#include "cable/cable_status.h"
+#include "braid_problems.h"
+#include "cable_session_impl.h"
+
+void cable_session_options_init(cable_session_options *o)
+{
+  memset(o, 0, sizeof *o);
+}
+
+static FILE *rp_log(const cable_session *r) { return r->opt.log ? r->opt.log : stdout; }
+
+static int file_exists(const char *path)
+{
+  struct stat st;
+  return stat(path, &st) == 0 && S_ISREG(st.st_mode);
+}
+
+/* ---- problems ---------------------------------------------------------------- */
+
+typedef struct rp_problem {
+  const cable_problem *pb;
+  int user;     /* from opt.problems: released after use */
+  int autoeq;   /* from an AUTO equation file: dimensions from the constants */
+} rp_problem;
+
+static void problem_release(cable_session *r, rp_problem *p)
+{
+  if (p->user && r->opt.problems && r->opt.problems->release)
+    r->opt.problems->release(r->opt.problems->ctx, p->pb);
+  p->pb = NULL;
+  p->user = 0;
+}
+
+/* A plug-in for e=NAME: NAME.so (or NAME itself when it ends in .so), opened
+ * once per session. */
+static int plugin_problem(cable_session *r, const char *e, const cable_problem **pb, cable_error *err)
+{
+  for (int i = 0; i < r->nplugins; i++)
+    if (strcmp(r->plugin_name[i], e) == 0) {
+      *pb = cable_plugin_problem(r->plugin[i]);
+      return 0;
+    }
+  char path[1024];
+  size_t n = strlen(e);
+  const char *dir = r->opt.dir && r->opt.dir[0] ? r->opt.dir : NULL;
+  int has_so = n > 3 && strcmp(e + n - 3, ".so") == 0;
+  if (dir && e[0] != '/') snprintf(path, sizeof path, "%s/%s%s", dir, e, has_so ? "" : ".so");
+  else snprintf(path, sizeof path, "%s%s", e, has_so ? "" : ".so");
+  if (!has_so && !file_exists(path)) return CABLE_ERR_NOTFOUND;
+  if (r->nplugins == RP_MAX_PLUGINS)
+    return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, e, "more than %d plug-ins in one session", RP_MAX_PLUGINS);
+  cable_plugin *p = cable_plugin_open(path, pb, err);
+  if (!p) return err && err->status ? err->status : CABLE_ERR_PLUGIN;
+  snprintf(r->plugin_name[r->nplugins], sizeof r->plugin_name[0], "%s", e);
+  r->plugin[r->nplugins++] = p;
+  return 0;
+}
+
+/* A file named in the constants (dat=), relative to the run directory. */
+static void rp_path_plain(const cable_session *r, const char *name, char *buf, size_t len)
+{
+  const char *dir = r->opt.dir && r->opt.dir[0] ? r->opt.dir : NULL;
+  snprintf(buf, len, "%s%s%s", dir && name[0] != '/' ? dir : "", dir && name[0] != '/' ? "/" : "", name);
+}
+
+/* An AUTO equation file for e=NAME (NAME.f90, NAME.f or NAME.c in the run
+ * directory), built and loaded once per session; its problem takes NDIM,
+ * NBC, NINT and NPAR from c (c NULL: a problem good for names only). */
+static int autoeq_problem(cable_session *r, const char *e, const cable_constants *c, const cable_problem **pb,
+                          cable_error *err)
+{
+  cable_autoeq *m = NULL;
+  for (int i = 0; i < r->nautoeq && !m; i++)
+    if (strcmp(r->autoeq_name[i], e) == 0) m = r->autoeq[i];
+  if (!m) {
+    char src[1024];
+    if (cable_autoeq_find(r->opt.dir, e, src, sizeof src) != 0) return CABLE_ERR_NOTFOUND;
+    if (r->nautoeq == RP_MAX_PLUGINS)
+      return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, e, "more than %d equation files in one session", RP_MAX_PLUGINS);
+    if (!(m = cable_autoeq_open(src, err))) return err && err->status ? err->status : CABLE_ERR_PLUGIN;
+    if (cable_autoeq_was_built(m)) fprintf(rp_log(r), "built %s (module %s)\n", src, cable_autoeq_module(m));
+    snprintf(r->autoeq_name[r->nautoeq], sizeof r->autoeq_name[0], "%s", e);
+    r->autoeq[r->nautoeq++] = m;
+  }
+  char dat[1024] = "";
+  if (c && c->dat[0]) rp_path_plain(r, c->dat, dat, sizeof dat);
+  return cable_autoeq_problem(m, c, dat, pb, err);
+}
+
+/* The problem for e=NAME.  c NULL: only its names are needed. */
+static int find_problem(cable_session *r, const char *e, const cable_constants *c, int from_stpnt,
+                        rp_problem *out, cable_error *err)
+{
+  out->pb = NULL;
+  out->user = 0;
+  out->autoeq = 0;
+  if (!e[0])
+    return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, "e", "no problem given (e='NAME' in the call or the constants file)");
+  const cable_session_problems *up = r->opt.problems;
+  if (up && up->find) {
+    int rc = up->find(up->ctx, e, c, from_stpnt, &out->pb, err);
+    if (rc == 0) {
+      out->user = 1;
+      return 0;
+    }
+    if (rc != CABLE_ERR_NOTFOUND) return rc;
+  }
+  /* an AUTO user's own equation file wins over cable's test problems */
+  int rc_ae = autoeq_problem(r, e, c, &out->pb, err);
+  if (rc_ae != CABLE_ERR_NOTFOUND) {
+    out->autoeq = rc_ae == 0;
+    return rc_ae;
+  }
+  const cable_problem *braid = braid_problem_find(e), *builtin = cable_problem_builtin(e);
+  if (builtin && !braid) {   /* the engine's test problems */
+    out->pb = builtin;
+    return 0;
+  }
+  if (braid) {
+    if (c && from_stpnt)
+      return cable_error_set(err, CABLE_ERR_UNSUPPORTED, NULL, 0, "e",
+                             "'%s' from STPNT needs prepared starting parameters, which this host does not "
+                             "have: restart from a stored solution (run(sol) or IRS with s=)",
+                             e);
+    out->pb = braid;   /* params NULL: valid for restarts (braid_problems.h) */
+    return 0;
+  }
+  int rc = plugin_problem(r, e, &out->pb, err);
+  if (rc == CABLE_ERR_NOTFOUND)
+    return cable_error_set(err, CABLE_ERR_NOTFOUND, NULL, 0, "e",
+                           "unknown problem '%s' (not a built-in problem, no equation file %s.f90, %s.f or %s.c and "
+                           "no %s.so plug-in)", e, e, e, e, e);
+  return rc;
+}
+
+/* ---- run setup: constants, problem, start ----------------------------------------- */
+
+typedef struct rp_setup {
+  cable_constants c;
+  cable_names names;
+  char e[CABLE_NAME_MAX];
+  const cable_solution *start;   /* borrowed from a branch or from sf */
+  cable_sfile *sf;               /* owned: s.NAME of a string start or s= */
+  char sfpath[1024];             /* its path */
+  char sv[CABLE_NAME_MAX], ap[CABLE_NAME_MAX];
+} rp_setup;
+
+static void setup_free(rp_setup *s)
+{
+  cable_sfile_free(s->sf);
+  s->sf = NULL;
+}
+
+/* The problem's parameter names, for constants that name parameters.  A
+ * problem that cannot be had (unknown name, rejected plug-in) is reported
+ * here, before its constants are read.  Release p after use. */
+static int problem_names(cable_session *r, const char *e, rp_problem *p, const char *const **parnames,
+                         int *npar, cable_error *err)
+{
+  *parnames = NULL;
+  *npar = 0;
+  p->pb = NULL;
+  p->user = 0;
+  if (!e[0]) return 0;
+  int rc = find_problem(r, e, NULL, 0, p, err);
+  if (rc) return rc;
+  *parnames = p->pb->parnames;
+  *npar = p->pb->npar;
+  return 0;
+}
+
+/* The problem a constants file names (e = 'NAME'), found before parsing it,
+ * because the parser needs the problem's parameter names to read ICP=['T'].
+ * A light scan: statements start a line or follow ',' or ';'; comments are
+ * skipped.  Leaves e unchanged when there is none (the parser then says what
+ * it cannot resolve). */
+static void peek_problem_name(const char *path, char *e, size_t len)
+{
+  FILE *f = fopen(path, "r");
+  if (!f) return;
+  char line[1024];
+  while (fgets(line, sizeof line, f)) {
+    char *hash = strpbrk(line, "#!");
+    if (hash) *hash = '\0';
+    for (char *p = line; *p; p++) {
+      if (p != line && p[-1] != ',' && p[-1] != ';' && p[-1] != ' ' && p[-1] != '\t') continue;
+      if (*p != 'e') continue;
+      char *q = p + 1;
+      while (*q == ' ' || *q == '\t') q++;
+      if (*q != '=') continue;
+      q++;
+      while (*q == ' ' || *q == '\t') q++;
+      if (*q != '\'' && *q != '"') continue;
+      char quote = *q++, *end = strchr(q, quote);
+      if (!end || end == q || (size_t)(end - q) >= len) continue;
+      snprintf(e, len, "%.*s", (int)(end - q), q);
+      fclose(f);
+      return;
+    }
+  }
+  fclose(f);
+}
+
+static int read_constants_file(cable_session *r, const char *name, rp_setup *s, int required,
+                               cable_error *err)
+{
+  char path[1024];
+  rp_path(r, "c", name, path, sizeof path);
+  if (!required && !file_exists(path)) return 0;
+  if (!s->e[0]) peek_problem_name(path, s->e, sizeof s->e);
+  const char *const *parnames;
+  int npar;
+  rp_problem p;
+  int rc = problem_names(r, s->e, &p, &parnames, &npar, err);
+  if (rc) return rc;
+  rc = cable_constants_parse_file(path, &s->c, &s->names, parnames, npar, err);
+  /* the file's names win; the problem names the rest (sol['lambda']) */
+  if (!rc && p.pb) cable_names_fill(&s->names, p.pb->parnames, p.pb->npar, p.pb->unames, p.pb->ndim);
+  problem_release(r, &p);
+  if (!rc && s->c.e[0] && !s->e[0]) {
+    snprintf(s->e, sizeof s->e, "%s", s->c.e);
+    rc = problem_names(r, s->e, &p, &parnames, &npar, err);
+    if (!rc) cable_names_fill(&s->names, p.pb->parnames, p.pb->npar, p.pb->unames, p.pb->ndim);
+    problem_release(r, &p);
+  }
+  return rc;
+}
+
+static int read_solutions_file(cable_session *r, const char *name, rp_setup *s, cable_error *err)
+{
+  char path[1024];
+  rp_path(r, "s", name, path, sizeof path);
+  snprintf(s->sfpath, sizeof s->sfpath, "%s", path);
+  cable_sfile_free(s->sf);
+  s->sf = cable_sfile_read(path, err);
+  return s->sf ? 0 : (err && err->status ? err->status : CABLE_ERR_IO);
+}
+
+/* KEY=VALUE text for the constants parser: Python's repr is its syntax. */
+static const cable_solution *result_last(const rp_result *res)
+{
+  for (int k = res->nbr - 1; k >= 0; k--)
+    if (res->br[k]->nsol > 0) return res->br[k]->sol[res->br[k]->nsol - 1];
+  return NULL;
+}
+
+/* A solution of a result by IRS (a label, or 'BP1'-style in irs_name). */
+static const cable_solution *result_irs(const rp_result *res, const cable_constants *c)
+{
+  int type = 0, nth = 0;
+  if (c->irs_name[0] && cable_label_spec_parse(c->irs_name, &type, &nth) != 0) return NULL;
+  for (int k = 0; k < res->nbr; k++)
+    for (int i = 0; i < res->br[k]->nsol; i++) {
+      const cable_solution *s = res->br[k]->sol[i];
+      if (c->irs_name[0] ? (cable_type_base(s->itp) == type && --nth == 0) : s->lab == c->irs) return s;
+    }
+  return NULL;
+}
+
+/* AUTO's load/run argument handling: the base constants from the data (or
+ * the runner), then c=, e=, s=, sv=, ap=, then every other keyword as an
+ * override, then the start. */
+/* A name argument (e=, c=, s=, sv=, ap=): non-empty and short enough. */
+static int name_arg(const char *key, const char *v, char *dst, size_t len, cable_error *err)
+{
+  if (!v[0] || strlen(v) >= len)
+    return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, key, "must be a non-empty name of at most %zu characters",
+                           len - 1);
+  snprintf(dst, len, "%s", v);
+  return 0;
+}
+
+/* AUTO's load/run argument handling: the base constants from the start (or
+ * the runner), then c=, e=, s=, sv=, ap=, then every override, then the
+ * start. */
+static int build_setup(cable_session *r, const cable_run_args *a, rp_setup *s, cable_error *err)
+{
+  memset(s, 0, sizeof *s);
+  rp_result view = {a->nbranch, (rp_branch **)a->branches};
+  const rp_result *res = NULL;
+  int rc = 0;
+  if (a->sol_branch || a->nbranch > 0) {
+    const rp_branch *b;
+    if (a->sol_branch) {
+      b = a->sol_branch;
+      if (a->sol_index < 0 || a->sol_index >= b->nsol)
+        return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, NULL, "no such solution in the branch");
+      s->start = b->sol[a->sol_index];
+    } else {
+      res = &view;
+      b = res->br[res->nbr - 1];
+    }
+    s->c = b->c;
+    s->names = b->names;
+    snprintf(s->e, sizeof s->e, "%s", b->e);
+    /* a stored solution's IRS is history: AUTO resets it */
+    s->c.irs = 0;
+    s->c.irs_name[0] = '\0';
+  } else {
+    s->c = r->cur;
+    s->names = r->cur_names;
+    snprintf(s->e, sizeof s->e, "%s", r->cur_e);
+  }
+  s->c.s[0] = s->c.sv[0] = '\0';   /* one-off, like IRS: set below for this run */
+  if (a->sv) rc = name_arg("sv", a->sv, s->sv, sizeof s->sv, err);
+  if (!rc && a->ap) rc = name_arg("ap", a->ap, s->ap, sizeof s->ap, err);
+  if (!rc && a->e) rc = name_arg("e", a->e, s->e, sizeof s->e, err);
+  /* a constants file's s= and sv= count for the run that reads it, under
+     the keywords (AUTO: keyword arguments override the c-file) */
+  char cfile_s[CABLE_NAME_MAX] = "", cfile_sv[CABLE_NAME_MAX] = "";
+  if (!rc && a->name) {
+    /* run('NAME') is AUTO's e='NAME', c='NAME', s='NAME': the equations
+       NAME (an explicit e= wins), c.NAME and s.NAME when they exist.  When
+       there is no problem NAME, the c-file's e names it (cable's
+       extension: c.knot72 says e='braid_knot'). */
+    char name[CABLE_NAME_MAX];
+    rc = name_arg("run", a->name, name, sizeof name, err);
+    if (!rc && !a->e) {
+      rp_problem p;
+      s->e[0] = '\0';
+      rc = find_problem(r, name, NULL, 0, &p, err);
+      if (rc == 0) snprintf(s->e, sizeof s->e, "%s", name);
+      problem_release(r, &p);
+      if (rc == CABLE_ERR_NOTFOUND) {
+        rc = 0;
+        cable_error_clear(err);
+      }
+    }
+    if (!rc) rc = read_constants_file(r, name, s, 0, err);
+    if (!rc) snprintf(cfile_sv, sizeof cfile_sv, "%s", s->c.sv);
+    char spath[1024];
+    rp_path(r, "s", name, spath, sizeof spath);
+    if (!rc && file_exists(spath)) {
+      rc = read_solutions_file(r, name, s, err);
+      if (!rc) snprintf(s->c.s, sizeof s->c.s, "%s", name);
+    }
+    if (!rc && !s->e[0]) snprintf(s->e, sizeof s->e, "%s", name);
+  }
+  if (!rc && a->c) {
+    char name[CABLE_NAME_MAX];
+    rc = name_arg("c", a->c, name, sizeof name, err);
+    if (!rc) rc = read_constants_file(r, name, s, 1, err);
+    if (!rc && a->e) snprintf(s->e, sizeof s->e, "%s", a->e);
+    if (!rc) {
+      snprintf(cfile_s, sizeof cfile_s, "%s", s->c.s);
+      snprintf(cfile_sv, sizeof cfile_sv, "%s", s->c.sv);
+    }
+  }
+  int has_start = a->sol_branch || a->nbranch > 0 || a->name;
+  if (!rc && a->s) {
+    char name[CABLE_NAME_MAX];
+    rc = name_arg("s", a->s, name, sizeof name, err);
+    if (!rc) rc = read_solutions_file(r, name, s, err);
+    if (!rc) snprintf(s->c.s, sizeof s->c.s, "%s", name);
+  } else if (!rc && cfile_s[0] && !has_start) {
+    rc = read_solutions_file(r, cfile_s, s, err);   /* an explicit start wins over the file's s= */
+  } else if (!rc && !s->sf) {
+    s->c.s[0] = '\0';
+  }
+  if (!rc && cfile_sv[0] && !s->sv[0] && !s->ap[0]) snprintf(s->sv, sizeof s->sv, "%s", cfile_sv);
+  if (!rc) snprintf(s->c.sv, sizeof s->c.sv, "%s", s->sv);   /* the b-file header says where it went */
+  if (rc) return rc;
+  const char *const *parnames;
+  int npar;
+  rp_problem p;
+  rc = problem_names(r, s->e, &p, &parnames, &npar, err);
+  for (int i = 0; i < a->nover && !rc; i++) {
+    rc = cable_constants_parse_override(a->over[i], &s->c, &s->names, parnames, npar, err);
+    if (rc && err && !err->file[0] && a->over_file) {
+      snprintf(err->file, sizeof err->file, "%s", a->over_file);
+      err->line = 0;   /* the message quotes the argument */
+    }
+  }
+  problem_release(r, &p);
+  if (rc) return rc;
+  snprintf(s->c.e, sizeof s->c.e, "%s", s->e);
+  int irs_given = s->c.irs != 0 || s->c.irs_name[0];
+  if (res) {
+    s->start = irs_given ? result_irs(res, &s->c) : result_last(res);
+    if (!s->start)
+      return cable_error_set(err, CABLE_ERR_NOTFOUND, NULL, 0, "IRS",
+                             irs_given ? "no such label in the result" : "the result has no labelled solution");
+  } else if (!s->start && s->sf && irs_given) {
+    if ((rc = cable_sfile_resolve_irs(s->sf, &s->c, err))) {
+      if (err && !err->file[0]) snprintf(err->file, sizeof err->file, "%.500s", s->sfpath);
+      return rc;
+    }
+    s->start = cable_sfile_find_label(s->sf, s->c.irs);
+  } else if (!s->start && irs_given) {
+    return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, "IRS",
+                           "a restart needs solutions: give a result, a solution, a name or s='NAME'");
+  }
+  return 0;
+}
+
+/* ---- run ------------------------------------------------------------------------- */
+
+typedef struct collector {
+  rp_branch *b;
+  FILE *diag;
+  int rc;
+  int tty;          /* stderr is a terminal: show the progress line */
+  int (*interrupt)(void *ctx);   /* the session's interrupt check (NULL: none) */
+  void *interrupt_ctx;
+  int interrupted;
+} collector;
+
+static double now_seconds(void)
+{
+  struct timespec ts;
+  clock_gettime(CLOCK_MONOTONIC, &ts);
+  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+/* One-line live progress on a terminal (stderr), rewritten in place. */
+static void progress(const collector *c, const cable_point *pt)
+{
+  if (!c->tty) return;
+  int k = pt->nicp > 0 ? pt->icp[0] : 0;
+  fprintf(stderr, "\r  branch %d  point %5d  PAR(%d) = %-14.8g ds = %-9.3g Newton %d   ", pt->ibr, pt->pt, k + 1,
+          pt->par[k], pt->ds, pt->newton_iters);
+  fflush(stderr);
+}
+
+static int collect_point(void *ctx, const cable_point *pt)
+{
+  collector *c = ctx;
+  progress(c, pt);
+  if (c->diag && pt->note) fprintf(c->diag, "%s\n", pt->note);
+  /* a labelled point's solution comes next, with the same point: add both then */
+  if (c->interrupt && c->interrupt(c->interrupt_ctx)) c->interrupted = 1;
+  if (c->interrupted) return 1;   /* the engine stops here (CABLE_ERR_INTERRUPTED) */
+  if (pt->lab > 0) return 0;
+  if (!c->rc) c->rc = rp_branch_add(c->b, pt, NULL);
+  return c->rc;
+}
+
+static int collect_solution(void *ctx, const cable_point *pt, const cable_solution *sol)
+{
+  collector *c = ctx;
+  if (!c->rc) c->rc = rp_branch_add(c->b, pt, sol);
+  return c->rc;
+}
+
+static void collect_diag(void *ctx, const char *line)
+{
+  collector *c = ctx;
+  if (c->diag) fprintf(c->diag, "%s\n", line);
+}
+
+static const char *par_name(const cable_names *n, int k, char *buf, size_t len)
+{
+  if (k >= 0 && k < CABLE_NAMES_MAX && n->par[k][0]) snprintf(buf, len, "%s", n->par[k]);
+  else snprintf(buf, len, "PAR(%d)", k + 1);
+  return buf;
+}
+
+/* AUTO prints every labelled point of a run; so does the host. */
+static void log_branch(const cable_session *r, const rp_branch *b, int status, const char *why, double seconds)
+{
+  FILE *f = rp_log(r);
+  char nm[64];
+  for (int i = 0; i < b->npt; i++) {
+    const cable_point *p = &b->pts[i].pt;
+    /* the engine's remarks (special points it could not locate, rejected
+       steps, double branch points) are also in the d-file */
+    if (p->note) fprintf(f, "  PT %5d: %s\n", p->pt, p->note);
+    if (p->lab <= 0) continue;
+    int k = p->nicp > 0 ? p->icp[0] : 0;
+    const char *ty = cable_type_name(p->itp);
+    fprintf(f, "  BR %4d  PT %5d  TY %-2s  LAB %4d  %s = %.10g  L2-NORM = %.10g\n", p->ibr, p->pt,
+            ty[0] ? ty : "-", p->lab, par_name(&b->names, k, nm, sizeof nm), p->par[k], p->l2norm);
+  }
+  fprintf(f, "  branch %d: %d points, %d labelled; end: %s%s%s\n", b->ibr, b->npt, b->nsol,
+          cable_status_message(status), why && why[0] ? ": " : "", why ? why : "");
+  /* summary: special points, time, the worst first-integral drift of the
+     stored solutions (braid problems: |F|^2, F.M, h, Hamiltonian along s) */
+  int nbp = 0, nlp = 0, nuz = 0;
+  double drift = -1;
+  for (int i = 0; i < b->nsol; i++) {
+    int ty = cable_type_base(b->sol[i]->itp);
+    nbp += ty == 6;
+    nlp += ty == 5;
+    nuz += ty == -4;
+    drift = fmax(drift, braid_first_integral_drift(b->sol[i]));
+  }
+  fprintf(f, "  summary: %d BP, %d LP, %d UZ; %.1f s", nbp, nlp, nuz, seconds);
+  if (drift >= 0) fprintf(f, "; worst first-integral drift %.2e", drift);
+  fprintf(f, "\n");
+}
+
+static int engine_run(cable_session *r, rp_setup *s, rp_branch **out, cable_error *err)
+{
+  *out = NULL;
+  rp_problem prob;
+  int rc = find_problem(r, s->e, &s->c, s->start == NULL, &prob, err);
+  if (rc) return rc;
+  const cable_problem *pb = prob.pb;
+  if (!prob.autoeq) {
+    /* a built-in or plug-in problem's dimensions are its own: a constants
+       value that says otherwise is an error at its line, never ignored */
+    const struct {
+      const char *key;
+      int value, want;
+      const cable_key_origin *o;
+    } dims[] = {{"NDIM", s->c.ndim, pb->ndim, &s->c.origin_ndim},
+                {"NBC", s->c.nbc, pb->nbc, &s->c.origin_nbc},
+                {"NINT", s->c.nint, pb->nint, &s->c.origin_nint}};
+    for (size_t k = 0; k < sizeof dims / sizeof dims[0]; k++)
+      if ((dims[k].o->file[0] || dims[k].o->line) && dims[k].value != dims[k].want) {
+        cable_error_set(err, CABLE_ERR_INPUT, dims[k].o->file, dims[k].o->line, dims[k].key,
+                        "%s=%d contradicts problem '%s', which has %s=%d (the problem fixes it: remove the "
+                        "line, or write the equations as an AUTO file NAME.f90 or NAME.c)",
+                        dims[k].key, dims[k].value, pb->name, dims[k].key, dims[k].want);
+        problem_release(r, &prob);
+        return CABLE_ERR_INPUT;
+      }
+  }
+  if (s->c.ignored[0])
+    fprintf(rp_log(r), "  note: accepted and ignored, as AUTO does for boundary-value problems: %s\n", s->c.ignored);
+  int st = 0;
+  /* ISW = 2 at an LP: the fold's extended problem, its constants (ICP with
+     the null vector's parameter slots) and its own start (cable_fold.h) */
+  cable_fold *fold = NULL;
+  const cable_constants *crun = &s->c;
+  const cable_solution *start = s->start;
+  if (s->c.isw == 2) {
+    char msg[400];
+    fold = cable_fold_alloc(pb, &s->c, s->start, &st, msg, sizeof msg);
+    if (!fold) {
+      problem_release(r, &prob);
+      return cable_error_set(err, st, NULL, 0, "ISW", "%s", msg);
+    }
+    pb = cable_fold_problem(fold);
+    crun = cable_fold_constants(fold);
+    start = NULL;
+  }
+  cable_names_fill(&s->names, pb->parnames, pb->npar, pb->unames, pb->ndim);
+  cable_cont *cc = cable_cont_alloc(pb, crun, &st);
+  if (!cc) {
+    cable_fold_free(fold);
+    problem_release(r, &prob);
+    return cable_error_set(err, CABLE_ERR_ALLOC, NULL, 0, NULL, "out of memory");
+  }
+  if (st == 0 && fold) {
+    /* the fold run starts on the LP's mesh */
+    double *mesh = malloc((size_t)(crun->ntst + 1) * sizeof *mesh);
+    if (!mesh) st = CABLE_ERR_ALLOC;
+    if (mesh) {
+      cable_fold_mesh(fold, crun->ntst, mesh);
+      st = cable_cont_set_mesh(cc, mesh);
+      free(mesh);
+    }
+  }
+  if (st == 0) st = cable_cont_set_start(cc, start);
+  if (st) {
+    cable_error_set(err, st, NULL, 0, NULL, "%s", cable_cont_error(cc)[0] ? cable_cont_error(cc) : cable_status_message(st));
+    cable_cont_free(cc);
+    cable_fold_free(fold);
+    problem_release(r, &prob);
+    return st;
+  }
+  int ibr = ++r->next_branch;
+  double t_start = now_seconds();
+  collector col = {rp_branch_alloc(ibr, crun, &s->names, s->e), r->opt.diag, 0, isatty(fileno(stderr)),
+                   r->opt.interrupt, r->opt.interrupt_ctx, 0};
+  if (!col.b) {
+    cable_cont_free(cc);
+    cable_fold_free(fold);
+    problem_release(r, &prob);
+    return cable_error_set(err, CABLE_ERR_ALLOC, NULL, 0, NULL, "out of memory");
+  }
+  cable_sink sink = {&col, collect_point, collect_solution, collect_diag};
+  int next = r->last_label + 1;
+  st = cable_cont_run(cc, &sink, ibr, r->last_label + 1, &next);
+  if (next - 1 > r->last_label) r->last_label = next - 1;
+  char why[512], end_note[600];
+  snprintf(why, sizeof why, "%s", st < 0 ? cable_cont_error(cc) : "");
+  snprintf(end_note, sizeof end_note, "branch %d ended: %s: %s", ibr, cable_status_message(st), why);
+  if (!col.rc && st < 0) col.rc = rp_branch_set_end_note(col.b, end_note);
+  cable_cont_free(cc);
+  cable_fold_free(fold);
+  problem_release(r, &prob);
+  if (col.tty) fprintf(stderr, "\r%*s\r", 100, "");
+  if (col.rc) {
+    rp_branch_decref(col.b);
+    return cable_error_set(err, CABLE_ERR_ALLOC, NULL, 0, NULL, "out of memory keeping the branch");
+  }
+  if (st == CABLE_ERR_INTERRUPTED) {
+    int npt = col.b->npt;
+    rp_branch_decref(col.b);
+    return cable_error_set(err, st, NULL, 0, NULL, "branch %d interrupted after %d points (nothing written for it)",
+                           ibr, npt);
+  }
+  if (st < 0 && col.b->npt == 0) {
+    rp_branch_decref(col.b);
+    return cable_error_set(err, st, NULL, 0, NULL, "no point converged: %s", why[0] ? why : cable_status_message(st));
+  }
+  /* like AUTO, a branch that ends abnormally (MX) is still a result */
+  log_branch(r, col.b, st, why, now_seconds() - t_start);
+  *out = col.b;
+  return 0;
+}
+
+/* AUTO's runner keeps the constants of the last run, except the one-off
+ * start and save settings. */
+static void remember(cable_session *r, const rp_setup *s)
+{
+  r->cur = s->c;
+  r->cur.irs = 0;
+  r->cur.irs_name[0] = '\0';
+  r->cur.s[0] = r->cur.sv[0] = '\0';
+  r->cur_names = s->names;
+  snprintf(r->cur_e, sizeof r->cur_e, "%s", s->e);
+}
+
+/* ---- label and branch numbers ------------------------------------------------------- */
+
+static void note_label(cable_session *r, int lab, int ibr)
+{
+  if (lab > r->last_label) r->last_label = lab;
+  if (ibr > r->next_branch) r->next_branch = ibr;
+}
+
+static void note_sfile(cable_session *r, const cable_sfile *sf)
+{
+  for (int i = 0; sf && i < cable_sfile_count(sf); i++) note_label(r, cable_sfile_get(sf, i)->lab, cable_sfile_get(sf, i)->ibr);
+}
+
+/* Labels and branch numbers already in b./s.NAME (when they exist). */
+static int note_files(cable_session *r, const char *name, cable_error *err)
+{
+  char path[1024];
+  rp_path(r, "s", name, path, sizeof path);
+  if (file_exists(path)) {
+    cable_sfile *sf = cable_sfile_read(path, err);
+    if (!sf) return err && err->status ? err->status : CABLE_ERR_IO;
+    note_sfile(r, sf);
+    cable_sfile_free(sf);
+  }
+  rp_path(r, "b", name, path, sizeof path);
+  if (file_exists(path)) {
+    cable_bfile *bf = cable_bfile_read(path, err);
+    if (!bf) return err && err->status ? err->status : CABLE_ERR_IO;
+    for (int k = 0; k < bf->nbranch; k++)
+      for (int i = 0; i < bf->branch[k].nrow; i++) note_label(r, bf->branch[k].lab[i], bf->branch[k].br[i]);
+    cable_bfile_free(bf);
+  }
+  return 0;
+}
+
+/* AUTO's NEWLAB: the new labels follow the largest label of the solutions
+ * file the run restarts from, and a new branch number follows its largest
+ * branch number.  cable also continues after the labels of the files an
+ * ap= run appends to (AUTO can repeat a label there), and after every label
+ * of the session, so that no s-file receives a label twice. */
+static int continue_numbering(cable_session *r, const rp_setup *s, cable_error *err)
+{
+  note_sfile(r, s->sf);
+  return s->ap[0] ? note_files(r, s->ap, err) : 0;
+}
+
+int cable_session_run(cable_session *r, const cable_run_args *a, cable_branch **out, cable_error *err)
+{
+  rp_setup s;
+  rp_branch *b = NULL;
+  *out = NULL;
+  int rc = build_setup(r, a, &s, err);
+  if (!rc) rc = continue_numbering(r, &s, err);
+  if (!rc) rc = engine_run(r, &s, &b, err);
+  if (!rc) remember(r, &s);
+  rp_result res = {1, &b};
+  if (!rc && s.sv[0]) rc = rp_result_write(r, &res, s.sv, 0, err);
+  if (!rc && s.ap[0]) rc = rp_result_write(r, &res, s.ap, 1, err);
+  if (!rc && (s.sv[0] || s.ap[0]))
+    fprintf(rp_log(r), "  %s b.%s, s.%s, d.%s\n", s.sv[0] ? "saved to" : "appended to", s.sv[0] ? s.sv : s.ap,
+            s.sv[0] ? s.sv : s.ap, s.sv[0] ? s.sv : s.ap);
+  setup_free(&s);
+  if (rc) rp_branch_decref(b);
+  else *out = b;
+  return rc;
+}
+
+/* ---- files: save, load, merge, relabel ------------------------------------------------ */
+
+int cable_session_save(cable_session *r, cable_branch *const *branches, int n, int sol_index, const char *name,
+                       int append, cable_error *err)
+{
+  char nm[CABLE_NAME_MAX];
+  int rc = name_arg("save", name, nm, sizeof nm, err);
+  if (rc) return rc;
+  if (sol_index >= 0) {
+    /* one solution: a one-point result */
+    const rp_branch *src = n > 0 ? branches[0] : NULL;
+    if (!src || sol_index >= src->nsol)
+      return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, NULL, "no such solution in the branch");
+    rp_branch *b = rp_branch_alloc(src->ibr, &src->c, &src->names, src->e);
+    const cable_point *pt = rp_sol_point(src, sol_index);
+    rc = b && pt ? rp_branch_add(b, pt, src->sol[sol_index]) : CABLE_ERR_ALLOC;
+    rp_result one = {1, &b};
+    if (!rc) rc = rp_result_write(r, &one, nm, append, err);
+    else cable_error_set(err, rc, NULL, 0, NULL, "out of memory");
+    rp_branch_decref(b);
+  } else {
+    rp_result res = {n, (rp_branch **)branches};
+    rc = rp_result_write(r, &res, nm, append, err);
+  }
+  if (!rc) fprintf(rp_log(r), "  %s b.%s, s.%s, d.%s\n", append ? "appended to" : "saved to", nm, nm, nm);
+  return rc;
+}
+
+/* Branch numbers and labels of files read in: new runs continue after them. */
+static void note_result(cable_session *r, const rp_result *res)
+{
+  for (int k = 0; k < res->nbr; k++) {
+    note_label(r, 0, res->br[k]->ibr);
+    for (int i = 0; i < res->br[k]->nsol; i++) note_label(r, res->br[k]->sol[i]->lab, 0);
+  }
+}
+
+static int read_named(cable_session *r, const char *name, rp_result **res, cable_error *err)
+{
+  rp_setup s;
+  memset(&s, 0, sizeof s);
+  s.c = r->cur;
+  s.names = r->cur_names;
+  snprintf(s.e, sizeof s.e, "%s", r->cur_e);
+  char nm[CABLE_NAME_MAX];
+  int rc = name_arg("loadbd", name, nm, sizeof nm, err);
+  if (!rc) rc = read_constants_file(r, nm, &s, 0, err);
+  if (!rc) rc = rp_result_read(r, nm, &s.c, &s.names, s.e, res, err);
+  if (!rc) note_result(r, *res);
+  return rc;
+}
+
+/* The branches of a result handed over to a caller's list (the result freed). */
+static int result_to_list(rp_result *res, cable_branch ***out, int *n, cable_error *err)
+{
+  *out = calloc((size_t)(res->nbr > 0 ? res->nbr : 1), sizeof **out);
+  if (!*out) {
+    rp_result_free(res);
+    return cable_error_set(err, CABLE_ERR_ALLOC, NULL, 0, NULL, "out of memory");
+  }
+  *n = res->nbr;
+  for (int k = 0; k < res->nbr; k++) {
+    (*out)[k] = res->br[k];
+    res->br[k] = NULL;
+  }
+  res->nbr = 0;
+  rp_result_free(res);
+  return 0;
+}
+
+int cable_session_loadbd(cable_session *r, const char *name, cable_branch ***out, int *n, cable_error *err)
+{
+  rp_result *res = NULL;
+  *out = NULL;
+  *n = 0;
+  int rc = read_named(r, name, &res, err);
+  return rc ? rc : result_to_list(res, out, n, err);
+}
+
+int cable_session_load(cable_session *r, const cable_run_args *a, cable_branch **out, cable_error *err)
+{
+  rp_setup s;
+  *out = NULL;
+  int rc = build_setup(r, a, &s, err);
+  /* AUTO's load('name') / load(s='name') without IRS: the file's last solution */
+  int n = s.sf ? cable_sfile_count(s.sf) : 0;
+  if (!rc && !s.start && n > 0 && s.c.irs == 0 && !s.c.irs_name[0]) s.start = cable_sfile_get(s.sf, n - 1);
+  if (!rc && !s.start)
+    rc = cable_error_set(err, CABLE_ERR_NOTFOUND, NULL, 0, "load", "no solution to load (give a start, a name or s=)");
+  if (!rc) {
+    rp_branch *b = rp_branch_alloc(s.start->ibr, &s.c, &s.names, s.e);
+    cable_point pt;
+    memset(&pt, 0, sizeof pt);
+    pt.ibr = s.start->ibr;
+    pt.pt = s.start->ntot;
+    pt.itp = s.start->itp;
+    pt.lab = s.start->lab;
+    pt.ndim = s.start->ndim;
+    pt.npar = s.start->npar;
+    pt.nicp = s.c.nicp > 0 ? s.c.nicp : s.start->nfpr;
+    pt.icp = s.c.nicp > 0 ? s.c.icp : s.start->icp;
+    pt.par = s.start->par;
+    rc = b ? rp_branch_add(b, &pt, s.start) : CABLE_ERR_ALLOC;
+    if (rc) {
+      cable_error_set(err, rc, NULL, 0, NULL, "out of memory");
+      rp_branch_decref(b);
+    } else {
+      *out = b;
+    }
+  }
+  if (!rc) remember(r, &s);
+  setup_free(&s);
+  return rc;
+}
+
+int cable_session_transform(cable_session *r, cable_branch *const *in, int n, int relabel, cable_branch ***out,
+                            int *nout, cable_error *err)
+{
+  (void)r;
+  rp_result view = {n, (rp_branch **)in}, *res = NULL;
+  *out = NULL;
+  *nout = 0;
+  int rc = relabel ? rp_result_relabel(&view, &res) : rp_result_merge(&view, &res);
+  if (rc) return cable_error_set(err, rc, NULL, 0, NULL, "out of memory");
+  return result_to_list(res, out, nout, err);
+}
+
+int cable_session_transform_files(cable_session *r, const char *name, int relabel, cable_error *err)
+{
+  rp_result *res = NULL, *t = NULL;
+  int rc = read_named(r, name, &res, err);
+  if (!rc && (rc = relabel ? rp_result_relabel(res, &t) : rp_result_merge(res, &t)))
+    cable_error_set(err, rc, NULL, 0, NULL, "out of memory");
+  if (!rc) rc = rp_result_write(r, t, name, 0, err);
+  rp_result_free(res);
+  rp_result_free(t);
+  return rc;
+}
+
+void cable_session_path(const cable_session *r, const char *type, const char *name, char *buf, size_t len)
+{
+  if (type) {
+    rp_path(r, type, name, buf, len);
+    return;
+  }
+  int rel = name[0] != '/' && r->opt.dir && r->opt.dir[0];
+  snprintf(buf, len, "%s%s%s", rel ? r->opt.dir : "", rel ? "/" : "", name);
+}
+
+void cable_branch_incref(cable_branch *b)
+{
+  b->refs++;
+}
+
+void cable_branch_decref(cable_branch *b)
+{
+  rp_branch_decref(b);
+}
+
+void cable_branch_list_free(cable_branch **list, int n)
+{
+  for (int k = 0; list && k < n; k++) rp_branch_decref(list[k]);
+  free(list);
+}
+
+/* ---- session ---------------------------------------------------------------------- */
+
+cable_session *cable_session_alloc(const cable_session_options *opt)
+{
+  cable_session *r = calloc(1, sizeof *r);
+  if (!r) return NULL;
+  if (opt) r->opt = *opt;
+  cable_constants_init(&r->cur);
+  cable_names_init(&r->cur_names);
+  return r;
+}
+
+void cable_session_free(cable_session *r)
+{
+  if (!r) return;
+  for (int i = 0; i < r->nplugins; i++) cable_plugin_close(r->plugin[i]);
+  for (int i = 0; i < r->nautoeq; i++) cable_autoeq_close(r->autoeq[i]);
+  free(r);
+}

@@ -1,0 +1,98 @@
+/* Internals of the session (cable_session.c, cable_session_store.c). */
+#ifndef CABLE_SCRIPT_HOST_IMPL_H
+#define CABLE_SCRIPT_HOST_IMPL_H
+
+#include "cable/cable_autoeq.h"
+#include "cable/cable_names.h"
+#include "cable/cable_output.h"
+#include "cable/cable_plugin.h"
+#include "cable/cable_session.h"
+
+/* One computed point (a b-file row) with its own copies of the arrays. */
+typedef struct rp_point {
+  cable_point pt;   /* pt.icp, pt.par, pt.umax point into mem */
+  void *mem;
+  char *note;       /* owned copy of pt.note, NULL: none */
+  int sol;          /* index of its labelled solution in the branch, -1: none */
+} rp_point;
+
+/* One branch: what one run computed, with the constants, names and problem
+ * it was computed with.  Immutable once built and shared between results by
+ * reference counting. */
+typedef struct cable_branch {
+  long refs;
+  int ibr;
+  cable_constants c;
+  cable_names names;
+  char e[CABLE_NAME_MAX];
+  int npt, cappt;
+  rp_point *pts;
+  int nsol, capsol;
+  cable_solution **sol;
+  char *end_note;   /* why the branch ended abnormally (d-file), NULL: normal end */
+} rp_branch;
+
+/* A result: branches in order. */
+typedef struct rp_result {
+  int nbr;
+  rp_branch **br;
+} rp_result;
+
+/* A solution handle: solution isol of a branch. */
+typedef struct rp_sol {
+  rp_branch *br;
+  int isol;
+} rp_sol;
+
+#define RP_MAX_PLUGINS 16
+
+struct cable_session {
+  cable_session_options opt;
+  /* AUTO's runner state: the constants, names and problem of the last run */
+  cable_constants cur;
+  cable_names cur_names;
+  char cur_e[CABLE_NAME_MAX];
+  int next_branch, last_label;
+  int nplugins;
+  char plugin_name[RP_MAX_PLUGINS][CABLE_NAME_MAX];
+  cable_plugin *plugin[RP_MAX_PLUGINS];
+  /* AUTO equation files (NAME.f90, NAME.f, NAME.c) loaded by this session */
+  int nautoeq;
+  char autoeq_name[RP_MAX_PLUGINS][CABLE_NAME_MAX];
+  cable_autoeq *autoeq[RP_MAX_PLUGINS];
+};
+
+/* ---- store (cable_session_store.c) ------------------------------------------------- */
+
+rp_branch *rp_branch_alloc(int ibr, const cable_constants *c, const cable_names *names, const char *e);
+void rp_branch_decref(rp_branch *b);   /* frees at zero; NULL is a no-op */
+/* Appends a copy of pt (and of sol when not NULL); 0 or CABLE_ERR_ALLOC. */
+int rp_branch_add(rp_branch *b, const cable_point *pt, const cable_solution *sol);
+/* Keep a copy of text (NULL or "": none) as the branch's end note. */
+int rp_branch_set_end_note(rp_branch *b, const char *text);
+/* A deep copy (solutions cloned); NULL when out of memory. */
+rp_branch *rp_branch_copy(const rp_branch *b);
+
+rp_result *rp_result_alloc(int nbr);   /* nbr NULL slots */
+void rp_result_free(rp_result *r);     /* drops its branch references */
+/* The point of the isol-th solution of b. */
+const cable_point *rp_sol_point(const rp_branch *b, int isol);
+
+/* The path of a file TYPE.NAME ("c", "s", "b") in the session directory. */
+void rp_path(const cable_session *r, const char *type, const char *name, char *buf, size_t len);
+
+/* b./s./d.NAME from a result (append: AUTO's ap). */
+int rp_result_write(const cable_session *r, const rp_result *res, const char *name, int append,
+                    cable_error *err);
+/* A result from s.NAME (and b.NAME when present, for the norms of the
+ * labelled rows): one branch per branch number, labelled points only.
+ * c/names: the constants the branches get. */
+int rp_result_read(const cable_session *r, const char *name, const cable_constants *c,
+                   const cable_names *names, const char *e, rp_result **out, cable_error *err);
+
+/* AUTO's merge: a branch that starts where the previous one started (the two
+ * directions from one start) is joined to it; relabel: labels 1, 2, ... */
+int rp_result_merge(const rp_result *in, rp_result **out);
+int rp_result_relabel(const rp_result *in, rp_result **out);
+
+#endif

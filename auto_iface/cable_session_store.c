@@ -1,0 +1,414 @@
+/* The engine host's results in memory: branches of copied points and
+ * solutions, shared by reference counting; writing them as b./s./d. files,
+ * reading them back, AUTO's merge and relabel. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cable/cable_aufile.h"
+#include "cable/cable_status.h"
+#include "cable_session_impl.h"
+
+rp_branch *rp_branch_alloc(int ibr, const cable_constants *c, const cable_names *names, const char *e)
+{
+  rp_branch *b = calloc(1, sizeof *b);
+  if (!b) return NULL;
+  b->refs = 1;
+  b->ibr = ibr;
+  b->c = *c;
+  if (names) b->names = *names;
+  else cable_names_init(&b->names);
+  snprintf(b->e, sizeof b->e, "%s", e ? e : "");
+  return b;
+}
+
+void rp_branch_decref(rp_branch *b)
+{
+  if (!b || --b->refs > 0) return;
+  for (int i = 0; i < b->npt; i++) {
+    free(b->pts[i].mem);
+    free(b->pts[i].note);
+  }
+  for (int i = 0; i < b->nsol; i++) cable_solution_free(b->sol[i]);
+  free(b->end_note);
+  free(b->pts);
+  free(b->sol);
+  free(b);
+}
+
+static char *copy_text(const char *text)
+{
+  size_t len = strlen(text) + 1;
+  char *c = malloc(len);
+  if (c) memcpy(c, text, len);
+  return c;
+}
+
+int rp_branch_set_end_note(rp_branch *b, const char *text)
+{
+  free(b->end_note);
+  b->end_note = NULL;
+  if (text && text[0] && !(b->end_note = copy_text(text))) return CABLE_ERR_ALLOC;
+  return 0;
+}
+
+/* A copy of *pt whose arrays live in one block. */
+static int point_copy(rp_point *dst, const cable_point *pt)
+{
+  size_t ni = (size_t)(pt->nicp > 0 ? pt->nicp : 0), np = (size_t)(pt->npar > 0 ? pt->npar : 0);
+  size_t nd = (size_t)(pt->ndim > 0 ? pt->ndim : 0);
+  double *d = malloc((np + nd + 1) * sizeof(double) + (ni + 1) * sizeof(int));
+  if (!d) return CABLE_ERR_ALLOC;
+  char *note = NULL;
+  if (pt->note && pt->note[0] && !(note = copy_text(pt->note))) {
+    free(d);
+    return CABLE_ERR_ALLOC;
+  }
+  dst->pt = *pt;
+  dst->mem = d;
+  dst->note = note;
+  dst->pt.note = note;
+  if (pt->par) memcpy(d, pt->par, np * sizeof *d);
+  else memset(d, 0, np * sizeof *d);
+  if (pt->umax) memcpy(d + np, pt->umax, nd * sizeof *d);
+  else memset(d + np, 0, nd * sizeof *d);
+  int *ic = (int *)(void *)(d + np + nd + 1);
+  if (pt->icp) memcpy(ic, pt->icp, ni * sizeof *ic);
+  dst->pt.par = d;
+  dst->pt.umax = d + np;
+  dst->pt.icp = ic;
+  dst->sol = -1;
+  return 0;
+}
+
+int rp_branch_add(rp_branch *b, const cable_point *pt, const cable_solution *sol)
+{
+  if (b->npt == b->cappt) {
+    int cap = b->cappt ? 2 * b->cappt : 64;
+    rp_point *p = realloc(b->pts, (size_t)cap * sizeof *p);
+    if (!p) return CABLE_ERR_ALLOC;
+    b->pts = p;
+    b->cappt = cap;
+  }
+  if (sol && b->nsol == b->capsol) {
+    int cap = b->capsol ? 2 * b->capsol : 16;
+    cable_solution **s = realloc(b->sol, (size_t)cap * sizeof *s);
+    if (!s) return CABLE_ERR_ALLOC;
+    b->sol = s;
+    b->capsol = cap;
+  }
+  cable_solution *copy = NULL;
+  if (sol && !(copy = cable_solution_clone(sol))) return CABLE_ERR_ALLOC;
+  if (point_copy(&b->pts[b->npt], pt)) {
+    cable_solution_free(copy);
+    return CABLE_ERR_ALLOC;
+  }
+  if (copy) {
+    b->pts[b->npt].sol = b->nsol;
+    b->sol[b->nsol++] = copy;
+  }
+  b->npt++;
+  return 0;
+}
+
+rp_branch *rp_branch_copy(const rp_branch *b)
+{
+  rp_branch *n = rp_branch_alloc(b->ibr, &b->c, &b->names, b->e);
+  if (!n) return NULL;
+  for (int i = 0; i < b->npt; i++) {
+    const rp_point *p = &b->pts[i];
+    if (rp_branch_add(n, &p->pt, p->sol >= 0 ? b->sol[p->sol] : NULL)) {
+      rp_branch_decref(n);
+      return NULL;
+    }
+  }
+  if (rp_branch_set_end_note(n, b->end_note)) {
+    rp_branch_decref(n);
+    return NULL;
+  }
+  return n;
+}
+
+const cable_point *rp_sol_point(const rp_branch *b, int isol)
+{
+  for (int i = 0; i < b->npt; i++)
+    if (b->pts[i].sol == isol) return &b->pts[i].pt;
+  return NULL;
+}
+
+rp_result *rp_result_alloc(int nbr)
+{
+  rp_result *r = calloc(1, sizeof *r);
+  if (!r) return NULL;
+  r->br = calloc((size_t)(nbr > 0 ? nbr : 1), sizeof *r->br);
+  if (!r->br) {
+    free(r);
+    return NULL;
+  }
+  r->nbr = nbr;
+  return r;
+}
+
+void rp_result_free(rp_result *r)
+{
+  if (!r) return;
+  for (int i = 0; i < r->nbr; i++) rp_branch_decref(r->br[i]);
+  free(r->br);
+  free(r);
+}
+
+void rp_path(const cable_session *r, const char *type, const char *name, char *buf, size_t len)
+{
+  const char *dir = r->opt.dir && r->opt.dir[0] ? r->opt.dir : NULL;
+  if (dir && name[0] != '/') snprintf(buf, len, "%s/%s.%s", dir, type, name);
+  else snprintf(buf, len, "%s.%s", type, name);
+}
+
+/* ---- files ------------------------------------------------------------------- */
+
+int rp_result_write(const cable_session *r, const rp_result *res, const char *name, int append,
+                    cable_error *err)
+{
+  if (res->nbr == 0)
+    return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, name, "the result is empty: nothing to save");
+  cable_aufile_options o;
+  cable_aufile_options_init(&o);
+  o.append = append;
+  o.write_csv = 1;   /* b.NAME.<k>.csv beside AUTO's files, for every saved result */
+  const char *dir = r->opt.dir && r->opt.dir[0] ? r->opt.dir : NULL;
+  cable_aufile *w = cable_aufile_open(dir, name, &res->br[0]->c, &res->br[0]->names, &o, err);
+  if (!w) return err && err->status ? err->status : CABLE_ERR_IO;
+  cable_sink s = cable_aufile_sink(w);
+  int rc = 0;
+  for (int k = 0; k < res->nbr && !rc; k++) {
+    const rp_branch *b = res->br[k];
+    cable_aufile_set_constants(w, &b->c);
+    for (int i = 0; i < b->npt && !rc; i++) {
+      const rp_point *p = &b->pts[i];
+      rc = s.point(s.ctx, &p->pt);
+      if (!rc && p->sol >= 0) rc = s.solution(s.ctx, &p->pt, b->sol[p->sol]);
+    }
+    if (!rc && b->end_note) s.diag(s.ctx, b->end_note);
+  }
+  /* close reports a failed callback again, with its message */
+  int rc2 = cable_aufile_close(w, err);
+  return rc2 ? rc2 : rc;
+}
+
+/* AUTO's L2-NORM of a stored solution, for rows the b-file does not give:
+ * sqrt(int_0^1 |u|^2 dt) by the trapezoidal rule on the stored points. */
+static double l2norm_estimate(const cable_solution *s)
+{
+  int n = cable_solution_npts(s);
+  double sum = 0;
+  for (int k = 0; k + 1 < n; k++) {
+    double a = 0, b = 0;
+    for (int i = 0; i < s->ndim; i++) {
+      a += s->u[k * s->ndim + i] * s->u[k * s->ndim + i];
+      b += s->u[(k + 1) * s->ndim + i] * s->u[(k + 1) * s->ndim + i];
+    }
+    sum += 0.5 * (a + b) * (s->t[k + 1] - s->t[k]);
+  }
+  return sqrt(sum);
+}
+
+int rp_result_read(const cable_session *r, const char *name, const cable_constants *c,
+                   const cable_names *names, const char *e, rp_result **out, cable_error *err)
+{
+  char path[1024];
+  *out = NULL;
+  rp_path(r, "s", name, path, sizeof path);
+  cable_sfile *sf = cable_sfile_read(path, err);
+  if (!sf) return err && err->status ? err->status : CABLE_ERR_IO;
+  rp_path(r, "b", name, path, sizeof path);
+  cable_error berr;
+  cable_bfile *bf = cable_bfile_read(path, &berr);   /* optional: only for the norms */
+  int n = cable_sfile_count(sf), rc = 0, nbr = 0;
+  for (int i = 0; i < n; i++)
+    if (i == 0 || cable_sfile_get(sf, i)->ibr != cable_sfile_get(sf, i - 1)->ibr) nbr++;
+  rp_result *res = rp_result_alloc(nbr);
+  if (!res) rc = CABLE_ERR_ALLOC;
+  int k = -1;
+  for (int i = 0; i < n && !rc; i++) {
+    const cable_solution *s = cable_sfile_get(sf, i);
+    if (i == 0 || s->ibr != cable_sfile_get(sf, i - 1)->ibr) {
+      res->br[++k] = rp_branch_alloc(s->ibr, c, names, e);
+      if (!res->br[k]) {
+        rc = CABLE_ERR_ALLOC;
+        break;
+      }
+    }
+    double umax[CABLE_NAMES_MAX];
+    int nd = s->ndim < CABLE_NAMES_MAX ? s->ndim : CABLE_NAMES_MAX;
+    /* AUTO's MAX U(d): the largest value of u_d over the stored points */
+    for (int d = 0; d < nd; d++) {
+      umax[d] = s->u[d];
+      for (int q = 1; q < cable_solution_npts(s); q++) umax[d] = fmax(umax[d], s->u[q * s->ndim + d]);
+    }
+    cable_point pt;
+    memset(&pt, 0, sizeof pt);
+    pt.ibr = s->ibr;
+    pt.pt = s->ntot;
+    pt.itp = s->itp;
+    pt.lab = s->lab;
+    pt.ndim = nd;
+    pt.npar = s->npar;
+    pt.icp = c->nicp > 0 ? c->icp : s->icp;
+    pt.nicp = c->nicp > 0 ? c->nicp : s->nfpr;
+    pt.par = s->par;
+    pt.l2norm = l2norm_estimate(s);
+    pt.umax = umax;
+    pt.err_est = s->err_est;
+    /* the b-file's row of this label, when there is one, has the exact norm */
+    for (int j = 0; bf && j < bf->nbranch; j++) {
+      const cable_bfile_branch *bb = &bf->branch[j];
+      const double *l2 = cable_bfile_column(bb, "L2-NORM");
+      for (int q = 0; l2 && q < bb->nrow; q++)
+        if (bb->lab[q] == s->lab) pt.l2norm = l2[q];
+    }
+    pt.measure = cable_solution_measure(s, c->iplt, pt.l2norm);
+    rc = rp_branch_add(res->br[k], &pt, s);
+  }
+  cable_bfile_free(bf);
+  cable_sfile_free(sf);
+  if (rc) {
+    rp_result_free(res);
+    return cable_error_set(err, rc, NULL, 0, name, "out of memory");
+  }
+  *out = res;
+  return 0;
+}
+
+/* ---- merge and relabel --------------------------------------------------------- */
+
+/* The first points of a and b are the same start: the same parameters and
+ * norm to rounding (both runs converged the same start with the same
+ * constants, so they agree far below this). */
+#define RP_SAME_START_RTOL 1e-9
+
+static int same_start(const rp_branch *a, const rp_branch *b)
+{
+  if (a->npt == 0 || b->npt == 0) return 0;
+  const cable_point *p = &a->pts[0].pt, *q = &b->pts[0].pt;
+  if (p->npar != q->npar || p->nicp < 1 || q->nicp < 1 || p->icp[0] != q->icp[0]) return 0;
+  double x = p->par[p->icp[0]], y = q->par[q->icp[0]];
+  return fabs(x - y) <= RP_SAME_START_RTOL * fmax(1, fabs(x)) &&
+         fabs(p->l2norm - q->l2norm) <= RP_SAME_START_RTOL * fmax(1, fabs(p->l2norm));
+}
+
+/* b reversed, then a without its first point; the junction loses its label
+ * (it is no longer an end point). */
+static rp_branch *join(const rp_branch *a, const rp_branch *b)
+{
+  rp_branch *n = rp_branch_alloc(a->ibr, &a->c, &a->names, a->e);
+  if (!n) return NULL;
+  int k = 0;
+  for (int pass = 0; pass < 2; pass++) {
+    const rp_branch *src = pass ? a : b;
+    for (int j = 0; j < src->npt; j++) {
+      int i = pass ? j : src->npt - 1 - j;
+      if (pass && i == 0) continue;
+      const rp_point *p = &src->pts[i];
+      cable_point pt = p->pt;
+      const cable_solution *sol = p->sol >= 0 ? src->sol[p->sol] : NULL;
+      pt.ibr = a->ibr;
+      pt.pt = ++k;
+      if (!pass && i == 0) {   /* the shared start */
+        pt.itp = CABLE_TY_NONE;
+        pt.lab = 0;
+        sol = NULL;
+      }
+      cable_solution *s2 = NULL;
+      if (sol) {
+        if (!(s2 = cable_solution_clone(sol))) {
+          rp_branch_decref(n);
+          return NULL;
+        }
+        s2->ibr = a->ibr;
+        s2->ntot = k;
+      }
+      int rc = rp_branch_add(n, &pt, s2);
+      cable_solution_free(s2);
+      if (rc) {
+        rp_branch_decref(n);
+        return NULL;
+      }
+    }
+  }
+  return n;
+}
+
+int rp_result_merge(const rp_result *in, rp_result **out)
+{
+  rp_result *r = rp_result_alloc(in->nbr);
+  if (!r) return CABLE_ERR_ALLOC;
+  int n = 0;
+  for (int i = 0; i < in->nbr; i++) {
+    if (i + 1 < in->nbr && same_start(in->br[i], in->br[i + 1])) {
+      /* AUTO keeps the forward run's direction: the second (backward) run is reversed */
+      rp_branch *j = join(in->br[i], in->br[i + 1]);
+      if (!j) {
+        rp_result_free(r);
+        return CABLE_ERR_ALLOC;
+      }
+      r->br[n++] = j;
+      i++;
+    } else {
+      in->br[i]->refs++;
+      r->br[n++] = in->br[i];
+    }
+  }
+  r->nbr = n;
+  *out = r;
+  return 0;
+}
+
+int rp_result_relabel(const rp_result *in, rp_result **out)
+{
+  rp_result *r = rp_result_alloc(in->nbr);
+  if (!r) return CABLE_ERR_ALLOC;
+  int lab = 0;
+  for (int i = 0; i < in->nbr; i++) {
+    rp_branch *b = rp_branch_copy(in->br[i]);
+    if (!b) {
+      rp_result_free(r);
+      return CABLE_ERR_ALLOC;
+    }
+    for (int k = 0; k < b->npt; k++) {
+      if (b->pts[k].pt.lab <= 0) continue;
+      b->pts[k].pt.lab = ++lab;
+      if (b->pts[k].sol >= 0) b->sol[b->pts[k].sol]->lab = lab;
+    }
+    r->br[i] = b;
+  }
+  *out = r;
+  return 0;
+}
+
+/* ---- what a branch holds (cable_session.h) ------------------------------------------ */
+
+int cable_branch_number(const cable_branch *b) { return b->ibr; }
+int cable_branch_npoints(const cable_branch *b) { return b->npt; }
+int cable_branch_nsolutions(const cable_branch *b) { return b->nsol; }
+const cable_names *cable_branch_names(const cable_branch *b) { return &b->names; }
+const cable_constants *cable_branch_constants(const cable_branch *b) { return &b->c; }
+const char *cable_branch_problem(const cable_branch *b) { return b->e; }
+const char *cable_branch_end_note(const cable_branch *b) { return b->end_note; }
+
+const cable_point *cable_branch_point(const cable_branch *b, int i)
+{
+  return i >= 0 && i < b->npt ? &b->pts[i].pt : NULL;
+}
+
+const cable_solution *cable_branch_solution(const cable_branch *b, int i)
+{
+  return i >= 0 && i < b->nsol ? b->sol[i] : NULL;
+}
+
+const char *cable_branch_solution_note(const cable_branch *b, int i)
+{
+  for (int k = 0; k < b->npt; k++)
+    if (b->pts[k].sol == i) return b->pts[k].note;
+  return NULL;
+}

@@ -1,0 +1,212 @@
+/* The numerical analysis of one braid solution and the pictures, for the
+ * Python package: analyze (braid_analysis.h), the axis self-passages
+ * between two solutions (axis_passages.h), the tube distance
+ * (tube_distance.h), plot and render (cable_pictures.h). */
+#include "pycable.h"
+
+#include <math.h>
+
+
+static int set_num(PyObject *d, const char *key, double x)
+{
+  PyObject *v = PyFloat_FromDouble(x);
+  int rc = v ? PyDict_SetItemString(d, key, v) : -1;
+  Py_XDECREF(v);
+  return rc;
+}
+
+static int set_int(PyObject *d, const char *key, long x)
+{
+  PyObject *v = PyLong_FromLong(x);
+  int rc = v ? PyDict_SetItemString(d, key, v) : -1;
+  Py_XDECREF(v);
+  return rc;
+}
+
+static int set_list(PyObject *d, const char *key, const double *x, int n)
+{
+  PyObject *l = PyList_New(n);
+  for (int i = 0; l && i < n; i++) PyList_SET_ITEM(l, i, PyFloat_FromDouble(x[i]));
+  int rc = l ? PyDict_SetItemString(d, key, l) : -1;
+  Py_XDECREF(l);
+  return rc;
+}
+
+static int psign_stored(const braid_psign *p)
+{
+  return p->n < BRAID_PSIGN_MAX ? p->n : BRAID_PSIGN_MAX;
+}
+
+/* analyze(branch, i) -> dict of derived quantities (doc/scripts.md) */
+PyObject *pyc_analyze(PyObject *mod, PyObject *args)
+{
+  (void)mod;
+  PyObject *br;
+  int i;
+  if (!PyArg_ParseTuple(args, "Oi", &br, &i)) return NULL;
+  const cable_solution *s = pyc_solution_arg(br, i);
+  if (!s) return NULL;
+  braid_analysis *a = PyMem_Malloc(sizeof *a);
+  if (!a) return PyErr_NoMemory();
+  int rc;
+  Py_BEGIN_ALLOW_THREADS
+  rc = braid_analysis_compute(s, a);
+  Py_END_ALLOW_THREADS
+  if (rc) {
+    PyMem_Free(a);
+    cable_error err;
+    cable_error_set(&err, rc, NULL, 0, NULL, "label %d is not a closed braid solution (%s)", s->lab,
+                    cable_status_message(rc));
+    return pyc_raise(rc, &err);
+  }
+  const knot_type_result *k = &a->topo.axis;
+  PyObject *d = PyDict_New();
+  PyObject *ov = d ? PyList_New(0) : NULL;
+  int n = a->tube.noverlap < TUBE_MAX_INTERVALS ? a->tube.noverlap : TUBE_MAX_INTERVALS;
+  for (int j = 0; ov && j < n; j++) {
+    PyObject *iv = Py_BuildValue("[dd]", a->tube.overlap[j][0], a->tube.overlap[j][1]);
+    if (!iv || PyList_Append(ov, iv) < 0) Py_CLEAR(ov);
+    Py_XDECREF(iv);
+  }
+  PyObject *knot = d ? PyUnicode_FromString(k->name) : NULL;
+  int bad = !d || !ov || !knot || set_num(d, "Lk", a->topo.lk) || set_num(d, "Tw", a->topo.tw) ||
+            set_num(d, "Wr", a->topo.wr) || set_num(d, "Lk_defect", a->topo.lk_defect) ||
+            PyDict_SetItemString(d, "knot", knot) || set_int(d, "hand", k->handedness) ||
+            set_int(d, "crossings", k->crossing_number) || set_num(d, "lk_in_tube", a->topo.lk_in_tube) ||
+            set_num(d, "closure_sign", a->topo.closure) || set_num(d, "pmin", fmin(a->pmin1, a->pmin2)) ||
+            set_num(d, "pmin1", a->pmin1) || set_num(d, "pmax1", a->pmax1) || set_num(d, "pmin2", a->pmin2) ||
+            set_num(d, "pmax2", a->pmax2) || set_int(d, "psign", a->psign1.n) || set_int(d, "psign2", a->psign2.n) ||
+            set_list(d, "psign_s1", a->psign1.s, psign_stored(&a->psign1)) ||
+            set_list(d, "psign_s2", a->psign2.s, psign_stored(&a->psign2)) ||
+            set_list(d, "psign_sigma2", a->psign2.sigma, psign_stored(&a->psign2)) ||
+            set_num(d, "dmin", a->tube.dmin) || set_num(d, "axis_dmin", a->tube.axis_dmin) ||
+            set_int(d, "noverlap", a->tube.noverlap) || PyDict_SetItemString(d, "overlap", ov) ||
+            set_num(d, "overlap_length", a->tube.overlap_length) ||
+            set_num(d, "axis_kappa_max", a->tube.axis_kappa_max) || set_num(d, "drift", a->drift) ||
+            set_num(d, "closure", a->closure) || set_num(d, "closure2", a->closure2) || set_num(d, "err", s->err_est);
+  PyMem_Free(a);
+  Py_XDECREF(ov);
+  Py_XDECREF(knot);
+  if (bad) {
+    Py_XDECREF(d);
+    return NULL;
+  }
+  return d;
+}
+
+/* passages(branch, i, branch2, j) -> (count, net, tau_first) */
+PyObject *pyc_passages(PyObject *mod, PyObject *args)
+{
+  (void)mod;
+  PyObject *b1, *b2;
+  int i, j;
+  if (!PyArg_ParseTuple(args, "OiOi", &b1, &i, &b2, &j)) return NULL;
+  const cable_solution *s1 = pyc_solution_arg(b1, i), *s2 = s1 ? pyc_solution_arg(b2, j) : NULL;
+  if (!s2) return NULL;
+  axis_passages ap;
+  int rc;
+  Py_BEGIN_ALLOW_THREADS
+  rc = braid_axis_passages(s1, s2, &ap);
+  Py_END_ALLOW_THREADS
+  if (rc) {
+    cable_error err;
+    cable_error_set(&err, rc, NULL, 0, NULL, "labels %d and %d: cannot follow the braid axis between them (%s)",
+                    s1->lab, s2->lab, cable_status_message(rc));
+    return pyc_raise(rc, &err);
+  }
+  return Py_BuildValue("(iid)", ap.count, ap.net, ap.tau_first);
+}
+
+/* tube_dmin(branch, i) -> dmin */
+PyObject *pyc_tube_dmin(PyObject *mod, PyObject *args)
+{
+  (void)mod;
+  PyObject *b;
+  int i;
+  if (!PyArg_ParseTuple(args, "Oi", &b, &i)) return NULL;
+  const cable_solution *s = pyc_solution_arg(b, i);
+  if (!s) return NULL;
+  tube_distance_result td;
+  int rc;
+  Py_BEGIN_ALLOW_THREADS
+  rc = braid_tube_distance_solution(s, 0, &td);
+  Py_END_ALLOW_THREADS
+  if (rc) {
+    cable_error err;
+    cable_error_set(&err, rc, NULL, 0, NULL, "label %d is not a closed braid solution (%s)", s->lab,
+                    cable_status_message(rc));
+    return pyc_raise(rc, &err);
+  }
+  return PyFloat_FromDouble(td.dmin);
+}
+
+#define PLOT_MAX_FILES 64
+#define PLOT_MAX_MARKS 64
+
+/* plot(out, [bfile, ...], x, y, [(x, y, text), ...], title) */
+PyObject *pyc_plot(PyObject *mod, PyObject *args)
+{
+  (void)mod;
+  const char *out, *x, *y, *title;
+  PyObject *files, *marks;
+  if (!PyArg_ParseTuple(args, "sOzzOz", &out, &files, &x, &y, &marks, &title)) return NULL;
+  PyObject *ff = PySequence_Fast(files, "plot: a list of b-file names");
+  PyObject *mf = ff ? PySequence_Fast(marks, "plot: a list of marks") : NULL;
+  if (!mf) {
+    Py_XDECREF(ff);
+    return NULL;
+  }
+  Py_ssize_t nf = PySequence_Fast_GET_SIZE(ff), nm = PySequence_Fast_GET_SIZE(mf);
+  PyObject *ret = NULL;
+  if (nf < 1 || nf > PLOT_MAX_FILES || nm > PLOT_MAX_MARKS) {
+    PyErr_Format(PyExc_ValueError, "plot: 1 to %d b-files and at most %d marks", PLOT_MAX_FILES, PLOT_MAX_MARKS);
+    goto done;
+  }
+  const char *bf[PLOT_MAX_FILES];
+  plot_annotation ann[PLOT_MAX_MARKS];
+  for (Py_ssize_t k = 0; k < nf; k++)
+    if (!(bf[k] = PyUnicode_AsUTF8(PySequence_Fast_GET_ITEM(ff, k)))) goto done;
+  for (Py_ssize_t k = 0; k < nm; k++) {
+    ann[k].filled = 0;
+    if (!PyArg_ParseTuple(PySequence_Fast_GET_ITEM(mf, k), "dds", &ann[k].x, &ann[k].y, &ann[k].text)) goto done;
+  }
+  cable_error err;
+  cable_error_clear(&err);
+  int rc;
+  Py_BEGIN_ALLOW_THREADS
+  rc = cable_plot_files(NULL, bf, (int)nf, x, y, ann, (int)nm, title, out, &err);
+  Py_END_ALLOW_THREADS
+  if (rc) pyc_raise(rc, &err);
+  else ret = Py_NewRef(Py_None);
+done:
+  Py_DECREF(ff);
+  Py_DECREF(mf);
+  return ret;
+}
+
+/* render(branch, i, out, view (x, y, z) or None, size, thicken, pressure, vtp, ply) */
+PyObject *pyc_render(PyObject *mod, PyObject *args)
+{
+  (void)mod;
+  PyObject *b, *view;
+  int i, size, pressure;
+  double thicken;
+  const char *out, *vtp, *ply;
+  if (!PyArg_ParseTuple(args, "OizOidpzz", &b, &i, &out, &view, &size, &thicken, &pressure, &vtp, &ply)) return NULL;
+  const cable_solution *s = pyc_solution_arg(b, i);
+  if (!s) return NULL;
+  render_options o;
+  memset(&o, 0, sizeof o);
+  if (view != Py_None && !PyArg_ParseTuple(view, "ddd", &o.view_dir[0], &o.view_dir[1], &o.view_dir[2])) return NULL;
+  o.width = o.height = size;
+  o.thicken = thicken;
+  if (pressure) o.colormap = RENDER_COLORMAP_DIVERGING;
+  cable_error err;
+  cable_error_clear(&err);
+  int rc;
+  Py_BEGIN_ALLOW_THREADS
+  rc = cable_render_solution(s, &o, out, vtp, ply, &err);
+  Py_END_ALLOW_THREADS
+  if (rc) return pyc_raise(rc, &err);
+  Py_RETURN_NONE;
+}

@@ -1,0 +1,89 @@
+/* cable._cable: the C side of the Python package (python/cable).  A thin
+ * layer over the session (cable_session.h) and the analysis of one braid
+ * solution: it converts arguments, releases the GIL around runs, maps
+ * statuses to cable.CableError with the library's message, and owns each
+ * branch in one Python object.  Everything convenient (label selection,
+ * iteration, AUTO's commands, the scene tables) is Python on top.
+ *
+ *   Session(dir)            a runner: run, load, save, loadbd, transform
+ *   Branch                  one computed branch: points(), solution(i), ...
+ *   analyze(br, i)          dict: Lk, Tw, Wr, knot type, pressure, tube distance ...
+ *   passages(br, i, j)      self-passages of the braid axis between two solutions
+ *   tube_dmin(br, i)        closest approach of the strand tubes / Delta
+ *   plot(...), render(...)  pictures (graphics/)
+ *   type_name(itp)          AUTO's two-letter point type */
+#include "pycable.h"
+
+#define NPY_NO_DEPRECATED_API NPY_1_7_API_VERSION
+#define PY_ARRAY_UNIQUE_SYMBOL cable_pycable_ARRAY_API
+#include <numpy/arrayobject.h>
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+
+/* ---- errors ------------------------------------------------------------------ */
+
+static PyObject *cable_error_type;   /* cable.CableError, created once at import */
+
+PyObject *pyc_raise(int status, const cable_error *err)
+{
+  if (status == CABLE_ERR_INTERRUPTED && PyErr_Occurred()) return NULL;   /* KeyboardInterrupt */
+  char buf[1400];
+  const char *msg = err && err->msg[0] ? cable_error_format(err, buf, sizeof buf) : cable_status_message(status);
+  PyObject *exc = PyObject_CallFunction(cable_error_type, "s", msg);
+  PyObject *st = exc ? PyLong_FromLong(status) : NULL;
+  if (st && PyObject_SetAttrString(exc, "status", st) == 0) PyErr_SetObject(cable_error_type, exc);
+  Py_XDECREF(st);
+  Py_XDECREF(exc);
+  return NULL;
+}
+
+/* ---- module -------------------------------------------------------------------- */
+
+static PyObject *py_type_name(PyObject *mod, PyObject *arg)
+{
+  (void)mod;
+  long itp = PyLong_AsLong(arg);
+  if (itp == -1 && PyErr_Occurred()) return NULL;
+  return PyUnicode_FromString(cable_type_name((int)itp));
+}
+
+static PyMethodDef module_methods[] = {
+    {"type_name", py_type_name, METH_O, "AUTO's two-letter name of a point type code"},
+    {"analyze", (PyCFunction)(void (*)(void))pyc_analyze, METH_VARARGS, "analyze(branch, i) -> dict"},
+    {"passages", (PyCFunction)(void (*)(void))pyc_passages, METH_VARARGS,
+     "passages(branch, i, j) -> (count, net, tau_first): self-passages of the braid axis"},
+    {"tube_dmin", (PyCFunction)(void (*)(void))pyc_tube_dmin, METH_VARARGS,
+     "tube_dmin(branch, i) -> closest approach of non-adjacent strand parts / Delta"},
+    {"plot", (PyCFunction)(void (*)(void))pyc_plot, METH_VARARGS,
+     "plot(out, bfiles, x, y, marks, title): bifurcation diagram of b-files"},
+    {"render", (PyCFunction)(void (*)(void))pyc_render, METH_VARARGS,
+     "render(branch, i, out, view, size, thicken, pressure, vtp, ply)"},
+    {NULL, NULL, 0, NULL}};
+
+static struct PyModuleDef module_def = {PyModuleDef_HEAD_INIT, "cable._cable",
+                                        "The C side of the cable package (auto_iface/pycable_*.c).", -1,
+                                        module_methods, NULL, NULL, NULL, NULL};
+
+PyMODINIT_FUNC PyInit__cable(void);
+PyMODINIT_FUNC PyInit__cable(void)
+{
+  import_array();
+  if (PyType_Ready(&pyc_branch_type) < 0 || PyType_Ready(&pyc_session_type) < 0) return NULL;
+  PyObject *m = PyModule_Create(&module_def);
+  if (!m) return NULL;
+  cable_error_type = PyErr_NewExceptionWithDoc(
+      "cable.CableError",
+      "An error of cable's library: the message names file, line and key; .status is the cable_status code.",
+      PyExc_RuntimeError, NULL);
+  if (!cable_error_type || PyModule_AddObjectRef(m, "CableError", cable_error_type) < 0 ||
+      PyModule_AddObjectRef(m, "Branch", (PyObject *)&pyc_branch_type) < 0 ||
+      PyModule_AddObjectRef(m, "Session", (PyObject *)&pyc_session_type) < 0 ||
+      PyModule_AddIntConstant(m, "ERR_INTERRUPTED", CABLE_ERR_INTERRUPTED) < 0) {
+    Py_DECREF(m);
+    return NULL;
+  }
+  return m;
+}

@@ -1,0 +1,140 @@
+/* A session of AUTO-07p's runner on cable's engine: what the Python package
+ * (python/cable, its C side auto_iface/pycable_*.c) and `cable run` use;
+ * everything a script can do goes through it.
+ *
+ *   run             constants (c=NAME reads c.NAME; KEY=VALUE overrides, as in
+ *                   AUTO), the problem (e=NAME), the start (STPNT, a solution,
+ *                   a result with IRS, or files s.NAME), one continuation run
+ *                   on the engine; the branch is kept in memory; sv=NAME /
+ *                   ap=NAME write or append b./s./d.NAME.
+ *   load/loadbd/save/merge/relabel   as in AUTO (files b./s./d.NAME).
+ *
+ * Like AUTO's runner, the session remembers the constants and problem of the
+ * last run: a run without c= continues with them (IRS and sv= excepted), and
+ * numbers labels and branches after every label it has used or read.
+ *
+ * Branches (cable_branch) are immutable once built and reference-counted:
+ * cable_branch_incref / cable_branch_decref. */
+#ifndef CABLE_SESSION_H
+#define CABLE_SESSION_H
+
+#include <stdio.h>
+
+#include "cable/cable_api.h"
+#include "cable/cable_constants.h"
+#include "cable/cable_error.h"
+#include "cable/cable_names.h"
+#include "cable/cable_output.h"
+#include "cable/cable_problem.h"
+#include "cable/cable_solution.h"
+
+/* Where e=NAME problems come from.  The session always knows the engine's
+ * test problems (bratu, elastica, layer, stiff), the braid templates when a
+ * run restarts from a stored solution, and plug-ins (e='path/x.so', or e='x'
+ * when x.so exists in the run directory).  A caller adds problems (the braid
+ * problems from STPNT, which need prepared starting parameters) here. */
+typedef struct cable_session_problems {
+  void *ctx;
+  /* The problem for e=name.  c: the run's constants after every override, or
+   * NULL when only the problem's names (parnames/unames) are needed to read
+   * the overrides.  from_stpnt: 1 when the run starts from STPNT.  Return 0
+   * and *pb (valid until release), CABLE_ERR_NOTFOUND without touching err
+   * when the name is not yours, or another error with err. */
+  int (*find)(void *ctx, const char *name, const cable_constants *c, int from_stpnt,
+              const cable_problem **pb, cable_error *err);
+  /* The session no longer needs pb (NULL: nothing to do). */
+  void (*release)(void *ctx, const cable_problem *pb);
+} cable_session_problems;
+
+typedef struct cable_session_options {
+  const char *dir;                          /* directory of c./s./b./d. files; NULL or "": the
+                                               current directory */
+  const cable_session_problems *problems;   /* NULL: the session's own problems only */
+  FILE *log;                                /* labelled points of each run; NULL: stdout */
+  FILE *diag;                               /* the engine's per-point diagnostics (AUTO's
+                                               fort.9 lines); NULL: not shown */
+  /* Asked after every computed point (NULL: never): non-zero stops the run
+   * there with CABLE_ERR_INTERRUPTED (nothing is written for it). */
+  int (*interrupt)(void *ctx);
+  void *interrupt_ctx;
+} cable_session_options;
+
+CABLE_API void cable_session_options_init(cable_session_options *o);
+/* The braid problems from STPNT (TORUS, HAND, PAR of the constants): the
+ * problem source `cable run` and the Python package use. */
+CABLE_API const cable_session_problems *cable_session_braid_problems(void);
+
+typedef struct cable_session cable_session;
+typedef struct cable_branch cable_branch;
+
+/* The options are copied (the FILE pointers and problems must outlive s). */
+CABLE_API cable_session *cable_session_alloc(const cable_session_options *opt);
+/* Frees the session: plug-ins it opened are closed.  NULL is a no-op.
+ * Branches live on independently of the session. */
+CABLE_API void cable_session_free(cable_session *s);
+
+/* The arguments of AUTO's run(...) and load(...).  The start is at most one
+ * of: a solution (sol_branch, sol_index), a result (branches[0..nbranch-1]:
+ * its solution IRS, or its last one), a name (run('NAME'): c.NAME when
+ * present and s.NAME), or nothing (STPNT, or s= with IRS).  e, c, s, sv, ap:
+ * the keywords that take names (NULL: not given).  over[0..nover-1] are
+ * constants-file statements ("NTST=50", "IRS='BP1'", "DS='-'",
+ * "UZR={'T': -2.1}") applied in order after the constants file, each as
+ * cable_constants_parse_override reads it (an error names its key). */
+typedef struct cable_run_args {
+  const cable_branch *sol_branch;
+  int sol_index;
+  cable_branch *const *branches;
+  int nbranch;
+  const char *name;
+  const char *e, *c, *s, *sv, *ap;
+  int nover;
+  const char *const *over;
+  const char *over_file;   /* the file name errors in over[] report ("<command line>"); NULL: none */
+} cable_run_args;
+
+/* One continuation run; *out: the new branch (also when it ended abnormally,
+ * MX).  0 or a negative cable_status with err (CABLE_ERR_INTERRUPTED when
+ * the interrupt callback stopped it: no file is written then). */
+CABLE_API int cable_session_run(cable_session *s, const cable_run_args *a, cable_branch **out, cable_error *err);
+/* AUTO's load: the start a run with the same arguments would use, as a
+ * one-solution branch, and the runner state of that run.  A name without IRS
+ * gives the file's last solution. */
+CABLE_API int cable_session_load(cable_session *s, const cable_run_args *a, cable_branch **out, cable_error *err);
+/* b./s./d.NAME from branches (append: AUTO's ap=).  sol_index >= 0: only that
+ * solution of branches[0] (a one-point file). */
+CABLE_API int cable_session_save(cable_session *s, cable_branch *const *branches, int n, int sol_index, const char *name,
+                       int append, cable_error *err);
+/* The labelled solutions of s.NAME (with b.NAME's rows for their norms), one
+ * branch per branch number: *out (free with cable_branch_list_free). */
+CABLE_API int cable_session_loadbd(cable_session *s, const char *name, cable_branch ***out, int *n, cable_error *err);
+/* AUTO's merge (relabel 0) and relabel (1) of branches: *out as loadbd's. */
+CABLE_API int cable_session_transform(cable_session *s, cable_branch *const *in, int n, int relabel, cable_branch ***out,
+                            int *nout, cable_error *err);
+/* The same on files b./s./d.NAME, rewritten in place. */
+CABLE_API int cable_session_transform_files(cable_session *s, const char *name, int relabel, cable_error *err);
+/* The path of TYPE.NAME ("c", "s", "b", "d") or of a plain file (type NULL)
+ * in the session's directory. */
+CABLE_API void cable_session_path(const cable_session *s, const char *type, const char *name, char *buf, size_t len);
+
+CABLE_API void cable_branch_incref(cable_branch *b);
+CABLE_API void cable_branch_decref(cable_branch *b);   /* NULL is a no-op */
+CABLE_API void cable_branch_list_free(cable_branch **list, int n);
+
+/* What a branch holds: its number, its points (the b-file rows, with the
+ * engine's notes), its labelled solutions and the constants, names and
+ * problem they were computed with.  Pointers stay valid while b lives. */
+CABLE_API int cable_branch_number(const cable_branch *b);
+CABLE_API int cable_branch_npoints(const cable_branch *b);
+CABLE_API const cable_point *cable_branch_point(const cable_branch *b, int i);
+CABLE_API int cable_branch_nsolutions(const cable_branch *b);
+CABLE_API const cable_solution *cable_branch_solution(const cable_branch *b, int i);
+/* The engine's remark on solution i's point (the d-file note), NULL: none. */
+CABLE_API const char *cable_branch_solution_note(const cable_branch *b, int i);
+CABLE_API const cable_names *cable_branch_names(const cable_branch *b);
+CABLE_API const cable_constants *cable_branch_constants(const cable_branch *b);
+CABLE_API const char *cable_branch_problem(const cable_branch *b);
+/* Why the branch ended abnormally (the d-file's note), NULL: a normal end. */
+CABLE_API const char *cable_branch_end_note(const cable_branch *b);
+
+#endif

@@ -1,0 +1,45 @@
+"""cable: equilibria of elastic cable knots and links by numerical
+continuation, with AUTO-07p's command-line interface.
+
+    import cable
+    flat = cable.run(e='braid_knot', c='knot72', sv='flat')
+    m1 = cable.run(flat('BP1'), e='braid_knot_sym', c='knot72sym', UZR={'T': -2.10752})
+
+Scripts (`cable replay X.auto`, `python3 -m cable X.auto`) get these commands
+preloaded, as AUTO's `auto X.auto` does (cable.script).  doc/scripts.md lists
+the commands and where they differ from AUTO's.
+"""
+from ._cable import CableError
+from .commands import Runner, constant_text
+from .results import Parameters, Result, Solution, SolutionList
+from . import scenes
+from .script import run_script
+
+_runner = None
+
+
+def runner():
+    """The module's own runner (AUTO's interactive one), made on first use."""
+    global _runner
+    if _runner is None:
+        _runner = Runner()
+    return _runner
+
+
+def _delegate(name):
+    def fn(*args, **kw):
+        return runner().namespace()[name](*args, **kw)
+    fn.__name__ = name
+    fn.__doc__ = getattr(Runner, name, None).__doc__ if hasattr(Runner, name) else None
+    return fn
+
+
+for _n in ('run', 'r', 'load', 'ld', 'loadbd', 'bd', 'save', 'sv', 'merge', 'mb', 'relabel', 'rl', 'clean', 'cl',
+           'delete', 'dl', 'copy', 'cp', 'append', 'ap', 'cd', 'wait', 'analyze', 'plot', 'render', 'compare',
+           'overlap_free', 'branch_table'):
+    globals()[_n] = _delegate(_n)
+del _n
+
+branch_points = scenes.branch_points
+branch_point = scenes.branch_point
+mirror_table = scenes.mirror_table

@@ -1,0 +1,292 @@
+"""AUTO-07p's script commands on cable's engine (doc/scripts.md).
+
+A Runner is AUTO's runner: it remembers the constants and problem of the last
+run, and numbers new labels and branches after every label it has used or
+read.  Its commands are AUTO's, with AUTO's short aliases:
+
+  run/r/rn, load/ld, save/sv, loadbd/bd, merge/mb, relabel/rl, clean/cl,
+  delete/dl, copy/cp, append/ap, cd, auto, wait, plus cable's analyze,
+  compare, overlap_free, branch_table, plot, render.
+"""
+import functools
+import os
+import shutil
+import sys
+import tempfile
+
+import numpy as np
+
+from . import _cable, scenes
+from ._cable import CableError
+from .results import Result, Solution
+
+_NAME_KEYS = ('e', 'c', 's', 'sv', 'ap')
+
+
+def constant_text(key, value):
+    """KEY=VALUE in the constants-file syntax (doc/constants.md): Python's
+    literal syntax, which the constants parser reads."""
+    return '%s=%s' % (key, _value_text(key, value))
+
+
+def _value_text(key, v):
+    if isinstance(v, (bool, np.bool_)):
+        return '1' if v else '0'
+    if isinstance(v, (int, np.integer)):
+        return str(int(v))
+    if isinstance(v, (float, np.floating)):
+        return repr(float(v))
+    if isinstance(v, str):
+        if "'" in v and '"' in v:
+            raise CableError('%s: a value cannot contain both quote characters' % key)
+        q = '"' if "'" in v else "'"
+        return q + v + q
+    if isinstance(v, np.ndarray):
+        v = v.tolist()
+    if isinstance(v, (list, tuple)):
+        return '[' + ', '.join(_value_text(key, x) for x in v) + ']'
+    if isinstance(v, dict):
+        return '{' + ', '.join('%s: %s' % (_value_text(key, k), _value_text(key, x)) for k, x in v.items()) + '}'
+    raise CableError('%s: a %s is not a constants value' % (key, type(v).__name__))
+
+
+def _command(name):
+    """CableError messages of a command start with its name, as AUTO's CLI
+    reports them (the script runner adds file and line)."""
+    def wrap(fn):
+        @functools.wraps(fn)
+        def inner(*args, **kw):
+            try:
+                return fn(*args, **kw)
+            except CableError as e:
+                if getattr(e, 'command', None):
+                    raise
+                err = CableError('%s: %s' % (name, e))
+                err.status = getattr(e, 'status', -2)
+                err.command = name
+                raise err from None
+        return inner
+    return wrap
+
+
+def _start(data):
+    """(start, sol, name) for the session from run()'s first argument."""
+    if data is None:
+        return None, -1, None
+    if isinstance(data, Solution):
+        br, i = data.branch
+        return br, i, None
+    if isinstance(data, Result):
+        if len(data) == 0:
+            raise CableError('the result is empty')
+        return data.branches, -1, None
+    if isinstance(data, str):
+        return None, -1, data
+    raise CableError('the start must be a solution, a result or a name, got a %s' % type(data).__name__)
+
+
+def _args(data, kw):
+    start, sol, name = _start(data)
+    names = {}
+    over = []
+    for k, v in kw.items():
+        if k in _NAME_KEYS:
+            if not isinstance(v, str):
+                raise CableError('%s: must be a non-empty name, got a %s' % (k, type(v).__name__))
+            names[k] = v
+        else:
+            over.append(constant_text(k, v))
+    return (start, sol, name, names.get('e'), names.get('c'), names.get('s'), names.get('sv'), names.get('ap'),
+            over)
+
+
+def _branches(x, what):
+    if isinstance(x, Result):
+        return x.branches, -1
+    if isinstance(x, Solution):
+        br, i = x.branch
+        return [br], i
+    raise CableError('%s needs a result or a solution, got a %s' % (what, type(x).__name__))
+
+
+class Runner:
+    """AUTO's runner on one engine session; its methods are the commands."""
+
+    def __init__(self):
+        self.session = _cable.Session()
+        self.script_runner = None   # set by cable.script to run auto('other.auto')
+
+    # --- runs -------------------------------------------------------------------------
+    def run(self, data=None, **kw):
+        """run([start], KEY=value, ...): one continuation run (AUTO's run):
+        c='NAME' reads c.NAME, e='NAME' the problem, s='NAME' the start
+        file, sv='NAME' saves b./s./d.NAME, ap='NAME' appends; every other
+        keyword overrides a constant (NMX=200, DS='-', UZR={'T': -2.1})."""
+        sys.stdout.flush()
+        return Result([self.session.run(*_args(data, kw))])
+
+    def load(self, data=None, **kw):
+        """load([start], KEY=value, ...): the solution a run with the same
+        arguments would start from; sets the runner's constants."""
+        b = self.session.load(*_args(data, kw))
+        return Result([b])(None)[0]
+
+    def loadbd(self, name):
+        """loadbd('NAME'): the labelled solutions of s.NAME (b.NAME's norms) as a result."""
+        if not isinstance(name, str):
+            raise CableError('loadbd needs a name (files b.NAME, s.NAME)')
+        return Result(self.session.loadbd(name))
+
+    def save(self, data, name):
+        """save(x, 'NAME'): b./s./d.NAME from a result or one solution."""
+        br, i = _branches(data, 'save')
+        if not isinstance(name, str) or not name:
+            raise CableError('the second argument must be a non-empty name, got a %s' % type(name).__name__)
+        sys.stdout.flush()
+        self.session.save(br, i, name, False)
+
+    def append(self, x, name=None):
+        """append(x, 'NAME'): x's branches appended to b./s./d.NAME;
+        append('NAME1', 'NAME2'): the files NAME1 appended to NAME2."""
+        if isinstance(x, str) and isinstance(name, Result):   # append('xxx', x): x after the files
+            return self.loadbd(x) + name
+        if isinstance(x, str):
+            if name is None:
+                raise CableError("append('NAME') appends AUTO's fort.* files, which cable does not write")
+            x = self.loadbd(x)
+        if not isinstance(name, str) or not name:
+            raise CableError('the second argument must be a non-empty name')
+        br, i = _branches(x, 'append')
+        sys.stdout.flush()
+        self.session.save(br, i, name, True)
+
+    def merge(self, x):
+        """merge(r): the two directions from one start joined; merge('NAME') rewrites the files."""
+        if isinstance(x, str):
+            self.session.transform_files(x, False)
+            return None
+        br, _ = _branches(x, 'merge')
+        return Result(self.session.transform(br, False))
+
+    def relabel(self, x):
+        """relabel(r): labels 1, 2, ...; relabel('NAME') rewrites the files."""
+        if isinstance(x, str):
+            self.session.transform_files(x, True)
+            return None
+        br, _ = _branches(x, 'relabel')
+        return Result(self.session.transform(br, True))
+
+    # --- files and directories ----------------------------------------------------------
+    def clean(self):
+        """clean(): AUTO deletes fort.* and compiled files; cable writes none."""
+        print('  clean: nothing to delete (cable writes no fort.* or object files)')
+
+    def delete(self, name):
+        """delete('NAME'): removes b.NAME, s.NAME, d.NAME."""
+        for t in 'bsd':
+            path = '%s.%s' % (t, name)
+            if os.path.exists(path):
+                print('Deleting %s ...' % path)
+                os.remove(path)
+
+    def copy(self, name1, name2):
+        """copy('A', 'B'): b./s./d.A copied to b./s./d.B (each file whole or not at all)."""
+        found = False
+        for t in 'bsd':
+            src, dst = '%s.%s' % (t, name1), '%s.%s' % (t, name2)
+            if not os.path.exists(src):
+                continue
+            found = True
+            fd, tmp = tempfile.mkstemp(prefix='.%s.' % os.path.basename(dst), dir=os.path.dirname(dst) or '.')
+            os.close(fd)
+            try:
+                shutil.copyfile(src, tmp)
+                os.replace(tmp, dst)
+            finally:
+                if os.path.exists(tmp):
+                    os.remove(tmp)
+            print('Copying %s to %s ...' % (src, dst))
+        if not found:
+            raise CableError('%s: no files b./s./d.%s' % (name1, name1))
+
+    def cd(self, dir=None):
+        """cd('DIR'): change directory (~ and $VARS expanded); cd(): home."""
+        os.chdir(os.path.expanduser(os.path.expandvars(dir)) if dir else os.path.expanduser('~'))
+
+    def auto(self, script=None):
+        """auto('x.auto'): run another script in this runner."""
+        if script is None or self.script_runner is None:
+            raise CableError('auto needs a script name')
+        return self.script_runner(script)
+
+    def wait(self):
+        """wait(): wait for <return> (only when the input is a terminal)."""
+        if sys.stdin is not None and sys.stdin.isatty():
+            input('Hit <return> to continue')
+
+    # --- cable's scene functions ---------------------------------------------------------
+    def analyze(self, sol):
+        """analyze(sol) -> dict: Lk, Tw, Wr, knot type, pressure, tube distance ... (doc/scripts.md)"""
+        if not isinstance(sol, Solution):
+            raise CableError('analyze(sol) takes one solution')
+        br, i = sol.branch
+        return _cable.analyze(br, i)
+
+    def plot(self, file, names, marks=(), x=None, y=None, title=None):
+        """plot('fig.png', ['name', ...], marks=[[sol, 'text'], ...], x='T', y='F', title=...)"""
+        if not isinstance(file, str) or not isinstance(names, (list, tuple)) or not names:
+            raise CableError("plot('fig.png', ['name', ...] (saved results), marks=[[sol, 'text'], ...])")
+        if marks and ((x and x != 'T') or (y and y != 'F')):
+            raise CableError('marks: marks are drawn on the default (T, F) axes only')
+        m = []
+        for mk in marks:
+            if len(mk) != 2 or not isinstance(mk[0], Solution) or not isinstance(mk[1], str):
+                raise CableError('marks: marks are [solution, \'text\'] pairs')
+            m.append((mk[0]['T'], mk[0]['F'], mk[1]))
+        _cable.plot(file, ['b.%s' % n for n in names], x, y, m, title)
+        print('  diagram written to %s' % file)
+
+    def render(self, sol, file, view=None, size=0, thicken=0.0, color=None, vtp=None, ply=None):
+        """render(sol, 'fig.png', view=[x, y, z], size=600, thicken=0, color='pressure', vtp=..., ply=...)"""
+        if not isinstance(sol, Solution) or not isinstance(file, str):
+            raise CableError("render(sol, 'fig.png', view=[x, y, z], ...)")
+        if color not in (None, 'pressure'):
+            raise CableError("color: color='pressure' is the only colour map")
+        if view is not None and len(view) != 3:
+            raise CableError('view: view=[x, y, z]')
+        br, i = sol.branch
+        _cable.render(br, i, file, None if view is None else tuple(float(v) for v in view), int(size),
+                      float(thicken), color == 'pressure', vtp, ply)
+        print('  label %d rendered to %s' % (sol.LAB, file))
+
+    def compare(self, file, rows, ref=None, notes=()):
+        """compare('table.txt', [[name, x, T, F, Lk(, ref)], ...], ref=sol, notes=[...]) (scenes.compare)"""
+        return scenes.compare(self, file, rows, ref=ref, notes=notes)
+
+    def overlap_free(self, result):
+        """overlap_free(result): the stretches where the tubes do not overlap (scenes.overlap_free)"""
+        return scenes.overlap_free(result)
+
+    def branch_table(self, file, result, paper=None, title=None):
+        """branch_table('table.txt', result, paper={...}, title='...') (scenes.branch_table)"""
+        return scenes.branch_table(self, file, result, paper=paper, title=title)
+
+    # --- the namespace of a script ---------------------------------------------------------
+    def namespace(self):
+        """The commands under AUTO's names and aliases, for a script's globals."""
+        cmds = {
+            'run': ('r', 'rn'), 'load': ('ld',), 'loadbd': ('bd',), 'save': ('sv',), 'merge': ('mb',),
+            'relabel': ('rl',), 'clean': ('cl',), 'delete': ('dl',), 'copy': ('cp',), 'append': ('ap',),
+            'cd': (), 'auto': (), 'wait': (), 'analyze': (), 'plot': (), 'render': (), 'compare': (),
+            'overlap_free': (), 'branch_table': (),
+        }
+        ns = {}
+        for name, aliases in cmds.items():
+            fn = _command(name)(getattr(self, name))
+            ns[name] = fn
+            for a in aliases:
+                ns[a] = fn
+        ns.update({'CableError': CableError, 'branch_points': scenes.branch_points, 'bp_kind': scenes.bp_kind,
+                   'branch_point': _command('branch_point')(scenes.branch_point),
+                   'mirror_table': scenes.mirror_table})
+        return ns

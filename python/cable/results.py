@@ -1,0 +1,310 @@
+"""Results and solutions with AUTO-07p's behaviour (its bifDiag, parseB and
+parseS objects): r('BP1'), r('BP'), r(3), r(), r + s, iteration over
+branches, len, r[0], br['T'] as a numpy array; sol['T'], sol.PAR,
+sol['PAR(1)'], the mesh and components as numpy arrays.
+
+A Result holds branches computed by the engine (cable._cable.Branch, shared
+and immutable); nothing here copies a solution until its mesh is asked for.
+"""
+import re
+
+import numpy as np
+
+from ._cable import Branch, CableError
+
+_SPEC = re.compile(r'^([A-Z][A-Z])(\d*)$')
+_TYPES = ('BP', 'LP', 'UZ', 'EP', 'MX', 'RG')
+
+
+class Parameters:
+    """A solution's parameters: p['T'] or p['PAR(5)'] by name, p(5) by AUTO's
+    1-based index, p[4] by 0-based index, len(p), iteration over values,
+    p.toarray()."""
+
+    def __init__(self, values, names):
+        self._v = values
+        self._names = names
+
+    def _index(self, key):
+        if isinstance(key, str):
+            m = re.match(r'^PAR\((\d+)\)$', key)
+            if m and 1 <= int(m.group(1)) <= len(self._v):
+                return int(m.group(1)) - 1
+            if key in self._names and self._names.index(key) < len(self._v):
+                return self._names.index(key)
+            raise CableError('%s: no such parameter (names: %s, PAR(k))'
+                             % (key, ', '.join(n for n in self._names if n)))
+        k = int(key)
+        if k < 0:
+            k += len(self._v)
+        if not 0 <= k < len(self._v):
+            raise IndexError('parameter index %d out of range' % key)
+        return k
+
+    def __getitem__(self, key):
+        return float(self._v[self._index(key)])
+
+    def __call__(self, index):
+        return float(self._v[int(index) - 1])
+
+    def __contains__(self, key):
+        try:
+            self._index(key)
+        except (CableError, IndexError, ValueError):
+            return False
+        return True
+
+    def __len__(self):
+        return len(self._v)
+
+    def __iter__(self):
+        return (float(x) for x in self._v)
+
+    def keys(self):
+        return [n if n else 'PAR(%d)' % (k + 1) for k, n in enumerate(self._names[:len(self._v)])]
+
+    def toarray(self):
+        return np.array(self._v)
+
+    def __repr__(self):
+        return '{%s}' % ', '.join('%r: %.10g' % (k, v) for k, v in zip(self.keys(), self._v))
+
+
+class Solution:
+    """One labelled solution of a branch (AUTO's parseS.AUTOSolution)."""
+
+    __slots__ = ('_br', '_i', '_lab', '_ty', '_ibr', '_pt', '_par', '_note', '_data')
+
+    def __init__(self, branch, index, info):
+        self._br = branch
+        self._i = index
+        self._lab, self._ty, self._ibr, self._pt, self._par, self._note = info
+        self._data = None
+
+    @property
+    def note(self):
+        """The engine's remark on this point (the d-file's), e.g. 'double branch point: ...'; None: none."""
+        return self._note
+
+    # --- what AUTO's solutions offer -------------------------------------------
+    @property
+    def PAR(self):
+        return Parameters(self._par, self._br.parnames)
+
+    @property
+    def LAB(self):
+        return self._lab
+
+    @property
+    def TY(self):
+        return self._ty
+
+    @property
+    def BR(self):
+        return self._ibr
+
+    @property
+    def PT(self):
+        return self._pt
+
+    def _full(self):
+        if self._data is None:
+            self._data = self._br.solution(self._i)
+        return self._data
+
+    @property
+    def indepvararray(self):
+        """The mesh t in [0, 1] (NTST*NCOL+1 points), a numpy array."""
+        return self._full()['t']
+
+    @property
+    def coordarray(self):
+        """The components, one row per U(i): shape (NDIM, NTST*NCOL+1)."""
+        return self._full()['u'].T
+
+    @property
+    def coordnames(self):
+        return [n if n else 'U(%d)' % (k + 1) for k, n in enumerate(self._br.unames)]
+
+    @property
+    def data(self):
+        """Everything stored: LAB, BR, PT, TY, par, t, u, NTST, NCOL, icp, err."""
+        return dict(self._full())
+
+    def __getitem__(self, key):
+        if key == 'LAB':
+            return self._lab
+        if key in ('TY', 'TY name'):
+            return self._ty
+        if key == 'BR':
+            return self._ibr
+        if key == 'PT':
+            return self._pt
+        if key == 'PAR':
+            return self.PAR
+        if key == 't':
+            return self.indepvararray
+        if key in ('NTST', 'NCOL'):
+            return self._full()[key.lower()]
+        if key == 'data':
+            return self.data
+        if isinstance(key, str):
+            m = re.match(r'^U\((\d+)\)$', key)
+            names = self._br.unames
+            if m and 1 <= int(m.group(1)) <= len(names):
+                return self._full()['u'][:, int(m.group(1)) - 1].copy()
+            p = self.PAR
+            if key in p:
+                return p[key]
+            if key in names:
+                return self._full()['u'][:, names.index(key)].copy()
+        raise CableError('%s: no such parameter or component (names: the problem\'s parameters, PAR(k), '
+                         'U(k), t, LAB, BR, PT, TY)' % (key,))
+
+    def __contains__(self, key):
+        try:
+            self[key]
+        except CableError:
+            return False
+        return True
+
+    def __eq__(self, other):
+        return isinstance(other, Solution) and self._br is other._br and self._i == other._i
+
+    def __hash__(self):
+        return hash((id(self._br), self._i))
+
+    def __repr__(self):
+        return '<solution %s label %d, branch %d, point %d>' % (self._ty or '-', self._lab, self._ibr, self._pt)
+
+    def __str__(self):
+        return ('  BR    PT  TY  LAB\n%4d %5d  %-2s %4d\n' % (self._ibr, self._pt, self._ty, self._lab)
+                + str(self.PAR))
+
+    # --- cable's own ---------------------------------------------------------------
+    @property
+    def branch(self):
+        """(the engine branch, the index of this solution in it)"""
+        return self._br, self._i
+
+
+class SolutionList(list):
+    """Solutions picked from a result: a list that can be selected from again."""
+
+    def __call__(self, label=None):
+        return _select(self, label, 'the selection')
+
+
+def _solutions(branches):
+    out = SolutionList()
+    for b in branches:
+        out.extend(Solution(b, i, info) for i, info in enumerate(b.labels()))
+    return out
+
+
+def _select(sols, label, where):
+    if label is None:
+        return SolutionList(sols)
+    if isinstance(label, (list, tuple)):
+        out = SolutionList()
+        for x in label:
+            y = _select(sols, x, where)
+            out.extend(y if isinstance(y, list) else [y])
+        return out
+    if isinstance(label, (int, np.integer)) and not isinstance(label, bool):
+        for s in sols:
+            if s.LAB == label:
+                return s
+        raise CableError('%d: no such label in %s' % (label, where))
+    if isinstance(label, str):
+        m = _SPEC.match(label)
+        if m and m.group(1) in _TYPES:
+            same = [s for s in sols if s.TY == m.group(1)]
+            if not m.group(2):
+                return SolutionList(same)
+            n = int(m.group(2))
+            if 1 <= n <= len(same):
+                return same[n - 1]
+            raise CableError('%s: no such label in %s' % (label, where))
+    raise CableError('%r: not a label: use a number, a type (BP, LP, UZ, EP, MX, RG) or a type and '
+                     'count (BP1)' % (label,))
+
+
+class Result:
+    """Branches computed or loaded (AUTO's bifDiag): r('BP1'), r(3), r(),
+    r + s, for b in r, len(r), r[0], r['T'] (a column over all branches)."""
+
+    def __init__(self, branches=()):
+        self._br = list(branches)
+        for b in self._br:
+            if not isinstance(b, Branch):
+                raise TypeError('a Result holds engine branches')
+
+    @property
+    def branches(self):
+        return list(self._br)
+
+    def __call__(self, label=None):
+        return _select(_solutions(self._br), label, 'the result')
+
+    def __add__(self, other):
+        if isinstance(other, Result):
+            return Result(self._br + other._br)
+        return NotImplemented
+
+    def __iter__(self):
+        return (Result([b]) for b in self._br)
+
+    def __len__(self):
+        return len(self._br)
+
+    def __bool__(self):
+        return True
+
+    def __getitem__(self, key):
+        if isinstance(key, slice):
+            return Result(self._br[key])
+        if isinstance(key, str):
+            cols = [_column(b, key) for b in self._br]
+            return np.concatenate(cols) if cols else np.array([])
+        return Result([self._br[key]])
+
+    def getLabel(self, label):
+        return self(label)
+
+    @property
+    def coordnames(self):
+        if not self._br:
+            return []
+        b = self._br[0]
+        return ['PAR(%d)' % k if not b.parnames[k - 1] else b.parnames[k - 1] for k in b.icp] + ['L2-NORM']
+
+    def __repr__(self):
+        n = sum(b.nsol for b in self._br)
+        return '<result: %d branch%s, %d labelled solution%s>' % (len(self._br), '' if len(self._br) == 1 else 'es',
+                                                                   n, '' if n == 1 else 's')
+
+    def __str__(self):
+        lines = []
+        for b in self._br:
+            lines.append('  BR    PT  TY  LAB')
+            for s in _solutions([b]):
+                lines.append('%4d %5d  %-2s %4d' % (s.BR, s.PT, s.TY, s.LAB))
+        return '\n'.join(lines)
+
+
+def _column(b, key):
+    """A column of branch b's points by name: a parameter, PAR(k), L2-NORM, PT, LAB, TY, BR."""
+    p = b.points()
+    if key in ('L2-NORM', 'PT', 'LAB', 'BR'):
+        return p[key]
+    if key == 'TY':
+        from ._cable import type_name
+        return np.array([type_name(int(x)) for x in p['TY']])
+    m = re.match(r'^PAR\((\d+)\)$', key)
+    names = b.parnames
+    if m and 1 <= int(m.group(1)) <= p['par'].shape[1]:
+        return p['par'][:, int(m.group(1)) - 1].copy()
+    if key in names and names.index(key) < p['par'].shape[1]:
+        return p['par'][:, names.index(key)].copy()
+    raise CableError("%s: no such column (the problem's parameters, PAR(k), L2-NORM, PT, LAB, TY, BR)" % key)

@@ -1,0 +1,212 @@
+"""Running .auto scripts in CPython, as AUTO's `auto X.auto` does: the
+commands preloaded, the script's directory the working directory (where
+its c./s./b./d. files are read and written), Python-2 `print "..."`
+statements accepted.  An error stops the script with one line naming the
+script's file and line, the line itself, and a non-zero exit status:
+
+    cable: knot.auto:4: run: NMXX: unknown AUTO constant
+        r = run(c='knot', NMXX=3)
+
+Ctrl-C stops a run at its next point (nothing of that run is written) and
+the script with status 130.
+"""
+import io
+import os
+import sys
+import tokenize
+import traceback
+
+from ._cable import CableError
+from .commands import Runner
+
+_STOPS = ('NEWLINE', 'ENDMARKER')
+
+
+def py2_prints(text):
+    """Python-2 print statements rewritten as calls (AUTO's CLI accepts both):
+    print "a", x -> print("a", x); a trailing comma keeps the line open
+    (end=' '); a bare print -> print().  Other text is left as it is."""
+    try:
+        toks = list(tokenize.generate_tokens(io.StringIO(text).readline))
+    except (tokenize.TokenError, IndentationError, SyntaxError):
+        return text
+    edits = []   # (row, col, insert) or (row, col, end_col, replacement)
+    prev = None
+    depth = 0
+    for k, t in enumerate(toks):
+        kind = tokenize.tok_name[t.type]
+        if kind == 'OP' and t.string in '([{':
+            depth += 1
+        elif kind == 'OP' and t.string in ')]}':
+            depth -= 1
+        stmt_start = prev is None or prev in ('NEWLINE', 'INDENT', 'DEDENT', 'NL') or prev == ':' or prev == ';'
+        if kind == 'NAME' and t.string == 'print' and depth == 0 and stmt_start:
+            nxt = toks[k + 1] if k + 1 < len(toks) else None
+            nkind = tokenize.tok_name[nxt.type] if nxt else 'ENDMARKER'
+            if nkind == 'OP' and nxt.string in ('(', '=', '.', '[', ')', ','):
+                pass
+            else:
+                # the end of the statement: NEWLINE, ';' or a comment at depth 0
+                j, d = k + 1, 0
+                while j < len(toks):
+                    tk = tokenize.tok_name[toks[j].type]
+                    if tk == 'OP' and toks[j].string in '([{':
+                        d += 1
+                    elif tk == 'OP' and toks[j].string in ')]}':
+                        d -= 1
+                    if d == 0 and (tk in _STOPS or tk == 'COMMENT' or (tk == 'OP' and toks[j].string == ';')):
+                        break
+                    j += 1
+                last = toks[j - 1] if j - 1 > k else None
+                end = toks[j] if j < len(toks) else None
+                gap = nxt.start[1] if nxt and nxt.start[0] == t.end[0] else t.end[1]
+                edits.append((t.end[0], t.end[1], gap, '('))
+                if last is not None and tokenize.tok_name[last.type] == 'OP' and last.string == ',':
+                    edits.append((last.start[0], last.start[1], last.end[1], ", end=' ')"))
+                elif last is not None:
+                    edits.append((last.end[0], last.end[1], ')'))
+                else:
+                    edits[-1] = (t.end[0], t.end[1], t.end[1], '()')
+                del end
+        if kind not in ('COMMENT', 'NL') or prev is None:
+            prev = kind if kind != 'OP' else t.string
+        if kind == 'NL' and depth == 0:
+            prev = 'NL'
+    if not edits:
+        return text
+    lines = text.splitlines(keepends=True)
+    for e in sorted(edits, key=lambda e: (e[0], e[1]), reverse=True):
+        row, col = e[0] - 1, e[1]
+        line = lines[row]
+        if len(e) == 3:
+            lines[row] = line[:col] + e[2] + line[col:]
+        else:
+            lines[row] = line[:col] + e[3] + line[e[2]:]
+    return ''.join(lines)
+
+
+def compile_script(text, filename):
+    """The code object of a script; Python-2 prints are accepted.  A syntax
+    error is the original text's."""
+    try:
+        return compile(text, filename, 'exec')
+    except SyntaxError as first:
+        converted = py2_prints(text)
+        if converted == text:
+            raise
+        try:
+            return compile(converted, filename, 'exec')
+        except SyntaxError:
+            raise first from None
+
+
+class ScriptRunner:
+    """Runs scripts in one namespace on one runner (auto('other.auto') too)."""
+
+    def __init__(self, runner=None):
+        self.runner = runner or Runner()
+        self.runner.script_runner = self.run_file
+        self.namespace = self.runner.namespace()
+        self.files = set()
+
+    def run_file(self, path):
+        with open(path, encoding='utf-8') as f:
+            text = f.read()
+        code = compile_script(text, path)
+        self.files.add(path)
+        ns = self.namespace
+        ns['__name__'] = '__main__'
+        ns['__file__'] = path
+        exec(code, ns)
+
+    def where(self, exc):
+        """(file, line) of the innermost frame in one of the scripts."""
+        if isinstance(exc, SyntaxError) and exc.filename in self.files | {exc.filename}:
+            return exc.filename, exc.lineno or 0
+        best = None
+        for frame in traceback.extract_tb(exc.__traceback__):
+            if frame.filename in self.files:
+                best = (frame.filename, frame.lineno)
+        return best
+
+
+def _source_line(path, line):
+    try:
+        with open(path, encoding='utf-8') as f:
+            for k, text in enumerate(f, 1):
+                if k == line:
+                    return text.rstrip('\n')
+    except OSError:
+        pass
+    return None
+
+
+def _report(path, line, msg, out, src_file=None):
+    where = '%s:%d: ' % (path, line) if line else '%s: ' % path
+    out.write('cable: %s%s\n' % (where, msg))
+    src = _source_line(src_file or path, line) if line else None
+    if src is not None and src.strip():
+        out.write('    %s\n' % src.strip())
+
+
+def run_script(path, out=None):
+    """Run the script at path (outputs in its directory).  Returns the exit
+    status: 0, 1 for an error (reported on out, default stderr), 130 when
+    interrupted."""
+    out = out or sys.stderr
+    try:
+        with open(path, encoding='utf-8') as f:
+            f.read()
+    except OSError as e:
+        out.write('cable: %s: cannot open the script: %s\n' % (path, e.strerror or e))
+        return 1
+    sr = ScriptRunner()
+    here = os.getcwd()
+    d = os.path.dirname(path)
+    name = os.path.abspath(path)
+    sr.files.add(name)
+    try:
+        with open(path, encoding='utf-8') as f:
+            text = f.read()
+        code = compile_script(text, name)
+        if d:
+            os.chdir(d)
+        sr.namespace.update({'__name__': '__main__', '__file__': name})
+        exec(code, sr.namespace)
+        return 0
+    except SyntaxError as e:
+        fn = e.filename if e.filename in sr.files else name
+        _report(_shown(fn, path, name), e.lineno or 0, '%s: %s' % (type(e).__name__, e.msg), out, fn)
+        return 1
+    except KeyboardInterrupt as e:
+        sys.stdout.flush()
+        w = sr.where(e) or (name, 0)
+        _report(_shown(w[0], path, name), w[1], 'interrupted (the run stopped at its last point; '
+                'files written before are complete)', out, w[0])
+        return 130
+    except CableError as e:
+        sys.stdout.flush()
+        w = sr.where(e) or (name, 0)
+        _report(_shown(w[0], path, name), w[1], str(e), out, w[0])
+        return 1
+    except Exception as e:   # the script's own Python errors, as CPython names them
+        sys.stdout.flush()
+        w = sr.where(e) or (name, 0)
+        _report(_shown(w[0], path, name), w[1], '%s: %s' % (type(e).__name__, e), out, w[0])
+        return 1
+    finally:
+        os.chdir(here)
+
+
+def _shown(fn, path, name):
+    """The script's name as the user gave it; other scripts as compiled."""
+    return path if fn == name else fn
+
+
+def main(argv):
+    if len(argv) != 1:
+        sys.stderr.write('usage: python3 -m cable SCRIPT   (or: cable replay SCRIPT)\n')
+        return 2
+    status = run_script(argv[0])
+    sys.stdout.flush()
+    return status

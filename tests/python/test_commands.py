@@ -1,0 +1,216 @@
+"""AUTO's commands on cable's engine, in-process (import cable) and through
+`cable replay`: runs and restarts, label selection, results and solutions as
+AUTO's objects, the file commands, exact error messages and statuses, a
+script with arithmetic, def, a list comprehension, numpy and a Python-2
+print, Ctrl-C during a run.
+
+Bratu's problem u'' + lambda e^u = 0, u(0) = u(1) = 0 (c.bratu): its fold is
+at lambda* = 3.513830719125162 (30-digit mpmath value, tests/test_plugin.c);
+the engine locates the LP to its Newton tolerance, and NTST=20, NCOL=4
+collocation is accurate to about 1e-10 there (measured 1.3e-13)."""
+import os
+import signal
+import subprocess
+import time
+
+import numpy as np
+import pytest
+
+import cable
+from cable.script import py2_prints
+
+from conftest import BUILD, ROOT, copy_in, run_script, snapshot
+
+LAMBDA_FOLD = 3.513830719125162
+
+
+@pytest.fixture
+def bratu(work):
+    copy_in(work, 'runs/bratu/c.bratu', 'tests/data/cli/c.good')
+    return cable.Runner()
+
+
+def test_run_selection_and_columns(bratu):
+    r = bratu.run(e='bratu', c='bratu', sv='lower')
+    assert isinstance(r, cable.Result) and len(r) == 1
+    labs = [s['LAB'] for s in r()]
+    assert labs == list(range(1, len(labs) + 1)) and len(labs) == 8
+    fold = r('LP1')
+    assert fold['TY'] == 'LP' and fold.TY == 'LP'
+    assert abs(fold['lambda'] - LAMBDA_FOLD) < 1e-8
+    assert fold['lambda'] == fold.PAR['lambda'] == fold['PAR(1)'] == fold.PAR(1) == fold.PAR[0]
+    assert r(fold['LAB'])['LAB'] == fold['LAB']
+    assert len(r('LP')) == 1 and len(r('RG')) == 5 and [s.TY for s in r('EP')] == ['EP', 'EP']
+    assert r('EP2')['LAB'] == 8
+    # a branch's columns by name, as numpy arrays; r[0] and iteration give the branches
+    lam = r['lambda']
+    assert isinstance(lam, np.ndarray) and lam.shape == (60,)
+    assert np.max(lam) == pytest.approx(LAMBDA_FOLD, abs=1e-8)
+    assert np.array_equal(r[0]['lambda'], lam) and np.array_equal(r['PAR(1)'], lam)
+    assert [len(b) for b in r] == [1]
+    assert r['L2-NORM'].shape == (60,) and r['PT'][-1] == 60
+    # the mesh and the components as numpy arrays
+    t, u1 = fold['t'], fold['U(1)']
+    assert t.shape == (81,) and u1.shape == (81,) and t[0] == 0 and t[-1] == 1
+    assert fold.coordarray.shape == (2, 81) and np.array_equal(fold.coordarray[0], u1)
+    assert abs(u1[0]) < 1e-12 and abs(u1[-1]) < 1e-12 and np.max(u1) > 1   # u(0) = u(1) = 0, the fold's bump
+    assert os.path.exists('b.lower') and os.path.exists('s.lower') and os.path.exists('d.lower')
+
+
+def test_restart_sum_and_numbering(bratu):
+    r = bratu.run(e='bratu', c='bratu')
+    fine = bratu.run(r('LP1'), NTST=40, NMX=10)
+    both = r + fine
+    assert len(both) == 2 and len(both()) == len(r()) + len(fine())
+    # AUTO's NEWLAB: the restart's labels and branch number follow the session's
+    assert fine()[0]['LAB'] == 9 and fine()[0]['BR'] == 2
+    # the restart starts at the fold (its first point; the start is not labelled again)
+    assert fine['lambda'][0] == pytest.approx(LAMBDA_FOLD, abs=1e-8) and fine['PT'][0] == 1
+    # run(result, IRS=...) restarts from the label; without IRS from the last one
+    again = bratu.run(both, IRS=3, NMX=3)
+    assert again['lambda'][0] == pytest.approx(r(3)['lambda'], abs=1e-9)
+    # the runner keeps the last run's constants (NTST=40 from the restart)
+    s = bratu.load(r('LP1'))
+    assert s['LAB'] == 3
+
+
+def test_files_commands(bratu):
+    r = bratu.run(e='bratu', c='bratu', sv='one')
+    bratu.save(r('LP1'), 'fold')
+    f = bratu.loadbd('fold')
+    assert len(f()) == 1 and f()[0]['lambda'] == pytest.approx(LAMBDA_FOLD, abs=1e-8)
+    back = bratu.loadbd('one')
+    assert [s['LAB'] for s in back()] == [s['LAB'] for s in r()]
+    bratu.copy('one', 'two')
+    assert snapshot('.')['s.two'] == snapshot('.')['s.one']
+    up = bratu.run(r('EP1'), DS='-', NMX=5)
+    bratu.append(up, 'two')
+    assert len(bratu.loadbd('two')()) == len(r()) + len(up())
+    m = bratu.merge(r + up)
+    assert len(m) == 1   # the two directions from one start joined
+    rl = bratu.relabel(m)
+    assert [s['LAB'] for s in rl()] == list(range(1, len(rl()) + 1))
+    bratu.relabel('two')
+    assert [s['LAB'] for s in bratu.loadbd('two')()] == list(range(1, len(r()) + len(up()) + 1))
+    bratu.delete('two')
+    assert not any(os.path.exists(p) for p in ('b.two', 's.two', 'd.two'))
+    os.mkdir('sub')
+    bratu.cd('sub')
+    assert os.path.basename(os.getcwd()) == 'sub'
+    bratu.cd('..')
+    bratu.clean()
+    bratu.wait()   # stdin is not a terminal: returns at once
+    ld = bratu.load('one', e='bratu', IRS=3)   # no c.one: the problem is given
+    assert ld['LAB'] == 3
+
+
+def test_errors_in_process(bratu):
+    with pytest.raises(cable.CableError) as e:
+        bratu.namespace()['run'](e='bratu', c='good', NMXX=3)
+    assert str(e.value) == "run: NMXX: unknown key (in 'NMXX=3')" and e.value.status == -2
+    r = bratu.run(e='bratu', c='good')
+    with pytest.raises(cable.CableError) as e:
+        r('BP7')
+    assert str(e.value) == 'BP7: no such label in the result'
+    with pytest.raises(cable.CableError) as e:
+        r(99)
+    assert str(e.value) == '99: no such label in the result'
+
+
+def script_error(work, text, name='bad.auto'):
+    before = snapshot(work)
+    rc, out, err = run_script(work, text, name)
+    after = snapshot(work)
+    del after[name]
+    before.pop(name, None)
+    return rc, err, before == after
+
+
+def test_script_errors(work):
+    copy_in(work, 'tests/data/cli/c.good')
+    rc, err, same = script_error(work, "r = run(e='bratu', c='good')\nx = run(r, NMXX=3, sv='x')\n")
+    assert rc == 1 and same
+    assert err.splitlines()[0] == "cable: bad.auto:2: run: NMXX: unknown key (in 'NMXX=3')"
+    assert err.splitlines()[1] == "    x = run(r, NMXX=3, sv='x')"
+    rc, err, same = script_error(work, "r = run(e='bratu', c='good', sv='g')\nx = r('BP7')\n")
+    assert rc == 1 and err == "cable: bad.auto:2: BP7: no such label in the result\n    x = r('BP7')\n"
+    rc, err, same = script_error(work, "r = run(e='bratu', c='good')\nx = = 3\n")
+    assert rc == 1 and same and err == 'cable: bad.auto:2: SyntaxError: invalid syntax\n    x = = 3\n'
+    rc, err, same = script_error(work, "r = run(e='bratu', c='good', NTST=-5)\n")
+    assert rc == 1 and same and err.startswith('cable: bad.auto:1: run: NTST: must be an integer >= 1')
+    rc, err, same = script_error(work, "r = run(e='bratu', c='nosuch')\n")
+    assert rc == 1 and same and err.startswith('cable: bad.auto:1: run: ') and 'c.nosuch' in err
+    rc, err, same = script_error(work, "r = run(e='bratu', c='good')\nsave(r, '')\n")
+    assert rc == 1 and same and err.startswith('cable: bad.auto:2: save: the second argument must be a non-empty')
+    # an error in a function the script defines names the line in the function
+    rc, err, same = script_error(work, "def f(r):\n    return r('UZ9')\nr = run(e='bratu', c='good')\nf(r)\n")
+    assert rc == 1 and err.startswith('cable: bad.auto:2: UZ9: no such label')
+
+
+def test_script_python(work):
+    copy_in(work, 'runs/bratu/c.bratu')
+    text = '''import math
+import numpy as np
+
+def scaled(x, k=2):
+    return k * x / 2 + 0 * math.pi
+
+r = run(e='bratu', c='bratu')
+lams = [s['lambda'] for s in r() if s['TY'] in ('RG', 'LP')]
+big = max(lams)
+print "max lambda %.10f" % scaled(big)
+print 'numpy max %.10f, %d points' % (np.max(r['lambda']), len(r['lambda'])),
+print
+x = 2*math.pi - 3 ** 2 / 4.0
+print('arith', x, len(lams), r('LP1').PAR['lambda'] == big)
+'''
+    rc, out, err = run_script(work, text)
+    assert rc == 0, err
+    assert 'max lambda %.10f' % LAMBDA_FOLD in out
+    assert 'numpy max %.10f, 60 points \n' % LAMBDA_FOLD in out
+    assert 'arith %r 6 True' % (2 * 3.141592653589793 - 2.25) in out
+
+
+def test_py2_prints():
+    assert py2_prints('print "a", 1\n') == 'print("a", 1)\n'
+    assert py2_prints('if x:\n    print "a" % (1, 2)  # c\n') == 'if x:\n    print("a" % (1, 2))  # c\n'
+    assert py2_prints('print\n') == 'print()\n'
+    assert py2_prints('print "a",\n') == "print(\"a\", end=' ')\n"
+    assert py2_prints('print("a")\nx = "print 1"\n') == 'print("a")\nx = "print 1"\n'
+    assert py2_prints('for i in r: print i; y = 1\n') == 'for i in r: print(i); y = 1\n'
+
+
+def test_ctrl_c_stops_a_run(work):
+    """SIGINT during a long run: the run stops at its next point, nothing of
+    it is written, the files saved before are complete, status 130."""
+    copy_in(work, 'runs/bratu/c.bratu')
+    with open('long.auto', 'w') as f:
+        f.write("first = run(e='bratu', c='bratu', sv='first')\n"
+                "print('long run starts', flush=True)\n"
+                "long = run(first('EP1'), DS=1e-6, DSMIN=1e-7, DSMAX=1e-6, NMX=100000000, NPR=0, sv='long')\n")
+    env = dict(os.environ, PYTHONPATH=os.path.join(BUILD, 'python'))
+    # SIGINT as at a terminal, even when the test itself runs in a background
+    # job (which inherits SIGINT ignored, and CPython then keeps it ignored)
+    p = subprocess.Popen([os.path.join(BUILD, 'cable'), 'replay', 'long.auto'], stdout=subprocess.PIPE,
+                         stderr=subprocess.PIPE, text=True, env=env, start_new_session=True,
+                         preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
+    line = ''
+    while 'long run starts' not in line:
+        line = p.stdout.readline()
+        assert line, 'the script ended early: ' + p.stderr.read()
+    time.sleep(1.0)
+    t0 = time.monotonic()
+    p.send_signal(signal.SIGINT)
+    try:
+        out, err = p.communicate(timeout=120)
+    finally:
+        if p.poll() is None:   # never leave the long run behind
+            p.kill()
+            p.wait()
+    assert p.returncode == 130
+    assert err.startswith('cable: long.auto:3: interrupted'), err
+    assert 'branch 2 interrupted after' in err or 'interrupted' in err
+    assert not os.path.exists('b.long') and not os.path.exists('s.long')
+    assert time.monotonic() - t0 < 60
+    r = cable.Runner().loadbd('first')
+    assert len(r()) == 8
