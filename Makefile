@@ -69,7 +69,7 @@ PYPKG    := $(BUILD)/python/cable
 PY_FILES := $(patsubst python/cable/%,$(PYPKG)/%,$(wildcard python/cable/*.py))
 PY_SO    := $(PYPKG)/_cable.so
 
-.PHONY: all lib python install check asan valgrind demo scenes bench stress fuzz clean help deps tests-build
+.PHONY: bench-atlas all lib python install check asan valgrind demo scenes bench stress fuzz clean help deps tests-build
 
 all: cable $(LIBSO) python
 
@@ -173,6 +173,10 @@ scenes: cable python
 bench: cable tests-build $(BENCH_BINS)
 	@bash scripts/bench.sh $(BUILD)
 
+# the atlas part of make bench alone (cable.atlas on Dask; doc/atlas.md, 7)
+bench-atlas: cable python
+	@bash scripts/bench-atlas.sh $(BUILD)
+
 # Stress grid (scripts/stress.sh, table in doc/stress.md); a quick subset runs in make check.
 stress: cable tests-build
 	@bash scripts/stress.sh $(BUILD)
@@ -210,6 +214,7 @@ help:
 	@echo "make valgrind   tests under valgrind memcheck"
 	@echo "make scenes     replay every scene in runs/"
 	@echo "make bench      benchmarks, tables in doc/benchmarks.md"
+	@echo "make bench-atlas  the atlas part of make bench alone (cable.atlas on 1 and 2 workers)"
 	@echo "make stress     stress grid, table in doc/stress.md"
 	@echo "make fuzz       fuzz the parsers (libFuzzer, 10 minutes)"
 

@@ -26,6 +26,9 @@ static void usage(FILE *out)
         "  replay SCRIPT      run a script in Python with AUTO's commands (the cable\n"
         "                     package, as `python3 -m cable SCRIPT`); output files go\n"
         "                     to the script's directory\n"
+        "  atlas SWEEP.toml [--workers N | --scheduler ADDRESS] [--check] [--retry-failed]\n"
+        "                     an atlas of cable knots and links on Dask (python3 -m\n"
+        "                     cable.atlas; doc/atlas.md)\n"
         "  table b.NAME       the branch table of a b-file\n"
         "  list s.NAME        the labelled solutions of an s-file\n"
         "  analyze s.NAME LABEL...\n"
@@ -76,18 +79,47 @@ static int find_package(char *dir, size_t len)
   return -1;
 }
 
-/* cable replay SCRIPT: exec CABLE_PYTHON -m cable SCRIPT with the package on PYTHONPATH. */
-static int replay(const char *script)
+/* Puts the package's directory first on PYTHONPATH; -1 when it is not found. */
+static int package_on_path(void)
 {
   char dir[PATH_MAX + 64], path[2 * PATH_MAX + 128];
   if (find_package(dir, sizeof dir) != 0) {
     fprintf(stderr, "cable: the Python package (cable/) is not beside this program (build it with make)\n");
-    return 1;
+    return -1;
   }
   const char *old = getenv("PYTHONPATH");
   snprintf(path, sizeof path, "%s%s%s", dir, old && old[0] ? ":" : "", old && old[0] ? old : "");
   setenv("PYTHONPATH", path, 1);
+  return 0;
+}
+
+/* cable replay SCRIPT: exec CABLE_PYTHON -m cable SCRIPT with the package on PYTHONPATH. */
+static int replay(const char *script)
+{
+  if (package_on_path() != 0) return 1;
   execl(CABLE_PYTHON, CABLE_PYTHON, "-m", "cable", script, (char *)NULL);
+  fprintf(stderr, "cable: cannot run %s: %s\n", CABLE_PYTHON, strerror(errno));
+  return 1;
+}
+
+/* cable atlas ARGS: exec CABLE_PYTHON -m cable.atlas ARGS (argv[2..]) with the package on PYTHONPATH. */
+static int atlas(int argc, char **argv)
+{
+  enum { MAX_ARGS = 64 };
+  char *args[MAX_ARGS + 4];
+  if (argc - 2 > MAX_ARGS) {
+    fprintf(stderr, "cable: atlas: too many arguments\n");
+    return 2;
+  }
+  if (package_on_path() != 0) return 1;
+  static char python[] = CABLE_PYTHON, dash_m[] = "-m", module[] = "cable.atlas";
+  int n = 0;
+  args[n++] = python;
+  args[n++] = dash_m;
+  args[n++] = module;
+  for (int i = 2; i < argc; i++) args[n++] = argv[i];
+  args[n] = NULL;
+  execv(CABLE_PYTHON, args);
   fprintf(stderr, "cable: cannot run %s: %s\n", CABLE_PYTHON, strerror(errno));
   return 1;
 }
@@ -111,6 +143,7 @@ int main(int argc, char **argv)
     return 0;
   }
   if (strcmp(cmd, "run") == 0) return report(cable_cmd_run(argc - 2, argv + 2, &err), &err);
+  if (strcmp(cmd, "atlas") == 0) return atlas(argc, argv);
   if (strcmp(cmd, "replay") == 0) {
     if (argc != 3) {
       fprintf(stderr, "cable: usage: cable replay SCRIPT\n");
