@@ -108,7 +108,7 @@ def main():
         print('Tasks of a Newton solve and one step each (NMX = 1, recorded as failed: no branch point), '
               'through the whole path (submission, scheduling, the task directory, result.json, the table '
               'at most once a second). Overhead per task = (elapsed x 2 - sum of task wall times) / tasks; '
-              'a sweep of n tasks of wall time w on N worker processes takes about n (w / N + overhead) '
+              'a sweep of n tasks of wall time w on N worker processes takes about n (w + overhead) / N '
               'plus the cluster start.\n')
         print('| tasks | cluster start (s) | elapsed (s) | sum of task wall times (s) | overhead per task (ms) |')
         print('|---|---|---|---|---|')
