@@ -168,7 +168,9 @@ def run_sweep(sweep, scheduler=None, workers=None, retry_failed=False, stream=No
     try:
         by_key = {}
         futures = []
-        for t in todo:
+        # submitted in priority order as well: with Dask's default (no queuing on the scheduler) every
+        # task goes to a worker at once, and the workers were seen to run them in submission order
+        for t in sorted(todo, key=lambda x: -priority(x)):
             f = client.submit(run_task, t.inputs, t.name, sweep.output, key='atlas-' + t.key, pure=False,
                               priority=priority(t))
             by_key[f.key] = t
