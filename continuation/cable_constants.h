@@ -9,6 +9,10 @@
 #define CABLE_MAX_UZR 128
 #define CABLE_MAX_THL 64
 #define CABLE_NAME_MAX 256
+/* NTHREADS: at most this many; the default (NTHREADS = 0) is the number of
+ * processors this process may run on, at most CABLE_THREADS_DEFAULT_MAX */
+#define CABLE_THREADS_MAX 64
+#define CABLE_THREADS_DEFAULT_MAX 2
 
 typedef struct {
   int par;          /* 0-based parameter index (or -1: unused) */
@@ -59,6 +63,8 @@ typedef struct cable_constants {
   /* cable extensions (documented in doc/constants.md) */
   cable_linsolver linsolver;              /* LINSOLVER = condense | klu */
   int nsv;                                /* NSV: singular values tracked for BP test (0: off) */
+  int nthreads;                           /* NTHREADS: threads of the structured solver's
+                                             per-interval stages (0: cable_default_threads) */
   int bpsym;                              /* BPDIR: kernel vector index for 2-d kernels */
   double bpangle;                         /* BPANGLE: direction in a 2-d kernel, degrees from
                                              the canonical e1 towards e2 (NAN: use BPDIR) */
@@ -73,5 +79,7 @@ typedef struct cable_constants {
 
 /* AUTO-07p defaults. */
 void cable_constants_init(cable_constants *c);
+/* The thread count a run uses: NTHREADS, or its default when 0. */
+int cable_threads(const cable_constants *c);
 
 #endif
