@@ -10,12 +10,11 @@
  * once for team sizes 1..4 and loop lengths 0..9. */
 #include <string.h>
 
-#include "abd_solver.h"
 #include "braid_problems.h"
 #include "braid_start.h"
 #include "braid_state.h"
-#include "cable_cont.h"
-#include "cable_status.h"
+#include "cable/cable_cont.h"
+#include "cable/cable_status.h"
 #include "cable_team.h"
 #include "harness.h"
 

@@ -4,6 +4,8 @@
 #ifndef CABLE_SOLUTION_H
 #define CABLE_SOLUTION_H
 
+#include "cable/cable_api.h"
+
 typedef struct cable_solution {
   int ndim, ntst, ncol;
   int npar;        /* length of par[] (AUTO's NPAR) */
@@ -29,10 +31,10 @@ typedef struct cable_solution {
 } cable_solution;
 
 /* Every field zeroed except the sizes; arrays allocated; NULL on failure. */
-cable_solution *cable_solution_alloc(int ndim, int ntst, int ncol, int npar, int nfpr);
-void cable_solution_free(cable_solution *s);            /* NULL is a no-op */
-int cable_solution_copy(cable_solution *dst, const cable_solution *src); /* same sizes */
-cable_solution *cable_solution_clone(const cable_solution *src);
+CABLE_API cable_solution *cable_solution_alloc(int ndim, int ntst, int ncol, int npar, int nfpr);
+CABLE_API void cable_solution_free(cable_solution *s);            /* NULL is a no-op */
+CABLE_API int cable_solution_copy(cable_solution *dst, const cable_solution *src); /* same sizes */
+CABLE_API cable_solution *cable_solution_clone(const cable_solution *src);
 
 /* Number of stored points, ntst*ncol + 1. */
 static inline int cable_solution_npts(const cable_solution *s) { return s->ntst * s->ncol + 1; }
