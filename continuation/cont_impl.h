@@ -62,6 +62,8 @@ struct cable_cont {
   cable_point pt;               /* row of the current point */
   double *umax;                 /* [ndim] */
   cable_solution *sol;          /* current solution in s-file form */
+  cable_solution *pvsol;        /* scratch for PVLS at trial points: UZR on a parameter
+                                   that PVLS computes (NULL when no UZR needs it) */
   char err[512];                /* last error message */
   char rejected[200];           /* why the last corrected point was rejected ("" none) */
   /* pencil test (cont_pencil.c): branch points inside one step */
@@ -93,6 +95,9 @@ int cont_smallest_sv(cable_cont *cc, int k, double *sv, double *vecs);
 /* cont_special.c */
 void cont_tests_fill(cable_cont *cc, const double *x, const double *xdot, cont_tests *tf);
 int cont_find_event(const cable_cont *cc, const cont_tests *a, const cont_tests *b, int *which);
+/* The branch-point test function's value (the one whose sign change is a BP):
+ * the signed smallest singular value; 0 when ISP and NSV are both 0. */
+double cont_bp_value(const cable_cont *cc, const cont_tests *t);
 /* seed: a first guess of the arclength of the special point (NAN: none) */
 int cont_locate(cable_cont *cc, int type, int which, double seed);
 int cont_check_dip(cable_cont *cc);
