@@ -25,6 +25,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
+#include <stdlib.h>
 
 #include "cont_impl.h"
 
@@ -32,9 +33,8 @@
  * is kept twice, its function value is scaled by this factor (Dowell and
  * Jarratt 1971), which restores superlinear convergence. */
 #define CONT_ILLINOIS 0.5
-/* Alternative points tried when the corrector fails at a locating iterate,
- * and how much farther from it each is than the one before (see locate()). */
-#define CONT_LOCATE_RETRIES 4
+/* When the corrector fails at a locating iterate, how much farther from it
+ * each alternative point is than the one before (see locate()). */
 #define CONT_LOCATE_GROW 16.0
 /* sigma_1 below this fraction of its values at the ends of a step (or at a
  * dip's neighbours) has vanished to discretisation accuracy: a branch point
@@ -163,22 +163,23 @@ static int locate(cable_cont *cc, int type, int which, double seed, int plain)
        sigma_1, 2e-7 of the step).  The failing s is the secant's estimate of
        the zero, so step off it into the larger part of the bracket, first
        by half the location tolerance, then CONT_LOCATE_GROW times farther
-       each retry, at most halfway to that end (link62's simple BP at
+       each retry, up to halfway to that end (link62's simple BP at
        T = 29.81, seeded by the pencil test right on it, needed the
        halfway point).  The converged point is an ordinary iterate: it
        shrinks the bracket, and the location ends when the bracket is no
        wider than the tolerance. */
-    /* a zero pivot: s is the branch point to working precision */
-    int nudged = rc == CABLE_ERR_LINSOLVE;
-    double sfail = s;
-    double off = 0.5 * tol;
-    for (int retry = 0; retry < CONT_LOCATE_RETRIES &&
-                        (rc == CABLE_ERR_NEWTON || rc == CABLE_ERR_RECOVERABLE || rc == CABLE_ERR_LINSOLVE);
-         retry++, off *= CONT_LOCATE_GROW) {
+    int singular = rc == CABLE_ERR_LINSOLVE, nudged = 0;
+    double sfail = s, off = 0.5 * tol;
+    for (int last = 0; !last && (rc == CABLE_ERR_NEWTON || rc == CABLE_ERR_RECOVERABLE || rc == CABLE_ERR_LINSOLVE);
+         off *= CONT_LOCATE_GROW) {
       double room = (sfail - lo > hi - sfail) ? lo - sfail : hi - sfail; /* signed, to the farther end */
-      s = sfail + (fabs(room) * 0.5 > off ? copysign(off, room) : 0.5 * room);
+      last = !(0.5 * fabs(room) > off);
+      s = sfail + (last ? 0.5 * room : copysign(off, room));
       rc = correct_in_bracket(cc, s, s0, s1, xs);
       if (rc == CABLE_SUCCESS) rc = cont_tangent(cc, xs, cc->xdot, xds, &ts);
+      /* a zero pivot at sfail: it is the branch point to working precision */
+      nudged = singular && rc == CABLE_SUCCESS && off == 0.5 * tol;
+      if (getenv("CABLE_DBG")) fprintf(stderr, "DBG retry s=%.12g rc=%d\n", s, rc);
     }
     if (rc != CABLE_SUCCESS && type == CABLE_TY_BP && rc != CABLE_ERR_CALLBACK && rc != CABLE_ERR_ALLOC &&
         fmax(fabs(g0), fabs(g1)) < CONT_SV_ZERO_REL * gstep) {
@@ -205,6 +206,7 @@ static int locate(cable_cont *cc, int type, int which, double seed, int plain)
       return rc;
     }
     double f = test_value(&ts, type, which);
+    if (getenv("CABLE_DBG")) fprintf(stderr, "DBG locate plain=%d it=%d s=%.12g [%.12g %.12g] f=%.6e sv1=%.3e sv2=%.3e det=%d g0=%.3e g1=%.3e\n", plain, it, s, s0, s1, f, ts.sv1, ts.sv2, ts.det_sign, g0, g1);
     /* the bracket this iterate leaves, and whether it is within tolerance */
     double width = (f > 0) == (f1 > 0) ? fabs(s - s0) : fabs(s1 - s);
     int done = nudged || fabs(s - sprev) <= tol || f == 0.0 || width <= tol;
