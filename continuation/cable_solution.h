@@ -4,6 +4,12 @@
 #ifndef CABLE_SOLUTION_H
 #define CABLE_SOLUTION_H
 
+/* How the branch-point detector found a BP (cont_special.c): the
+ * determinant changed sign (one singular value crossed zero: simple), or
+ * sigma_1 dipped to zero without a sign change, with sigma_2 vanishing
+ * too (double) or not (a pair of simple BPs in one step). */
+enum cable_bp_kind { CABLE_BP_UNKNOWN = 0, CABLE_BP_SIMPLE = 1, CABLE_BP_DOUBLE = 2, CABLE_BP_PAIR = 3 };
+
 typedef struct cable_solution {
   int ndim, ntst, ncol;
   int npar;        /* length of par[] (AUTO's NPAR) */
@@ -13,6 +19,8 @@ typedef struct cable_solution {
   int itp;         /* AUTO type code (BP 6, LP 5, UZ -4, EP 9, MX -9; +10*k for regular) */
   int lab;         /* label */
   int isw;
+  int bp_kind;     /* a BP's kind as the detector found it (enum cable_bp_kind); 0: not a BP or
+                      unknown (the s-file does not store it) */
   double *t;       /* [ntst*ncol+1] in [0,1]; t[j*ncol] are the mesh points */
   double *u;       /* [(ntst*ncol+1)*ndim], u[k*ndim + i] = u_i(t[k]) */
   double *udot;    /* tangent, same layout; NULL when unknown */

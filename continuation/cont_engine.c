@@ -458,6 +458,7 @@ int cable_cont_step(cable_cont *cc)
     double seed = type == CABLE_TY_BP && pr.n > 0 ? pr.t[0] * ds_step : (double)NAN;
     rc = cont_locate(cc, type, which, seed); /* replaces the trial point by the located one */
     if (rc == CABLE_SUCCESS) cc->itp = type;
+    if (rc == CABLE_SUCCESS && type == CABLE_TY_BP) cc->bp_kind = CABLE_BP_SIMPLE; /* det changed sign */
     else snprintf(cc->note, sizeof cc->note, "%s", cc->err);
   } else if (pr.coincident && cont_dip_in_step(cc, pr.tmid * ds_step) == CABLE_SUCCESS && cc->queued) {
     cc->itp = CABLE_TY_BP;

@@ -57,6 +57,7 @@ struct cable_cont {
   char note[600];               /* remark on the current point for the d-file ("" none) */
   int itp;                      /* type of the current point (0 regular) */
   int itp_x;                    /* type found for x when it was accepted (located points) */
+  int bp_kind;                  /* enum cable_bp_kind of the current point when it is a BP */
   int uz_hit;                   /* index of the user zero located at x, or -1 */
   int uz_stop;                  /* the located user zero asks to stop */
   /* output */

@@ -342,6 +342,7 @@ static int dip_minimise(cable_cont *cc, double lo, double mid, double fm, double
   cc->tft.det_sign = cc->tfq.det_sign; /* no sign change is counted across the dip */
   cc->ds_used = smin;
   int dbl = ctx.t.sv2 > 0 && ctx.t.sv2 < CONT_SV_ZERO_REL * fmin(a, b);
+  cc->bp_kind = dbl ? CABLE_BP_DOUBLE : CABLE_BP_PAIR;
   snprintf(cc->note, sizeof cc->note,
            "%s: det keeps its sign, sigma1 = %.3e, sigma2 = %.3e (neighbours %.3e, %.3e)%s",
            dbl ? "double branch point" : "branch point without a sign change (a pair of BPs in one step?)",
