@@ -5,16 +5,32 @@ CC      ?= gcc
 MODE    ?= release
 BUILD   := build/$(MODE)
 
-MODULES := continuation auto_iface equations bc graphics
+# Layers, lowest first.  Each folder is compiled with the public headers
+# (include/) and the folders of its own and lower layers only, so an upward
+# #include does not compile (doc/api.md has the picture; tests/test_layers.c
+# checks the sources too).
+LAYERS  := continuation equations bc graphics auto_iface
+MODULES := $(LAYERS)
 WARN    := -Wall -Wextra -Werror -Wshadow -Wpointer-arith -Wcast-align \
            -Wstrict-prototypes -Wmissing-prototypes -Wwrite-strings \
            -Wundef -Wformat=2 -Wvla -Wdouble-promotion -Wnull-dereference
 CSTD    := -std=c11 -D_POSIX_C_SOURCE=200809L
-INCS    := $(addprefix -I,$(MODULES)) -Itests -I/usr/include/suitesparse
+SYSINCS := -I/usr/include/suitesparse
+PUBINC  := -Iinclude
+INCS_continuation := $(PUBINC) -Icontinuation
+INCS_equations    := $(INCS_continuation) -Iequations
+INCS_bc           := $(INCS_equations) -Ibc
+INCS_graphics     := $(INCS_bc) -Igraphics
+INCS_auto_iface   := $(INCS_graphics) -Iauto_iface
+INCS_tests        := $(INCS_auto_iface) -Itests
+# the folder's include path: the first path component of the source
+layer_incs = $(INCS_$(firstword $(subst /, ,$(1)))) $(SYSINCS)
 OPT_release := -O2 -g
 OPT_asan    := -O1 -g -fno-omit-frame-pointer -fsanitize=address,undefined -fno-sanitize-recover=all
 OPT_fuzz    := -O1 -g -fsanitize=fuzzer-no-link,address,undefined
-CFLAGS  := $(CSTD) $(WARN) $(OPT_$(MODE)) $(INCS) -MMD -MP -fPIC $(EXTRA_CFLAGS)
+CFLAGS  := $(CSTD) $(WARN) $(OPT_$(MODE)) -MMD -MP -fPIC $(EXTRA_CFLAGS)
+# the library exports only what include/cable/ declares CABLE_API
+LIBFLAGS := -fvisibility=hidden
 SAN_LD_asan := -fsanitize=address,undefined
 LDFLAGS := $(SAN_LD_$(MODE)) $(EXTRA_LDFLAGS)
 LIBS    := -lsundials_kinsol -lsundials_sunlinsolklu -lsundials_sunmatrixsparse \
@@ -30,11 +46,15 @@ BENCH_BINS := $(BENCH_SRCS:tests/%.c=$(BUILD)/tests/%)
 PLUGIN_SRCS := $(wildcard tests/plugins/*.c)
 PLUGINS  := $(PLUGIN_SRCS:tests/plugins/%.c=$(BUILD)/plugins/%.so)
 LIBCABLE := $(BUILD)/libcable.a
+LIBSO    := $(BUILD)/libcable.so
+SONAME   := libcable.so.0
+VERSION  := $(shell sed -n 's/^\#define CABLE_VERSION "\(.*\)"/\1/p' include/cable/cable_version.h)
+PREFIX   ?= /usr/local
 DEPS_OK  := build/.deps-ok
 
-.PHONY: all check asan valgrind demo scenes bench stress fuzz clean help deps tests-build
+.PHONY: all lib install check asan valgrind demo scenes bench stress fuzz clean help deps tests-build
 
-all: cable
+all: cable $(LIBSO)
 
 # Dependencies come from Debian; the script installs only what is missing.
 $(DEPS_OK): scripts/install-deps.sh
@@ -42,13 +62,25 @@ $(DEPS_OK): scripts/install-deps.sh
 	@mkdir -p build && touch $@
 deps: $(DEPS_OK)
 
+$(LIB_OBJS): $(BUILD)/%.o: %.c | $(DEPS_OK)
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) $(LIBFLAGS) $(call layer_incs,$<) -c $< -o $@
+
 $(BUILD)/%.o: %.c | $(DEPS_OK)
 	@mkdir -p $(dir $@)
-	$(CC) $(CFLAGS) -c $< -o $@
+	$(CC) $(CFLAGS) $(call layer_incs,$<) -c $< -o $@
 
+# The static library serves the test programs (they reach private functions);
+# programs and plug-ins outside the tree use libcable.so.
 $(LIBCABLE): $(LIB_OBJS)
 	@rm -f $@
 	ar rcs $@ $^
+
+$(LIBSO): $(LIB_OBJS)
+	$(CC) $(LDFLAGS) -shared -Wl,-soname,$(SONAME) $^ $(LIBS) -o $@
+	@ln -sf libcable.so $(BUILD)/$(SONAME)
+
+lib: $(LIBSO) $(LIBCABLE)
 
 $(BUILD)/cable: $(BUILD)/auto_iface/cable_main.o $(LIBCABLE)
 	$(CC) $(LDFLAGS) -rdynamic $^ $(LIBS) -o $@
@@ -59,11 +91,12 @@ cable: $(BUILD)/cable
 $(BUILD)/tests/%: $(BUILD)/tests/%.o $(LIBCABLE)
 	$(CC) $(LDFLAGS) -rdynamic $^ $(LIBS) -o $@
 
+# Plug-ins see the public headers only.
 $(BUILD)/plugins/%.so: tests/plugins/%.c | $(DEPS_OK)
 	@mkdir -p $(dir $@)
-	$(CC) $(CFLAGS) -shared $< -o $@
+	$(CC) $(CFLAGS) $(PUBINC) -Itests/plugins -shared $< -o $@
 
-tests-build: $(TEST_BINS) $(PLUGINS) $(BUILD)/cable cable
+tests-build: $(TEST_BINS) $(PLUGINS) $(BUILD)/cable cable $(LIBSO)
 
 # The README's test command: build and run every test program, one summary line.
 check: tests-build
@@ -96,11 +129,25 @@ stress: cable tests-build
 fuzz:
 	@bash scripts/fuzz.sh
 
+# Headers, library and pkg-config file under PREFIX (default /usr/local):
+#   make install PREFIX=$HOME/.local
+#   cc app.c $(pkg-config --cflags --libs cable)
+install: $(LIBSO) $(BUILD)/cable
+	install -d $(DESTDIR)$(PREFIX)/include/cable $(DESTDIR)$(PREFIX)/lib/pkgconfig $(DESTDIR)$(PREFIX)/bin
+	install -m 644 include/cable/*.h $(DESTDIR)$(PREFIX)/include/cable/
+	install -m 755 $(LIBSO) $(DESTDIR)$(PREFIX)/lib/$(SONAME)
+	ln -sf $(SONAME) $(DESTDIR)$(PREFIX)/lib/libcable.so
+	install -m 755 $(BUILD)/cable $(DESTDIR)$(PREFIX)/bin/cable
+	sed -e 's|@PREFIX@|$(PREFIX)|' -e 's|@VERSION@|$(VERSION)|' cable.pc.in \
+	  > $(DESTDIR)$(PREFIX)/lib/pkgconfig/cable.pc
+
 clean:
 	rm -rf build cable
 
 help:
 	@echo "make            build ./cable"
+	@echo "make lib        build build/MODE/libcable.so (and the static libcable.a)"
+	@echo "make install    headers, libcable.so, cable and cable.pc under PREFIX"
 	@echo "make check      build and run the test suite (summary: N passed, M failed)"
 	@echo "make demo       build and run the main job (the paper's knot scene)"
 	@echo "make asan       tests under AddressSanitizer + UBSan"

@@ -2,7 +2,7 @@
  * the s-file block structure follows io.f90's READSOL (header of 12 or 16
  * integers, NROWPR lines of numbers), the b-file sections follow parseB
  * (header lines start with 0, a point number of 1 starts a new branch). */
-#include "aufile.h"
+#include "cable/cable_aufile.h"
 
 #include <ctype.h>
 #include <errno.h>
@@ -11,7 +11,7 @@
 #include <string.h>
 #include <sys/types.h>
 
-#include "cable_status.h"
+#include "cable/cable_status.h"
 
 #define SFILE_MAX_VALUES 100000000L   /* numbers per solution block: a sanity bound (800 MB) */
 #define BFILE_MAX_COLS 4096           /* value columns per b-file row */
@@ -21,7 +21,7 @@
 
 int cable_aufile_parse_double(const char *tok, double *out)
 {
-  char buf[80];
+  char buf[1040];   /* a constants file's longest token (1023 characters) fits */
   size_t n = strlen(tok);
   if (n == 0 || n + 2 >= sizeof buf) return -1;
   memcpy(buf, tok, n + 1);

@@ -2,7 +2,7 @@
  * bvp.f90 WRTBV8/WRTBV9), behind the engine's cable_sink.  Learned from
  * AUTO's formats, written afresh; differences are listed in
  * doc/output-formats.md. */
-#include "aufile.h"
+#include "cable/cable_aufile.h"
 
 #include <errno.h>
 #include <math.h>
@@ -12,7 +12,7 @@
 #include <unistd.h>
 
 #include "atomic_file.h"
-#include "cable_status.h"
+#include "cable/cable_status.h"
 
 #define BCOL 19            /* b-file and s-file number width: ES19.10E3 */
 #define BDIG 10            /* digits after the point: 11 significant digits */

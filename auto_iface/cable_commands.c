@@ -4,12 +4,12 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "aufile.h"
-#include "braid_analysis.h"
-#include "braid_resolver.h"
+#include "cable/cable_aufile.h"
+#include "cable/cable_analysis.h"
+#include "replay_braid.h"
 #include "braid_state.h"
-#include "cable_status.h"
-#include "names.h"
+#include "cable/cable_status.h"
+#include "cable/cable_names.h"
 #include "script.h"
 #include "script_host_cable.h"
 

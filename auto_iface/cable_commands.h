@@ -5,7 +5,7 @@
 
 #include <stdio.h>
 
-#include "cable_error.h"
+#include "cable/cable_error.h"
 
 /* cable run KEY=VALUE ...: one run(...) of the script host in the current directory. */
 int cable_cmd_run(int argc, char **argv, cable_error *err);
@@ -17,5 +17,11 @@ int cable_cmd_table(const char *bfile, FILE *out, cable_error *err);
 int cable_cmd_list(const char *sfile, FILE *out, cable_error *err);
 /* cable analyze s.NAME LABEL... */
 int cable_cmd_analyze(const char *sfile, int nlab, char **labels, FILE *out, cable_error *err);
+
+/* cable plot [x=COL] [y=COL] [o=FILE.png|FILE.svg] [title=TEXT] b.NAME ... */
+int cable_cmd_plot(int argc, char **argv, cable_error *err);
+/* cable render s.NAME LABEL [o=FILE.png] [view=X,Y,Z] [size=N] [thicken=K]
+ *              [color=pressure] [vtp=FILE.vtp] [ply=FILE.ply] */
+int cable_cmd_render(int argc, char **argv, cable_error *err);
 
 #endif

@@ -4,13 +4,11 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "aufile.h"
-#include "braid_resolver.h"
+#include "cable/cable_aufile.h"
 #include "cable_commands.h"
-#include "cable_pictures.h"
-#include "graphics_text.h"
-#include "cable_status.h"
-#include "cable_version.h"
+#include "cable/cable_pictures.h"
+#include "cable/cable_status.h"
+#include "cable/cable_version.h"
 #include "script.h"
 #include "script_host_cable.h"
 
@@ -90,7 +88,7 @@ int main(int argc, char **argv)
   }
   if (strcmp(cmd, "plot") == 0) {
     int rc = report(cable_cmd_plot(argc - 2, argv + 2, &err), &err);
-    graphics_text_cleanup(); /* fontconfig's caches, for leak checkers */
+    cable_pictures_cleanup(); /* fontconfig's caches, for leak checkers */
     return rc;
   }
   if (strcmp(cmd, "render") == 0) return report(cable_cmd_render(argc - 2, argv + 2, &err), &err);

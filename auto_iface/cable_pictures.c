@@ -1,15 +1,17 @@
-#include "cable_pictures.h"
+#include "cable/cable_pictures.h"
 
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "aufile.h"
-#include "names.h"
+#include "cable/cable_aufile.h"
+#include "cable/cable_names.h"
+#include "cable_commands.h"
+#include "graphics_text.h"
 #include "braid_model.h"
 #include "braid_pressure.h"
 #include "braid_state.h"
-#include "cable_status.h"
+#include "cable/cable_status.h"
 #include "export.h"
 #include "plot.h"
 #include "render.h"
@@ -283,3 +285,5 @@ int cable_cmd_render(int argc, char **argv, cable_error *err)
   cable_sfile_free(sf);
   return rc;
 }
+
+void cable_pictures_cleanup(void) { graphics_text_cleanup(); }

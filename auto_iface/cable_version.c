@@ -1,4 +1,4 @@
-#include "cable_version.h"
+#include "cable/cable_version.h"
 
 #include <gsl/gsl_version.h>
 #include <stdio.h>

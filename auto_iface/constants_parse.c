@@ -4,7 +4,8 @@
  * two passes (names and NPAR first, so that every other key may use names
  * defined anywhere in the file), then cross-checked; the caller's structs
  * change only on success. */
-#include "constants_parse.h"
+#include "cable/cable_constants.h"
+#include "cable/cable_aufile.h"
 
 #include <ctype.h>
 #include <errno.h>
@@ -17,7 +18,7 @@
 #include <string.h>
 #include <strings.h>
 
-#include "cable_status.h"
+#include "cable/cable_status.h"
 
 #define TOK_MAX 1024          /* longest token (strings are names or file names) */
 #define DEPTH_MAX 8           /* nesting of lists/dicts; AUTO needs 2 */
@@ -279,13 +280,15 @@ static int parse_scalar(pctx *x, const char *key, cv **out)
     snprintf(buf, sizeof buf, "%s", x->tok);
     int real = strpbrk(buf, ".eEdD") != NULL;
     if (real) {
-      for (char *p = buf; *p; p++)
-        if (*p == 'd' || *p == 'D') *p = 'e';
       v = cv_new(CV_REAL, x->tok_line, x->tok);
       if (!v) return perr(x, CABLE_ERR_ALLOC, x->tok_line, key, "out of memory");
-      errno = 0;
-      v->r = strtod(buf, NULL);
-      /* overflow gives +-HUGE_VAL: reported as non-finite where it matters */
+      /* the one reader of AUTO/Fortran numbers (1.5D-3), shared with the
+       * s- and b-file readers; overflow gives +-HUGE_VAL, reported as
+       * non-finite where it matters */
+      if (cable_aufile_parse_double(buf, &v->r) != 0) {
+        cv_free(v);
+        return perr(x, CABLE_ERR_PARSE, x->tok_line, key, "bad number '%s'", x->tok);
+      }
     } else {
       v = cv_new(CV_INT, x->tok_line, x->tok);
       if (!v) return perr(x, CABLE_ERR_ALLOC, x->tok_line, key, "out of memory");
@@ -909,7 +912,7 @@ static const key_desc key_table[] = {
   {"ILP", apply_int, OFF(ilp), 0, 1, 2, KI_NONE},
   {"ICP", apply_icp, 0, 0, 0, 2, L_ICP},
   {"NTST", apply_int, OFF(ntst), 1, BIG, 2, KI_NONE},
-  {"NCOL", apply_int, OFF(ncol), 2, 7, 2, KI_NONE},
+  {"NCOL", apply_int, OFF(ncol), CABLE_NCOL_MIN, CABLE_NCOL_MAX, 2, KI_NONE},
   {"IAD", apply_int, OFF(iad), 0, BIG, 2, KI_NONE},
   {"ISP", apply_int, OFF(isp), 0, 4, 2, KI_NONE},
   {"ISW", apply_isw, OFF(isw), -BIG, BIG, 2, KI_NONE},

@@ -1,10 +1,10 @@
-#include "names.h"
+#include "cable/cable_names.h"
 
 #include <ctype.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "cable_output.h"
+#include "cable/cable_output.h"
 
 void cable_names_init(cable_names *n)
 {

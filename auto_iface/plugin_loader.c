@@ -2,7 +2,7 @@
  * module safe to call (Lua's loadlib is the model: one entry name, version
  * and size checks before trusting the module, and a reason for every
  * rejection). */
-#include "plugin_loader.h"
+#include "cable/cable_plugin.h"
 
 #include <ctype.h>
 #include <dlfcn.h>
@@ -13,7 +13,7 @@
 #include <string.h>
 #include <sys/stat.h>
 
-#include "cable_status.h"
+#include "cable/cable_status.h"
 
 /* Longest parameter or variable name: names become constants-file keys and
  * error keys (cable_error.key holds 63 characters). */

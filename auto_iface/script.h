@@ -21,7 +21,7 @@
 
 #include <stddef.h>
 
-#include "cable_error.h"
+#include "cable/cable_error.h"
 
 /* Limits.  A script is untrusted input: these bound memory, recursion and
  * running time whatever the text says.  They are far above what a real

@@ -6,7 +6,7 @@
 
 #include <stddef.h>
 
-#include "cable_error.h"
+#include "cable/cable_error.h"
 #include "script_lex.h"
 
 typedef enum script_expr_kind {

@@ -7,7 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "cable_status.h"
+#include "cable/cable_status.h"
 #include "script_interp.h"
 
 static int unsupported(script_interp *in, const script_call *c)

@@ -9,7 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "cable_status.h"
+#include "cable/cable_status.h"
 #include "script_ast.h"
 #include "script_interp.h"
 

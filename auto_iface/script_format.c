@@ -6,7 +6,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "cable_status.h"
+#include "cable/cable_status.h"
 #include "script_interp.h"
 
 /* Largest width or precision accepted: far beyond any file name or table

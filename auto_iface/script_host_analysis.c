@@ -51,11 +51,12 @@
 
 #include "atomic_file.h"
 #include "axis_passages.h"
-#include "braid_analysis.h"
+#include "cable/cable_analysis.h"
+#include "tube_distance.h"
 #include "braid_state.h"
-#include "cable_pictures.h"
-#include "cable_status.h"
-#include "names.h"
+#include "cable/cable_pictures.h"
+#include "cable/cable_status.h"
+#include "cable/cable_names.h"
 #include "script_host_impl.h"
 
 static const cable_solution *handle_solution(const script_value *v)

@@ -12,14 +12,13 @@
 #include <time.h>
 #include <unistd.h>
 
-#include "aufile.h"
-#include "braid_analysis.h"
+#include "cable/cable_aufile.h"
+#include "cable/cable_analysis.h"
 #include "braid_problems.h"
-#include "cable_cont.h"
-#include "cable_status.h"
-#include "constants_parse.h"
+#include "cable/cable_cont.h"
+#include "cable/cable_status.h"
+#include "cable/cable_constants.h"
 #include "script_host_impl.h"
-#include "test_problems.h"
 
 void cable_replay_options_init(cable_replay_options *o)
 {
@@ -91,20 +90,11 @@ static int find_problem(cable_replay *r, const char *e, const cable_constants *c
     }
     if (rc != CABLE_ERR_NOTFOUND) return rc;
   }
-  static const struct {
-    const char *name;
-    const cable_problem *(*get)(void);
-  } tests[] = {{"bratu", cable_testproblem_bratu},
-               {"bratu_int", cable_testproblem_bratu_int},
-               {"elastica", cable_testproblem_elastica},
-               {"layer", cable_testproblem_layer},
-               {"stiff", cable_testproblem_stiff}};
-  for (size_t i = 0; i < sizeof tests / sizeof tests[0]; i++)
-    if (strcmp(e, tests[i].name) == 0) {
-      out->pb = tests[i].get();
-      return 0;
-    }
-  const cable_problem *braid = braid_problem_find(e);
+  const cable_problem *braid = braid_problem_find(e), *builtin = cable_problem_builtin(e);
+  if (builtin && !braid) {   /* the engine's test problems */
+    out->pb = builtin;
+    return 0;
+  }
   if (braid) {
     if (c && from_stpnt)
       return cable_error_set(err, CABLE_ERR_UNSUPPORTED, NULL, 0, "e",

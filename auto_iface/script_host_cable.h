@@ -22,9 +22,9 @@
 
 #include <stdio.h>
 
-#include "cable_constants.h"
-#include "cable_error.h"
-#include "cable_problem.h"
+#include "cable/cable_constants.h"
+#include "cable/cable_error.h"
+#include "cable/cable_problem.h"
 #include "script.h"
 
 /* Where e=NAME problems come from.  The host always knows the engine's test

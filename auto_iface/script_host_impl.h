@@ -2,9 +2,9 @@
 #ifndef CABLE_SCRIPT_HOST_IMPL_H
 #define CABLE_SCRIPT_HOST_IMPL_H
 
-#include "cable_output.h"
-#include "names.h"
-#include "plugin_loader.h"
+#include "cable/cable_output.h"
+#include "cable/cable_names.h"
+#include "cable/cable_plugin.h"
 #include "script_host_cable.h"
 
 /* One computed point (a b-file row) with its own copies of the arrays. */

@@ -6,8 +6,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "aufile.h"
-#include "cable_status.h"
+#include "cable/cable_aufile.h"
+#include "cable/cable_status.h"
 #include "script_host_impl.h"
 
 rp_branch *rp_branch_alloc(int ibr, const cable_constants *c, const cable_names *names, const char *e)

@@ -6,7 +6,7 @@
 
 #include <stddef.h>
 
-#include "cable_error.h"
+#include "cable/cable_error.h"
 
 /* A bump allocator: everything the parser builds is freed at once. */
 typedef struct script_arena_block script_arena_block;

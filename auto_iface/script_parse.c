@@ -21,7 +21,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "cable_status.h"
+#include "cable/cable_status.h"
 #include "script.h"
 #include "script_ast.h"
 

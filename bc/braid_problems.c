@@ -7,8 +7,8 @@
 #include "braid_model.h"
 #include "braid_pressure.h"
 #include "braid_problems.h"
-#include "cable_solution.h"
-#include "cable_status.h"
+#include "cable/cable_solution.h"
+#include "cable/cable_status.h"
 #include "ribbon.h"
 #include "tube_distance.h"
 

@@ -11,7 +11,7 @@
 #define CABLE_BRAID_PROBLEMS_H
 
 #include "braid_start.h"
-#include "cable_problem.h"
+#include "cable/cable_problem.h"
 
 const cable_problem *braid_knot_problem(void);
 const cable_problem *braid_knot_sym_problem(void);

@@ -3,7 +3,7 @@
 #include <string.h>
 
 #include "braid_start_impl.h"
-#include "cable_status.h"
+#include "cable/cable_status.h"
 
 /* Poisson's ratio of the paper's runs: C = B/(1 + nu). */
 static const double paper_poisson = 0.3;

@@ -24,7 +24,7 @@
 #define CABLE_BRAID_START_H
 
 #include "braid_state.h"
-#include "cable_problem.h"
+#include "cable/cable_problem.h"
 
 typedef enum { BRAID_START_RINGS = 0, BRAID_START_TORUS = 1 } braid_start_kind;
 

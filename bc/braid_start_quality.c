@@ -4,7 +4,7 @@
 #include <stdlib.h>
 
 #include "braid_start.h"
-#include "cable_status.h"
+#include "cable/cable_status.h"
 
 /* Step of the five-point difference formula in t.  Its truncation error is
  * dt^4 |u^(5)|/30 and its rounding error ~ 1.5 eps |u|/dt; for the paper's

@@ -16,7 +16,7 @@
 
 #include "braid_model.h"
 #include "braid_start_impl.h"
-#include "cable_status.h"
+#include "cable/cable_status.h"
 
 #define NF BRAID_START_NFOURIER
 #define NH (BRAID_START_NFOURIER / 2)

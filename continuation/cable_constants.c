@@ -1,4 +1,4 @@
-#include "cable_constants.h"
+#include "cable/cable_constants.h"
 
 #include <math.h>
 #include <string.h>

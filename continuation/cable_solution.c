@@ -1,4 +1,4 @@
-#include "cable_solution.h"
+#include "cable/cable_solution.h"
 
 #include <stdlib.h>
 #include <string.h>

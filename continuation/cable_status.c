@@ -1,4 +1,4 @@
-#include "cable_status.h"
+#include "cable/cable_status.h"
 
 typedef struct {
   int code;

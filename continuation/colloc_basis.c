@@ -3,7 +3,7 @@
 #include <gsl/gsl_integration.h>
 #include <string.h>
 
-#include "cable_status.h"
+#include "cable/cable_status.h"
 
 void colloc_basis_eval(int ncol, double x, double *l, double *dl)
 {
@@ -24,7 +24,7 @@ void colloc_basis_eval(int ncol, double x, double *l, double *dl)
 
 int colloc_basis_init(colloc_basis *b, int ncol)
 {
-  if (ncol < COLLOC_NCOL_MIN || ncol > COLLOC_NCOL_MAX) return CABLE_ERR_INPUT;
+  if (ncol < CABLE_NCOL_MIN || ncol > CABLE_NCOL_MAX) return CABLE_ERR_INPUT;
   memset(b, 0, sizeof *b);
   b->ncol = ncol;
   gsl_integration_glfixed_table *tab = gsl_integration_glfixed_table_alloc((size_t)ncol);
@@ -68,7 +68,7 @@ void colloc_interp(int ndim, int ntst, int ncol, const double *t, const double *
   }
   int j = lo;
   double t0 = t[j * ncol], h = t[(j + 1) * ncol] - t0;
-  double l[COLLOC_NCOL_MAX + 1];
+  double l[CABLE_NCOL_MAX + 1];
   colloc_basis_eval(ncol, (s - t0) / h, l, NULL);
   for (int i = 0; i < ndim; i++) {
     double v = 0.0;

@@ -5,21 +5,20 @@
 #ifndef CABLE_COLLOC_BASIS_H
 #define CABLE_COLLOC_BASIS_H
 
-#define COLLOC_NCOL_MIN 2
-#define COLLOC_NCOL_MAX 7
+#include "cable/cable_constants.h"   /* CABLE_NCOL_MIN, CABLE_NCOL_MAX */
 
 typedef struct colloc_basis {
   int ncol;
-  double c[COLLOC_NCOL_MAX];        /* Gauss points in (0,1) */
-  double w[COLLOC_NCOL_MAX];        /* Gauss weights on [0,1] (sum 1) */
+  double c[CABLE_NCOL_MAX];        /* Gauss points in (0,1) */
+  double w[CABLE_NCOL_MAX];        /* Gauss weights on [0,1] (sum 1) */
   /* l[m][k] = l_k(c_m), dl[m][k] = l_k'(c_m) (derivative in x) */
-  double l[COLLOC_NCOL_MAX][COLLOC_NCOL_MAX + 1];
-  double dl[COLLOC_NCOL_MAX][COLLOC_NCOL_MAX + 1];
+  double l[CABLE_NCOL_MAX][CABLE_NCOL_MAX + 1];
+  double dl[CABLE_NCOL_MAX][CABLE_NCOL_MAX + 1];
   /* node quadrature: integral over [0,1] of the interpolant = sum_k wn[k] * value_k
      (Gauss quadrature of the interpolating polynomial, exact for degree NCOL) */
-  double wn[COLLOC_NCOL_MAX + 1];
+  double wn[CABLE_NCOL_MAX + 1];
   /* NCOL-th derivative of l_k (a constant): used by the error monitor */
-  double dnl[COLLOC_NCOL_MAX + 1];
+  double dnl[CABLE_NCOL_MAX + 1];
 } colloc_basis;
 
 /* 0 on success, CABLE_ERR_INPUT when ncol is outside [2,7]. */

@@ -9,7 +9,7 @@
 #include <sundials/sundials_context.h>
 #include <sunlinsol/sunlinsol_klu.h>
 
-#include "cable_status.h"
+#include "cable/cable_status.h"
 #include "colloc_jac.h"
 #include "colloc_sparse.h"
 #include "sunlinsol_colloc.h"

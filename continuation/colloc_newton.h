@@ -16,7 +16,7 @@
 #ifndef CABLE_COLLOC_NEWTON_H
 #define CABLE_COLLOC_NEWTON_H
 
-#include "cable_constants.h"
+#include "cable/cable_constants.h"
 #include "colloc_system.h"
 
 typedef struct colloc_newton colloc_newton;

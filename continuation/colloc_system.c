@@ -5,7 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "cable_status.h"
+#include "cable/cable_status.h"
 
 /* Central differences have error O(d^2 f''') + O(eps f / d); balancing gives
  * d ~ eps^(1/3) relative to the variable's size: about 6e-6. */

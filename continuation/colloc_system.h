@@ -10,8 +10,8 @@
 #ifndef CABLE_COLLOC_SYSTEM_H
 #define CABLE_COLLOC_SYSTEM_H
 
-#include "cable_constants.h"
-#include "cable_problem.h"
+#include "cable/cable_constants.h"
+#include "cable/cable_problem.h"
 #include "colloc_basis.h"
 #include "colloc_jac.h"
 

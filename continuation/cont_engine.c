@@ -94,8 +94,8 @@ static int check_input(const cable_problem *pb, const cable_constants *c, char *
   for (int k = 0; k < c->nicp; k++)
     if (c->icp[k] < 0 || c->icp[k] >= npar)
       return snprintf(msg, len, "ICP entry %d is outside 1..NPAR=%d", c->icp[k] + 1, npar), CABLE_ERR_INPUT;
-  if (c->ncol < COLLOC_NCOL_MIN || c->ncol > COLLOC_NCOL_MAX)
-    return snprintf(msg, len, "NCOL=%d outside %d..%d", c->ncol, COLLOC_NCOL_MIN, COLLOC_NCOL_MAX), CABLE_ERR_INPUT;
+  if (c->ncol < CABLE_NCOL_MIN || c->ncol > CABLE_NCOL_MAX)
+    return snprintf(msg, len, "NCOL=%d outside %d..%d", c->ncol, CABLE_NCOL_MIN, CABLE_NCOL_MAX), CABLE_ERR_INPUT;
   if (c->ntst < 1) return snprintf(msg, len, "NTST=%d must be positive", c->ntst), CABLE_ERR_INPUT;
   if (!(c->dsmin > 0) || !(c->dsmax >= c->dsmin) || !(fabs(c->ds) > 0))
     return snprintf(msg, len, "need 0 < DSMIN <= DSMAX and DS != 0"), CABLE_ERR_INPUT;

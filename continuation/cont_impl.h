@@ -4,7 +4,7 @@
 #define CABLE_CONT_IMPL_H
 
 #include "abd_solver.h"
-#include "cable_cont.h"
+#include "cable/cable_cont.h"
 #include "colloc_jac.h"
 #include "colloc_newton.h"
 #include "colloc_system.h"

@@ -5,7 +5,7 @@
 
 #include "braid_geometry.h"
 #include "braid_state.h"
-#include "cable_status.h"
+#include "cable/cable_status.h"
 #include "tube_distance.h"
 
 /* Bisection steps on a root bracket in [0, 1]: 2^-60 is below the rounding

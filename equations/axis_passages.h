@@ -26,7 +26,7 @@
 #ifndef CABLE_AXIS_PASSAGES_H
 #define CABLE_AXIS_PASSAGES_H
 
-#include "cable_solution.h"
+#include "cable/cable_solution.h"
 
 typedef struct axis_passages {
   int count;          /* passages: segment pairs that pass through each other */

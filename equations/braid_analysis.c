@@ -1,4 +1,6 @@
-#include "braid_analysis.h"
+#include "cable/cable_analysis.h"
+#include "braid_geometry.h"
+#include "tube_distance.h"
 
 #include <gsl/gsl_math.h>
 #include <math.h>
@@ -8,7 +10,7 @@
 #include "braid_model.h"
 #include "braid_pressure.h"
 #include "braid_state.h"
-#include "cable_status.h"
+#include "cable/cable_status.h"
 #include "curve_interp.h"
 
 static double wrap_2pi(double a)

@@ -4,7 +4,7 @@
 #include <stdlib.h>
 
 #include "braid_state.h"
-#include "cable_status.h"
+#include "cable/cable_status.h"
 #include "curve_interp.h"
 #include "ribbon.h"
 

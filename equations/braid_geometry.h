@@ -11,7 +11,8 @@
 #ifndef CABLE_BRAID_GEOMETRY_H
 #define CABLE_BRAID_GEOMETRY_H
 
-#include "cable_solution.h"
+#include "cable/cable_solution.h"
+#include "cable/cable_analysis.h"   /* braid_topology */
 #include "knot_type.h"
 
 typedef struct braid_curves {
@@ -54,21 +55,6 @@ double braid_point_contact_curvature(const braid_point *p);
  * t, both ends included) and its maximum (either pointer may be NULL). */
 int braid_contact_curvature(const cable_solution *sol, int n, double *kappa, double *kappa_max);
 
-/* Topology of a braid solution: the ribbon numbers and the knot type of the
- * braid axis (the companion knot of a cable knot or link). */
-typedef struct braid_topology {
-  double lk, tw, wr;            /* Lk = Tw + Wr of the contact-curve ribbon (ribbon.h) */
-  double wr_err;                /* error estimate of Wr (braid_ribbon.wr_err) */
-  int resolved;                 /* 1: wr_err <= BRAID_RIBBON_WR_TOL; 0: Lk is not trustworthy */
-  int closure;                  /* -1 knot (d1(L) = -d1(0)), +1 link (d1(L) = d1(0)), 0 neither */
-  double lk_defect;             /* distance of lk from the nearest half-odd integer (knot) or integer (link) */
-  knot_type_result axis;        /* knot type of the contact curve */
-  /* lk minus the writhe of the companion's minimal diagram, handedness x
-   * crossing number for torus knots, 0 for the unknot and figure-eight: the
-   * paper's "linking number" of a cable knot inside the companion's tube
-   * (5.5, 6.5, 7.5, 8.5 for Figs. 12.3-12.6); NAN when the axis type is unknown. */
-  double lk_in_tube;
-} braid_topology;
 
 /* nsamples: polygon vertices for the knot type of the axis (0: default
  * BRAID_TOPOLOGY_SAMPLES). */

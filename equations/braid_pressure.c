@@ -6,7 +6,7 @@
 #include <string.h>
 
 #include "braid_rhs_gen.h"
-#include "cable_status.h"
+#include "cable/cable_status.h"
 
 int braid_contact_detail_eval(const double *u, const double *dudS, const braid_material *m,
                               braid_contact_detail *out)

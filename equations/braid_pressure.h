@@ -8,7 +8,7 @@
 #define CABLE_BRAID_PRESSURE_H
 
 #include "braid_model.h"
-#include "cable_solution.h"
+#include "cable/cable_solution.h"
 
 /* u: the 21 states at one point; dudS: du/ds there (s = arclength of strand 1,
  * i.e. braid_rhs's output, NOT the AUTO derivative d/dt = L d/ds), or NULL to

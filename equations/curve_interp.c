@@ -2,7 +2,7 @@
 
 #include <math.h>
 
-#include "cable_status.h"
+#include "cable/cable_status.h"
 
 int curve_interp_check(const cable_solution *sol)
 {

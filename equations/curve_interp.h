@@ -9,7 +9,7 @@
 #ifndef CABLE_CURVE_INTERP_H
 #define CABLE_CURVE_INTERP_H
 
-#include "cable_solution.h"
+#include "cable/cable_solution.h"
 
 /* Largest NCOL handled (AUTO allows 2..7); fixes the size of stack buffers. */
 #define CURVE_INTERP_MAX_NCOL 15

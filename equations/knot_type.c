@@ -9,7 +9,7 @@
 #include <gsl/gsl_math.h>
 #include <lapacke.h>
 
-#include "cable_status.h"
+#include "cable/cable_status.h"
 
 /* ---- tolerances of an admissible projection (relative to the polygon's size) ----
  * A crossing is degenerate when the projected segments meet at an angle with

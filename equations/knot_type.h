@@ -25,28 +25,14 @@
 #ifndef CABLE_KNOT_TYPE_H
 #define CABLE_KNOT_TYPE_H
 
-#define KNOT_TYPE_NAME_MAX 32
-#define KNOT_TYPE_MAX_DEGREE 100
+#include "cable/cable_analysis.h"   /* knot_type_result */
+
 /* Projections with more crossings are refused (the exact determinant costs
  * O(c^4) per prime); smooth curves of the knots named here need far fewer. */
 #define KNOT_TYPE_MAX_CROSSINGS 100
 /* Candidate projection directions tried by knot_type_identify. */
 #define KNOT_TYPE_NDIRS 24
 
-typedef struct knot_type_result {
-  char name[KNOT_TYPE_NAME_MAX]; /* "unknot", "trefoil", "figure-eight", "torus(5,2)", ..., "unknown" */
-  int torus_p, torus_q;          /* p > q >= 2 for a torus knot, else 0 */
-  int handedness;                /* +1 right, -1 left, 0 amphichiral or unknown */
-  int crossing_number;           /* of the identified type; -1 when unknown */
-  int signature;                 /* knot signature, sigma(right-handed trefoil) = -2 */
-  long determinant;              /* |Delta(-1)| */
-  int alex_degree;
-  long alex[KNOT_TYPE_MAX_DEGREE + 1]; /* Delta(t) = sum_i alex[i] t^i */
-  int ncross;                    /* crossings of the projection used */
-  int diagram_writhe;            /* sum of the crossing signs of that projection */
-  double dir[3];                 /* projection direction (viewer on the +dir side) */
-  int nagree;                    /* projections that gave identical invariants */
-} knot_type_result;
 
 /* Closed polygon xyz[3n] (vertex n-1 joins vertex 0), n >= 3.  Returns 0,
  * CABLE_ERR_INPUT (bad arguments, or no admissible projection: the polygon

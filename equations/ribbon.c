@@ -5,7 +5,7 @@
 
 #include <gsl/gsl_math.h>
 
-#include "cable_status.h"
+#include "cable/cable_status.h"
 
 static double dot3(const double *a, const double *b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 

@@ -27,7 +27,7 @@
 #ifndef CABLE_RIBBON_H
 #define CABLE_RIBBON_H
 
-#include "cable_solution.h"
+#include "cable/cable_solution.h"
 
 /* The normal handed to the twist routines must satisfy |d.T| <= RIBBON_PERP_TOL |d|:
  * the twist formula assumes d perpendicular to T; 1e-6 admits normals computed

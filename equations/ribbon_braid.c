@@ -11,7 +11,7 @@
 
 #include "braid_geometry.h"
 #include "braid_state.h"
-#include "cable_status.h"
+#include "cable/cable_status.h"
 #include "ribbon.h"
 
 static double dot3(const double *a, const double *b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }

@@ -5,7 +5,7 @@
 #include <string.h>
 
 #include "braid_state.h"
-#include "cable_status.h"
+#include "cable/cable_status.h"
 
 /* Segments per chunk: large enough that chunk pairs are few, small enough
  * that the bounding spheres are tight. */

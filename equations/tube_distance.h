@@ -16,6 +16,7 @@
 #define CABLE_TUBE_DISTANCE_H
 
 #include "braid_geometry.h"
+#include "cable/cable_analysis.h"   /* tube_distance_result */
 
 typedef struct tube_polyline {
   int n;                        /* vertices, n >= 2 (n - 1 segments) */
@@ -58,23 +59,9 @@ int tube_polylines_distance(tube_workspace *w, int ncurve, const tube_polyline *
  * from distinct parts.  Consequence: for a braid without distant approaches
  * dmin is set by the window edge, about pi; overlap means dmin < 1. */
 #define TUBE_WINDOW_FACTOR 3.14159265358979323846
-/* Overlap intervals reported (the count of all is kept). */
-#define TUBE_MAX_INTERVALS 64
 /* Axis treated as closed when |c(L) - c(0)| <= this times its length. */
 #define TUBE_CLOSURE_TOL 1e-3
 
-typedef struct tube_distance_result {
-  double dmin;                  /* closest non-adjacent strand centrelines / Delta (tubes overlap if < 1) */
-  int strand_a, strand_b;       /* 1 or 2 */
-  double s_a, s_b;              /* braid positions (arclength s of strand 1) of that pair */
-  double axis_dmin;             /* closest non-adjacent points of the contact curve / Delta */
-  double axis_s_a, axis_s_b;
-  int noverlap;                 /* overlap intervals found (may exceed TUBE_MAX_INTERVALS) */
-  double overlap[TUBE_MAX_INTERVALS][2]; /* [s_lo, s_hi] where a strand tube overlaps another part */
-  double overlap_length;        /* total length in s of all intervals */
-  int closed;                   /* 1: the axis closes and positions are periodic */
-  double axis_kappa_max;        /* max curvature of the contact curve (solution variant; NAN otherwise) */
-} tube_distance_result;
 
 /* Uses braid_curves' samples (bc->n points; their spacing must be below
  * pi Delta).  Returns 0, CABLE_ERR_INPUT, CABLE_ERR_NONFINITE or CABLE_ERR_ALLOC. */

@@ -5,7 +5,7 @@
 #include <math.h>
 #include <stddef.h>
 
-#include "cable_status.h"
+#include "cable/cable_status.h"
 
 static int export_name_ok(const char *s)
 {

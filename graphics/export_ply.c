@@ -3,7 +3,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "cable_status.h"
+#include "cable/cable_status.h"
 #include "export_mesh.h"
 #include "graphics_file.h"
 
@@ -28,13 +28,13 @@ int export_ply_write(const render_tube *tubes, int ntube, const export_options *
     free(m);
     return st;
   }
-  graphics_file *gf = graphics_file_open(path);
+  cable_atomic_file *gf = cable_atomic_open(path, 0, NULL);
   if (gf == NULL) {
     export_meshes_free(m, ntube);
     free(m);
     return CABLE_ERR_IO;
   }
-  FILE *f = graphics_file_stream(gf);
+  FILE *f = cable_atomic_stream(gf);
   long nv = 0, nf = 0;
   for (int k = 0; k < ntube; k++) nv += m[k]->nv, nf += m[k]->ntri;
   fprintf(f, "ply\nformat ascii 1.0\ncomment cable: tubes around the strands' centrelines\n");
@@ -64,5 +64,5 @@ int export_ply_write(const render_tube *tubes, int ntube, const export_options *
   }
   export_meshes_free(m, ntube);
   free(m);
-  return graphics_file_commit(gf);
+  return cable_atomic_commit(gf, NULL);
 }

@@ -2,7 +2,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "cable_status.h"
+#include "cable/cable_status.h"
 #include "export_mesh.h"
 #include "graphics_file.h"
 
@@ -135,13 +135,13 @@ int export_vtp_write(const render_tube *tubes, int ntube, const render_profile *
     free(m);
     return st;
   }
-  graphics_file *gf = graphics_file_open(path);
+  cable_atomic_file *gf = cable_atomic_open(path, 0, NULL);
   if (gf == NULL) {
     export_meshes_free(m, ntube);
     free(m);
     return CABLE_ERR_IO;
   }
-  vtp_ctx c = {graphics_file_stream(gf), tubes, ntube, curves, ncurve, m};
+  vtp_ctx c = {cable_atomic_stream(gf), tubes, ntube, curves, ncurve, m};
   long npoints = 0, nsurf = 0, npolys = 0;
   for (int k = 0; k < ntube; k++) {
     nsurf += m[k]->nv;
@@ -164,5 +164,5 @@ int export_vtp_write(const render_tube *tubes, int ntube, const render_profile *
   fprintf(f, "    </Piece>\n  </PolyData>\n</VTKFile>\n");
   export_meshes_free(m, ntube);
   free(m);
-  return graphics_file_commit(gf);
+  return cable_atomic_commit(gf, NULL);
 }

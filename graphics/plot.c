@@ -9,8 +9,8 @@
 #include <cairo/cairo-svg.h>
 #include <cairo/cairo.h>
 
-#include "cable_output.h"
-#include "cable_status.h"
+#include "cable/cable_output.h"
+#include "cable/cable_status.h"
 #include "graphics_file.h"
 #include "graphics_text.h"
 #include "graphics_vec.h"
@@ -431,10 +431,10 @@ int plot_bifurcation_annotated(const plot_branch *branches, int nbranch,
   int w = opt->width > 0 ? opt->width : PLOT_DEFAULT_WIDTH;
   int h = opt->height > 0 ? opt->height : PLOT_DEFAULT_HEIGHT;
 
-  graphics_file *file = NULL;
+  cable_atomic_file *file = NULL;
   cairo_surface_t *s;
   if (opt->format == PLOT_FORMAT_SVG) {
-    if ((file = graphics_file_open(path)) == NULL) return CABLE_ERR_IO;
+    if ((file = cable_atomic_open(path, 0, NULL)) == NULL) return CABLE_ERR_IO;
     s = cairo_svg_surface_create_for_stream(graphics_file_cairo_write, file, w, h);
   } else {
     s = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, w, h);
@@ -451,8 +451,8 @@ int plot_bifurcation_annotated(const plot_branch *branches, int nbranch,
     cairo_surface_finish(s);  /* writes the rest of the document */
     if (st == CABLE_SUCCESS && cairo_surface_status(s) != CAIRO_STATUS_SUCCESS) st = CABLE_ERR_IO;
     cairo_surface_destroy(s);
-    if (st == CABLE_SUCCESS) st = graphics_file_commit(file);
-    else graphics_file_abort(file);
+    if (st == CABLE_SUCCESS) st = cable_atomic_commit(file, NULL);
+    else cable_atomic_abort(file);
     return st;
   }
   if (st == CABLE_SUCCESS) {

@@ -6,6 +6,8 @@
 #ifndef CABLE_PLOT_H
 #define CABLE_PLOT_H
 
+#include "cable/cable_pictures.h"   /* the public option types */
+
 typedef struct {
   const char *name;   /* legend entry; NULL -> "branch <index+1>" */
   int n;              /* number of points, >= 1 */
@@ -24,12 +26,6 @@ typedef struct {
   int format;         /* PLOT_FORMAT_PNG or PLOT_FORMAT_SVG */
 } plot_options;
 
-/* Extra marks at arbitrary data points, e.g. Fig. 12.2's "(a)".."(d)". */
-typedef struct {
-  double x, y;
-  const char *text;   /* NULL -> no text */
-  int filled;         /* 1: filled black circle, 0: open circle */
-} plot_annotation;
 
 #define PLOT_DEFAULT_WIDTH 640
 #define PLOT_DEFAULT_HEIGHT 480

@@ -4,7 +4,7 @@
 #include <math.h>
 #include <stdio.h>
 
-#include "cable_status.h"
+#include "cable/cable_status.h"
 
 /* A range narrower than this fraction of its magnitude cannot be resolved in
  * double precision tick labels (about 15 significant digits, less a margin

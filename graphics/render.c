@@ -8,7 +8,7 @@
 
 #include <cairo/cairo.h>
 
-#include "cable_status.h"
+#include "cable/cable_status.h"
 #include "graphics_file.h"
 #include "graphics_vec.h"
 #include "render_colormap.h"

@@ -6,6 +6,8 @@
 #ifndef CABLE_RENDER_H
 #define CABLE_RENDER_H
 
+#include "cable/cable_pictures.h"   /* the public option types */
+
 typedef struct {
   int n;                 /* centreline points, >= 2 */
   const double *xyz;     /* [3n] centreline */
@@ -34,24 +36,6 @@ typedef struct {
   double scale;          /* world length per unit of value */
 } render_profile;
 
-enum {
-  RENDER_COLORMAP_NONE = 0,       /* one colour per tube (render_tube.rgb) */
-  RENDER_COLORMAP_SEQUENTIAL = 1, /* viridis over [min, max] of the scalars */
-  RENDER_COLORMAP_DIVERGING = 2   /* blue-white-red over [-m, m], m = max |scalar| */
-};
-
-typedef struct {
-  int width, height;     /* pixels; <= 0 -> 600 */
-  double view_dir[3];    /* direction the camera looks along; zero -> the
-                            direction of least extent of the centreline points
-                            (the knot is seen "from above") */
-  double up[3];          /* picture's up direction; zero (or parallel to the
-                            view) -> world z, or world y when looking along z */
-  int colormap;          /* RENDER_COLORMAP_*: colour tubes that have a scalar
-                            and draw a colour bar on the right */
-  double thicken;        /* draw radius * thicken; <= 0 -> automatic: thin
-                            tubes are widened to RENDER_MIN_RADIUS_PX pixels */
-} render_options;
 
 #define RENDER_DEFAULT_SIZE 600
 /* A tube drawn narrower than this many pixels in radius breaks up into

@@ -5,7 +5,7 @@
 #include <gsl/gsl_eigen.h>
 #include <gsl/gsl_matrix.h>
 
-#include "cable_status.h"
+#include "cable/cable_status.h"
 #include "graphics_vec.h"
 #include "render.h"
 #include "render_colormap.h"

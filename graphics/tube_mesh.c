@@ -4,7 +4,7 @@
 #include <math.h>
 #include <stdlib.h>
 
-#include "cable_status.h"
+#include "cable/cable_status.h"
 #include "graphics_vec.h"
 
 /* A vector keeping less than this fraction of its length after removing its

@@ -40,9 +40,10 @@ CC=clang-14
 FLAGS=(-std=c11 -D_POSIX_C_SOURCE=200809L -g -O1 -fno-omit-frame-pointer
        -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined
        -Wall -Wextra -Werror -Wshadow -Wstrict-prototypes -Wmissing-prototypes -Wvla
-       -Icontinuation -Iauto_iface -Iequations)
-common=(auto_iface/cable_error.c continuation/cable_status.c)
-srcs_constants=(auto_iface/constants_parse.c auto_iface/names.c continuation/cable_constants.c)
+       -Iinclude -Icontinuation -Iauto_iface -Iequations)
+common=(continuation/cable_error.c continuation/cable_status.c)
+srcs_constants=(auto_iface/constants_parse.c auto_iface/names.c continuation/cable_constants.c
+                auto_iface/aufile_read.c continuation/cable_solution.c)
 srcs_script=(auto_iface/script_builtins.c auto_iface/script_eval.c auto_iface/script_format.c
              auto_iface/script_lex.c auto_iface/script_parse.c auto_iface/script_value.c)
 srcs_sfile=(auto_iface/aufile_read.c auto_iface/names.c continuation/cable_constants.c

@@ -12,15 +12,15 @@
 
 #include "bench_util.h"
 #include "abd_solver.h"
-#include "aufile.h"
+#include "cable/cable_aufile.h"
 #include "braid_problems.h"
 #include "braid_start.h"
-#include "cable_cont.h"
+#include "cable/cable_cont.h"
 #include "colloc_jac.h"
 #include "colloc_newton.h"
 #include "colloc_system.h"
-#include "constants_parse.h"
-#include "names.h"
+#include "cable/cable_constants.h"
+#include "cable/cable_names.h"
 
 #define REPEATS 3
 #define STEPS 10

@@ -16,7 +16,7 @@
 #include <time.h>
 
 #include "bench_util.h"
-#include "cable_constants.h"
+#include "cable/cable_constants.h"
 #include "engine_util.h"
 #include "test_problems.h"
 

@@ -18,11 +18,11 @@
 #include <time.h>
 
 #include "bench_util.h"
-#include "braid_analysis.h"
+#include "cable/cable_analysis.h"
 #include "braid_problems.h"
 #include "braid_start.h"
-#include "cable_cont.h"
-#include "constants_parse.h"
+#include "cable/cable_cont.h"
+#include "cable/cable_constants.h"
 #include "plot.h"
 
 /* Scene runs per grid point; the time is their median.  The whole grid then

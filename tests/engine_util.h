@@ -6,7 +6,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "cable_cont.h"
+#include "cable/cable_cont.h"
 
 #define MEMRUN_MAX 2000
 #define MEMRUN_NPAR 36

@@ -15,14 +15,14 @@
 #include <unistd.h>
 
 #include "atomic_file.h"
-#include "aufile.h"
-#include "cable_constants.h"
-#include "cable_cont.h"
-#include "constants_parse.h"
+#include "cable/cable_aufile.h"
+#include "cable/cable_constants.h"
+#include "cable/cable_cont.h"
+#include "cable/cable_constants.h"
 #include "test_problems.h"
-#include "cable_status.h"
+#include "cable/cable_status.h"
 #include "harness.h"
-#include "names.h"
+#include "cable/cable_names.h"
 
 #define OUTDIR "tests/tmp/aufiles"
 #define PI 3.14159265358979323846

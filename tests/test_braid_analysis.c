@@ -19,9 +19,9 @@
 
 #include <gsl/gsl_math.h>
 
-#include "braid_analysis.h"
+#include "cable/cable_analysis.h"
 #include "braid_problems.h"
-#include "braid_resolver.h"
+#include "replay_braid.h"
 #include "braid_start.h"
 #include "engine_util.h"
 #include "harness.h"

@@ -21,7 +21,7 @@
 
 #include "braid_geometry.h"
 #include "braid_state.h"
-#include "cable_status.h"
+#include "cable/cable_status.h"
 #include "harness.h"
 #include "ribbon.h"
 #include "tube_distance.h"

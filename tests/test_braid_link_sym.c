@@ -13,7 +13,7 @@
 #include "braid_bc.h"
 #include "braid_problems.h"
 #include "braid_start.h"
-#include "cable_constants.h"
+#include "cable/cable_constants.h"
 #include "colloc_jac.h"
 #include "colloc_newton.h"
 #include "colloc_system.h"

@@ -26,12 +26,12 @@
 
 #include <gsl/gsl_math.h>
 
-#include "aufile.h"
-#include "braid_analysis.h"
-#include "braid_resolver.h"
+#include "cable/cable_aufile.h"
+#include "cable/cable_analysis.h"
+#include "replay_braid.h"
 #include "braid_problems.h"
 #include "braid_start.h"
-#include "cable_cont.h"
+#include "cable/cable_cont.h"
 #include "harness.h"
 #include "ribbon.h"
 #include "script.h"

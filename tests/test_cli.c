@@ -16,9 +16,9 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include "aufile.h"
+#include "cable/cable_aufile.h"
 #include "harness.h"
-#include "names.h"
+#include "cable/cable_names.h"
 
 static char cable_bin[3 * PATH_MAX];   /* BUILD/cable, absolute */
 static char work[2 * PATH_MAX];        /* tests/tmp/cli.PID, absolute */

@@ -6,8 +6,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "cable_constants.h"
-#include "cable_status.h"
+#include "cable/cable_constants.h"
+#include "cable/cable_status.h"
 #include "colloc_basis.h"
 #include "colloc_jac.h"
 #include "colloc_system.h"
@@ -16,7 +16,7 @@
 
 static void test_basis(void)
 {
-  for (int nc = COLLOC_NCOL_MIN; nc <= COLLOC_NCOL_MAX; nc++) {
+  for (int nc = CABLE_NCOL_MIN; nc <= CABLE_NCOL_MAX; nc++) {
     colloc_basis b;
     test_int("basis init", colloc_basis_init(&b, nc), 0);
     double maxpu = 0, maxd = 0, sw = 0, swn = 0, gauss = 0, nodes = 0;

@@ -8,12 +8,12 @@
 #include <string.h>
 #include <sys/stat.h>
 
-#include "cable_constants.h"
-#include "cable_error.h"
-#include "cable_status.h"
-#include "constants_parse.h"
+#include "cable/cable_constants.h"
+#include "cable/cable_error.h"
+#include "cable/cable_status.h"
+#include "cable/cable_constants.h"
 #include "harness.h"
-#include "names.h"
+#include "cable/cable_names.h"
 
 #define CASEDIR "tests/tmp/constants"
 

@@ -17,7 +17,7 @@
 #include <math.h>
 #include <stdlib.h>
 
-#include "cable_constants.h"
+#include "cable/cable_constants.h"
 #include "colloc_basis.h"
 #include "engine_util.h"
 #include "harness.h"

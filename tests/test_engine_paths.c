@@ -17,7 +17,7 @@
 #include <malloc.h>
 #endif
 
-#include "cable_constants.h"
+#include "cable/cable_constants.h"
 #include "colloc_newton.h"
 #include "colloc_system.h"
 #include "engine_util.h"

@@ -1,9 +1,9 @@
 /* Foundation checks: status table, solution alloc/copy, error formatting. */
 #include <string.h>
 
-#include "cable_error.h"
-#include "cable_solution.h"
-#include "cable_status.h"
+#include "cable/cable_error.h"
+#include "cable/cable_solution.h"
+#include "cable/cable_status.h"
 #include "harness.h"
 
 int main(void)

@@ -12,9 +12,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "aufile.h"
-#include "cable_status.h"
-#include "constants_parse.h"
+#include "cable/cable_aufile.h"
+#include "cable/cable_status.h"
+#include "cable/cable_constants.h"
 #include "harness.h"
 #include "script.h"
 

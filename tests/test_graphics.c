@@ -12,7 +12,7 @@
 
 #include <cairo/cairo.h>
 
-#include "cable_status.h"
+#include "cable/cable_status.h"
 #include "export.h"
 #include "graphics_file.h"
 #include "graphics_text.h"
@@ -1064,8 +1064,8 @@ static void test_render_errors(void)
   test_int("render: defaults with opt NULL", render_tubes_png(&t, 1, NULL, 0, NULL, OUTDIR "/defaults.png"), CABLE_SUCCESS);
   check_png_header("render defaults", OUTDIR "/defaults.png", RENDER_DEFAULT_SIZE, RENDER_DEFAULT_SIZE);
   render_zbuf_free(NULL);
-  graphics_file_abort(NULL);
-  test_int("graphics_file: commit(NULL) is an I/O error", graphics_file_commit(NULL), CABLE_ERR_IO);
+  cable_atomic_abort(NULL);
+  test_int("atomic file: commit(NULL) is refused", cable_atomic_commit(NULL, NULL), CABLE_ERR_INPUT);
 }
 
 /* ------------------------------------------------------------- exports */

@@ -24,9 +24,9 @@
 #include <unistd.h>
 
 #include "axis_passages.h"
-#include "braid_resolver.h"
-#include "cable_error.h"
-#include "cable_status.h"
+#include "replay_braid.h"
+#include "cable/cable_error.h"
+#include "cable/cable_status.h"
 #include "harness.h"
 #include "test_files.h"
 #include "script.h"

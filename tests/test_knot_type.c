@@ -8,7 +8,7 @@
 #include <gsl/gsl_math.h>
 #include <gsl/gsl_rng.h>
 
-#include "cable_status.h"
+#include "cable/cable_status.h"
 #include "harness.h"
 #include "knot_type.h"
 

@@ -5,12 +5,12 @@
 #include <string.h>
 #include <sys/stat.h>
 
-#include "aufile.h"
+#include "cable/cable_aufile.h"
 #include "braid_problems.h"
 #include "braid_start.h"
-#include "cable_cont.h"
-#include "cable_pictures.h"
-#include "constants_parse.h"
+#include "cable/cable_cont.h"
+#include "cable/cable_pictures.h"
+#include "cable/cable_constants.h"
 #include "graphics_text.h"
 #include "harness.h"
 #include "test_problems.h"

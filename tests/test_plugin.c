@@ -17,16 +17,16 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "cable_cont.h"
-#include "cable_error.h"
-#include "cable_output.h"
-#include "cable_problem.h"
-#include "cable_solution.h"
-#include "cable_status.h"
-#include "constants_parse.h"
+#include "cable/cable_cont.h"
+#include "cable/cable_error.h"
+#include "cable/cable_output.h"
+#include "cable/cable_problem.h"
+#include "cable/cable_solution.h"
+#include "cable/cable_status.h"
+#include "cable/cable_constants.h"
 #include "harness.h"
-#include "names.h"
-#include "plugin_loader.h"
+#include "cable/cable_names.h"
+#include "cable/cable_plugin.h"
 
 /* Plug-ins live beside the tests of the same build: BUILD/tests/test_plugin
  * loads BUILD/plugins/NAME.so (build/release or build/asan). */
@@ -442,8 +442,8 @@ static void fold_diag(void *ctx, const char *line)
 }
 
 /* doc/plugins.md's build command, copied from the page and run as it stands
- * (in a scratch directory that mirrors the source tree's auto_iface,
- * continuation and tests/plugins), then the plug-in it builds run by the
+ * (in a scratch directory that mirrors the source tree's public headers,
+ * include/, and tests/plugins), then the plug-in it builds run by the
  * engine to Bratu's fold. */
 static void test_documented_build(void)
 {
@@ -461,9 +461,9 @@ static void test_documented_build(void)
   if (!getcwd(cwd, sizeof cwd)) cwd[0] = '\0';
   snprintf(dir, sizeof dir, "%s/tests/tmp/plugbuild.%ld", cwd, (long)getpid());
   snprintf(sh, sizeof sh,
-           "rm -rf '%s' && mkdir -p '%s/tests' && ln -s '%s/auto_iface' '%s/auto_iface' && "
-           "ln -s '%s/continuation' '%s/continuation' && ln -s '%s/tests/plugins' '%s/tests/plugins'",
-           dir, dir, cwd, dir, cwd, dir, cwd, dir);
+           "rm -rf '%s' && mkdir -p '%s/tests' && ln -s '%s/include' '%s/include' && "
+           "ln -s '%s/tests/plugins' '%s/tests/plugins'",
+           dir, dir, cwd, dir, cwd, dir);
   int rc = system(sh);
   test_int("scratch tree for the build", rc, 0);
   snprintf(sh, sizeof sh, "cd '%s' && %s", dir, cmd);

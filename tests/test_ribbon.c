@@ -13,7 +13,7 @@
 
 #include <gsl/gsl_math.h>
 
-#include "cable_status.h"
+#include "cable/cable_status.h"
 #include "harness.h"
 #include "ribbon.h"
 

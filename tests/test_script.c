@@ -13,10 +13,10 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "aufile.h"
-#include "cable_error.h"
-#include "cable_status.h"
-#include "braid_resolver.h"
+#include "cable/cable_aufile.h"
+#include "cable/cable_error.h"
+#include "cable/cable_status.h"
+#include "replay_braid.h"
 #include "harness.h"
 #include "test_files.h"
 #include "script.h"

@@ -26,12 +26,12 @@
 #include <time.h>
 #include <unistd.h>
 
-#include "aufile.h"
-#include "braid_analysis.h"
+#include "cable/cable_aufile.h"
+#include "cable/cable_analysis.h"
 #include "braid_problems.h"
 #include "braid_start.h"
-#include "cable_cont.h"
-#include "constants_parse.h"
+#include "cable/cable_cont.h"
+#include "cable/cable_constants.h"
 #include "harness.h"
 
 /* The goal for the first-integral drift on every accepted point. */

@@ -9,7 +9,7 @@
 #include <gsl/gsl_math.h>
 
 #include "braid_geometry.h"
-#include "cable_status.h"
+#include "cable/cable_status.h"
 #include "harness.h"
 #include "tube_distance.h"
 

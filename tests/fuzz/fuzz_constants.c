@@ -7,7 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "constants_parse.h"
+#include "cable/cable_constants.h"
 
 /* The braid problems' own parameter names, so that names in PAR={...},
  * ICP=[...] and UZR={...} resolve and the code behind resolution runs. */

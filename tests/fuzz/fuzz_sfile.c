@@ -10,7 +10,7 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "aufile.h"
+#include "cable/cable_aufile.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 

@@ -19,8 +19,8 @@
 #include <math.h>
 #include <stddef.h>
 
-#include "cable_problem.h"
-#include "cable_solution.h"
+#include "cable/cable_problem.h"
+#include "cable/cable_solution.h"
 
 /* FUNC: f(u, par).  ijac = 0 values only; 1 also dfdu; 2 also dfdp.  Arrays
  * are column-major: dfdu[i + ndim*j] = d f_i / d u_j. */

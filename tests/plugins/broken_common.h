@@ -3,7 +3,7 @@
 #ifndef CABLE_BROKEN_COMMON_H
 #define CABLE_BROKEN_COMMON_H
 
-#include "cable_problem.h"
+#include "cable/cable_problem.h"
 
 __attribute__((unused)) static int broken_func(int ndim, const double *u, const int *icp, const double *par, int ijac,
                        double *f, double *dfdu, double *dfdp, void *params)

@@ -4,6 +4,8 @@
 #ifndef CABLE_SOLUTION_H
 #define CABLE_SOLUTION_H
 
+#include "cable/cable_api.h"
+
 /* How the branch-point detector found a BP (cont_special.c): the
  * determinant changed sign (one singular value crossed zero: simple), or
  * sigma_1 dipped to zero without a sign change, with sigma_2 vanishing
@@ -19,8 +21,6 @@ typedef struct cable_solution {
   int itp;         /* AUTO type code (BP 6, LP 5, UZ -4, EP 9, MX -9; +10*k for regular) */
   int lab;         /* label */
   int isw;
-  int bp_kind;     /* a BP's kind as the detector found it (enum cable_bp_kind); 0: not a BP or
-                      unknown (the s-file does not store it) */
   double *t;       /* [ntst*ncol+1] in [0,1]; t[j*ncol] are the mesh points */
   double *u;       /* [(ntst*ncol+1)*ndim], u[k*ndim + i] = u_i(t[k]) */
   double *udot;    /* tangent, same layout; NULL when unknown */
@@ -34,13 +34,16 @@ typedef struct cable_solution {
    * means "unknown": PVLS then computes everything. */
   const int *pvls_icp;
   int pvls_nicp;
+  /* last, so that the fields above keep their offsets for plug-ins built before it */
+  int bp_kind;     /* a BP's kind as the detector found it (enum cable_bp_kind); 0: not a BP or
+                      unknown (the s-file does not store it) */
 } cable_solution;
 
 /* Every field zeroed except the sizes; arrays allocated; NULL on failure. */
-cable_solution *cable_solution_alloc(int ndim, int ntst, int ncol, int npar, int nfpr);
-void cable_solution_free(cable_solution *s);            /* NULL is a no-op */
-int cable_solution_copy(cable_solution *dst, const cable_solution *src); /* same sizes */
-cable_solution *cable_solution_clone(const cable_solution *src);
+CABLE_API cable_solution *cable_solution_alloc(int ndim, int ntst, int ncol, int npar, int nfpr);
+CABLE_API void cable_solution_free(cable_solution *s);            /* NULL is a no-op */
+CABLE_API int cable_solution_copy(cable_solution *dst, const cable_solution *src); /* same sizes */
+CABLE_API cable_solution *cable_solution_clone(const cable_solution *src);
 
 /* Number of stored points, ntst*ncol + 1. */
 static inline int cable_solution_npts(const cable_solution *s) { return s->ntst * s->ncol + 1; }

@@ -5,7 +5,7 @@
 
 #include "braid_problems.h"
 #include "braid_start.h"
-#include "cable_status.h"
+#include "cable/cable_status.h"
 
 typedef struct {
   cable_problem pb;          /* first member: the pointer handed out is the owner */
@@ -22,10 +22,9 @@ static int override(const cable_constants *c, int index, double *value)
   return 0;
 }
 
-static int braid_find(void *ctx, const char *name, const cable_constants *c, int from_stpnt,
-                      const cable_problem **pb, cable_error *err)
+int braid_problem_prepare(const char *name, const cable_constants *c, int from_stpnt, const cable_problem **pb,
+                          cable_error *err)
 {
-  (void)ctx;
   int knot = strcmp(name, "braid_knot") == 0 || strcmp(name, "braid_knot_sym") == 0;
   int link = strcmp(name, "braid_link") == 0;
   if ((!knot && !link) || !c || !from_stpnt) return CABLE_ERR_NOTFOUND;
@@ -75,12 +74,7 @@ static int braid_find(void *ctx, const char *name, const cable_constants *c, int
   return CABLE_SUCCESS;
 }
 
-static void braid_release(void *ctx, const cable_problem *pb)
+void braid_problem_release(const cable_problem *pb)
 {
-  (void)ctx;
   free((void *)pb); /* pb is the first member of the braid_instance we allocated */
 }
-
-static const cable_replay_problems resolver = {NULL, braid_find, braid_release};
-
-const cable_replay_problems *cable_braid_resolver(void) { return &resolver; }

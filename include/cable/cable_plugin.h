@@ -14,8 +14,10 @@
 #ifndef CABLE_PLUGIN_LOADER_H
 #define CABLE_PLUGIN_LOADER_H
 
-#include "cable_error.h"
-#include "cable_problem.h"
+#include "cable/cable_api.h"
+
+#include "cable/cable_error.h"
+#include "cable/cable_problem.h"
 
 typedef struct cable_plugin cable_plugin;
 
@@ -25,21 +27,21 @@ typedef struct cable_plugin cable_plugin;
  * *pb points into the module and stays valid until cable_plugin_close.  On
  * failure returns NULL, *pb = NULL, err: CABLE_ERR_IO (missing or unreadable
  * file), CABLE_ERR_PLUGIN (the module was rejected) or CABLE_ERR_ALLOC. */
-cable_plugin *cable_plugin_open(const char *path, const cable_problem **pb, cable_error *err);
+CABLE_API cable_plugin *cable_plugin_open(const char *path, const cable_problem **pb, cable_error *err);
 /* The same with the NPAR the run uses (the problem's npar must not exceed it). */
-cable_plugin *cable_plugin_open_npar(const char *path, int npar_max, const cable_problem **pb,
+CABLE_API cable_plugin *cable_plugin_open_npar(const char *path, int npar_max, const cable_problem **pb,
                                      cable_error *err);
 /* Unloads the module: every pointer obtained from it becomes invalid.
  * NULL is a no-op. */
-void cable_plugin_close(cable_plugin *p);
+CABLE_API void cable_plugin_close(cable_plugin *p);
 
-const cable_problem *cable_plugin_problem(const cable_plugin *p);
-const char *cable_plugin_path(const cable_plugin *p);
+CABLE_API const cable_problem *cable_plugin_problem(const cable_plugin *p);
+CABLE_API const char *cable_plugin_path(const cable_plugin *p);
 
 /* The checks the loader applies, for built-in problems too.  origin names
  * the problem's source in messages (a file name or "built-in").  Returns 0 or
  * CABLE_ERR_PLUGIN with err->key the offending field. */
-int cable_problem_validate(const cable_problem *pb, int npar_max, const char *origin,
+CABLE_API int cable_problem_validate(const cable_problem *pb, int npar_max, const char *origin,
                            cable_error *err);
 
 #endif

@@ -22,6 +22,8 @@
 #ifndef CABLE_PROBLEM_H
 #define CABLE_PROBLEM_H
 
+#include "cable/cable_api.h"
+
 #include <stddef.h>
 
 #define CABLE_PROBLEM_ABI 1        /* bump when the struct layout changes */
@@ -71,5 +73,13 @@ typedef struct cable_problem {
 
 /* A plug-in exports `const cable_problem *cable_problem_entry(void);`. */
 typedef const cable_problem *cable_problem_entry_fn(void);
+
+/* The built-in problems: the engine's test problems (bratu, bratu_int,
+ * elastica, layer, stiff) and the braid templates (braid_knot,
+ * braid_knot_sym, braid_link, braid_link_sym; their params are NULL, which
+ * serves restarts from stored solutions).  NULL for an unknown name. */
+CABLE_API const cable_problem *cable_problem_builtin(const char *name);
+/* The i-th built-in problem's name (0-based), NULL past the last. */
+CABLE_API const char *cable_problem_builtin_name(int i);
 
 #endif

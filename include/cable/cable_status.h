@@ -3,6 +3,8 @@
 #ifndef CABLE_STATUS_H
 #define CABLE_STATUS_H
 
+#include "cable/cable_api.h"
+
 #define CABLE_STATUS_TABLE(X) \
   X(CABLE_SUCCESS,          0, "success") \
   X(CABLE_END_NMX,          1, "NMX points computed") \
@@ -32,8 +34,8 @@ enum cable_status {
 };
 
 /* Message for a status code; never NULL. */
-const char *cable_status_message(int status);
+CABLE_API const char *cable_status_message(int status);
 /* Symbolic name ("CABLE_ERR_DSMIN"); never NULL. */
-const char *cable_status_name(int status);
+CABLE_API const char *cable_status_name(int status);
 
 #endif

@@ -4,7 +4,9 @@
 #ifndef CABLE_OUTPUT_H
 #define CABLE_OUTPUT_H
 
-#include "cable_solution.h"
+#include "cable/cable_api.h"
+
+#include "cable/cable_solution.h"
 
 /* AUTO's type codes for boundary-value problems. */
 enum cable_point_type {

@@ -14,7 +14,7 @@
 
 #include <stdio.h>
 
-#include "cable_error.h"
+#include "cable/cable_error.h"
 
 typedef struct cable_atomic_file cable_atomic_file;
 

@@ -4,6 +4,8 @@
 #ifndef CABLE_ERROR_H
 #define CABLE_ERROR_H
 
+#include "cable/cable_api.h"
+
 #include <stddef.h>
 
 typedef struct cable_error {
@@ -14,11 +16,11 @@ typedef struct cable_error {
   char msg[512];
 } cable_error;
 
-void cable_error_clear(cable_error *e);
+CABLE_API void cable_error_clear(cable_error *e);
 /* Fill e (when not NULL) and return status. */
-int cable_error_set(cable_error *e, int status, const char *file, int line, const char *key,
+CABLE_API int cable_error_set(cable_error *e, int status, const char *file, int line, const char *key,
                     const char *fmt, ...) __attribute__((format(printf, 6, 7)));
 /* "file:line: key: msg" (parts omitted when empty) into buf. */
-const char *cable_error_format(const cable_error *e, char *buf, size_t len);
+CABLE_API const char *cable_error_format(const cable_error *e, char *buf, size_t len);
 
 #endif

@@ -12,7 +12,7 @@
 #ifndef CABLE_TEST_PROBLEMS_H
 #define CABLE_TEST_PROBLEMS_H
 
-#include "cable_problem.h"
+#include "cable/cable_problem.h"
 
 const cable_problem *cable_testproblem_bratu(void);
 const cable_problem *cable_testproblem_bratu_int(void);

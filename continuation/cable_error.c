@@ -1,4 +1,4 @@
-#include "cable_error.h"
+#include "cable/cable_error.h"
 
 #include <stdarg.h>
 #include <stdio.h>

@@ -6,9 +6,59 @@
 #ifndef CABLE_BRAID_ANALYSIS_H
 #define CABLE_BRAID_ANALYSIS_H
 
-#include "braid_geometry.h"
-#include "cable_solution.h"
-#include "tube_distance.h"
+#include "cable/cable_api.h"
+#include "cable/cable_solution.h"
+
+/* Knot type of a closed curve (the braid axis), from its Alexander polynomial
+ * and signature (equations/knot_type.c). */
+#define KNOT_TYPE_NAME_MAX 32
+#define KNOT_TYPE_MAX_DEGREE 100
+typedef struct knot_type_result {
+  char name[KNOT_TYPE_NAME_MAX]; /* "unknot", "trefoil", "figure-eight", "torus(5,2)", ..., "unknown" */
+  int torus_p, torus_q;          /* p > q >= 2 for a torus knot, else 0 */
+  int handedness;                /* +1 right, -1 left, 0 amphichiral or unknown */
+  int crossing_number;           /* of the identified type; -1 when unknown */
+  int signature;                 /* knot signature, sigma(right-handed trefoil) = -2 */
+  long determinant;              /* |Delta(-1)| */
+  int alex_degree;
+  long alex[KNOT_TYPE_MAX_DEGREE + 1]; /* Delta(t) = sum_i alex[i] t^i */
+  int ncross;                    /* crossings of the projection used */
+  int diagram_writhe;            /* sum of the crossing signs of that projection */
+  double dir[3];                 /* projection direction (viewer on the +dir side) */
+  int nagree;                    /* projections that gave identical invariants */
+} knot_type_result;
+
+/* Topology of a braid solution: the ribbon numbers and the knot type of the
+ * braid axis (the companion knot of a cable knot or link). */
+typedef struct braid_topology {
+  double lk, tw, wr;            /* Lk = Tw + Wr of the contact-curve ribbon (ribbon.h) */
+  double wr_err;                /* error estimate of Wr (braid_ribbon.wr_err) */
+  int resolved;                 /* 1: wr_err <= BRAID_RIBBON_WR_TOL; 0: Lk is not trustworthy */
+  int closure;                  /* -1 knot (d1(L) = -d1(0)), +1 link (d1(L) = d1(0)), 0 neither */
+  double lk_defect;             /* distance of lk from the nearest half-odd integer (knot) or integer (link) */
+  knot_type_result axis;        /* knot type of the contact curve */
+  /* lk minus the writhe of the companion's minimal diagram, handedness x
+   * crossing number for torus knots, 0 for the unknot and figure-eight: the
+   * paper's "linking number" of a cable knot inside the companion's tube
+   * (5.5, 6.5, 7.5, 8.5 for Figs. 12.3-12.6); NAN when the axis type is unknown. */
+  double lk_in_tube;
+} braid_topology;
+
+/* Overlap intervals reported (the count of all is kept). */
+#define TUBE_MAX_INTERVALS 64
+typedef struct tube_distance_result {
+  double dmin;                  /* closest non-adjacent strand centrelines / Delta (tubes overlap if < 1) */
+  int strand_a, strand_b;       /* 1 or 2 */
+  double s_a, s_b;              /* braid positions (arclength s of strand 1) of that pair */
+  double axis_dmin;             /* closest non-adjacent points of the contact curve / Delta */
+  double axis_s_a, axis_s_b;
+  int noverlap;                 /* overlap intervals found (may exceed TUBE_MAX_INTERVALS) */
+  double overlap[TUBE_MAX_INTERVALS][2]; /* [s_lo, s_hi] where a strand tube overlaps another part */
+  double overlap_length;        /* total length in s of all intervals */
+  int closed;                   /* 1: the axis closes and positions are periodic */
+  double axis_kappa_max;        /* max curvature of the contact curve (solution variant; NAN otherwise) */
+} tube_distance_result;
+
 
 /* Sign changes of one strand's contact pressure stored; the count of all is
  * kept.  The paper's cable links have 12-20 (doc/links.md).  Node values can
@@ -46,24 +96,24 @@ typedef struct braid_analysis {
 /* Max relative spread of the first integrals |F|^2, F.M, h and the
  * Hamiltonian over the solution's mesh points (cheap: no geometry); negative
  * when the solution is not a braid solution. */
-double braid_first_integral_drift(const cable_solution *sol);
+CABLE_API double braid_first_integral_drift(const cable_solution *sol);
 
 /* Contact pressures p1, p2 (braid_pressure.h) of the solution's
  * piecewise-polynomial interpolant at t in [0, 1], and sigma there.  0, or
  * CABLE_ERR_NONFINITE at a singular state. */
-int braid_pressure_at(const cable_solution *sol, double t, double *p1, double *p2, double *sigma);
+CABLE_API int braid_pressure_at(const cable_solution *sol, double t, double *p1, double *p2, double *sigma);
 
 /* Where p1 and p2 change sign (out->psign1, out->psign2) and their ranges:
  * node values are scanned for sign changes (p >= 0 counts as non-negative);
  * each one is refined by bisection on braid_pressure_at.  Two sign changes
  * between neighbouring nodes are not seen.  Part of braid_analysis_compute. */
-int braid_pressure_signs(const cable_solution *sol, braid_analysis *out);
+CABLE_API int braid_pressure_signs(const cable_solution *sol, braid_analysis *out);
 
 /* 0, or a cable_status (< 0) when the solution is not a closed braid. */
-int braid_analysis_compute(const cable_solution *sol, braid_analysis *out);
+CABLE_API int braid_analysis_compute(const cable_solution *sol, braid_analysis *out);
 
 /* 1 when the two braid axes have the same knot type (name and handedness). */
-int braid_axis_same_type(const braid_analysis *a, const braid_analysis *b);
+CABLE_API int braid_axis_same_type(const braid_analysis *a, const braid_analysis *b);
 
 /* The knot type a branch settles into, decided from the branch alone: a[i]
  * are the analyses of its labelled solutions in branch order (NULL: not
@@ -72,6 +122,6 @@ int braid_axis_same_type(const braid_analysis *a, const braid_analysis *b);
  * the end of the branch that all have it, and starts at *first (-1 when no
  * solution was analysed).  Returns the index of the stretch's first solution
  * whose tubes do not overlap (tube.dmin > 1), or -1 when it has none. */
-int braid_branch_settled(const braid_analysis *const *a, int n, int *first);
+CABLE_API int braid_branch_settled(const braid_analysis *const *a, int n, int *first);
 
 #endif

@@ -7,7 +7,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "cable_status.h"
+#include "cable/cable_status.h"
 
 #define NEW_FILE_MODE 0644   /* a new output file: rw-r--r--, like AUTO's fort.7 under umask 022 */
 #define COPY_CHUNK 65536

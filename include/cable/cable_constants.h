@@ -1,0 +1,133 @@
+/* AUTO-07p constants, as the engine consumes them.  Field names follow AUTO's
+ * keywords; defaults (cable_constants_init) are AUTO-07p's unless noted in
+ * doc/constants.md.  Parameter indices in icp/uzr/thl are 0-based here
+ * (AUTO's PAR(k) is index k-1); the constants-file parser converts. */
+#ifndef CABLE_CONSTANTS_H
+#define CABLE_CONSTANTS_H
+
+#include "cable/cable_api.h"
+#include "cable/cable_error.h"
+#include "cable/cable_names.h"
+
+#define CABLE_MAX_ICP 64
+#define CABLE_MAX_UZR 128
+#define CABLE_MAX_THL 64
+#define CABLE_NAME_MAX 256
+/* NCOL: collocation points per mesh interval (AUTO allows the same range). */
+#define CABLE_NCOL_MIN 2
+#define CABLE_NCOL_MAX 7
+
+typedef struct {
+  int par;          /* 0-based parameter index (or -1: unused) */
+  double value;
+  int stop;         /* 1: UZSTOP, end the branch here */
+} cable_uzr;
+
+typedef struct {
+  int index;        /* 0-based parameter index */
+  double weight;
+} cable_thl;
+
+typedef struct {
+  int index;        /* 0-based parameter index */
+  double value;
+} cable_parval;
+
+typedef enum { CABLE_LINSOLVER_CONDENSE = 0, CABLE_LINSOLVER_KLU = 1 } cable_linsolver;
+
+typedef struct cable_constants {
+  /* problem */
+  int ndim, ips, nbc, nint, npar;
+  int icp[CABLE_MAX_ICP];  int nicp;      /* free + printed parameters */
+  /* discretisation */
+  int ntst, ncol, iad;
+  /* start and switching */
+  int irs;                                /* 0: STPNT; >0 label; <0: -n-th solution */
+  char irs_name[16];                      /* 'BP1', 'UZ2' ... ("" when numeric) */
+  int isw, isp, ilp;
+  /* limits */
+  int nmx, npr, iplt;
+  double rl0, rl1, a0, a1;
+  /* step control */
+  double ds, dsmin, dsmax;
+  int iads;
+  /* Newton */
+  double epsl, epsu, epss;
+  int itmx, itnw, nwtn, jac;
+  /* weights */
+  cable_thl thl[CABLE_MAX_THL]; int nthl;
+  double thu_default;                     /* cable: one weight for all u (AUTO THU) */
+  /* user zeros */
+  cable_uzr uzr[CABLE_MAX_UZR]; int nuzr;
+  /* starting parameter values overriding STPNT / the restart (AUTO-07p's PAR={...}) */
+  cable_parval par_override[CABLE_MAX_THL]; int npar_override;
+  /* output control */
+  int iid, iis;
+  /* cable extensions (documented in doc/constants.md) */
+  cable_linsolver linsolver;              /* LINSOLVER = condense | klu */
+  int nsv;                                /* NSV: singular values tracked for BP test (0: off) */
+  int bpsym;                              /* BPDIR: kernel vector index for 2-d kernels */
+  double bpangle;                         /* BPANGLE: direction in a 2-d kernel, degrees from
+                                             the canonical e1 towards e2 (NAN: use BPDIR) */
+  int torus_p;                            /* TORUS: braid start, (p,2) torus knot (odd p) or
+                                             link (even p); 0: the two-ring start */
+  int hand;                               /* HAND: +1 right-handed, -1 left-handed */
+  /* names */
+  char e[CABLE_NAME_MAX], s[CABLE_NAME_MAX], sv[CABLE_NAME_MAX], dat[CABLE_NAME_MAX];
+  int stop_on[8]; int nstop;              /* STOP=['BP1'...] parsed by type code and count */
+  int stop_count[8];
+} cable_constants;
+
+/* AUTO-07p defaults. */
+CABLE_API void cable_constants_init(cable_constants *c);
+
+/* ---------------------------------------------------------------- constants files
+ * AUTO-07p constants files (c.NAME) and KEY=VALUE overrides.
+ *
+ * Syntax (AUTO-07p's keyword form): `KEY = value`, one or more statements per
+ * line separated by commas (or `;`), `#` and `!` start comments, values are
+ * integers, reals (1e-7, Fortran 1.0d-7), quoted strings, lists [1, 'T'] and
+ * dicts {'T': [1.0, 2.0], 11: 0.5}; lists and dicts may span lines.
+ * Parameters may be given by AUTO index (1-based, as in AUTO) or by name;
+ * names are resolved through the file's `parnames` (they win) and then the
+ * caller's table parnames[0..npar-1] (0-based: parnames[k] names PAR(k+1)).
+ * The result holds 0-based indices (above).
+ * Every key, its default and its AUTO difference: doc/constants.md.
+ *
+ * Errors: one message naming file, line and key (cable/cable_error.h)
+ * and a negative cable_status:
+ *   CABLE_ERR_IO           the file cannot be read
+ *   CABLE_ERR_PARSE        syntax (missing '=', unterminated string or list ...)
+ *   CABLE_ERR_INPUT        unknown key, duplicate key, wrong type, out of range
+ *   CABLE_ERR_NONFINITE    NaN or Inf where a finite number is needed
+ *   CABLE_ERR_NOTFOUND     unknown parameter or component name
+ *   CABLE_ERR_UNSUPPORTED  an AUTO key or value cable does not support
+ * On error *c and *names are left unchanged. */
+/* Read a constants file: *c is reset to the defaults (cable_constants_init)
+ * and *names cleared, then the file's keys are applied (AUTO's semantics of
+ * loading a c. file).  names may be NULL when the caller does not need the
+ * file's parnames/unames afterwards. */
+CABLE_API int cable_constants_parse_file(const char *path, cable_constants *c, cable_names *names,
+                               const char *const *parnames, int npar, cable_error *err);
+
+/* The same for text already in memory; `name` stands for the file in messages. */
+CABLE_API int cable_constants_parse_string(const char *name, const char *text, cable_constants *c,
+                                 cable_names *names, const char *const *parnames, int npar,
+                                 cable_error *err);
+
+/* Merge `KEY=VALUE` (e.g. from `cable run DS=-0.01` or a script keyword) into
+ * an already filled *c: the key's old value is replaced (UZR replaces the user
+ * zeros, UZSTOP the stopping ones); DS='-' reverses the current DS.  Several
+ * statements separated by commas are accepted; a key may appear once. */
+CABLE_API int cable_constants_parse_override(const char *keyvalue, cable_constants *c, cable_names *names,
+                                   const char *const *parnames, int npar, cable_error *err);
+
+/* NDIM, NBC and NINT left at 0 ("take them from the problem") get the
+ * problem's values; the run driver calls this before the engine and the
+ * output writer (whose header and free-parameter count need them). */
+CABLE_API void cable_constants_take_problem_dims(cable_constants *c, int ndim, int nbc, int nint);
+
+/* 1 when `key` is a key cable accepts (case-sensitive, as in AUTO). */
+CABLE_API int cable_constants_key_known(const char *key);
+
+#endif
