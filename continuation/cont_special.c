@@ -25,7 +25,6 @@
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
-#include <stdlib.h>
 
 #include "cont_impl.h"
 
@@ -179,7 +178,6 @@ static int locate(cable_cont *cc, int type, int which, double seed, int plain)
       if (rc == CABLE_SUCCESS) rc = cont_tangent(cc, xs, cc->xdot, xds, &ts);
       /* a zero pivot at sfail: it is the branch point to working precision */
       nudged = singular && rc == CABLE_SUCCESS && off == 0.5 * tol;
-      if (getenv("CABLE_DBG")) fprintf(stderr, "DBG retry s=%.12g rc=%d\n", s, rc);
     }
     if (rc != CABLE_SUCCESS && type == CABLE_TY_BP && rc != CABLE_ERR_CALLBACK && rc != CABLE_ERR_ALLOC &&
         fmax(fabs(g0), fabs(g1)) < CONT_SV_ZERO_REL * gstep) {
@@ -200,13 +198,16 @@ static int locate(cable_cont *cc, int type, int which, double seed, int plain)
       }
     }
     if (rc != CABLE_SUCCESS) {
-      cont_set_error(cc, "could not locate the %s: %s at arclength %.10g of the step (%s)", what,
-                     rc == CABLE_ERR_LINSOLVE ? "the extended Jacobian is singular" : "the corrector failed", s,
+      cont_set_error(cc,
+                     "could not locate the %s in the bracket [%.10g, %.10g] of arclength from the last point "
+                     "(test function %.3e, %.3e at its ends, %.3e at the step's ends): %s at %.10g and at every "
+                     "point tried towards the bracket's far end (%s)",
+                     what, lo, hi, s0 < s1 ? g0 : g1, s0 < s1 ? g1 : g0, gstep,
+                     rc == CABLE_ERR_LINSOLVE ? "the extended Jacobian is singular" : "the corrector failed", sfail,
                      cc->rejected[0] ? cc->rejected : colloc_newton_message(cc->nw));
       return rc;
     }
     double f = test_value(&ts, type, which);
-    if (getenv("CABLE_DBG")) fprintf(stderr, "DBG locate plain=%d it=%d s=%.12g [%.12g %.12g] f=%.6e sv1=%.3e sv2=%.3e det=%d g0=%.3e g1=%.3e\n", plain, it, s, s0, s1, f, ts.sv1, ts.sv2, ts.det_sign, g0, g1);
     /* the bracket this iterate leaves, and whether it is within tolerance */
     double width = (f > 0) == (f1 > 0) ? fabs(s - s0) : fabs(s1 - s);
     int done = nudged || fabs(s - sprev) <= tol || f == 0.0 || width <= tol;
@@ -252,7 +253,9 @@ static int locate(cable_cont *cc, int type, int which, double seed, int plain)
       side = -1;
     }
   }
-  cont_set_error(cc, "could not locate the %s within ITMX=%d iterations", what, cc->c.itmx);
+  cont_set_error(cc, "could not locate the %s within ITMX=%d iterations: bracket [%.10g, %.10g] of arclength from the "
+                 "last point, test function %.3e, %.3e at its ends", what, cc->c.itmx, fmin(s0, s1), fmax(s0, s1),
+                 s0 < s1 ? g0 : g1, s0 < s1 ? g1 : g0);
   return CABLE_ERR_NEWTON;
 }
 
