@@ -269,11 +269,11 @@ int cont_locate(cable_cont *cc, int type, int which, double seed)
   int rc = locate(cc, type, which, seed, 0);
   if (rc == CABLE_SUCCESS || rc == CABLE_ERR_CALLBACK) return rc;
   char first[230]; /* both messages fit in cc->err */
-  snprintf(first, sizeof first, "%s", cc->err);
+  snprintf(first, sizeof first, "%.229s", cc->err);
   rc = locate(cc, type, which, (double)NAN, 1);
   if (rc != CABLE_SUCCESS && rc != CABLE_ERR_CALLBACK) {
     char second[260];
-    snprintf(second, sizeof second, "%s", cc->err);
+    snprintf(second, sizeof second, "%.259s", cc->err);
     cont_set_error(cc, "%s; regula falsi: %s", first, second);
   }
   return rc;
