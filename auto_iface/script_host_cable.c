@@ -37,7 +37,8 @@ static int file_exists(const char *path)
 
 typedef struct rp_problem {
   const cable_problem *pb;
-  int user;   /* from opt.problems: released after use */
+  int user;     /* from opt.problems: released after use */
+  int autoeq;   /* from an AUTO equation file: dimensions from the constants */
 } rp_problem;
 
 static void problem_release(cable_replay *r, rp_problem *p)
@@ -73,12 +74,44 @@ static int plugin_problem(cable_replay *r, const char *e, const cable_problem **
   return 0;
 }
 
+/* A file named in the constants (dat=), relative to the run directory. */
+static void rp_path_plain(const cable_replay *r, const char *name, char *buf, size_t len)
+{
+  const char *dir = r->opt.dir && r->opt.dir[0] ? r->opt.dir : NULL;
+  snprintf(buf, len, "%s%s%s", dir && name[0] != '/' ? dir : "", dir && name[0] != '/' ? "/" : "", name);
+}
+
+/* An AUTO equation file for e=NAME (NAME.f90, NAME.f or NAME.c in the run
+ * directory), built and loaded once per session; its problem takes NDIM,
+ * NBC, NINT and NPAR from c (c NULL: a problem good for names only). */
+static int autoeq_problem(cable_replay *r, const char *e, const cable_constants *c, const cable_problem **pb,
+                          cable_error *err)
+{
+  cable_autoeq *m = NULL;
+  for (int i = 0; i < r->nautoeq && !m; i++)
+    if (strcmp(r->autoeq_name[i], e) == 0) m = r->autoeq[i];
+  if (!m) {
+    char src[1024];
+    if (cable_autoeq_find(r->opt.dir, e, src, sizeof src) != 0) return CABLE_ERR_NOTFOUND;
+    if (r->nautoeq == RP_MAX_PLUGINS)
+      return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, e, "more than %d equation files in one session", RP_MAX_PLUGINS);
+    if (!(m = cable_autoeq_open(src, err))) return err && err->status ? err->status : CABLE_ERR_PLUGIN;
+    if (cable_autoeq_was_built(m)) fprintf(rp_log(r), "built %s (module %s)\n", src, cable_autoeq_module(m));
+    snprintf(r->autoeq_name[r->nautoeq], sizeof r->autoeq_name[0], "%s", e);
+    r->autoeq[r->nautoeq++] = m;
+  }
+  char dat[1024] = "";
+  if (c && c->dat[0]) rp_path_plain(r, c->dat, dat, sizeof dat);
+  return cable_autoeq_problem(m, c, dat, pb, err);
+}
+
 /* The problem for e=NAME.  c NULL: only its names are needed. */
 static int find_problem(cable_replay *r, const char *e, const cable_constants *c, int from_stpnt,
                         rp_problem *out, cable_error *err)
 {
   out->pb = NULL;
   out->user = 0;
+  out->autoeq = 0;
   if (!e[0])
     return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, "e", "no problem given (e='NAME' in the call or the constants file)");
   const cable_replay_problems *up = r->opt.problems;
@@ -89,6 +122,12 @@ static int find_problem(cable_replay *r, const char *e, const cable_constants *c
       return 0;
     }
     if (rc != CABLE_ERR_NOTFOUND) return rc;
+  }
+  /* an AUTO user's own equation file wins over cable's test problems */
+  int rc_ae = autoeq_problem(r, e, c, &out->pb, err);
+  if (rc_ae != CABLE_ERR_NOTFOUND) {
+    out->autoeq = rc_ae == 0;
+    return rc_ae;
   }
   const cable_problem *braid = braid_problem_find(e), *builtin = cable_problem_builtin(e);
   if (builtin && !braid) {   /* the engine's test problems */
@@ -107,7 +146,8 @@ static int find_problem(cable_replay *r, const char *e, const cable_constants *c
   int rc = plugin_problem(r, e, &out->pb, err);
   if (rc == CABLE_ERR_NOTFOUND)
     return cable_error_set(err, CABLE_ERR_NOTFOUND, NULL, 0, "e",
-                           "unknown problem '%s' (not a built-in problem, and no %s.so plug-in)", e, e);
+                           "unknown problem '%s' (not a built-in problem, no equation file %s.f90, %s.f or %s.c and "
+                           "no %s.so plug-in)", e, e, e, e, e);
   return rc;
 }
 
@@ -528,6 +568,28 @@ static int engine_run(cable_replay *r, rp_setup *s, rp_branch **out, cable_error
   int rc = find_problem(r, s->e, &s->c, s->start == NULL, &prob, err);
   if (rc) return rc;
   const cable_problem *pb = prob.pb;
+  if (!prob.autoeq) {
+    /* a built-in or plug-in problem's dimensions are its own: a constants
+       value that says otherwise is an error at its line, never ignored */
+    const struct {
+      const char *key;
+      int value, want;
+      const cable_key_origin *o;
+    } dims[] = {{"NDIM", s->c.ndim, pb->ndim, &s->c.origin_ndim},
+                {"NBC", s->c.nbc, pb->nbc, &s->c.origin_nbc},
+                {"NINT", s->c.nint, pb->nint, &s->c.origin_nint}};
+    for (size_t k = 0; k < sizeof dims / sizeof dims[0]; k++)
+      if ((dims[k].o->file[0] || dims[k].o->line) && dims[k].value != dims[k].want) {
+        cable_error_set(err, CABLE_ERR_INPUT, dims[k].o->file, dims[k].o->line, dims[k].key,
+                        "%s=%d contradicts problem '%s', which has %s=%d (the problem fixes it: remove the "
+                        "line, or write the equations as an AUTO file NAME.f90 or NAME.c)",
+                        dims[k].key, dims[k].value, pb->name, dims[k].key, dims[k].want);
+        problem_release(r, &prob);
+        return CABLE_ERR_INPUT;
+      }
+  }
+  if (s->c.ignored[0])
+    fprintf(rp_log(r), "  note: accepted and ignored, as AUTO does for boundary-value problems: %s\n", s->c.ignored);
   cable_names_fill(&s->names, pb->parnames, pb->npar, pb->unames, pb->ndim);
   int st = 0;
   cable_cont *cc = cable_cont_alloc(pb, &s->c, &st);
@@ -970,6 +1032,7 @@ void cable_replay_free(cable_replay *r)
 {
   if (!r) return;
   for (int i = 0; i < r->nplugins; i++) cable_plugin_close(r->plugin[i]);
+  for (int i = 0; i < r->nautoeq; i++) cable_autoeq_close(r->autoeq[i]);
   free(r);
 }
 

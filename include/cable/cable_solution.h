@@ -34,6 +34,8 @@ typedef struct cable_solution {
    * means "unknown": PVLS then computes everything. */
   const int *pvls_icp;
   int pvls_nicp;
+  double pvls_ds;  /* while the engine calls PVLS: the step that reached this point (AUTO's
+                      GETP('STP')); 0 otherwise */
   /* last, so that the fields above keep their offsets for plug-ins built before it */
   int bp_kind;     /* a BP's kind as the detector found it (enum cable_bp_kind); 0: not a BP or
                       unknown (the s-file does not store it) */
@@ -43,6 +45,12 @@ typedef struct cable_solution {
 CABLE_API cable_solution *cable_solution_alloc(int ndim, int ntst, int ncol, int npar, int nfpr);
 CABLE_API void cable_solution_free(cable_solution *s);            /* NULL is a no-op */
 CABLE_API int cable_solution_copy(cable_solution *dst, const cable_solution *src); /* same sizes */
+/* AUTO's principal solution measure for IPLT (doc/constants.md): 0 the
+ * L2-NORM of the whole solution (passed in as l2); i in 1..NDIM the maximum
+ * of U(i); -i its minimum; NDIM+i the integral of U(i); 2 NDIM+i the L2-norm
+ * of U(i), over the stored points with the collocation node quadrature.  An
+ * IPLT outside -NDIM..3 NDIM gives l2. */
+CABLE_API double cable_solution_measure(const cable_solution *s, int iplt, double l2);
 CABLE_API cable_solution *cable_solution_clone(const cable_solution *src);
 
 /* Number of stored points, ntst*ncol + 1. */
