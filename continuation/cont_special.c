@@ -20,6 +20,7 @@
  * branch and labelled BP when sigma_1 nearly vanishes there.  (Pairs of
  * simple BPs in one step are normally separated by the pencil test first,
  * cont_pencil.c.) */
+#include <float.h>
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_min.h>
 #include <math.h>
@@ -128,7 +129,7 @@ static int locate(cable_cont *cc, int type, int which, double seed, int plain)
   double g0 = f0, g1 = f1, gstep = fmin(fabs(f0), fabs(f1));
   /* the last two evaluated points, for the secant step */
   double sp = s0, fp = f0, sq = s1, fq = f1;
-  int side = 0;
+  int side = 0, corrector_failed = 0;
   cont_tests ts = cc->tft;
   double *xs = cc->w1, *xds = cc->w2;
   /* the solutions at the bracket's ends: the step's start and the trial point */
@@ -168,7 +169,14 @@ static int locate(cable_cont *cc, int type, int which, double seed, int plain)
        shrinks the bracket, and the location ends when the bracket is no
        wider than the tolerance. */
     int singular = rc == CABLE_ERR_LINSOLVE, nudged = 0;
-    double sfail = s, off = 0.5 * tol;
+    if (rc == CABLE_ERR_NEWTON || rc == CABLE_ERR_RECOVERABLE || rc == CABLE_ERR_LINSOLVE) corrector_failed = 1;
+    /* a zero pivot (the matrix singular to working precision, e.g. an exact
+       trivial branch started from exact neighbours): sfail is the BP, and a
+       step of sqrt(eps) of the step makes the matrix regular while moving
+       the point far less than the tolerance (half the tolerance moved the
+       elastica's BP2 by 1e-5 in lambda) */
+    double sfail = s, off = singular ? sqrt(DBL_EPSILON) * fabs(cc->ds_used) : 0.5 * tol;
+    const double off0 = off;
     for (int last = 0; !last && (rc == CABLE_ERR_NEWTON || rc == CABLE_ERR_RECOVERABLE || rc == CABLE_ERR_LINSOLVE);
          off *= CONT_LOCATE_GROW) {
       double room = (sfail - lo > hi - sfail) ? lo - sfail : hi - sfail; /* signed, to the farther end */
@@ -177,7 +185,7 @@ static int locate(cable_cont *cc, int type, int which, double seed, int plain)
       rc = correct_in_bracket(cc, s, s0, s1, xs);
       if (rc == CABLE_SUCCESS) rc = cont_tangent(cc, xs, cc->xdot, xds, &ts);
       /* a zero pivot at sfail: it is the branch point to working precision */
-      nudged = singular && rc == CABLE_SUCCESS && off == 0.5 * tol;
+      nudged = singular && rc == CABLE_SUCCESS && off == off0;
     }
     if (rc != CABLE_SUCCESS && type == CABLE_TY_BP && rc != CABLE_ERR_CALLBACK && rc != CABLE_ERR_ALLOC &&
         fmax(fabs(g0), fabs(g1)) < CONT_SV_ZERO_REL * gstep) {
@@ -210,7 +218,11 @@ static int locate(cable_cont *cc, int type, int which, double seed, int plain)
     double f = test_value(&ts, type, which);
     /* the bracket this iterate leaves, and whether it is within tolerance */
     double width = (f > 0) == (f1 > 0) ? fabs(s - s0) : fabs(s1 - s);
-    int done = nudged || fabs(s - sprev) <= tol || f == 0.0 || width <= tol;
+    /* the width test only after the corrector failed inside the bracket: the
+       secant's own test (successive iterates within tol) is far more
+       accurate when every point converges (AUTO equation file elastica.f:
+       its BP2 moved by 1e-5 in lambda with the width test alone) */
+    int done = nudged || fabs(s - sprev) <= tol || f == 0.0 || (corrector_failed && width <= tol);
     sprev = s;
     sp = sq; fp = fq;
     sq = s; fq = f;
