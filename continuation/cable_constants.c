@@ -1,5 +1,7 @@
 #include "cable/cable_constants.h"
 
+#include <unistd.h>
+
 #include <math.h>
 #include <string.h>
 
@@ -17,6 +19,14 @@ void cable_constants_init(cable_constants *c)
   c->thu_default = 1.0;
   c->iid = 2; c->iis = 3;
   c->linsolver = CABLE_LINSOLVER_CONDENSE;
-  c->nsv = 0; c->bpsym = 0; c->bpangle = (double)NAN;
+  c->nsv = 0; c->nthreads = 0; c->bpsym = 0; c->bpangle = (double)NAN;
   c->torus_p = 0; c->hand = 1;
+}
+
+int cable_threads(const cable_constants *c)
+{
+  if (c->nthreads > 0) return c->nthreads;
+  long np = sysconf(_SC_NPROCESSORS_ONLN);
+  if (np < 1) np = 1;
+  return np < CABLE_THREADS_DEFAULT_MAX ? (int)np : CABLE_THREADS_DEFAULT_MAX;
 }

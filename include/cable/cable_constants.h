@@ -16,6 +16,10 @@
 /* NCOL: collocation points per mesh interval (AUTO allows the same range). */
 #define CABLE_NCOL_MIN 2
 #define CABLE_NCOL_MAX 7
+/* NTHREADS: at most this many; the default (NTHREADS = 0) is the number of
+ * processors this process may run on, at most CABLE_THREADS_DEFAULT_MAX */
+#define CABLE_THREADS_MAX 64
+#define CABLE_THREADS_DEFAULT_MAX 2
 
 typedef struct {
   int par;          /* 0-based parameter index (or -1: unused) */
@@ -73,6 +77,8 @@ typedef struct cable_constants {
   /* cable extensions (documented in doc/constants.md) */
   cable_linsolver linsolver;              /* LINSOLVER = condense | klu */
   int nsv;                                /* NSV: singular values tracked for BP test (0: off) */
+  int nthreads;                           /* NTHREADS: threads of the structured solver's
+                                             per-interval stages (0: the default, cable_threads) */
   int bpsym;                              /* BPDIR: kernel vector index for 2-d kernels */
   double bpangle;                         /* BPANGLE: direction in a 2-d kernel, degrees from
                                              the canonical e1 towards e2 (NAN: use BPDIR) */
@@ -93,6 +99,8 @@ typedef struct cable_constants {
 
 /* AUTO-07p defaults. */
 CABLE_API void cable_constants_init(cable_constants *c);
+/* The thread count a run uses: NTHREADS, or its default when 0. */
+CABLE_API int cable_threads(const cable_constants *c);
 
 /* ---------------------------------------------------------------- constants files
  * AUTO-07p constants files (c.NAME) and KEY=VALUE overrides.
