@@ -529,13 +529,17 @@ static int engine_run(cable_replay *r, rp_setup *s, rp_branch **out, cable_error
   if (rc) return rc;
   const cable_problem *pb = prob.pb;
   cable_names_fill(&s->names, pb->parnames, pb->npar, pb->unames, pb->ndim);
-  int st = 0;
+  int st = cable_cont_check(pb, &s->c, err);
+  if (st) {
+    problem_release(r, &prob);
+    return st;
+  }
   cable_cont *cc = cable_cont_alloc(pb, &s->c, &st);
   if (!cc) {
     problem_release(r, &prob);
-    return cable_error_set(err, CABLE_ERR_ALLOC, NULL, 0, NULL, "out of memory");
+    return cable_error_set(err, st, NULL, 0, NULL, "could not set up the solver: %s", cable_status_message(st));
   }
-  if (st == 0) st = cable_cont_set_start(cc, s->start);
+  st = cable_cont_set_start(cc, s->start);
   if (st) {
     cable_error_set(err, st, NULL, 0, NULL, "%s", cable_cont_error(cc)[0] ? cable_cont_error(cc) : cable_status_message(st));
     cable_cont_free(cc);

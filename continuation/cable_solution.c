@@ -1,5 +1,7 @@
 #include "cable/cable_solution.h"
 
+#include "cable/cable_status.h"
+
 #include <stdlib.h>
 #include <string.h>
 
@@ -33,9 +35,11 @@ void cable_solution_free(cable_solution *s)
 
 int cable_solution_copy(cable_solution *dst, const cable_solution *src)
 {
+  if (!dst || !src) return CABLE_ERR_NULL;
   if (dst->ndim != src->ndim || dst->ntst != src->ntst || dst->ncol != src->ncol ||
       dst->npar != src->npar || dst->nfpr != src->nfpr)
-    return -1;
+    return CABLE_ERR_SIZE;
+  if (!src->t || !src->u || !src->par || (src->nfpr > 0 && (!src->icp || !src->pardot))) return CABLE_ERR_NULL;
   size_t np = (size_t)cable_solution_npts(src);
   dst->ibr = src->ibr; dst->ntot = src->ntot; dst->itp = src->itp; dst->lab = src->lab;
   dst->isw = src->isw; dst->err_est = src->err_est;
@@ -46,11 +50,12 @@ int cable_solution_copy(cable_solution *dst, const cable_solution *src)
   memcpy(dst->par, src->par, (size_t)src->npar * sizeof *dst->par);
   memcpy(dst->icp, src->icp, (size_t)src->nfpr * sizeof *dst->icp);
   memcpy(dst->pardot, src->pardot, (size_t)src->nfpr * sizeof *dst->pardot);
-  return 0;
+  return CABLE_SUCCESS;
 }
 
 cable_solution *cable_solution_clone(const cable_solution *src)
 {
+  if (!src) return NULL;
   cable_solution *s = cable_solution_alloc(src->ndim, src->ntst, src->ncol, src->npar, src->nfpr);
   if (s && cable_solution_copy(s, src) != 0) {
     cable_solution_free(s);
