@@ -18,5 +18,14 @@ void cable_constants_init(cable_constants *c)
   c->iid = 2; c->iis = 3;
   c->linsolver = CABLE_LINSOLVER_CONDENSE;
   c->nsv = 0; c->bpsym = 0; c->bpangle = (double)NAN;
-  c->torus_p = 0; c->hand = 1;
+  c->npkey = 0;
+}
+
+double cable_constants_key(const cable_constants *c, const cable_problem *pb, const char *name)
+{
+  const cable_problem_key *k = cable_problem_key_find(pb, name);
+  if (!c || !k) return (double)NAN;
+  for (int i = 0; i < c->npkey && i < CABLE_MAX_PKEYS; i++)
+    if (strcmp(c->pkey[i].name, name) == 0) return c->pkey[i].value;
+  return k->def;
 }
