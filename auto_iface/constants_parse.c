@@ -977,6 +977,7 @@ static const key_desc *key_find(const char *key)
 
 void cable_constants_take_problem_dims(cable_constants *c, int ndim, int nbc, int nint)
 {
+  if (!c) return;
   if (c->ndim == 0) c->ndim = ndim;
   if (c->nbc == 0) c->nbc = nbc;
   if (c->nint == 0) c->nint = nint;

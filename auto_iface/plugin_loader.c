@@ -229,5 +229,5 @@ const cable_problem *cable_plugin_problem(const cable_plugin *p)
 
 const char *cable_plugin_path(const cable_plugin *p)
 {
-  return p ? p->path : NULL;
+  return p ? p->path : "";
 }

@@ -5,6 +5,7 @@
 
 void cable_constants_init(cable_constants *c)
 {
+  if (!c) return;
   memset(c, 0, sizeof *c);
   c->ndim = 0; c->ips = 4; c->nbc = 0; c->nint = 0; c->npar = 36;
   c->ntst = 20; c->ncol = 4; c->iad = 3;

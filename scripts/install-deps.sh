@@ -13,6 +13,7 @@ probes=(
   "/usr/lib/x86_64-linux-gnu/libopenblas.so:libopenblas-dev"
   "/usr/include/gsl/gsl_version.h:libgsl-dev"
   "/usr/include/cairo/cairo.h:libcairo2-dev"
+  "/usr/bin/pkg-config:pkgconf"            # make check builds against an installed libcable
 )
 
 arch_dir=$(dpkg-architecture -qDEB_HOST_MULTIARCH 2>/dev/null || echo x86_64-linux-gnu)
