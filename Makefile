@@ -39,6 +39,10 @@ LIBS    := -lsundials_kinsol -lsundials_sunlinsolklu -lsundials_sunmatrixsparse 
 
 LIB_SRCS := $(filter-out auto_iface/cable_main.c,$(wildcard $(addsuffix /*.c,$(MODULES))))
 LIB_OBJS := $(LIB_SRCS:%.c=$(BUILD)/%.o)
+GEN_OBJS := $(BUILD)/gen/autoeq_compat_text.o
+# auto_iface/auto_compat: the files cable writes next to an AUTO equation file it
+# compiles (auto_iface/autoeq_build.c), embedded as C strings
+COMPAT_FILES := $(sort $(wildcard auto_iface/auto_compat/*))
 TEST_SRCS := $(wildcard tests/test_*.c)
 TEST_BINS := $(TEST_SRCS:tests/%.c=$(BUILD)/tests/%)
 BENCH_SRCS := $(wildcard tests/bench_*.c)
@@ -73,13 +77,29 @@ $(BUILD)/%.o: %.c | $(DEPS_OK)
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) $(call layer_incs,$<) -c $< -o $@
 
+$(BUILD)/gen/autoeq_compat_text.c: $(COMPAT_FILES) Makefile
+	@mkdir -p $(dir $@)
+	@{ echo '#include "autoeq_impl.h"'; \
+	   echo 'const cable_autoeq_compat_file cable_autoeq_compat_files[] = {'; \
+	   for f in $(COMPAT_FILES); do \
+	     printf '{"%s",\n' "$$(basename $$f)"; \
+	     sed -e 's/\\/\\\\/g' -e 's/"/\\"/g' -e 's/^/"/' -e 's/$$/\\n"/' $$f; \
+	     echo '},'; \
+	   done; \
+	   echo '};'; \
+	   echo 'const int cable_autoeq_compat_nfiles = (int)(sizeof cable_autoeq_compat_files / sizeof cable_autoeq_compat_files[0]);'; \
+	 } > $@.tmp && mv $@.tmp $@
+
+$(GEN_OBJS): $(BUILD)/gen/%.o: $(BUILD)/gen/%.c | $(DEPS_OK)
+	$(CC) $(CFLAGS) $(LIBFLAGS) $(INCS_auto_iface) $(SYSINCS) -c $< -o $@
+
 # The static library serves the test programs (they reach private functions);
 # programs and plug-ins outside the tree use libcable.so.
-$(LIBCABLE): $(LIB_OBJS)
+$(LIBCABLE): $(LIB_OBJS) $(GEN_OBJS)
 	@rm -f $@
 	ar rcs $@ $^
 
-$(LIBSO): $(LIB_OBJS)
+$(LIBSO): $(LIB_OBJS) $(GEN_OBJS)
 	$(CC) $(LDFLAGS) -shared -Wl,-soname,$(SONAME) $^ $(LIBS) -o $@
 	@ln -sf libcable.so $(BUILD)/$(SONAME)
 
@@ -166,4 +186,4 @@ help:
 	@echo "make fuzz       fuzz the parsers (libFuzzer, 10 minutes)"
 
 .PRECIOUS: $(BUILD)/%.o $(BUILD)/tests/%.o
--include $(LIB_OBJS:.o=.d) $(TEST_BINS:=.d) $(API_BINS:=.d) $(BENCH_BINS:=.d) $(PLUGINS:.so=.d) $(BUILD)/auto_iface/cable_main.d
+-include $(LIB_OBJS:.o=.d) $(GEN_OBJS:.o=.d) $(TEST_BINS:=.d) $(API_BINS:=.d) $(BENCH_BINS:=.d) $(PLUGINS:.so=.d) $(BUILD)/auto_iface/cable_main.d

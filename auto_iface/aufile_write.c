@@ -172,16 +172,33 @@ static void par_heading(const cable_aufile *w, int idx, char out[BCOL + 1])
   }
 }
 
-static void umax_heading(const cable_aufile *w, int i, char out[BCOL + 1])
+/* "MAX U(i)" (what = "MAX"), or "MIN", "INTEGRAL", "L2-NORM" of component i. */
+static void ucol_heading(const cable_aufile *w, const char *what, int i, char out[BCOL + 1])
 {
   char t[64];
   if (i < CABLE_NAMES_MAX && w->names.u[i][0]) {
-    snprintf(t, sizeof t, "MAX %s", w->names.u[i]);
+    snprintf(t, sizeof t, "%s %s", what, w->names.u[i]);
     col_heading(out, -1, t);
   } else {
-    snprintf(t, sizeof t, "MAX U(%d)", i + 1);
+    snprintf(t, sizeof t, "%s U(%d)", what, i + 1);
     col_heading(out, 4, t);
   }
+}
+
+static void umax_heading(const cable_aufile *w, int i, char out[BCOL + 1])
+{
+  ucol_heading(w, "MAX", i, out);
+}
+
+/* The heading of IPLT's measure, as AUTO writes it. */
+static void iplt_heading(const cable_aufile *w, char out[BCOL + 1])
+{
+  int ip = w->c.iplt, nd = w->c.ndim;
+  if (ip == 0 || nd <= 0) col_heading(out, 4, "L2-NORM");
+  else if (ip < 0) ucol_heading(w, "MIN", -ip - 1, out);
+  else if (ip <= nd) ucol_heading(w, "MAX", ip - 1, out);
+  else if (ip <= 2 * nd) ucol_heading(w, "INTEGRAL", ip - nd - 1, out);
+  else ucol_heading(w, "L2-NORM", ip - 2 * nd - 1, out);
 }
 
 /* Number of MAX U columns, as AUTO's WRLINE: at most 7 printed columns. */
@@ -199,8 +216,7 @@ static void section_heading(const cable_aufile *w, int j, char out[BCOL + 1])
   if (j == 0) {
     par_heading(w, w->sec_icp[0], out);
   } else if (j == 1) {
-    if (w->c.iplt > 0) umax_heading(w, w->c.iplt - 1, out);
-    else col_heading(out, 4, "L2-NORM");
+    iplt_heading(w, out);
   } else if (j < 2 + n2) {
     umax_heading(w, j - 2, out);
   } else {
@@ -507,8 +523,8 @@ static int point_cb(void *ctx, const cable_point *pt)
   for (int k = 0; k < pt->nicp; k++)
     if (pt->icp[k] < 0 || pt->icp[k] >= pt->npar)
       return w_fail(w, CABLE_ERR_INPUT, w->bpath, "point lists PAR(%d) beyond NPAR=%d", pt->icp[k] + 1, pt->npar);
-  if (w->c.iplt > pt->ndim)
-    return w_fail(w, CABLE_ERR_INPUT, w->bpath, "IPLT=%d exceeds NDIM=%d", w->c.iplt, pt->ndim);
+  if (w->c.iplt < -pt->ndim || w->c.iplt > 3 * pt->ndim)
+    return w_fail(w, CABLE_ERR_INPUT, w->bpath, "IPLT=%d is outside -NDIM..3*NDIM (NDIM=%d)", w->c.iplt, pt->ndim);
   d_begin_block(w);
   if (!same_section(w, pt)) {
     int st = start_section(w, pt);
@@ -518,7 +534,7 @@ static int point_cb(void *ctx, const cable_point *pt)
   double val[2 + SCREEN_MAX + CABLE_MAX_ICP];
   int n = 0;
   val[n++] = pt->par[pt->icp[0]];
-  val[n++] = w->c.iplt > 0 ? pt->umax[w->c.iplt - 1] : pt->l2norm;
+  val[n++] = pt->measure;
   for (int i = 0; i < w->sec_n2; i++) val[n++] = pt->umax[i];
   for (int k = 1; k < pt->nicp; k++) val[n++] = pt->par[pt->icp[k]];
   int mtot = (pt->pt - 1) % 9999 + 1;   /* AUTO wraps point numbers at 9999 */

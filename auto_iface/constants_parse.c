@@ -945,26 +945,22 @@ static const key_desc key_table[] = {
 };
 #define KEY_TABLE_N ((int)(sizeof key_table / sizeof key_table[0]))
 
+/* AUTO-07p keys that AUTO itself accepts and ignores for boundary-value
+ * problems (IPS=4): accepted, listed in cable_constants.ignored. */
+static const char *const ignored_for_bvp[] = {"MXBF", "NUNSTAB", "NSTAB", "IEQUIB", "ITWIST", "ISTART",
+                                              "IREV", "IFIXED", "IPSI", "homcont"};
+#define IGNORED_N ((int)(sizeof ignored_for_bvp / sizeof ignored_for_bvp[0]))
+
 /* AUTO-07p keys cable knows but does not support, with the reason. */
 static const struct {
   const char *key;
   const char *why;
 } unsupported_table[] = {
-  {"MXBF", "automatic branch switching (MXBF) is for algebraic problems; run ISW=-1 from a BP label instead"},
   {"IBR", "branch numbers are assigned by the run driver"},
   {"LAB", "labels are assigned by the run driver"},
   {"TY", "branch types (TY) are not used by cable's IPS=4 runs"},
   {"SP", "use ILP and ISP to switch fold and branch-point detection on or off"},
   {"U", "starting values (U) belong in the problem's STPNT or a restart solution"},
-  {"NUNSTAB", "a HomCont (IPS=9) constant; cable solves IPS=4 problems"},
-  {"NSTAB", "a HomCont (IPS=9) constant; cable solves IPS=4 problems"},
-  {"IEQUIB", "a HomCont (IPS=9) constant; cable solves IPS=4 problems"},
-  {"ITWIST", "a HomCont (IPS=9) constant; cable solves IPS=4 problems"},
-  {"ISTART", "a HomCont (IPS=9) constant; cable solves IPS=4 problems"},
-  {"IREV", "a HomCont (IPS=9) constant; cable solves IPS=4 problems"},
-  {"IFIXED", "a HomCont (IPS=9) constant; cable solves IPS=4 problems"},
-  {"IPSI", "a HomCont (IPS=9) constant; cable solves IPS=4 problems"},
-  {"homcont", "a HomCont (IPS=9) constant; cable solves IPS=4 problems"},
 };
 #define UNSUPPORTED_N ((int)(sizeof unsupported_table / sizeof unsupported_table[0]))
 
@@ -1047,6 +1043,13 @@ static int apply_problem_key(pctx *x, const cable_problem_key *k, const stmt *s)
 static int key_check(pctx *x, const char *key, int line)
 {
   if (key_find(key) || cable_problem_key_find(x->pb, key)) return 0;
+  for (int i = 0; i < IGNORED_N; i++)
+    if (strcmp(ignored_for_bvp[i], key) == 0) {
+      size_t n = strlen(x->c.ignored);
+      snprintf(x->c.ignored + n, sizeof x->c.ignored - n, "%s%s (line %d)", n ? ", " : "", key, line);
+      x->applied++;
+      return 0;
+    }
   for (int i = 0; i < UNSUPPORTED_N; i++)
     if (strcmp(unsupported_table[i].key, key) == 0)
       return perr(x, CABLE_ERR_UNSUPPORTED, line, key, "AUTO key not supported by cable: %s",
@@ -1132,6 +1135,13 @@ static int apply_statements(pctx *x)
       if (st) return st;
       x->applied++;
       if (d->slot != KI_NONE) x->line_of[d->slot] = x->st[i].line;
+      cable_key_origin *o = strcmp(d->key, "NDIM") == 0 ? &x->c.origin_ndim
+                            : strcmp(d->key, "NBC") == 0 ? &x->c.origin_nbc
+                            : strcmp(d->key, "NINT") == 0 ? &x->c.origin_nint : NULL;
+      if (o) {
+        snprintf(o->file, sizeof o->file, "%s", x->origin ? x->origin : x->file);
+        o->line = x->origin ? 0 : x->st[i].line;
+      }
     }
   return 0;
 }
@@ -1164,9 +1174,10 @@ static int finalize(pctx *x)
     if (c->thl[k].index >= c->npar)
       return perr(x, CABLE_ERR_INPUT, x->line_of[L_THL], "THL", "PAR(%d) is beyond NPAR=%d", c->thl[k].index + 1,
                   c->npar);
-  if (c->iplt != 0 && (c->iplt < 0 || (c->ndim > 0 && c->iplt > c->ndim)))
-    return perr(x, CABLE_ERR_UNSUPPORTED, x->line_of[L_IPLT], "IPLT",
-                "IPLT=%d is not supported by cable: use 0 (L2-norm) or 1..NDIM (maximum of U(IPLT))", c->iplt);
+  if (c->ndim > 0 && (c->iplt < -c->ndim || c->iplt > 3 * c->ndim))
+    return perr(x, CABLE_ERR_INPUT, x->line_of[L_IPLT], "IPLT",
+                "IPLT=%d is outside -NDIM..3*NDIM = %d..%d (0: L2-norm; i: max of U(i); -i: min of U(i); NDIM+i: "
+                "integral of U(i); 2*NDIM+i: L2-norm of U(i))", c->iplt, -c->ndim, 3 * c->ndim);
   if (x->thu_set) {
     /* cable keeps one weight for all components: accept THU only when it
      * says that (all listed weights 1, AUTO's default, or every component

@@ -34,9 +34,10 @@ static int file_exists(const char *path)
 /* ---- problems ---------------------------------------------------------------- */
 
 typedef struct rp_problem {
-  const cable_problem *tmpl;  /* what e=NAME names (built-in, plug-in or opt.problems) */
+  const cable_problem *tmpl;  /* what e=NAME names (built-in, equation file, plug-in or opt.problems) */
   const cable_problem *pb;    /* the instance a run uses (prepared), or tmpl */
   int user;                   /* from opt.problems: released after use */
+  int autoeq;                 /* from an AUTO equation file: dimensions from the constants */
 } rp_problem;
 
 static void problem_release(cable_replay *r, rp_problem *p)
@@ -46,6 +47,7 @@ static void problem_release(cable_replay *r, rp_problem *p)
     r->opt.problems->release(r->opt.problems->ctx, p->tmpl);
   p->pb = p->tmpl = NULL;
   p->user = 0;
+  p->autoeq = 0;
 }
 
 /* A plug-in for e=NAME: NAME.so (or NAME itself when it ends in .so), opened
@@ -73,6 +75,37 @@ static int plugin_problem(cable_replay *r, const char *e, const cable_problem **
   return 0;
 }
 
+/* A file named in the constants (dat=), relative to the run directory. */
+static void rp_path_plain(const cable_replay *r, const char *name, char *buf, size_t len)
+{
+  const char *dir = r->opt.dir && r->opt.dir[0] ? r->opt.dir : NULL;
+  snprintf(buf, len, "%s%s%s", dir && name[0] != '/' ? dir : "", dir && name[0] != '/' ? "/" : "", name);
+}
+
+/* An AUTO equation file for e=NAME (NAME.f90, NAME.f or NAME.c in the run
+ * directory), built and loaded once per session; its problem takes NDIM,
+ * NBC, NINT and NPAR from c (c NULL: a problem good for names only). */
+static int autoeq_problem(cable_replay *r, const char *e, const cable_constants *c, const cable_problem **pb,
+                          cable_error *err)
+{
+  cable_autoeq *m = NULL;
+  for (int i = 0; i < r->nautoeq && !m; i++)
+    if (strcmp(r->autoeq_name[i], e) == 0) m = r->autoeq[i];
+  if (!m) {
+    char src[1024];
+    if (cable_autoeq_find(r->opt.dir, e, src, sizeof src) != 0) return CABLE_ERR_NOTFOUND;
+    if (r->nautoeq == RP_MAX_PLUGINS)
+      return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, e, "more than %d equation files in one session", RP_MAX_PLUGINS);
+    if (!(m = cable_autoeq_open(src, err))) return err && err->status ? err->status : CABLE_ERR_PLUGIN;
+    if (cable_autoeq_was_built(m)) fprintf(rp_log(r), "built %s (module %s)\n", src, cable_autoeq_module(m));
+    snprintf(r->autoeq_name[r->nautoeq], sizeof r->autoeq_name[0], "%s", e);
+    r->autoeq[r->nautoeq++] = m;
+  }
+  char dat[1024] = "";
+  if (c && c->dat[0]) rp_path_plain(r, c->dat, dat, sizeof dat);
+  return cable_autoeq_problem(m, c, dat, pb, err);
+}
+
 /* The problem for e=NAME.  c NULL: only its names and keys are needed;
  * otherwise the problem prepares itself for the run (its prepare). */
 static int find_problem(cable_replay *r, const char *e, const cable_constants *c, int from_stpnt,
@@ -80,6 +113,7 @@ static int find_problem(cable_replay *r, const char *e, const cable_constants *c
 {
   out->pb = out->tmpl = NULL;
   out->user = 0;
+  out->autoeq = 0;
   if (!e[0])
     return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, "e", "no problem given (e='NAME' in the call or the constants file)");
   const cable_replay_problems *up = r->opt.problems;
@@ -89,12 +123,19 @@ static int find_problem(cable_replay *r, const char *e, const cable_constants *c
     if (rc == 0) out->user = 1;
     else if (rc != CABLE_ERR_NOTFOUND) return rc;
   }
+  /* an AUTO user's own equation file wins over cable's test problems */
+  if (rc == CABLE_ERR_NOTFOUND) {
+    rc = autoeq_problem(r, e, c, &out->tmpl, err);
+    if (rc == 0) out->autoeq = 1;
+    else if (rc != CABLE_ERR_NOTFOUND) return rc;
+  }
   if (rc == CABLE_ERR_NOTFOUND && (out->tmpl = cable_problem_builtin(e)) != NULL) rc = 0;
   if (rc == CABLE_ERR_NOTFOUND) {
     rc = plugin_problem(r, e, &out->tmpl, err);
     if (rc == CABLE_ERR_NOTFOUND)
       return cable_error_set(err, CABLE_ERR_NOTFOUND, NULL, 0, "e",
-                             "unknown problem '%s' (not a built-in problem, and no %s.so plug-in)", e, e);
+                             "unknown problem '%s' (not a built-in problem, no equation file %s.f90, %s.f or %s.c and "
+                             "no %s.so plug-in)", e, e, e, e, e);
     if (rc) return rc;
   }
   out->pb = out->tmpl;
@@ -530,6 +571,28 @@ static int engine_run(cable_replay *r, rp_setup *s, rp_branch **out, cable_error
   int rc = find_problem(r, s->e, &s->c, s->start == NULL, &prob, err);
   if (rc) return rc;
   const cable_problem *pb = prob.pb;
+  if (!prob.autoeq) {
+    /* a built-in or plug-in problem's dimensions are its own: a constants
+       value that says otherwise is an error at its line, never ignored */
+    const struct {
+      const char *key;
+      int value, want;
+      const cable_key_origin *o;
+    } dims[] = {{"NDIM", s->c.ndim, pb->ndim, &s->c.origin_ndim},
+                {"NBC", s->c.nbc, pb->nbc, &s->c.origin_nbc},
+                {"NINT", s->c.nint, pb->nint, &s->c.origin_nint}};
+    for (size_t k = 0; k < sizeof dims / sizeof dims[0]; k++)
+      if ((dims[k].o->file[0] || dims[k].o->line) && dims[k].value != dims[k].want) {
+        cable_error_set(err, CABLE_ERR_INPUT, dims[k].o->file, dims[k].o->line, dims[k].key,
+                        "%s=%d contradicts problem '%s', which has %s=%d (the problem fixes it: remove the "
+                        "line, or write the equations as an AUTO file NAME.f90 or NAME.c)",
+                        dims[k].key, dims[k].value, pb->name, dims[k].key, dims[k].want);
+        problem_release(r, &prob);
+        return CABLE_ERR_INPUT;
+      }
+  }
+  if (s->c.ignored[0])
+    fprintf(rp_log(r), "  note: accepted and ignored, as AUTO does for boundary-value problems: %s\n", s->c.ignored);
   cable_names_fill(&s->names, pb->parnames, pb->npar, pb->unames, pb->ndim);
   int st = cable_cont_check(pb, &s->c, err);
   if (st) {
@@ -970,6 +1033,7 @@ void cable_replay_free(cable_replay *r)
 {
   if (!r) return;
   for (int i = 0; i < r->nplugins; i++) cable_plugin_close(r->plugin[i]);
+  for (int i = 0; i < r->nautoeq; i++) cable_autoeq_close(r->autoeq[i]);
   free(r);
 }
 

@@ -2,6 +2,7 @@
 #ifndef CABLE_SCRIPT_HOST_IMPL_H
 #define CABLE_SCRIPT_HOST_IMPL_H
 
+#include "cable/cable_autoeq.h"
 #include "cable/cable_output.h"
 #include "cable/cable_names.h"
 #include "cable/cable_plugin.h"
@@ -56,6 +57,10 @@ struct cable_replay {
   int nplugins;
   char plugin_name[RP_MAX_PLUGINS][CABLE_NAME_MAX];
   cable_plugin *plugin[RP_MAX_PLUGINS];
+  /* AUTO equation files (NAME.f90, NAME.f, NAME.c) loaded by this session */
+  int nautoeq;
+  char autoeq_name[RP_MAX_PLUGINS][CABLE_NAME_MAX];
+  cable_autoeq *autoeq[RP_MAX_PLUGINS];
 };
 
 /* ---- scene functions (script_host_analysis.c): analyze(), compare() ---------------- */

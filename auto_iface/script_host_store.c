@@ -267,6 +267,7 @@ int rp_result_read(const cable_replay *r, const char *name, const cable_constant
       for (int q = 0; l2 && q < bb->nrow; q++)
         if (bb->lab[q] == s->lab) pt.l2norm = l2[q];
     }
+    pt.measure = cable_solution_measure(s, c->iplt, pt.l2norm);
     rc = rp_branch_add(res->br[k], &pt, s);
   }
   cable_bfile_free(bf);

@@ -1,9 +1,12 @@
 #include "cable/cable_solution.h"
 
-#include "cable/cable_status.h"
-
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
+
+#include "cable/cable_status.h"
+
+#include "colloc_basis.h"
 
 cable_solution *cable_solution_alloc(int ndim, int ntst, int ncol, int npar, int nfpr)
 {
@@ -62,4 +65,32 @@ cable_solution *cable_solution_clone(const cable_solution *src)
     return NULL;
   }
   return s;
+}
+
+double cable_solution_measure(const cable_solution *s, int iplt, double l2)
+{
+  if (!s || !s->u || !s->t || s->ndim < 1) return l2;
+  int nd = s->ndim, npts = cable_solution_npts(s);
+  if (iplt == 0 || iplt < -nd || iplt > 3 * nd) return l2;
+  int i = (iplt > 0 ? iplt - 1 : -iplt - 1) % nd;
+  if (iplt < 0 || iplt <= nd) {
+    double v = s->u[i];
+    for (int k = 1; k < npts; k++) {
+      double x = s->u[(size_t)k * (size_t)nd + (size_t)i];
+      v = iplt < 0 ? fmin(v, x) : fmax(v, x);
+    }
+    return v;
+  }
+  colloc_basis b;
+  if (colloc_basis_init(&b, s->ncol) != 0) return NAN;
+  int sq = iplt > 2 * nd;
+  double sum = 0.0;
+  for (int j = 0; j < s->ntst; j++) {
+    double h = s->t[(j + 1) * s->ncol] - s->t[j * s->ncol];
+    for (int k = 0; k <= s->ncol; k++) {
+      double x = s->u[(size_t)(j * s->ncol + k) * (size_t)nd + (size_t)i];
+      sum += h * b.wn[k] * (sq ? x * x : x);
+    }
+  }
+  return sq ? sqrt(sum) : sum;
 }

@@ -303,10 +303,10 @@ static int first_point(cable_cont *cc)
  * stays valid; the next step returns the end status. */
 static void check_limits(cable_cont *cc)
 {
-  double p0 = principal(cc, cc->x), l2 = cc->pt.l2norm;
+  double p0 = principal(cc, cc->x), m = cc->pt.measure;   /* A0, A1 bound IPLT's measure, as in AUTO */
   int end = 0;
   if (cc->uz_stop) end = CABLE_END_UZSTOP;
-  else if (p0 < cc->c.rl0 || p0 > cc->c.rl1 || l2 < cc->c.a0 || l2 > cc->c.a1) end = CABLE_END_BOUNDS;
+  else if (p0 < cc->c.rl0 || p0 > cc->c.rl1 || m < cc->c.a0 || m > cc->c.a1) end = CABLE_END_BOUNDS;
   else if (cc->c.nmx > 0 && cc->npt >= cc->c.nmx) end = CABLE_END_NMX;
   if (!end) return;
   if (end != CABLE_END_UZSTOP && cc->itp == CABLE_TY_NONE) {

@@ -223,6 +223,7 @@ void cont_store_solution(cable_cont *cc, int itp, int lab)
   sol->err_est = cont_error_estimate(cc, cc->x);
   sol->pvls_icp = cc->c.icp;   /* PVLS computes only the columns the run prints */
   sol->pvls_nicp = cc->c.nicp;
+  sol->pvls_ds = cc->ds_used;
   if (cc->pb->pvls) cc->pb->pvls(sol, sol->par, cc->pb->params);
   /* L2-NORM: sqrt of the integral of |u|^2 (unweighted); MAX U(i): AUTO's
      MXUPSP, the largest value (signed, not the modulus) of u_i over the
@@ -251,6 +252,7 @@ void cont_store_solution(cable_cont *cc, int itp, int lab)
   pt->icp = cc->c.icp;
   pt->par = sol->par;
   pt->l2norm = sqrt(l2);
+  pt->measure = cable_solution_measure(sol, cc->c.iplt, pt->l2norm);
   pt->umax = cc->umax;
   pt->newton_iters = cc->newton_iters;
   pt->ds = cc->ds_used;

@@ -13,6 +13,8 @@ probes=(
   "/usr/lib/x86_64-linux-gnu/libopenblas.so:libopenblas-dev"
   "/usr/include/gsl/gsl_version.h:libgsl-dev"
   "/usr/include/cairo/cairo.h:libcairo2-dev"
+  "/usr/bin/gfortran:gfortran"
+  "/usr/bin/auto-07p:auto-07p"
   "/usr/bin/pkg-config:pkgconf"            # make check builds against an installed libcable
 )
 

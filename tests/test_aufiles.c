@@ -155,6 +155,7 @@ static int emit_branch(cable_sink *sink, int ibr, int ndim, int ntst, int ncol, 
     pt.icp = icp;
     pt.par = s->par;
     pt.l2norm = l2;
+    pt.measure = l2;   /* IPLT = 0 */
     pt.umax = umax;
     pt.newton_iters = 2 + p % 3;
     pt.ds = 0.01 * (p + 1);

@@ -219,7 +219,7 @@ static void test_bad_input(void)
   bad(&snap, "negative NTST", "run c=negntst sv=bad", "c.negntst:2:", "NTST: must be an integer >= 1");
   bad(&snap, "NCOL=9", "run c=ncol9 sv=bad", "c.ncol9:3:", "NCOL: must be an integer in 2..7");
   bad(&snap, "unknown parameter name", "run c=badname sv=bad", "c.badname:2:", "ICP: unknown parameter name 'nosuch'");
-  bad(&snap, "unsupported AUTO key", "run c=mxbf sv=bad", "c.mxbf:2:", "MXBF: AUTO key not supported");
+  bad(&snap, "unsupported AUTO key", "run c=ibr sv=bad", "c.ibr:2:", "IBR: AUTO key not supported");
   bad(&snap, "unterminated list", "run c=unterminated sv=bad", "c.unterminated:3:", "ICP: unterminated list");
   bad(&snap, "duplicate key", "run c=dupkey sv=bad", "c.dupkey:3:", "NMX: duplicate key");
   /* command-line arguments */

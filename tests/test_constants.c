@@ -137,8 +137,15 @@ static void test_every_key(void)
   st = cable_constants_parse_override("ICP=['T', 'nope']", &c, &n, problem_parnames, 20, &e);
   test_true("failing override ICP=['T', 'nope']: not found, unchanged",
             st == CABLE_ERR_NOTFOUND && memcmp(&keep, &c, sizeof c) == 0);
-  st = cable_constants_parse_override("MXBF=2", &c, &n, problem_parnames, 20, &e);
-  test_true("override of an unsupported AUTO key", st == CABLE_ERR_UNSUPPORTED);
+  st = cable_constants_parse_override("IBR=2", &c, &n, problem_parnames, 20, &e);
+  test_true("override of an unsupported AUTO key (IBR)", st == CABLE_ERR_UNSUPPORTED);
+  {
+    cable_constants c2 = c;
+    cable_names n2 = n;
+    st = cable_constants_parse_override("MXBF=2", &c2, &n2, problem_parnames, 20, &e);
+    test_true("override MXBF=2: AUTO ignores it for BVPs, accepted and listed as ignored",
+              st == 0 && strstr(c2.ignored, "MXBF") != NULL);
+  }
   st = cable_constants_parse_override("", &c, &n, problem_parnames, 20, &e);
   test_true("empty override is an error", st == CABLE_ERR_PARSE);
   st = cable_constants_parse_override("NTST=5, NTST=6", &c, &n, problem_parnames, 20, &e);
@@ -182,12 +189,12 @@ static const bad_case bad_cases[] = {
   {"c.unterminated_dict", "UZR = {'T': [1.0, 2.0}\n", CABLE_ERR_PARSE, 1, "UZR", "expected ',' or ']'"},
   {"c.unterminated_string", "e = 'braid_knot\nNTST=5\n", CABLE_ERR_PARSE, 1, "e", "unterminated string"},
   {"c.duplicate", "NTST=5\nNCOL=4\nNTST=6\n", CABLE_ERR_INPUT, 3, "NTST", "duplicate key (first set on line 1)"},
-  {"c.mxbf", "NDIM=2, MXBF = 10\n", CABLE_ERR_UNSUPPORTED, 1, "MXBF", "not supported by cable"},
+  {"c.ibr", "NDIM=2, IBR = 10\n", CABLE_ERR_UNSUPPORTED, 1, "IBR", "not supported by cable"},
   {"c.sp", "SP = ['LP0']\n", CABLE_ERR_UNSUPPORTED, 1, "SP", "not supported by cable"},
-  {"c.homcont", "NUNSTAB = 1\n", CABLE_ERR_UNSUPPORTED, 1, "NUNSTAB", "HomCont"},
+  {"c.tykey", "TY = 'BP'\n", CABLE_ERR_UNSUPPORTED, 1, "TY", "not supported by cable"},
   {"c.ips2", "IPS = 2\n", CABLE_ERR_UNSUPPORTED, 1, "IPS", "IPS=4 boundary-value problems only"},
   {"c.isw2", "ISW = 2\n", CABLE_ERR_UNSUPPORTED, 1, "ISW", "not supported"},
-  {"c.iplt_neg", "IPLT = -1\n", CABLE_ERR_UNSUPPORTED, 1, "IPLT", "not supported"},
+  {"c.iplt_range", "NDIM = 2\nIPLT = -3\n", CABLE_ERR_INPUT, 2, "IPLT", "outside -NDIM..3*NDIM"},
   {"c.rl_order", "RL0 = 5\nRL1 = 1\n", CABLE_ERR_INPUT, 2, "RL1", "less than RL1"},
   {"c.ds_order", "DSMIN = 0.5, DSMAX = 0.1\n", CABLE_ERR_INPUT, 1, "DSMAX", "must not exceed"},
   {"c.ds_zero", "DS = 0\n", CABLE_ERR_INPUT, 1, "DS", "non-zero"},

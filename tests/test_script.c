@@ -1351,7 +1351,8 @@ static void test_engine_errors(void)
 {
   char text[4096], want[4096];
   expect_replay_error("unknown problem", "r = run(e='nosuch', c='bratu')\n", CABLE_ERR_NOTFOUND,
-                      "t.auto:1: run: e: unknown problem 'nosuch' (not a built-in problem, and no nosuch.so plug-in)");
+                      "t.auto:1: run: e: unknown problem 'nosuch' (not a built-in problem, no equation file nosuch.f90, "
+                      "nosuch.f or nosuch.c and no nosuch.so plug-in)");
   snprintf(text, sizeof text, "r = run(e='%s/broken_abi.so', c='bratu')\n", plugin_dir);
   snprintf(want, sizeof want,
            "t.auto:1: run: %s/broken_abi.so: abi_version: built for ABI 99, this cable expects 2 (rebuild the "

@@ -16,6 +16,7 @@
 #include "cable/cable_cont.h"         /* the continuation handle and driver */
 #include "cable/cable_aufile.h"       /* b./s./d. files: writer and readers */
 #include "cable/cable_plugin.h"       /* problems from shared objects */
+#include "cable/cable_autoeq.h"       /* AUTO equation files (NAME.f90, NAME.f, NAME.c) */
 #include "cable/cable_analysis.h"     /* analysis of braid solutions */
 #include "cable/cable_pictures.h"     /* bifurcation diagrams and 3-D pictures */
 #include "cable/cable_version.h"

@@ -42,6 +42,13 @@ typedef struct {
   double value;
 } cable_keyval;
 
+/* Where a key was set: a constants file and line, or an override (file holds
+ * the statement, line 0).  file "" and line 0: not set. */
+typedef struct {
+  char file[CABLE_NAME_MAX];
+  int line;
+} cable_key_origin;
+
 typedef enum { CABLE_LINSOLVER_CONDENSE = 0, CABLE_LINSOLVER_KLU = 1 } cable_linsolver;
 
 typedef struct cable_constants {
@@ -84,6 +91,12 @@ typedef struct cable_constants {
   char e[CABLE_NAME_MAX], s[CABLE_NAME_MAX], sv[CABLE_NAME_MAX], dat[CABLE_NAME_MAX];
   int stop_on[8]; int nstop;              /* STOP=['BP1'...] parsed by type code and count */
   int stop_count[8];
+  /* where NDIM, NBC and NINT were set: a built-in problem's dimensions are
+     fixed, and a contradicting value is reported at its line */
+  cable_key_origin origin_ndim, origin_nbc, origin_nint;
+  /* keys AUTO accepts and ignores for boundary-value problems (MXBF, ...),
+     "KEY (line N)" separated by ", ", for the run's log; "" when none */
+  char ignored[256];
 } cable_constants;
 
 /* AUTO-07p defaults (no problem key set). */

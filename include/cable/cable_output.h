@@ -30,6 +30,9 @@ typedef struct cable_point {
   const double *par;    /* [npar] */
   double l2norm;        /* AUTO's L2-NORM of the solution (all components) */
   const double *umax;   /* [ndim] MAX U(i): the signed maximum of u_i over the stored points, as AUTO (MXUPSP) */
+  double measure;       /* AUTO's principal solution measure chosen by IPLT (the b-file's second
+                           column; A0 and A1 bound it): 0 L2-NORM; i in 1..NDIM MAX U(i); -i MIN U(i);
+                           NDIM+i the integral of U(i); 2 NDIM+i the L2-norm of U(i) */
   /* diagnostics */
   int newton_iters;
   double ds;            /* step size that produced the point */

@@ -28,6 +28,8 @@ typedef struct cable_solution {
    * means "unknown": PVLS then computes everything. */
   const int *pvls_icp;
   int pvls_nicp;
+  double pvls_ds;  /* while the engine calls PVLS: the step that reached this point (AUTO's
+                      GETP('STP')); 0 otherwise */
 } cable_solution;
 
 /* Every field zeroed except the sizes; arrays allocated.  NULL when a size
@@ -39,6 +41,12 @@ CABLE_API void cable_solution_free(cable_solution *s);            /* NULL is a n
  * CABLE_SUCCESS, CABLE_ERR_NULL (a NULL solution or array) or
  * CABLE_ERR_SIZE (the sizes differ; dst is unchanged). */
 CABLE_API int cable_solution_copy(cable_solution *dst, const cable_solution *src);
+/* AUTO's principal solution measure for IPLT (doc/constants.md): 0 the
+ * L2-NORM of the whole solution (passed in as l2); i in 1..NDIM the maximum
+ * of U(i); -i its minimum; NDIM+i the integral of U(i); 2 NDIM+i the L2-norm
+ * of U(i), over the stored points with the collocation node quadrature.  An
+ * IPLT outside -NDIM..3 NDIM gives l2. */
+CABLE_API double cable_solution_measure(const cable_solution *s, int iplt, double l2);
 /* A new solution equal to src; NULL for NULL or when memory ran out. */
 CABLE_API cable_solution *cable_solution_clone(const cable_solution *src);
 

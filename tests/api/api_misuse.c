@@ -106,6 +106,7 @@ static void misuse_solution(void)
   api_check_int("cable_solution_copy(other sizes)", cable_solution_copy(a, b), CABLE_ERR_SIZE);
   api_check("cable_solution_clone(NULL)", cable_solution_clone(NULL) == NULL);
   api_check_int("cable_solution_npts(NULL)", cable_solution_npts(NULL), 0);
+  api_check("cable_solution_measure(NULL) gives the L2-norm passed in", cable_solution_measure(NULL, 3, 1.5) == 1.5);
   cable_solution_free(a);
   cable_solution_free(b);
 }
@@ -212,6 +213,18 @@ static void misuse_files(void)
   api_check("cable_plugin_problem(NULL)", cable_plugin_problem(NULL) == NULL);
   api_check("cable_plugin_path(NULL)", cable_plugin_path(NULL) != NULL);
   api_check_int("cable_problem_validate(NULL)", cable_problem_validate(NULL, 36, NULL, &err), CABLE_ERR_PLUGIN);
+
+  char src[64] = "unchanged";
+  api_check("cable_autoeq_find(NULL name)", cable_autoeq_find(NULL, NULL, src, sizeof src) < 0);
+  api_check("cable_autoeq_find(NULL path)", cable_autoeq_find(NULL, "bratu", NULL, 0) < 0);
+  api_check("cable_autoeq_open(NULL)", cable_autoeq_open(NULL, &err) == NULL);
+  api_check("cable_autoeq_open(missing file)", cable_autoeq_open("tests/tmp/no/such.f90", &err) == NULL);
+  api_check("cable_autoeq_problem(NULL)", cable_autoeq_problem(NULL, NULL, NULL, &pb, &err) < 0);
+  api_check("cable_autoeq_problem(NULL problem pointer)", cable_autoeq_problem(NULL, NULL, NULL, NULL, &err) < 0);
+  api_check("cable_autoeq_source(NULL)", cable_autoeq_source(NULL) == NULL);
+  api_check("cable_autoeq_module(NULL)", cable_autoeq_module(NULL) == NULL);
+  api_check_int("cable_autoeq_was_built(NULL)", cable_autoeq_was_built(NULL), 0);
+  cable_autoeq_close(NULL);
 }
 
 static void misuse_analysis_pictures(void)

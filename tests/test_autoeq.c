@@ -1,0 +1,363 @@
+/* AUTO-format equation files (auto_iface/autoeq.h) run through e='NAME':
+ * Fortran (free and fixed form) and C files written for these tests, for
+ * problems with closed-form answers; the build cache; and bad files, which
+ * must give a clear error and no output files.
+ *
+ * Closed forms (doc/auto-users.md): Bratu's u'' + lambda e^u = 0, u(0) =
+ * u(1) = 0 has u(x) = 2 ln cosh s - 2 ln cosh(s(2x - 1)) with lambda =
+ * 8 s^2 / cosh^2 s; the fold is where s tanh s = 1, and there u'(0) =
+ * 4 s tanh s = 4, max u = 2 ln cosh s.  The straight elastica theta'' +
+ * P sin theta = 0, theta'(0) = theta'(1) = 0 branches at P = (n pi)^2.
+ * Tolerances: NTST=20, NCOL=4 collocation is accurate to about h^8 ~ 4e-11
+ * in the mesh points' values (h = 1/20); the fold and branch points are
+ * located by the engine's secant iteration to EPSS-type tolerances, so 1e-8
+ * for their parameter values; the solution quantities at the fold move to
+ * first order with the located arclength, hence 1e-6. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "cable/cable_aufile.h"
+#include "cable/cable_autoeq.h"
+#include "cable/cable_status.h"
+#include "harness.h"
+#include "script_host_cable.h"
+#include "test_files.h"
+
+#define DATA "tests/data/autoeq"
+#define TMP "tests/tmp/autoeq"
+#define PI 3.14159265358979323846
+
+static int exists(const char *p)
+{
+  struct stat st;
+  return stat(p, &st) == 0;
+}
+
+/* Copies DATA/folder/{files} into TMP/folder (removing old outputs). */
+static void stage(const char *folder, const char *const *files)
+{
+  char from[512], to[512];
+  snprintf(to, sizeof to, "%s/%s", TMP, folder);
+  mkdir(TMP, 0755);
+  mkdir(to, 0755);
+  const char *outs[] = {"b.", "s.", "d."};
+  for (const char *const *f = files; *f; f++) {
+    snprintf(from, sizeof from, "%s/%s/%s", DATA, folder, *f);
+    snprintf(to, sizeof to, "%s/%s/%s", TMP, folder, *f);
+    if (!copy_file(from, to)) test_true(from, 0);
+    for (int k = 0; k < 3; k++) {
+      snprintf(to, sizeof to, "%s/%s/%s%s", TMP, folder, outs[k], *f);
+      unlink(to);
+    }
+  }
+}
+
+/* Runs TMP/folder/script; 0 or the error. */
+static int replay(const char *folder, const char *script, cable_error *err)
+{
+  char path[1100], dir[512];
+  snprintf(dir, sizeof dir, "%s/%s", TMP, folder);
+  snprintf(path, sizeof path, "%s/%s", dir, script);
+  cable_replay_options o;
+  cable_replay_options_init(&o);
+  o.dir = dir;
+  FILE *log = fopen(TMP "/log.txt", "a");
+  o.log = log;
+  int rc = cable_replay_run_file(path, &o, err);
+  if (log) fclose(log);
+  return rc;
+}
+
+/* The b-file row of the k-th point of type ty (AUTO code), or -1. */
+static int row_of(const cable_bfile_branch *br, int ty, int k)
+{
+  for (int i = 0; i < br->nrow; i++)
+    if (br->ty[i] == ty && k-- == 0) return i;
+  return -1;
+}
+
+static double col(const cable_bfile_branch *br, const char *name, int row)
+{
+  const double *c = cable_bfile_column(br, name);
+  return c && row >= 0 ? c[row] : nan("");
+}
+
+/* s with s tanh s = 1 (Newton from 1.2, quadratic convergence). */
+static double fold_s(void)
+{
+  double s = 1.2;
+  for (int i = 0; i < 50; i++) s -= (s * tanh(s) - 1) / (tanh(s) + s / (cosh(s) * cosh(s)));
+  return s;
+}
+
+/* integral over [0,1] of u^p for Bratu's solution with parameter s
+ * (composite Simpson, 20000 panels: error ~ 1e-16 for this smooth u). */
+static double bratu_integral(double s, int p)
+{
+  int n = 20000;
+  double sum = 0;
+  for (int i = 0; i <= n; i++) {
+    double x = (double)i / n, u = 2 * log(cosh(s)) - 2 * log(cosh(s * (2 * x - 1)));
+    double w = (i == 0 || i == n) ? 1 : (i % 2 ? 4 : 2);
+    sum += w * (p == 1 ? u : u * u);
+  }
+  return sum / (3.0 * n);
+}
+
+static void bratu_fold(const char *folder, const char *src)
+{
+  const char *files[] = {src, "c.bratu", "bratu.auto", NULL};
+  stage(folder, files);
+  cable_error err;
+  cable_error_clear(&err);
+  int rc = replay(folder, "bratu.auto", &err);
+  char buf[1200];
+  test_report(rc == 0, "%s: e='bratu' runs (%s)", src, rc ? cable_error_format(&err, buf, sizeof buf) : "ok");
+  char b[512];
+  snprintf(b, sizeof b, "%s/%s/b.bratu", TMP, folder);
+  cable_bfile *bf = cable_bfile_read(b, &err);
+  if (!test_true("b.bratu was written", bf != NULL && bf->nbranch == 1)) {
+    cable_bfile_free(bf);
+    return;
+  }
+  const cable_bfile_branch *br = &bf->branch[0];
+  double s = fold_s(), lam = 8 * s * s / (cosh(s) * cosh(s));
+  int lp = row_of(br, 5, 0);
+  char what[160];
+  snprintf(what, sizeof what, "%s: Bratu's fold lambda* = 8 s^2/cosh^2 s, s tanh s = 1", src);
+  test_rel(what, col(br, "PAR(1)", lp), lam, 1e-8);
+  test_int("one LP", row_of(br, 5, 1) < 0 && lp >= 0, 1);
+  /* the UZ labels: lambda = 1, 3 on the lower branch, then 3, 1 on the upper */
+  test_int("four UZ (lambda = 1, 3, 3, 1)", row_of(br, -4, 3) >= 0 && row_of(br, -4, 4) < 0, 1);
+  cable_bfile_free(bf);
+}
+
+static void elastica_bps(void)
+{
+  const char *files[] = {"elastica.f", "c.elastica", "elastica.auto", NULL};
+  stage("elastica_f", files);
+  cable_error err;
+  int rc = replay("elastica_f", "elastica.auto", &err);
+  char buf[1200];
+  test_report(rc == 0, "elastica.f (fixed form): runs (%s)", rc ? cable_error_format(&err, buf, sizeof buf) : "ok");
+  cable_bfile *bf = cable_bfile_read(TMP "/elastica_f/b.elastica", &err);
+  if (!test_true("b.elastica was written", bf != NULL)) return;
+  const cable_bfile_branch *br = &bf->branch[0];
+  test_rel("elastica.f: first BP at P = pi^2", col(br, "PAR(1)", row_of(br, 6, 0)), PI * PI, 1e-8);
+  test_rel("elastica.f: second BP at P = (2 pi)^2", col(br, "PAR(1)", row_of(br, 6, 1)), 4 * PI * PI, 1e-8);
+  test_true("elastica.f: no third BP below RL1 = 42", row_of(br, 6, 2) < 0);
+  cable_bfile_free(bf);
+}
+
+/* ICND and PVLS with GETP, Fortran or C. */
+static void bratu_integral_getp(const char *folder, const char *src)
+{
+  const char *files[] = {src, "c.bratuint", "bratuint.auto", NULL};
+  stage(folder, files);
+  cable_error err;
+  int rc = replay(folder, "bratuint.auto", &err);
+  char buf[1200], b[512], what[200];
+  test_report(rc == 0, "%s: runs (%s)", src, rc ? cable_error_format(&err, buf, sizeof buf) : "ok");
+  snprintf(b, sizeof b, "%s/%s/b.bratuint", TMP, folder);
+  cable_bfile *bf = cable_bfile_read(b, &err);
+  if (!test_true("b.bratuint was written", bf != NULL)) return;
+  const cable_bfile_branch *br = &bf->branch[0];
+  int lp = row_of(br, 5, 0);
+  double s = fold_s(), lam = 8 * s * s / (cosh(s) * cosh(s));
+  struct {
+    const char *col, *what;
+    double want, tol;
+  } chk[] = {
+    {"PAR(1)", "fold lambda* with NINT=1", lam, 1e-8},
+    {"PAR(2)", "ICND: PAR(2) = integral of u at the fold", bratu_integral(s, 1), 1e-6},
+    {"PAR(3)", "GETP('INT',1) = integral of u", bratu_integral(s, 1), 1e-6},
+    {"PAR(4)", "GETP('MAX',1) = u(1/2) = 2 ln cosh s", 2 * log(cosh(s)), 1e-6},
+    {"PAR(5)", "GETP('BV0',2) = u'(0) = 4", 4.0, 1e-6},
+    {"PAR(6)", "GETP('NRM',1) = sqrt(integral of u^2)", sqrt(bratu_integral(s, 2)), 1e-6},
+    {"PAR(7)", "GETP('BV1',2) = u'(1) = -4", -4.0, 1e-6},
+    {"PAR(8)", "GETP('MIN',2) = u'(1) = -4", -4.0, 1e-6},
+  };
+  for (size_t k = 0; k < sizeof chk / sizeof chk[0]; k++) {
+    snprintf(what, sizeof what, "%s: %s", src, chk[k].what);
+    test_rel(what, col(br, chk[k].col, lp), chk[k].want, chk[k].tol);
+  }
+  /* GETP's integral and the integral condition agree at every point */
+  double worst = 0;
+  for (int i = 0; i < br->nrow; i++) worst = fmax(worst, fabs(col(br, "PAR(3)", i) - col(br, "PAR(2)", i)));
+  snprintf(what, sizeof what, "%s: GETP('INT') equals the ICND value along the branch", src);
+  test_le(what, worst, 1e-9);
+  cable_bfile_free(bf);
+}
+
+/* IPLT = NDIM + 1: the second column is the integral of U(1), and A1 bounds
+ * it (AUTO's principal solution measure). */
+static void iplt_integral(void)
+{
+  const char *files[] = {"bratu.f90", "c.bratu", "bratu.auto", NULL};
+  stage("bratu_iplt", files);
+  cable_error err;
+  int rc = replay("bratu_iplt", "bratu.auto", &err);
+  test_true("IPLT=3: runs", rc == 0);
+  cable_bfile *bf = cable_bfile_read(TMP "/bratu_iplt/b.bratu", &err);
+  if (!test_true("IPLT=3: b.bratu was written", bf != NULL)) return;
+  const cable_bfile_branch *br = &bf->branch[0];
+  /* the lower solution at lambda = 1: 8 s^2 / cosh^2 s = 1 with s < 1.2 (bisection) */
+  double lo = 0.0, hi = 1.2;
+  for (int i = 0; i < 200; i++) {
+    double m = 0.5 * (lo + hi);
+    if (8 * m * m / (cosh(m) * cosh(m)) < 1) lo = m;
+    else hi = m;
+  }
+  test_rel("IPLT=3: column INTEGRAL U(1) at the UZ lambda = 1 is the integral of u", col(br, "INTEGRAL U(1)", row_of(br, -4, 0)),
+           bratu_integral(0.5 * (lo + hi), 1), 1e-6);
+  int last = br->nrow - 1;
+  test_true("IPLT=3, A1=0.5: the run ends (EP) once the integral passes 0.5, before the fold",
+            last > 0 && br->ty[last] == 9 && col(br, "INTEGRAL U(1)", last) > 0.5 &&
+                col(br, "INTEGRAL U(1)", last - 1) <= 0.5 && row_of(br, 5, 0) < 0);
+  cable_bfile_free(bf);
+}
+
+/* dat='bratu.dat': AUTO's start data (t and U(1), U(2) per row) instead of
+ * STPNT's u = 0: the exact upper solution at s = 2 (lambda = 32/cosh^2 2),
+ * continued towards smaller lambda, gives the upper solution at lambda = 1,
+ * which STPNT's start never reaches with DS < 0. */
+static void dat_start(void)
+{
+  const char *files[] = {"bratu.f90", NULL};
+  stage("bratu_f90", files);
+  double s0 = 2.0, lam0 = 8 * s0 * s0 / (cosh(s0) * cosh(s0));
+  FILE *f = fopen(TMP "/bratu_f90/bratu.dat", "w");
+  for (int i = 0; f && i <= 200; i++) {
+    double x = i / 200.0;
+    /* t in the data's own units, [0, 2]: AUTO rescales it to [0, 1] */
+    fprintf(f, "%.17g %.17g %.17g\n", 2 * x, 2 * log(cosh(s0)) - 2 * log(cosh(s0 * (2 * x - 1))),
+            -4 * s0 * tanh(s0 * (2 * x - 1)));
+  }
+  if (f) fclose(f);
+  f = fopen(TMP "/bratu_f90/c.bratudat", "w");
+  if (f) {
+    fprintf(f, "e='bratu', dat='bratu.dat'\nNDIM=2, IPS=4, IRS=0, ICP=[1], NBC=2, NINT=0, IPLT=3\n"
+               "NTST=20, NCOL=4, NMX=60, DS=-0.01, DSMAX=0.5, RL0=0.5, RL1=4\nPAR={1: %.17g}\nUZR={1: 1.0}\n",
+            lam0);
+    fclose(f);
+  }
+  f = fopen(TMP "/bratu_f90/dat.auto", "w");
+  if (f) {
+    fputs("r = run(c='bratudat', sv='bratudat')\n", f);
+    fclose(f);
+  }
+  cable_error err;
+  char buf[1200];
+  int rc = replay("bratu_f90", "dat.auto", &err);
+  test_report(rc == 0, "dat=: runs (%s)", rc ? cable_error_format(&err, buf, sizeof buf) : "ok");
+  cable_bfile *bf = cable_bfile_read(TMP "/bratu_f90/b.bratudat", &err);
+  if (!test_true("dat=: b.bratudat was written", bf != NULL)) return;
+  const cable_bfile_branch *br = &bf->branch[0];
+  double lo = 1.2, hi = 6.0;   /* the upper root of 8 s^2 / cosh^2 s = 1 */
+  for (int i = 0; i < 200; i++) {
+    double m = 0.5 * (lo + hi);
+    if (8 * m * m / (cosh(m) * cosh(m)) > 1) lo = m;
+    else hi = m;
+  }
+  test_rel("dat=: the start is the table's solution (integral of u at s = 2)", col(br, "INTEGRAL U(1)", 0),
+           bratu_integral(s0, 1), 1e-6);
+  test_rel("dat=: the UZ at lambda = 1 is the upper solution (its integral)", col(br, "INTEGRAL U(1)", row_of(br, -4, 0)),
+           bratu_integral(0.5 * (lo + hi), 1), 1e-6);
+  cable_bfile_free(bf);
+}
+
+static void cache(void)
+{
+  const char *files[] = {"bratu.f90", "c.bratu", "bratu.auto", NULL};
+  stage("bratu_f90", files);
+  cable_error err;
+  cable_autoeq *m = cable_autoeq_open(TMP "/bratu_f90/bratu.f90", &err);
+  test_true("open after the run: the module comes from the cache", m && !cable_autoeq_was_built(m));
+  char so[1100];
+  snprintf(so, sizeof so, "%s", m ? cable_autoeq_module(m) : "");
+  cable_autoeq_close(m);
+  FILE *f = fopen(TMP "/bratu_f90/bratu.f90", "a");
+  if (f) {
+    fputs("! a changed file is built again\n", f);
+    fclose(f);
+  }
+  m = cable_autoeq_open(TMP "/bratu_f90/bratu.f90", &err);
+  test_true("a changed file is rebuilt into another module",
+            m && cable_autoeq_was_built(m) && strcmp(so, cable_autoeq_module(m)) != 0);
+  cable_autoeq_close(m);
+  char path[256];
+  test_true("find: NAME.f90 before NAME.f and NAME.c", cable_autoeq_find(TMP "/bratu_f90", "bratu", path, sizeof path) == 0 &&
+                                                         strstr(path, "bratu.f90") != NULL);
+  test_int("find: no file, CABLE_ERR_NOTFOUND", cable_autoeq_find(TMP "/bratu_f90", "nothing", path, sizeof path),
+           CABLE_ERR_NOTFOUND);
+}
+
+/* name: the script's e= and c= (e_name NULL: the same); src: the file the
+ * error must name (the equation file or the constants file). */
+static void bad_run(const char *name, const char *e_name, const char *src, int status, int line, const char *needle)
+{
+  char c[64], script[64];
+  snprintf(c, sizeof c, "c.%s", name);
+  snprintf(script, sizeof script, "%s.auto", name);
+  const char *files[] = {src, c, NULL};
+  stage("bad", strcmp(src, c) == 0 ? files + 1 : files);
+  char sp[512];
+  snprintf(sp, sizeof sp, "%s/bad/%s", TMP, script);
+  FILE *f = fopen(sp, "w");
+  if (f) {
+    fprintf(f, "run(e='%s', c='%s', sv='%s')\n", e_name ? e_name : name, name, name);
+    fclose(f);
+  }
+  cable_error err;
+  cable_error_clear(&err);
+  int rc = replay("bad", script, &err);
+  char buf[1200];
+  cable_error_format(&err, buf, sizeof buf);
+  test_report(rc == status && strstr(buf, src) && strstr(buf, needle), "%s: refused: %s", src, buf);
+  char want[64];
+  snprintf(want, sizeof want, "%s:%d:", src, line);
+  if (line > 0) test_report(strstr(buf, want) != NULL, "%s: the error names line %d of the file", src, line);
+  const char *outs[] = {"b.", "s.", "d."};
+  int none = 1;
+  for (int k = 0; k < 3; k++) {
+    snprintf(sp, sizeof sp, "%s/bad/%s%s", TMP, outs[k], name);
+    none &= !exists(sp);
+  }
+  test_true("no b./s./d. file written", none);
+}
+
+static void bad_file(const char *name, const char *src, int line, const char *needle)
+{
+  bad_run(name, NULL, src, CABLE_ERR_PLUGIN, line, needle);
+}
+
+int main(void)
+{
+  setenv("CABLE_CACHE_DIR", TMP "/cache", 1);
+  mkdir("tests/tmp", 0755);
+  mkdir(TMP, 0755);
+  if (system("rm -rf " TMP "/cache") != 0) test_true("clear the cache", 0);
+  bratu_fold("bratu_f90", "bratu.f90");
+  bratu_fold("bratu_c", "bratu.c");
+  elastica_bps();
+  bratu_integral_getp("bratuint_f90", "bratuint.f90");
+  bratu_integral_getp("bratuint_c", "bratuint.c");
+  iplt_integral();
+  dat_start();
+  cache();
+  bad_file("syntax", "syntax.f90", 8, "array reference");
+  bad_file("nofunc", "nofunc.f90", 0, "does not define SUBROUTINE FUNC");
+  bad_file("wrongsig", "wrongsig.f90", 2, "has 7 arguments, AUTO passes 8");
+  bad_file("wrongsigc", "wrongsigc.c", 5, "conflicting types for");
+  bad_file("nopvls", "nopvls.c", 0, "pvls: the equation file does not define it");
+  bad_file("getpfld", "getpfld.f90", 55, "GETP: 'FLD': cable does not provide it");
+  /* constants as AUTO reads them */
+  bad_run("nintbuiltin", "bratu", "c.nintbuiltin", CABLE_ERR_INPUT, 3,
+          "NINT: NINT=1 contradicts problem 'bratu', which has NINT=0");
+  bad_run("nondim", NULL, "nondim.f90", CABLE_ERR_INPUT, 0, "NDIM: equations from an AUTO file take NDIM from the constants");
+  return test_summary();
+}
