@@ -5,6 +5,7 @@
  * (gfortran -fc-prototypes-external); C files are compiled with cable's
  * auto_f2c.h, whose prototypes turn a wrong signature into a compile error. */
 #include <ctype.h>
+#include <dirent.h>
 #include <stdarg.h>
 #include <errno.h>
 #include <fcntl.h>
@@ -92,23 +93,30 @@ static int cache_dir(char *out, size_t len, cable_error *err)
 static char *read_all(const char *path, size_t *n, cable_error *err)
 {
   FILE *f = fopen(path, "rb");
-  if (!f) {
+  struct stat st;
+  if (!f || fstat(fileno(f), &st) != 0) {
     cable_error_set(err, CABLE_ERR_IO, path, 0, "", "cannot open the equation file: %s", strerror(errno));
+    if (f) fclose(f);
     return NULL;
   }
-  char *buf = malloc((size_t)AUTOEQ_SRC_MAX + 1);
+  if (st.st_size > AUTOEQ_SRC_MAX) {
+    fclose(f);
+    cable_error_set(err, CABLE_ERR_IO, path, 0, "", "larger than %ld bytes: not an equation file", AUTOEQ_SRC_MAX);
+    return NULL;
+  }
+  size_t cap = (size_t)st.st_size;
+  char *buf = malloc(cap + 1);
   if (!buf) {
     fclose(f);
     cable_error_set(err, CABLE_ERR_ALLOC, path, 0, "", "out of memory");
     return NULL;
   }
-  *n = fread(buf, 1, (size_t)AUTOEQ_SRC_MAX + 1, f);
-  int bad = ferror(f);
+  *n = fread(buf, 1, cap, f);
+  int bad = ferror(f) || *n != cap;
   fclose(f);
-  if (bad || *n > (size_t)AUTOEQ_SRC_MAX) {
+  if (bad) {
     free(buf);
-    cable_error_set(err, CABLE_ERR_IO, path, 0, "", bad ? "read error" : "larger than %ld bytes: not an equation file",
-                    AUTOEQ_SRC_MAX);
+    cable_error_set(err, CABLE_ERR_IO, path, 0, "", "read error");
     return NULL;
   }
   buf[*n] = '\0';
@@ -256,7 +264,7 @@ static int check_fortran_prototypes(cable_autoeq *m, const char *proto, cable_er
         if (strncmp(a, "const ", 6) == 0) a += 6;
         char type = strncmp(a, "int *", 5) == 0 ? 'i' : strncmp(a, "double *", 8) == 0 ? 'd' : '?';
         const char *argname = strrchr(a, '*') ? strrchr(a, '*') + 1 : a;
-        if (n >= (int)strlen(auto_args[r])) break;
+        if (n >= (int)strlen(auto_args[r])) continue;   /* counted; reported below */
         if (type != auto_args[r][n])
           rc = cable_error_set(err, CABLE_ERR_PLUGIN, m->src, m->def_line[r], autoeq_routine_name[r],
                                "argument %d (%s) is %s, AUTO passes %s: AUTO calls %s", n + 1, argname,
@@ -324,18 +332,17 @@ static int report_compile_error(cable_autoeq *m, const char *log, const char *ke
   return cable_error_set(err, CABLE_ERR_PLUGIN, m->src, lno, "", "%s (compiler output: %s)", msg, kept_log);
 }
 
+/* Removes the build directory and everything in it (the compat files, the
+ * compiler's outputs, Fortran .mod files). */
 static void remove_tree(const char *dir)
 {
-  static const char *const files[] = {"proto.h", "module.so", "build.log"};
-  char p[AUTOEQ_PATH_MAX];
-  for (size_t i = 0; i < sizeof files / sizeof files[0]; i++) {
-    fmt_path(p, sizeof p, "%s/%s", dir, files[i]);
-    unlink(p);
+  DIR *d = opendir(dir);
+  char p[AUTOEQ_PATH_MAX + 300];
+  for (struct dirent *e; d && (e = readdir(d)) != NULL;) {
+    if (strcmp(e->d_name, ".") == 0 || strcmp(e->d_name, "..") == 0) continue;
+    if (fmt_path(p, sizeof p, "%s/%s", dir, e->d_name) == 0) unlink(p);
   }
-  for (int i = 0; i < cable_autoeq_compat_nfiles; i++) {
-    fmt_path(p, sizeof p, "%s/%s", dir, cable_autoeq_compat_files[i].name);
-    unlink(p);
-  }
+  if (d) closedir(d);
   rmdir(dir);
 }
 
@@ -413,17 +420,18 @@ int autoeq_build(cable_autoeq *m, cable_error *err)
   /* argv strings must be writable (execvp's prototype) */
   char *src_arg = m->src, ccb[256], a_proto[] = "-fc-prototypes-external", a_syntax[] = "-fsyntax-only",
        a_legacy[] = "-std=legacy", a_o2[] = "-O2", a_pic[] = "-fPIC", a_shared[] = "-shared", a_o[] = "-o",
-       a_defs[] = "-Wl,-z,defs", a_lm[] = "-lm";
+       a_defs[] = "-Wl,-z,defs", a_lm[] = "-lm", modj[AUTOEQ_PATH_MAX + 128];
   snprintf(ccb, sizeof ccb, "%s", cc);
+  fmt_path(modj, sizeof modj, "-J%s", tmp);   /* Fortran .mod files go to the build directory */
   int st_tool = 0;
   if (!rc && m->lang == AUTOEQ_FORTRAN) {
-    char *argv[] = {ccb, a_proto, a_syntax, a_legacy, src_arg, NULL};
+    char *argv[] = {ccb, a_proto, a_syntax, a_legacy, modj, src_arg, NULL};
     st_tool = run_tool(argv, proto, log);
     if (st_tool == 0) rc = check_fortran_prototypes(m, proto, err);
   }
   if (!rc && st_tool == 0) {
     if (m->lang == AUTOEQ_FORTRAN) {
-      char *argv[] = {ccb, a_o2, a_pic, a_shared, a_legacy, inc, src_arg, shim, a_o, mod, a_defs, NULL};
+      char *argv[] = {ccb, a_o2, a_pic, a_shared, a_legacy, modj, inc, src_arg, shim, a_o, mod, a_defs, NULL};
       st_tool = run_tool(argv, NULL, log);
     } else {
       char *argv[] = {ccb, a_o2, a_pic, a_shared, inc, src_arg, shim, a_o, mod, a_defs, a_lm, NULL};

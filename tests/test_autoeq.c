@@ -191,6 +191,32 @@ static void bratu_integral_getp(const char *folder, const char *src)
   snprintf(what, sizeof what, "%s: GETP('INT') equals the ICND value along the branch", src);
   test_le(what, worst, 1e-9);
   cable_bfile_free(bf);
+  if (strstr(src, ".f90")) {
+    /* GETP('STP') into PAR(9) (s-file only): the step that reached each
+       labelled point, which the d-file's DS column prints to 6 digits */
+    char sp[512], dp[512], line[512];
+    snprintf(sp, sizeof sp, "%s/%s/s.bratuint", TMP, folder);
+    snprintf(dp, sizeof dp, "%s/%s/d.bratuint", TMP, folder);
+    cable_sfile *sf = cable_sfile_read(sp, &err);
+    int nchk = 0, bad = 0;
+    for (int i = 0; sf && i < cable_sfile_count(sf); i++) {
+      const cable_solution *x = cable_sfile_get(sf, i);
+      FILE *d = fopen(dp, "r");
+      while (d && fgets(line, sizeof line, d)) {
+        int ibr, pt, it;
+        double par, l2, ds;
+        if (sscanf(line, "%d %d %d %lf %lf %lf", &ibr, &pt, &it, &par, &l2, &ds) == 6 && pt == x->ntot) {
+          nchk++;
+          bad += fabs(x->par[8] - ds) > 5e-6 * fmax(fabs(ds), 1e-300) + 1e-300;
+          break;
+        }
+      }
+      if (d) fclose(d);
+    }
+    cable_sfile_free(sf);
+    snprintf(what, sizeof what, "%s: GETP('STP') is the d-file's DS at every stored solution (%d checked)", src, nchk);
+    test_true(what, nchk >= 3 && bad == 0);
+  }
 }
 
 /* IPLT = NDIM + 1: the second column is the integral of U(1), and A1 bounds
@@ -353,6 +379,9 @@ int main(void)
   bad_file("nofunc", "nofunc.f90", 0, "does not define SUBROUTINE FUNC");
   bad_file("wrongsig", "wrongsig.f90", 2, "has 7 arguments, AUTO passes 8");
   bad_file("wrongsigc", "wrongsigc.c", 5, "conflicting types for");
+  bad_file("toomany", "toomany.f90", 6, "has 9 arguments, AUTO passes 8");
+  test_true("a Fortran MODULE leaves no .mod file in the working or the run directory",
+            !exists("bratu_consts.mod") && !exists(TMP "/bad/bratu_consts.mod"));
   bad_file("nopvls", "nopvls.c", 0, "pvls: the equation file does not define it");
   bad_file("getpfld", "getpfld.f90", 55, "GETP: 'FLD': cable does not provide it");
   /* constants as AUTO reads them */

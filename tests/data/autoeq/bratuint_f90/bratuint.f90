@@ -1,7 +1,7 @@
 ! Bratu's problem with an integral condition and PVLS:
 !   u'' + lambda exp(u) = 0, u(0) = u(1) = 0,  integral of u over [0,1] = mu,
 ! PAR(1) = lambda, PAR(2) = mu (NBC + NINT - NDIM + 1 = 2 free parameters).
-! PVLS stores what GETP reports about the solution in PAR(3)..PAR(8).
+! PVLS stores what GETP reports about the solution in PAR(3)..PAR(9).
 SUBROUTINE FUNC(NDIM,U,ICP,PAR,IJAC,F,DFDU,DFDP)
   IMPLICIT NONE
   INTEGER, INTENT(IN) :: NDIM, ICP(*), IJAC
@@ -55,4 +55,5 @@ SUBROUTINE PVLS(NDIM,U,PAR)
   PAR(6) = GETP('NRM', 1, U)
   PAR(7) = GETP('BV1', 2, U)
   PAR(8) = GETP('MIN', 2, U)
+  PAR(9) = GETP('STP', 1, U)   ! not in ICP: only in the s-file
 END SUBROUTINE PVLS
