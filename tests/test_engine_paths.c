@@ -69,6 +69,7 @@ void *aligned_alloc(size_t align, size_t n)
 void free(void *p) { __libc_free(p); }
 #else
 #define COUNT_ALLOCS 0
+#define HEAP_MEASURED 0
 static long alloc_calls; /* stays 0: nothing counts */
 #endif
 
