@@ -45,12 +45,16 @@ int cable_cmd_run(int argc, char **argv, cable_error *err)
   const char **over = calloc((size_t)argc + 1, sizeof *over);
   char **owned = calloc((size_t)argc + 1, sizeof *owned);
   if (!over || !owned) rc = cable_error_set(err, CABLE_ERR_ALLOC, NULL, 0, NULL, "out of memory");
-  for (int i = 0; i < argc && !rc; i++) {
+  /* `cable run NAME ...` is AUTO's run('NAME'): e='NAME', c='NAME' */
+  const char *runname = argc > 0 && !strchr(argv[0], '=') ? argv[0] : NULL;
+  if (runname && (!runname[0] || strlen(runname) >= CABLE_NAME_MAX))
+    rc = cable_error_set(err, CABLE_ERR_INPUT, "<command line>", 0, runname, "not a run name");
+  for (int i = runname ? 1 : 0; i < argc && !rc; i++) {
     const char *eq = strchr(argv[i], '=');
     char key[64];
     if (!eq || eq == argv[i] || (size_t)(eq - argv[i]) >= sizeof key) {
       rc = cable_error_set(err, CABLE_ERR_INPUT, "<command line>", 0, argv[i],
-                           "arguments are KEY=VALUE (for example c=knot72 NMX=50)");
+                           "arguments are NAME (first) and KEY=VALUE (for example c=knot72 NMX=50)");
       break;
     }
     snprintf(key, sizeof key, "%.*s", (int)(eq - argv[i]), argv[i]);
@@ -92,7 +96,7 @@ int cable_cmd_run(int argc, char **argv, cable_error *err)
     o.dir = ".";
     cable_replay *r = cable_replay_alloc(&o);
     script_kwargs kw = {nkw, kwv};
-    rc = r ? cable_replay_run_cli(r, &kw, nover, over, err)
+    rc = r ? cable_replay_run_cli(r, runname, &kw, nover, over, err)
            : cable_error_set(err, CABLE_ERR_ALLOC, NULL, 0, NULL, "out of memory");
     cable_replay_free(r);
   }

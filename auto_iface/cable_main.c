@@ -17,9 +17,10 @@ static void usage(FILE *out)
 {
   fputs("usage: cable COMMAND [ARGS]\n"
         "commands:\n"
-        "  run [c=NAME] [e=PROBLEM] [s=NAME] [sv=NAME] [KEY=VALUE ...]\n"
-        "                     one continuation run, AUTO's run(...) semantics; KEY=VALUE\n"
-        "                     overrides the constants file c.NAME\n"
+        "  run [NAME] [c=NAME] [e=PROBLEM] [s=NAME] [sv=NAME] [KEY=VALUE ...]\n"
+        "                     one continuation run, AUTO's run(...) semantics (a first\n"
+        "                     NAME is run('NAME'): e=NAME c=NAME); KEY=VALUE overrides\n"
+        "                     the constants file c.NAME\n"
         "  replay SCRIPT      replay a run script (a subset of AUTO's Python CLI); output\n"
         "                     files go to the script's directory\n"
         "  table b.NAME       the branch table of a b-file\n"

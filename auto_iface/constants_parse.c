@@ -534,9 +534,10 @@ static int apply_isw(pctx *x, const key_desc *d, const stmt *s)
   int val;
   int st = int_field(x, d, s, &val);
   if (st) return st;
-  if (val != 1 && val != -1)
+  if (val != 1 && val != -1 && val != 2)
     return perr(x, CABLE_ERR_UNSUPPORTED, s->line, s->key,
-                "ISW=%d is not supported by cable: use ISW=1 (continue) or ISW=-1 (switch at a BP)", val);
+                "ISW=%d is not supported by cable: use ISW=1 (continue), ISW=-1 (switch at a BP) or ISW=2 (follow "
+                "an LP in two parameters)", val);
   x->c.isw = val;
   return 0;
 }

@@ -14,6 +14,7 @@
 
 #include "cable/cable_aufile.h"
 #include "cable/cable_cont.h"
+#include "cable/cable_fold.h"
 #include "cable/cable_status.h"
 #include "cable/cable_constants.h"
 #include "script_host_impl.h"
@@ -398,13 +399,30 @@ static int build_setup(cable_replay *r, const script_value *data, const script_k
      the keywords (AUTO: keyword arguments override the c-file) */
   char cfile_s[CABLE_NAME_MAX] = "", cfile_sv[CABLE_NAME_MAX] = "";
   if (!rc && data && data->type == SCRIPT_STRING) {
-    /* run('name'): c.NAME (when present) and s.NAME, as AUTO */
+    /* run('NAME') is AUTO's e='NAME', c='NAME', s='NAME': the equations
+       NAME (an explicit e= wins), c.NAME and s.NAME when they exist.  When
+       there is no problem NAME, the c-file's e names it (cable's
+       extension: c.knot72 says e='braid_knot'). */
     const char *name = script_string_chars(data);
-    if (!ke) s->e[0] = '\0';
-    rc = read_constants_file(r, name, s, 0, err);
+    if (!ke) {
+      rp_problem p;
+      s->e[0] = '\0';
+      rc = find_problem(r, name, NULL, 0, &p, err);
+      if (rc == 0) snprintf(s->e, sizeof s->e, "%s", name);
+      problem_release(r, &p);
+      if (rc == CABLE_ERR_NOTFOUND) {
+        rc = 0;
+        cable_error_clear(err);
+      }
+    }
+    if (!rc) rc = read_constants_file(r, name, s, 0, err);
     if (!rc) snprintf(cfile_sv, sizeof cfile_sv, "%s", s->c.sv);
-    if (!rc) rc = read_solutions_file(r, name, s, err);
-    if (!rc) snprintf(s->c.s, sizeof s->c.s, "%s", name);
+    char spath[1024];
+    rp_path(r, "s", name, spath, sizeof spath);
+    if (!rc && file_exists(spath)) {
+      rc = read_solutions_file(r, name, s, err);
+      if (!rc) snprintf(s->c.s, sizeof s->c.s, "%s", name);
+    }
     if (!rc && !s->e[0]) snprintf(s->e, sizeof s->e, "%s", name);
   }
   if (!rc && kc) {
@@ -593,29 +611,60 @@ static int engine_run(cable_replay *r, rp_setup *s, rp_branch **out, cable_error
   }
   if (s->c.ignored[0])
     fprintf(rp_log(r), "  note: accepted and ignored, as AUTO does for boundary-value problems: %s\n", s->c.ignored);
+  int st = 0;
+  /* ISW = 2 at an LP: the fold's extended problem, its constants (ICP with
+     the null vector's parameter slots) and its own start (cable_fold.h) */
+  cable_fold *fold = NULL;
+  const cable_constants *crun = &s->c;
+  const cable_solution *start = s->start;
+  if (s->c.isw == 2) {
+    char msg[400];
+    fold = cable_fold_alloc(pb, &s->c, s->start, &st, msg, sizeof msg);
+    if (!fold) {
+      problem_release(r, &prob);
+      return cable_error_set(err, st, NULL, 0, "ISW", "%s", msg);
+    }
+    pb = cable_fold_problem(fold);
+    crun = cable_fold_constants(fold);
+    start = NULL;
+  }
   cable_names_fill(&s->names, pb->parnames, pb->npar, pb->unames, pb->ndim);
-  int st = cable_cont_check(pb, &s->c, err);
+  st = cable_cont_check(pb, crun, err);
   if (st) {
+    cable_fold_free(fold);
     problem_release(r, &prob);
     return st;
   }
-  cable_cont *cc = cable_cont_alloc(pb, &s->c, &st);
+  cable_cont *cc = cable_cont_alloc(pb, crun, &st);
   if (!cc) {
+    cable_fold_free(fold);
     problem_release(r, &prob);
     return cable_error_set(err, st, NULL, 0, NULL, "could not set up the solver: %s", cable_status_message(st));
   }
-  st = cable_cont_set_start(cc, s->start);
+  if (st == 0 && fold) {
+    /* the fold run starts on the LP's mesh */
+    double *mesh = malloc((size_t)(crun->ntst + 1) * sizeof *mesh);
+    if (!mesh) st = CABLE_ERR_ALLOC;
+    if (mesh) {
+      cable_fold_mesh(fold, crun->ntst, mesh);
+      st = cable_cont_set_mesh(cc, mesh);
+      free(mesh);
+    }
+  }
+  if (st == 0) st = cable_cont_set_start(cc, start);
   if (st) {
     cable_error_set(err, st, NULL, 0, NULL, "%s", cable_cont_error(cc)[0] ? cable_cont_error(cc) : cable_status_message(st));
     cable_cont_free(cc);
+    cable_fold_free(fold);
     problem_release(r, &prob);
     return st;
   }
   int ibr = ++r->next_branch;
   double t_start = now_seconds();
-  collector col = {rp_branch_alloc(ibr, &s->c, &s->names, s->e), r->opt.diag, 0, isatty(fileno(stderr))};
+  collector col = {rp_branch_alloc(ibr, crun, &s->names, s->e), r->opt.diag, 0, isatty(fileno(stderr))};
   if (!col.b) {
     cable_cont_free(cc);
+    cable_fold_free(fold);
     problem_release(r, &prob);
     return cable_error_set(err, CABLE_ERR_ALLOC, NULL, 0, NULL, "out of memory");
   }
@@ -628,6 +677,7 @@ static int engine_run(cable_replay *r, rp_setup *s, rp_branch **out, cable_error
   snprintf(end_note, sizeof end_note, "branch %d ended: %s: %s", ibr, cable_status_message(st), why);
   if (!col.rc && st < 0) col.rc = rp_branch_set_end_note(col.b, end_note);
   cable_cont_free(cc);
+  cable_fold_free(fold);
   problem_release(r, &prob);
   if (col.rc) {
     rp_branch_decref(col.b);
@@ -733,11 +783,14 @@ static int rp_run(void *ctx, const script_value *start, const script_kwargs *kw,
   return run_with(ctx, start, kw, 0, NULL, out, err);
 }
 
-int cable_replay_run_cli(cable_replay *r, const script_kwargs *names, int nover, const char *const *overrides,
-                         cable_error *err)
+int cable_replay_run_cli(cable_replay *r, const char *name, const script_kwargs *names, int nover,
+                         const char *const *overrides, cable_error *err)
 {
-  script_value out = script_none();
-  int rc = run_with(r, NULL, names, nover, overrides, &out, err);
+  script_value out = script_none(), data = script_none();
+  if (name && script_string_new(&data, name, strlen(name)))
+    return cable_error_set(err, CABLE_ERR_ALLOC, NULL, 0, NULL, "out of memory");
+  int rc = run_with(r, name ? &data : NULL, names, nover, overrides, &out, err);
+  script_value_release(&data);
   script_value_release(&out);
   return rc;
 }

@@ -68,14 +68,16 @@ void cable_replay_free(cable_replay *r);
  * Several scripts may run one after another in one session. */
 const script_host *cable_replay_host(cable_replay *r);
 
-/* `cable run`: one run(...) of the session.  names holds the keywords that
+/* `cable run`: one run(...) of the session.  name: NULL, or the NAME of
+ * `cable run NAME`, which is AUTO's run('NAME') (e='NAME', c='NAME' and
+ * s='NAME' where those exist).  names holds the keywords that
  * take names (c, e, s, sv, ap) as strings; overrides[0..nover-1] are
  * constants-file statements ("NTST=50", "IRS=BP1", "DS='-'") applied in
  * order after the constants file, each as cable_constants_parse_override
  * reads it (an error names the statement and its key).  0 or a negative
  * cable_status with err. */
-int cable_replay_run_cli(cable_replay *r, const script_kwargs *names, int nover, const char *const *overrides,
-                         cable_error *err);
+int cable_replay_run_cli(cable_replay *r, const char *name, const script_kwargs *names, int nover,
+                         const char *const *overrides, cable_error *err);
 
 /* Allocates a session, runs the script file, frees the session.  0 or a
  * negative cable_status with err naming the script line (and the constants

@@ -71,6 +71,7 @@ void cable_cont_free(cable_cont *cc)
                  cc->svec, cc->umax, cc->xq, cc->xdotq};
   for (size_t i = 0; i < sizeof v / sizeof v[0]; i++) free(v[i]);
   cable_solution_free(cc->sol);
+  cable_solution_free(cc->pvsol);
   cont_pencil_free(cc);
   free(cc);
 }
@@ -159,6 +160,19 @@ cable_cont *cable_cont_alloc(const cable_problem *pb, const cable_constants *c, 
   if (!cc->J || !cc->abd || !cc->x || !cc->xdot || !cc->xp || !cc->xdotp || !cc->xt || !cc->xdott ||
       !cc->w1 || !cc->w2 || !cc->w3 || !cc->svec || !cc->umax || !cc->sol || !cc->xq || !cc->xdotq)
     goto fail;
+  /* a user zero on a parameter that is not free is a value PVLS computes
+     (AUTO calls PVLS before its test functions): PVLS runs at every point
+     the test functions are evaluated at */
+  int uz_pvls = 0;
+  for (int k = 0; k < c->nuzr; k++) {
+    int free_par = 0;
+    for (int q = 0; q < cc->nfpr; q++) free_par |= c->icp[q] == c->uzr[k].par;
+    uz_pvls |= !free_par;
+  }
+  if (uz_pvls && pb->pvls) {
+    cc->pvsol = cable_solution_alloc(cc->ndim, cc->ntst, cc->ncol, cc->npar, cc->nfpr);
+    if (!cc->pvsol) goto fail;
+  }
   cc->ds = c->ds;
   cc->uz_hit = -1;
   *status = CABLE_SUCCESS;
@@ -431,10 +445,16 @@ int cable_cont_step(cable_cont *cc)
   }
   double ds_step = cc->ds;
   pencil_result pr = {0};
+  /* AUTO reports no special point in the first step of a run: neither the
+     start (on a UZR value, or the BP a switch starts from, where the test
+     functions vanish) nor a crossing inside the step.  The test functions
+     at the end of the first step are the reference for the second. */
+  int first_step = cc->npt == 1;
   for (;;) {
     rc = cont_correct(cc, cc->x, cc->xdot, ds_step, cc->xt);
     if (rc == CABLE_SUCCESS) rc = cont_tangent_after_newton(cc, cc->xt, cc->xdot, cc->xdott, &cc->tft);
-    if (rc == CABLE_SUCCESS && pencil_step(cc, &pr, &ds_step)) continue; /* a shorter step separates a pair */
+    if (rc == CABLE_SUCCESS && !first_step && pencil_step(cc, &pr, &ds_step))
+      continue; /* a shorter step separates a pair */
     if (rc == CABLE_SUCCESS) break;
     if (rc == CABLE_ERR_CALLBACK) {
       cont_set_error(cc, "a problem callback failed fatally (status %d) at step size %g",
@@ -457,7 +477,7 @@ int cable_cont_step(cable_cont *cc)
   cc->ds_used = ds_step;
   cc->itp = CABLE_TY_NONE;
   cc->uz_hit = -1;
-  int which = -1, type = cont_find_event(cc, &cc->tf, &cc->tft, &which);
+  int which = -1, type = first_step ? CABLE_TY_NONE : cont_find_event(cc, &cc->tf, &cc->tft, &which);
   /* a located special point sits at a zero of a test function: a dip of the
      singular value there is the point itself, not a new one */
   int was_dip = cc->dip_at_x || cc->itp_x != CABLE_TY_NONE;
@@ -471,7 +491,7 @@ int cable_cont_step(cable_cont *cc)
   } else if (pr.coincident && cont_dip_in_step(cc, pr.tmid * ds_step) == CABLE_SUCCESS && cc->queued) {
     cc->itp = CABLE_TY_BP;
     cc->dip_at_x = 1;
-  } else if (!was_dip && cont_check_dip(cc) == CABLE_SUCCESS && cc->queued) {
+  } else if (!first_step && !was_dip && cont_check_dip(cc) == CABLE_SUCCESS && cc->queued) {
     cc->itp = CABLE_TY_BP;
     cc->dip_at_x = 1;
   }

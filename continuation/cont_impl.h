@@ -63,6 +63,8 @@ struct cable_cont {
   cable_point pt;               /* row of the current point */
   double *umax;                 /* [ndim] */
   cable_solution *sol;          /* current solution in s-file form */
+  cable_solution *pvsol;        /* scratch for PVLS at trial points: UZR on a parameter
+                                   that PVLS computes (NULL when no UZR needs it) */
   char err[512];                /* last error message */
   char rejected[200];           /* why the last corrected point was rejected ("" none) */
   /* pencil test (cont_pencil.c): branch points inside one step */

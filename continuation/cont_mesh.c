@@ -208,13 +208,17 @@ void cont_store_solution(cable_cont *cc, int itp, int lab)
   int nd = s->ndim, npts = s->ntst * s->ncol + 1;
   colloc_system_times(s, sol->t);
   memcpy(sol->u, cc->x, (size_t)npts * (size_t)nd * sizeof *sol->u);
-  memcpy(sol->udot, cc->xdot, (size_t)npts * (size_t)nd * sizeof *sol->udot);
+  /* AUTO's convention: the step is DS times the stored direction, so the
+     direction of travel is stored multiplied by the sign of DS (a restart
+     with DS < 0 from a run made with DS < 0 goes on, cont_engine.c) */
+  double dsign = cc->c.ds < 0 ? -1.0 : 1.0;
+  for (size_t i = 0; i < (size_t)npts * (size_t)nd; i++) sol->udot[i] = dsign * cc->xdot[i];
   const double *p = cc->x + (cc->n - cc->nfpr), *pd = cc->xdot + (cc->n - cc->nfpr);
   for (int q = 0; q < cc->nfpr; q++) s->par[s->icp[q]] = p[q];
   memcpy(sol->par, s->par, (size_t)cc->npar * sizeof *sol->par);
   for (int q = 0; q < cc->nfpr; q++) {
     sol->icp[q] = s->icp[q];
-    sol->pardot[q] = pd[q];
+    sol->pardot[q] = dsign * pd[q];
   }
   sol->ntot = cc->npt;
   sol->itp = itp;

@@ -1,9 +1,26 @@
 /* Starting a branch and the driver loop that hands points to a sink. */
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
+#include "cable/cable_fold.h"
 #include "cont_impl.h"
+
+int cable_cont_set_mesh(cable_cont *cc, const double *mesh)
+{
+  if (!cc || !mesh) return CABLE_ERR_NULL;
+  if (cc->ended) return cc->end_status;
+  int nt = cc->sys->ntst;
+  int ok = mesh[0] == 0.0 && mesh[nt] == 1.0;
+  for (int j = 0; j < nt && ok; j++) ok = mesh[j + 1] > mesh[j];
+  if (!ok) {
+    cont_set_error(cc, "the mesh must increase from 0 to 1 in NTST = %d intervals", nt);
+    return CABLE_ERR_INPUT;
+  }
+  memcpy(cc->sys->mesh, mesh, (size_t)(nt + 1) * sizeof *mesh);
+  return CABLE_SUCCESS;
+}
 
 int cable_cont_set_start(cable_cont *cc, const cable_solution *start)
 {
@@ -56,7 +73,7 @@ int cable_cont_set_start(cable_cont *cc, const cable_solution *start)
 
 static const char *type_name(int itp)
 {
-  switch (itp) {
+  switch (itp >= 0 ? itp % 10 : -((-itp) % 10)) {
   case CABLE_TY_BP: return "BP";
   case CABLE_TY_LP: return "LP";
   case CABLE_TY_UZ: return "UZ";
@@ -75,6 +92,9 @@ static void emit(cable_cont *cc, const cable_sink *sink, int ibr, int *lab)
     pt->itp = CABLE_TY_RG;
     labelled = 1;
   }
+  /* AUTO's types on a fold curve (ISW = 2): the point's type + 10 ITPST */
+  if (cc->c.isw == 2 && pt->itp != CABLE_TY_NONE && abs(pt->itp) < 10)
+    pt->itp += pt->itp > 0 ? 10 * CABLE_FOLD_ITPST : -10 * CABLE_FOLD_ITPST;
   pt->ibr = ibr;
   pt->lab = labelled ? (*lab)++ : 0;
   pt->note = cc->note[0] ? cc->note : NULL;

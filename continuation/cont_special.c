@@ -44,11 +44,40 @@ static double param_value(const cable_cont *cc, const double *x, int k)
   return cc->sys->par[k];
 }
 
+/* PVLS at the point x into cc->pvsol->par (its other parameters are the
+ * run's); 0 on success. */
+static int pvls_at(cable_cont *cc, const double *x)
+{
+  cable_solution *sol = cc->pvsol;
+  const colloc_system *s = cc->sys;
+  int npts = s->ntst * s->ncol + 1;
+  if (sol->ntst != s->ntst) return -1; /* the mesh size is fixed for a run */
+  colloc_system_times(s, sol->t);
+  memcpy(sol->u, x, (size_t)npts * (size_t)cc->ndim * sizeof *sol->u);
+  memcpy(sol->par, s->par, (size_t)cc->npar * sizeof *sol->par);
+  const double *p = x + (cc->n - cc->nfpr);
+  for (int q = 0; q < cc->nfpr; q++) {
+    sol->par[s->icp[q]] = p[q];
+    sol->icp[q] = s->icp[q];
+  }
+  sol->pvls_icp = cc->c.icp;
+  sol->pvls_nicp = cc->c.nicp;
+  sol->err_est = -1.0;
+  return cc->pb->pvls(sol, sol->par, cc->pb->params);
+}
+
 void cont_tests_fill(cable_cont *cc, const double *x, const double *xdot, cont_tests *tf)
 {
   tf->lp = xdot[cc->n - cc->nfpr];
-  for (int k = 0; k < cc->c.nuzr; k++)
-    tf->uz[k] = param_value(cc, x, cc->c.uzr[k].par) - cc->c.uzr[k].value;
+  int pv = cc->pvsol && cc->c.nuzr > 0 && pvls_at(cc, x) == 0;
+  for (int k = 0; k < cc->c.nuzr; k++) {
+    int j = cc->c.uzr[k].par;
+    double v = param_value(cc, x, j);
+    int free_par = 0;
+    for (int q = 0; q < cc->nfpr; q++) free_par |= cc->sys->icp[q] == j;
+    if (pv && !free_par) v = cc->pvsol->par[j];
+    tf->uz[k] = v - cc->c.uzr[k].value;
+  }
 }
 
 static double bp_test(const cont_tests *t) { return t->det_sign * (t->sv1 > 0 ? t->sv1 : 1.0); }
@@ -300,7 +329,9 @@ static int dip_minimise(cable_cont *cc, double lo, double mid, double fm, double
 int cont_check_dip(cable_cont *cc)
 {
   double a = cc->tfp.sv1, m = cc->tf.sv1, b = cc->tft.sv1;
-  if (cc->c.isp <= 0 || cc->npt < 2 || !(a > 0 && m > 0 && b > 0)) return CABLE_TY_NONE;
+  /* the three points must not include the start: its first step reports
+     nothing (AUTO), and after a switch its sigma_1 is the BP's ~0 */
+  if (cc->c.isp <= 0 || cc->npt < 3 || !(a > 0 && m > 0 && b > 0)) return CABLE_TY_NONE;
   if (!(m < a && m < b && m < CONT_DIP_RATIO * fmax(a, b))) return CABLE_TY_NONE;
   return dip_minimise(cc, -fabs(cc->ds_prev), 0.0, m, fabs(cc->ds_used), a, b);
 }

@@ -226,7 +226,7 @@ static void test_bad_input(void)
   bad(&snap, "unknown key argument", "run c=good FOO=1 sv=bad", "command line", "FOO: unknown key");
   bad(&snap, "negative NTST argument", "run c=good NTST=-5 sv=bad", "NTST=-5", "NTST: must be an integer >= 1");
   bad(&snap, "NaN argument", "run c=good NTST=nan sv=bad", "NTST=nan", "NTST: must be an integer");
-  bad(&snap, "argument without '='", "run c=good NMX sv=bad", "command line", "NMX: arguments are KEY=VALUE");
+  bad(&snap, "argument without '='", "run c=good NMX sv=bad", "command line", "NMX: arguments are NAME (first) and KEY=VALUE");
   bad(&snap, "argument without a value", "run c=good NMX= sv=bad", "command line", "NMX: no value");
   bad(&snap, "argument given twice", "run c=good NMX=3 NMX=4 sv=bad", "command line", "NMX: given twice");
   bad(&snap, "malformed label name", "run c=good s=good IRS=XY1 sv=bad", "IRS=XY1", "IRS: unknown label 'XY1'");
@@ -452,6 +452,42 @@ static cable_bfile *bcol(const char *path, const char *col, const double **v, in
   return bf;
 }
 
+/* cable run NAME is AUTO's run('NAME'): e='NAME', c='NAME' (auto-07p 0.9.2
+ * runs br2.f90 for run('br2') although c.br2 says e='nosuch'), and s.NAME
+ * only when it exists.  Here c.bratu names another problem and there is no
+ * s.bratu: the run must be Bratu's (its fold at lambda* = 3.5138307191). */
+static void test_run_name(void)
+{
+  char out[8192];
+  FILE *f = fopen(wpath("c.bratu"), "w");
+  if (f) {
+    fputs("e = 'elastica'\nNDIM = 2, NBC = 2, IPS = 4\nICP = ['lambda']\nNTST = 10, NCOL = 4, JAC = 1\n"
+          "ILP = 1, DS = 0.1, DSMIN = 1e-5, DSMAX = 0.5, NMX = 40, RL1 = 5\n", f);
+    fclose(f);
+  }
+  int rc = cli(out, sizeof out, "run bratu sv=byname");
+  test_int("cable run bratu (c.bratu says e='elastica', no s.bratu): exit 0", rc, 0);
+  const double *lam;
+  int n;
+  cable_bfile *b = bcol(wpath("b.byname"), "lambda", &lam, &n);
+  double lmax = -1;
+  for (int i = 0; i < n; i++) lmax = lam[i] > lmax ? lam[i] : lmax;
+  /* NTST = 10, NCOL = 4: the fold's discretisation error O(h^8) ~ 1e-8 */
+  test_rel("cable run bratu ran Bratu's problem: its fold", lmax, 3.5138307191251612, 1e-7);
+  cable_bfile_free(b);
+  /* an explicit e= wins over the name: the straight elastica passes
+     lambda = 3.6, which no Bratu solution reaches */
+  rc = cli(out, sizeof out, "run bratu e=elastica sv=byname2");
+  b = bcol(wpath("b.byname2"), "lambda", &lam, &n);
+  lmax = -1;
+  for (int i = 0; i < n; i++) lmax = lam[i] > lmax ? lam[i] : lmax;
+  test_true("cable run bratu e=elastica runs the elastica (lambda passes 3.6)", rc == 0 && lmax > 3.6);
+  cable_bfile_free(b);
+  remove(wpath("c.bratu"));
+  remove_outputs("byname");
+  remove_outputs("byname2");
+}
+
 /* cable run KEY=VALUE: each argument is a constants-file statement (bare
  * words are strings), DS=- reverses the direction as AUTO's DS='-'. */
 static void test_run_overrides(void)
@@ -533,6 +569,7 @@ int main(int argc, char **argv)
   test_csv();
   test_cfile_s_sv();
   test_run_overrides();
+  test_run_name();
   char cmd[4 * PATH_MAX];
   snprintf(cmd, sizeof cmd, "rm -rf '%s'", work);
   (void)!system(cmd);

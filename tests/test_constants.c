@@ -193,7 +193,7 @@ static const bad_case bad_cases[] = {
   {"c.sp", "SP = ['LP0']\n", CABLE_ERR_UNSUPPORTED, 1, "SP", "not supported by cable"},
   {"c.tykey", "TY = 'BP'\n", CABLE_ERR_UNSUPPORTED, 1, "TY", "not supported by cable"},
   {"c.ips2", "IPS = 2\n", CABLE_ERR_UNSUPPORTED, 1, "IPS", "IPS=4 boundary-value problems only"},
-  {"c.isw2", "ISW = 2\n", CABLE_ERR_UNSUPPORTED, 1, "ISW", "not supported"},
+  {"c.isw3", "ISW = 3\n", CABLE_ERR_UNSUPPORTED, 1, "ISW", "not supported"},
   {"c.iplt_range", "NDIM = 2\nIPLT = -3\n", CABLE_ERR_INPUT, 2, "IPLT", "outside -NDIM..3*NDIM"},
   {"c.rl_order", "RL0 = 5\nRL1 = 1\n", CABLE_ERR_INPUT, 2, "RL1", "less than RL1"},
   {"c.ds_order", "DSMIN = 0.5, DSMAX = 0.1\n", CABLE_ERR_INPUT, 1, "DSMAX", "must not exceed"},

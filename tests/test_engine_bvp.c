@@ -140,9 +140,11 @@ static void test_elastica_exact_zero_pivot(memrun *r)
 
 /* Fixed steps (IADS = 0) long enough to hold two branch points: from
  * lambda = 1, DS = 35, 40 and 45 steps (the trivial branch's tangent is pure
- * lambda) put BP1 and BP2 inside the first step for DS = 40 and 45, where the
- * determinant keeps its sign; DS = 35 puts BP1 alone in a 35-wide bracket;
- * DS = 99 puts all three in the first step.
+ * lambda) put BP1 and BP2 inside the step from lambda = 1 for DS = 40 and 45,
+ * where the determinant keeps its sign; DS = 35 puts BP1 alone in a 35-wide
+ * bracket; DS = 99 puts all three in that step.  The run starts one step
+ * earlier, at lambda = 1 - DS (PAR override), because no special point is
+ * reported in a run's first step (AUTO's rule, test_auto_semantics.c).
  * Before the pencil test, DS = 45 lost BP1 and BP2 without a word, DS = 40
  * lost BP1, and DS = 35 failed to locate BP1 within ITMX. */
 static void test_elastica_fixed_steps(memrun *r)
@@ -155,6 +157,9 @@ static void test_elastica_fixed_steps(memrun *r)
     c.rl1 = 100.0;
     c.isp = 2; c.ilp = 0;
     c.epss = 1e-10;
+    c.npar_override = 1;
+    c.par_override[0].index = 0;
+    c.par_override[0].value = 1.0 - steps[q];
     memrun_run(cable_testproblem_elastica(), &c, NULL, r);
     char what[96];
     /* the step that crosses RL1 = 100 may hold (4 pi)^2 = 158 too: count below 100 */

@@ -39,6 +39,11 @@ CABLE_API void cable_cont_free(cable_cont *cc);   /* NULL is a no-op */
  * and a BP start, the first step goes along the bifurcating branch. */
 CABLE_API int cable_cont_set_start(cable_cont *cc, const cable_solution *start);
 
+/* The mesh for a STPNT start (call before cable_cont_set_start(cc, NULL)):
+ * NTST + 1 points, 0 = mesh[0] < ... < mesh[NTST] = 1.  Without it a STPNT
+ * start uses the uniform mesh.  CABLE_ERR_INPUT for a mesh that is not. */
+CABLE_API int cable_cont_set_mesh(cable_cont *cc, const double *mesh);
+
 /* Compute and accept the next point (the first call converges the start).
  * CABLE_SUCCESS: a new point; > 0: the branch ended normally; < 0: error
  * (the last good point stays available). */

@@ -131,6 +131,7 @@ static void misuse_cont(void)
   api_check_int("  status", st, CABLE_ERR_INPUT);
   api_check("  cable_cont_check says why", cable_cont_check(pb, &bad, &err) == CABLE_ERR_INPUT && strstr(err.msg, "NTST") != NULL);
   api_check_int("  cable_cont_set_start on it: CABLE_ERR_NULL", cable_cont_set_start(cc, NULL), CABLE_ERR_NULL);
+  api_check_int("  cable_cont_set_mesh on it: CABLE_ERR_NULL", cable_cont_set_mesh(cc, NULL), CABLE_ERR_NULL);
   api_check_int("  cable_cont_step on it: CABLE_ERR_NULL", cable_cont_step(cc), CABLE_ERR_NULL);
   int next = -1;
   api_check_int("  cable_cont_run on it: CABLE_ERR_NULL", cable_cont_run(cc, NULL, 1, 7, &next), CABLE_ERR_NULL);

@@ -1,0 +1,209 @@
+/* AUTO-07p's run semantics (issue 15, item 3), each confirmed by running
+ * auto-07p 0.9.2 on the same problem (doc/engine.md, "AUTO's run semantics"):
+ *   1. the stored direction: the step is DS times it, so a restart with DS < 0
+ *      from a run made with DS < 0 goes on;
+ *   2. no special point in the first step of a run (the start on a UZR value,
+ *      a UZR value inside the first step);
+ *   3. after a switch at a branch point (ISW = -1) the first step reports no
+ *      BP and is not shortened (the test function is ~0 at the start);
+ *   4. UZR and UZSTOP on a parameter that PVLS computes fire.
+ * (run('NAME') = e='NAME', c='NAME': tests/test_cli.c and test_script.c.) */
+#include <math.h>
+#include <string.h>
+
+#include "cable/cable_cont.h"
+#include "engine_util.h"
+#include "harness.h"
+#include "test_problems.h"
+
+/* Bratu: lambda = th^2 / (2 cosh^2(th/4)), max u = u(1/2) = 2 ln cosh(th/4). */
+static double bratu_lambda_at_umax(double umax)
+{
+  double c = exp(0.5 * umax), th = 4.0 * acosh(c);
+  return th * th / (2.0 * c * c);
+}
+
+/* Bratu's constants of runs/bratu (NTST = 20, NCOL = 4) without adaptation. */
+static void bratu_constants(cable_constants *c)
+{
+  engine_constants(c, 20, 4);
+  c->ds = 0.1; c->dsmin = 1e-5; c->dsmax = 0.5; c->nmx = 60;
+  c->rl0 = -0.01; c->rl1 = 5.0;
+  c->ilp = 1; c->isp = 2;
+  c->epsl = c->epsu = 1e-8; c->epss = 1e-7;
+}
+
+/* 1. The direction convention.  auto-07p on Bratu (DS = -0.1, NMX = 4 from the
+ * fold, then from that run's end): DS = -0.1 goes on down the lower branch
+ * (lambda 3.4686 -> 3.3628), DS = +0.1 turns back (-> 3.5121). */
+static void test_direction(memrun *r)
+{
+  cable_constants c;
+  bratu_constants(&c);
+  memrun_run(cable_testproblem_bratu(), &c, NULL, r);
+  cable_solution *lp = cable_solution_clone(memrun_find(r, CABLE_TY_LP, 0));
+  memrun_free(r);
+  test_true("Bratu: the fold is found", lp != NULL);
+  if (!lp) return;
+  bratu_constants(&c);
+  c.ds = -0.1; c.nmx = 4; c.ilp = 0; c.iads = 0;
+  memrun_run(cable_testproblem_bratu(), &c, lp, r);
+  cable_solution *end = r->nsol > 0 ? cable_solution_clone(r->sol[r->nsol - 1]) : NULL;
+  double lam_fold = lp->par[0], lam_end = end ? end->par[0] : (double)NAN;
+  test_true("from the fold with DS = -0.1: down the lower branch (lambda decreases)", lam_end < lam_fold);
+  memrun_free(r);
+  if (end) {
+    memrun_run(cable_testproblem_bratu(), &c, end, r);
+    test_true("restart with DS = -0.1 from a DS = -0.1 run goes on (lambda decreases at every point)",
+              r->n == 4 && r->par[1][0] < lam_end && r->par[3][0] < r->par[1][0]);
+    memrun_free(r);
+    c.ds = 0.1;
+    memrun_run(cable_testproblem_bratu(), &c, end, r);
+    test_true("restart with DS = +0.1 from a DS = -0.1 run turns back (lambda increases)",
+              r->n == 4 && r->par[1][0] > lam_end && r->par[3][0] > r->par[1][0]);
+    memrun_free(r);
+  }
+  cable_solution_free(end);
+  cable_solution_free(lp);
+}
+
+/* 2. No special point in the first step.  auto-07p on Bratu from u = 0 with
+ * DS = 0.1 and UZR = {1: [0.0, 0.05, 0.15]}: only 0.15 is a UZ (label 2). */
+static void test_first_step(memrun *r)
+{
+  cable_constants c;
+  bratu_constants(&c);
+  c.iads = 0; c.nmx = 4;
+  c.nuzr = 3;
+  double vals[3] = {0.0, 0.05, 0.15};
+  for (int k = 0; k < 3; k++) {
+    c.uzr[k].par = 0;
+    c.uzr[k].value = vals[k];
+    c.uzr[k].stop = 0;
+  }
+  memrun_run(cable_testproblem_bratu(), &c, NULL, r);
+  int nuz = memrun_count(r, CABLE_TY_UZ);
+  const cable_solution *uz = memrun_find(r, CABLE_TY_UZ, 0);
+  test_int("UZR at the start (0) and inside the first step (0.05): not reported; 0.15: one UZ", nuz, 1);
+  test_rel("the one UZ is at lambda = 0.15", uz ? uz->par[0] : (double)NAN, 0.15, 1e-12);
+  test_int("its label is 2 (the start is 1), as auto-07p's", uz ? uz->lab : -1, 2);
+  memrun_free(r);
+}
+
+/* A sink that keeps each point's type and step. */
+typedef struct {
+  int n, nbp;
+  double ds[64];
+  int itp[64];
+  double l2;     /* of the last point */
+} steprec;
+
+static int steprec_point(void *ctx, const cable_point *pt)
+{
+  steprec *s = ctx;
+  if (s->n < 64) {
+    s->ds[s->n] = pt->ds;
+    s->itp[s->n] = pt->itp;
+    s->n++;
+  }
+  s->l2 = pt->l2norm;
+  s->nbp += pt->itp % 10 == CABLE_TY_BP;
+  return 0;
+}
+
+/* 3. After a switch at the elastica's branch points (runs/elastica's mesh,
+ * NTST = 50, NCOL = 5), with the BP test on (ISP = 2): the buckled branches
+ * have no branch point near the straight state's, so none may be reported,
+ * the first step is DS, and after 9 steps the branch is well away from the
+ * straight state.  (Before the rule, these three switches reported the start
+ * again as a BP at PT 2 and then crawled: L2-NORM 2.5e-4 after 9 steps.) */
+static void test_after_switch(memrun *r)
+{
+  cable_constants c;
+  elastica_trivial_constants(&c, 50, 5);
+  memrun_run(cable_testproblem_elastica(), &c, NULL, r);
+  cable_solution *bp[3];
+  for (int k = 0; k < 3; k++) bp[k] = cable_solution_clone(memrun_find(r, CABLE_TY_BP, k));
+  memrun_free(r);
+  test_true("elastica: BP1, BP2, BP3 found", bp[0] && bp[1] && bp[2]);
+  static const struct { int k; double ds; } cases[] = {{0, -0.2}, {1, 0.05}, {2, -0.05}};
+  for (size_t q = 0; q < sizeof cases / sizeof cases[0] && bp[2]; q++) {
+    engine_constants(&c, 50, 5);
+    c.isw = -1;
+    c.ds = cases[q].ds; c.dsmin = 1e-6; c.dsmax = 2.0; c.nmx = 10;
+    c.isp = 2; c.ilp = 0;
+    c.epss = 1e-10;
+    int st;
+    steprec rec = {0};
+    cable_cont *cc = cable_cont_alloc(cable_testproblem_elastica(), &c, &st);
+    if (st == CABLE_SUCCESS) st = cable_cont_set_start(cc, bp[cases[q].k]);
+    if (st == CABLE_SUCCESS) {
+      cable_sink sink = {&rec, steprec_point, NULL, NULL};
+      st = cable_cont_run(cc, &sink, 1, 1, NULL);
+    }
+    cable_cont_free(cc);
+    char what[160];
+    snprintf(what, sizeof what, "switch at BP%d with DS = %+.2f, ISP = 2: 10 points, no BP reported", cases[q].k + 1,
+             c.ds);
+    test_true(what, st > 0 && rec.n == 10 && rec.nbp == 0);
+    snprintf(what, sizeof what, "switch at BP%d with DS = %+.2f: the first step is |DS|", cases[q].k + 1, c.ds);
+    test_rel(what, rec.n > 1 ? fabs(rec.ds[1]) : (double)NAN, fabs(c.ds), 1e-14);
+    snprintf(what, sizeof what, "switch at BP%d with DS = %+.2f: L2-NORM after 9 steps > 1 (no collapse)",
+             cases[q].k + 1, c.ds);
+    test_true(what, rec.n == 10 && rec.l2 > 1.0);
+  }
+  for (int k = 0; k < 3; k++) cable_solution_free(bp[k]);
+}
+
+/* 4. Bratu with PAR(2) = max u from PVLS (auto-07p fires UZR on PVLS
+ * parameters: its UZ4/UZ5 at PAR(3) = 2, 3 in the same experiment). */
+static int bratu_pvls_umax(const struct cable_solution *sol, double *par, void *params)
+{
+  (void)params;
+  int npts = sol->ntst * sol->ncol + 1;
+  double umax = sol->u[0];
+  for (int k = 1; k < npts; k++) umax = fmax(umax, sol->u[k * sol->ndim]);
+  par[1] = umax;
+  return 0;
+}
+
+static void test_pvls_uzr(memrun *r)
+{
+  static const char *const names[] = {"lambda", "umax"};
+  cable_problem pb = *cable_testproblem_bratu();
+  pb.npar = 2;
+  pb.parnames = names;
+  pb.pvls = bratu_pvls_umax;
+  cable_constants c;
+  bratu_constants(&c);
+  c.icp[1] = 1;
+  c.nicp = 2;
+  c.nuzr = 1;
+  c.uzr[0].par = 1;
+  c.uzr[0].value = 1.0;
+  c.uzr[0].stop = 0;
+  memrun_run(&pb, &c, NULL, r);
+  const cable_solution *uz = memrun_find(r, CABLE_TY_UZ, 0);
+  test_int("UZR on umax (PVLS) = 1: one UZ (max u is 1.1868 at the fold)", memrun_count(r, CABLE_TY_UZ), 1);
+  /* max u sits at t = 1/2, a mesh point (NTST even): superconvergent, error
+     O(h^8) ~ 1e-11; located to EPSS = 1e-7 of the step in arclength, along
+     which lambda moves with slope < 1 */
+  test_rel("at the UZ, lambda is the closed form's for max u = 1", uz ? uz->par[0] : (double)NAN, bratu_lambda_at_umax(1.0), 1e-7);
+  test_rel("at the UZ, max u = 1", uz ? uz->par[1] : (double)NAN, 1.0, 1e-7);
+  memrun_free(r);
+  c.uzr[0].stop = 1;
+  memrun_run(&pb, &c, NULL, r);
+  test_true("UZSTOP on umax = 1 ends the branch there", r->status == CABLE_END_UZSTOP && r->nsol > 0 &&
+                                                       fabs(r->sol[r->nsol - 1]->par[1] - 1.0) < 1e-7);
+  memrun_free(r);
+}
+
+int main(void)
+{
+  static memrun r;
+  test_direction(&r);
+  test_first_step(&r);
+  test_after_switch(&r);
+  test_pvls_uzr(&r);
+  return test_summary();
+}
