@@ -1,5 +1,6 @@
 #include "cable/cable_solution.h"
 
+#include <limits.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -11,6 +12,10 @@
 cable_solution *cable_solution_alloc(int ndim, int ntst, int ncol, int npar, int nfpr)
 {
   if (ndim < 1 || ntst < 1 || ncol < 1 || npar < 1 || nfpr < 0) return NULL;
+  /* point counts and indices are ints (cable_solution_npts): sizes whose
+     products do not fit are refused before anything is allocated */
+  long long npts_ll = (long long)ntst * ncol + 1;
+  if (npts_ll > INT_MAX || npts_ll * ndim > INT_MAX || nfpr == INT_MAX) return NULL;
   cable_solution *s = calloc(1, sizeof *s);
   if (!s) return NULL;
   s->ndim = ndim; s->ntst = ntst; s->ncol = ncol; s->npar = npar; s->nfpr = nfpr;
