@@ -184,12 +184,10 @@ static void definition_lines(const char *src, int *lines)
 }
 
 /* GETP codes cable provides (autoeq_shim.c) and why it refuses the others. */
-static const char *const getp_codes[] = {"NRM", "INT", "MAX", "MIN", "BV0", "BV1", "STP"};
+static const char *const getp_codes[] = {"NRM", "INT", "MAX", "MIN", "BV0", "BV1", "STP", "FLD", "BIF"};
 static const struct {
   const char *code, *why;
 } getp_refused[] = {
-  {"FLD", "AUTO's fold test-function value has no counterpart in cable's engine"},
-  {"BIF", "AUTO's branch-point test-function value has no counterpart in cable's engine"},
   {"HBF", "Hopf test functions belong to AUTO's ODE and periodic problems, not to boundary-value problems"},
   {"SPB", "period-doubling and torus test functions belong to AUTO's periodic problems"},
   {"EIG", "eigenvalues and Floquet multipliers belong to AUTO's ODE and periodic problems"},
@@ -227,7 +225,7 @@ static int check_getp_codes(const cable_autoeq *m, const char *src, cable_error 
       for (size_t i = 0; i < sizeof getp_refused / sizeof getp_refused[0]; i++)
         if (strcmp(code, getp_refused[i].code) == 0) why = getp_refused[i].why;
       return cable_error_set(err, CABLE_ERR_PLUGIN, m->src, line, "GETP",
-                             "'%s': cable does not provide it (%s); it provides NRM, INT, MAX, MIN, BV0, BV1 and STP",
+                             "'%s': cable does not provide it (%s); it provides NRM, INT, MAX, MIN, BV0, BV1, STP, FLD and BIF",
                              code, why);
     }
     if (!eol) break;

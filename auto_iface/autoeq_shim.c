@@ -98,6 +98,8 @@ static double getp_value(cable_autoeq *m, const char *code, int ic)
   const cable_solution *s = m->pvls_sol;
   int nd = s->ndim, npts = cable_solution_npts(s);
   if (strcasecmp(code, "STP") == 0) return s->pvls_ds;
+  if (strcasecmp(code, "FLD") == 0) return s->pvls_fld;
+  if (strcasecmp(code, "BIF") == 0) return s->pvls_bif;
   if (ic < 1 || ic > nd) {
     snprintf(m->getp_error, sizeof m->getp_error, "GETP('%s', %d): the component must be 1..NDIM = %d", code, ic, nd);
     return nan("");

@@ -585,6 +585,67 @@ static int expect_newline(parser *p)
   return fail_expected(p, t, "end of line");
 }
 
+/* AUTO's command line rewrites a line `name args` into `name(args)` before
+ * Python sees it (its shorthand, IPython's autocall), which is how AUTO's own
+ * scripts write `print "text"` and `print "a", x`.  A name followed on the
+ * same line directly by a string, a number or another (non-reserved) name is
+ * never valid Python otherwise, so cable reads such a line as that call.
+ * Whether the name is callable is found when it runs, as in AUTO.  A
+ * following '(' , '[', an operator or '=' keeps its ordinary meaning. */
+static int is_shorthand(const script_token *t, const script_token *t2)
+{
+  if (t->type != SCRIPT_TOK_NAME || is_reserved(t->text) || unsupported_reason(t)) return 0;
+  if (t2->line != t->line) return 0;
+  if (t2->type == SCRIPT_TOK_STRING || t2->type == SCRIPT_TOK_NUMBER) return 1;
+  return t2->type == SCRIPT_TOK_NAME && !is_reserved(t2->text) && !unsupported_reason(t2);
+}
+
+/* name arg, arg, ..., kw=value ... up to the end of the line, as a call. */
+static script_expr *parse_shorthand(parser *p)
+{
+  const script_token *t = next(p);
+  script_expr *callee = new_expr(p, SCRIPT_E_NAME, t->line);
+  script_expr *c = new_expr(p, SCRIPT_E_CALL, t->line);
+  if (!callee || !c) return NULL;
+  callee->text = t->text;
+  c->a = callee;
+  if (grow(p, c, callee, t)) return NULL;
+  script_expr **tail = &c->items;
+  int seen_kw = 0;
+  for (;;) {
+    const script_token *start = peek(p);
+    const char *kwname = NULL;
+    if (start->type == SCRIPT_TOK_NAME && is_op(peek2(p), "=")) {
+      if (is_reserved(start->text)) {
+        parse_fail(p, start, "'%s' cannot be a keyword argument", start->text);
+        return NULL;
+      }
+      kwname = start->text;
+      next(p);
+      next(p);
+      seen_kw = 1;
+    } else if (seen_kw) {
+      parse_fail(p, start, "positional argument follows keyword argument");
+      return NULL;
+    }
+    if (c->nitems >= SCRIPT_MAX_ARGS) {
+      parse_fail(p, start, "too many arguments (limit %d)", SCRIPT_MAX_ARGS);
+      return NULL;
+    }
+    script_expr *e = parse_expr(p);
+    if (!e) return NULL;
+    e->kwname = kwname;
+    *tail = e;
+    tail = &e->next;
+    c->nitems++;
+    if (grow(p, c, e, start)) return NULL;
+    if (!is_op(peek(p), ",")) break;
+    next(p);
+    if (peek(p)->type == SCRIPT_TOK_NEWLINE) break;   /* a trailing comma, as print "a", in Python 2 */
+  }
+  return c;
+}
+
 static script_stmt *parse_simple(parser *p)
 {
   const script_token *t = peek(p);
@@ -627,6 +688,13 @@ static script_stmt *parse_simple(parser *p)
   if (t->type == SCRIPT_TOK_NAME && is_unsupported_op(t2)) {
     fail_unsupported_op(p, t2);
     return NULL;
+  }
+  if (is_shorthand(t, t2)) {
+    script_stmt *s = new_stmt(p, SCRIPT_S_EXPR, t->line);
+    if (!s) return NULL;
+    s->expr = parse_shorthand(p);
+    if (!s->expr || expect_newline(p)) return NULL;
+    return s;
   }
   script_stmt *s = new_stmt(p, SCRIPT_S_EXPR, t->line);
   if (!s) return NULL;

@@ -88,6 +88,9 @@ int cont_smallest_sv(cable_cont *cc, int k, double *sv, double *vecs);
 /* cont_special.c */
 void cont_tests_fill(cable_cont *cc, const double *x, const double *xdot, cont_tests *tf);
 int cont_find_event(const cable_cont *cc, const cont_tests *a, const cont_tests *b, int *which);
+/* The branch-point test function's value (the one whose sign change is a BP):
+ * the signed smallest singular value; 0 when ISP and NSV are both 0. */
+double cont_bp_value(const cable_cont *cc, const cont_tests *t);
 /* seed: a first guess of the arclength of the special point (NAN: none) */
 int cont_locate(cable_cont *cc, int type, int which, double seed);
 int cont_check_dip(cable_cont *cc);

@@ -228,6 +228,8 @@ void cont_store_solution(cable_cont *cc, int itp, int lab)
   sol->pvls_icp = cc->c.icp;   /* PVLS computes only the columns the run prints */
   sol->pvls_nicp = cc->c.nicp;
   sol->pvls_ds = cc->ds_used;
+  sol->pvls_fld = cc->tf.lp;
+  sol->pvls_bif = cont_bp_value(cc, &cc->tf);
   if (cc->pb->pvls) cc->pb->pvls(sol, sol->par, cc->pb->params);
   /* L2-NORM: sqrt of the integral of |u|^2 (unweighted); MAX U(i): AUTO's
      MXUPSP, the largest value (signed, not the modulus) of u_i over the

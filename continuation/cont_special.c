@@ -82,6 +82,11 @@ void cont_tests_fill(cable_cont *cc, const double *x, const double *xdot, cont_t
 
 static double bp_test(const cont_tests *t) { return t->det_sign * (t->sv1 > 0 ? t->sv1 : 1.0); }
 
+double cont_bp_value(const cable_cont *cc, const cont_tests *t)
+{
+  return (cc->c.isp > 0 || cc->c.nsv > 0) ? bp_test(t) : 0.0;
+}
+
 static double test_value(const cont_tests *t, int type, int which)
 {
   switch (type) {

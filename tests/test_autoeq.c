@@ -247,6 +247,108 @@ static void iplt_integral(void)
   cable_bfile_free(bf);
 }
 
+/* Bratu's branch through s: lambda(s) = 8 s^2/cosh^2 s; the unit tangent in
+ * the engine's norm (integral over [0,1] of u_s^2 + v_s^2, plus lambda_s^2,
+ * THU = THL = 1) has the lambda component lambda_s / sqrt(that), which is
+ * what GETP('FLD') returns (doc/auto-users.md).  With x' = 2x - 1:
+ * u_s = 2 tanh s - 2 x' tanh(s x'), v = u' = -4 s tanh(s x'),
+ * v_s = -4 tanh(s x') - 4 s x' / cosh^2(s x'),
+ * lambda_s = 16 s (1 - s tanh s) / cosh^2 s.  Simpson, 20000 panels. */
+static double bratu_fld(double s)
+{
+  int n = 20000;
+  double sum = 0;
+  for (int i = 0; i <= n; i++) {
+    double x = 2.0 * i / n - 1, c = cosh(s * x);
+    double us = 2 * tanh(s) - 2 * x * tanh(s * x), vs = -4 * tanh(s * x) - 4 * s * x / (c * c);
+    double w = (i == 0 || i == n) ? 1 : (i % 2 ? 4 : 2);
+    sum += w * (us * us + vs * vs);
+  }
+  double ls = 16 * s * (1 - s * tanh(s)) / (cosh(s) * cosh(s));
+  return ls / sqrt(sum / (3.0 * n) + ls * ls);
+}
+
+/* s on the lower (upper = 0) or upper branch with lambda(s) = lam (bisection). */
+static double bratu_s(double lam, int upper)
+{
+  double sf = fold_s(), lo = upper ? sf : 0.0, hi = upper ? 10.0 : sf;
+  for (int i = 0; i < 200; i++) {
+    double m = 0.5 * (lo + hi), f = 8 * m * m / (cosh(m) * cosh(m)) - lam;
+    if ((f < 0) == !upper) lo = m;
+    else hi = m;
+  }
+  return 0.5 * (lo + hi);
+}
+
+/* GETP('FLD') and GETP('BIF') (fldbif/: equation files written for this
+ * test, PVLS stores them in PAR(2) and PAR(3)). */
+static void fold_bp_functions(void)
+{
+  const char *files[] = {"bratufb.f90", "elasfb.f90", "c.bratufb", "c.elasfb", "fldbif.auto", NULL};
+  stage("fldbif", files);
+  cable_error err;
+  cable_error_clear(&err);
+  int rc = replay("fldbif", "fldbif.auto", &err);
+  char buf[1200];
+  test_report(rc == 0, "fldbif.auto: runs (%s)", rc ? cable_error_format(&err, buf, sizeof buf) : "ok");
+  cable_bfile *bf = cable_bfile_read(TMP "/fldbif/b.bratufb", &err);
+  if (test_true("b.bratufb was written", bf != NULL && bf->nbranch == 1)) {
+    const cable_bfile_branch *br = &bf->branch[0];
+    /* UZ at lambda = 1, 3 (lower), 3 (upper): the closed form; NTST=20 collocation
+       is accurate far below 1e-7, the UZ located to ~1e-10 in lambda */
+    const struct { int k, upper; double lam; } uz[] = {{0, 0, 1.0}, {1, 0, 3.0}, {2, 1, 3.0}};
+    for (int i = 0; i < 3; i++) {
+      char what[160];
+      snprintf(what, sizeof what, "GETP('FLD') at the UZ lambda = %g (%s branch) = lambda_s/|(u_s, v_s, lambda_s)|",
+               uz[i].lam, uz[i].upper ? "upper" : "lower");
+      test_abs(what, col(br, "PAR(2)", row_of(br, -4, uz[i].k)), bratu_fld(bratu_s(uz[i].lam, uz[i].upper)), 1e-7);
+    }
+    /* at the located fold the test function vanishes to the location accuracy */
+    test_abs("GETP('FLD') = 0 at the LP", col(br, "PAR(2)", row_of(br, 5, 0)), 0.0, 1e-8);
+    int lp = row_of(br, 5, 0), signs_ok = lp > 1;
+    for (int r = 1; r < br->nrow && lp > 1; r++)
+      if (r != lp) signs_ok &= (r < lp) == (col(br, "PAR(2)", r) > 0);
+    test_true("GETP('FLD') > 0 before the fold and < 0 after it, at every point", signs_ok);
+    /* no BP on Bratu's branch: the BP function keeps its sign and is nonzero */
+    double b0 = col(br, "PAR(3)", 0);
+    int same = b0 != 0;
+    for (int r = 1; r < br->nrow; r++) same &= col(br, "PAR(3)", r) * b0 > 0;
+    test_true("GETP('BIF') keeps its sign on Bratu's branch (no BP)", same);
+  }
+  cable_bfile_free(bf);
+  bf = cable_bfile_read(TMP "/fldbif/b.elasfb", &err);
+  if (test_true("b.elasfb was written", bf != NULL && bf->nbranch == 1)) {
+    const cable_bfile_branch *br = &bf->branch[0];
+    /* the straight rod: the tangent is (0, 1) in (theta, P), so FLD = 1 exactly */
+    double dmax = 0;
+    for (int r = 0; r < br->nrow; r++) dmax = fmax(dmax, fabs(col(br, "PAR(2)", r) - 1.0));
+    test_abs("GETP('FLD') = 1 at every point of the straight elastica", dmax, 0.0, 1e-12);
+    /* BIF vanishes at each located BP and changes sign there, nowhere else */
+    int bp[2] = {row_of(br, 6, 0), row_of(br, 6, 1)};
+    double away = 0;
+    int changes = 0, at_bp = 0;
+    for (int r = 0; r < br->nrow; r++) {
+      double b = col(br, "PAR(3)", r);
+      if (r != bp[0] && r != bp[1]) away = away == 0 ? fabs(b) : fmin(away, fabs(b));
+      int q = r + 1 + (r + 1 == bp[0] || r + 1 == bp[1]);
+      if (q < br->nrow && r != bp[0] && r != bp[1] && col(br, "PAR(3)", q) * b < 0) changes++;
+      at_bp += (r == bp[0] || r == bp[1]) && fabs(b) < 1e-9;
+    }
+    test_int("GETP('BIF') is below 1e-9 at both BPs", at_bp, 2);
+    test_int("GETP('BIF') changes sign exactly at the two BPs", changes, 2);
+    test_true("GETP('BIF') is not small away from the BPs (> 1e-4)", away > 1e-4);
+  }
+  cable_bfile_free(bf);
+  bf = cable_bfile_read(TMP "/fldbif/b.elasfb0", &err);
+  if (test_true("b.elasfb0 (ISP=0) was written", bf != NULL && bf->nbranch == 1)) {
+    const cable_bfile_branch *br = &bf->branch[0];
+    double m = 0;
+    for (int r = 0; r < br->nrow; r++) m = fmax(m, fabs(col(br, "PAR(3)", r)));
+    test_abs("GETP('BIF') = 0 when ISP=0 (no branch-point test, as in AUTO)", m, 0.0, 0.0);
+  }
+  cable_bfile_free(bf);
+}
+
 /* dat='bratu.dat': AUTO's start data (t and U(1), U(2) per row) instead of
  * STPNT's u = 0: the exact upper solution at s = 2 (lambda = 32/cosh^2 2),
  * continued towards smaller lambda, gives the upper solution at lambda = 1,
@@ -373,6 +475,7 @@ int main(void)
   bratu_integral_getp("bratuint_f90", "bratuint.f90");
   bratu_integral_getp("bratuint_c", "bratuint.c");
   iplt_integral();
+  fold_bp_functions();
   dat_start();
   cache();
   bad_file("syntax", "syntax.f90", 8, "array reference");
@@ -383,7 +486,7 @@ int main(void)
   test_true("a Fortran MODULE leaves no .mod file in the working or the run directory",
             !exists("bratu_consts.mod") && !exists(TMP "/bad/bratu_consts.mod"));
   bad_file("nopvls", "nopvls.c", 0, "pvls: the equation file does not define it");
-  bad_file("getpfld", "getpfld.f90", 55, "GETP: 'FLD': cable does not provide it");
+  bad_file("getphbf", "getphbf.f90", 55, "GETP: 'HBF': cable does not provide it");
   /* constants as AUTO reads them */
   bad_run("nintbuiltin", "bratu", "c.nintbuiltin", CABLE_ERR_INPUT, 3,
           "NINT: NINT=1 contradicts problem 'bratu', which has NINT=0");

@@ -644,6 +644,25 @@ static void test_python_subset(void)
              "print(r'a\\n', 'b\\tc')\n",
              "print: [1, 2] 3\n"
              "print: a\\n b\tc\n");
+  /* AUTO's shorthand: its command line turns `name args` into `name(args)`,
+     so AUTO's own scripts print with Python 2's statement form */
+  expect_log("AUTO's shorthand: name args is name(args)",
+             "pgm = 'int'\n"
+             "print \"\\nDemo %s is started\"%pgm\n"
+             "print \"Branch \" , 2 , \"***\"\n"
+             "for i in range(2):\n"
+             "    print i, pgm\n"
+             "print 'no newline',\n"
+             "print(pgm)\n"
+             "xs = [5, 6]\n"
+             "print xs [1]\n",
+             "print: \nDemo int is started\n"
+             "print: Branch  2 ***\n"
+             "print: 0 int\n"
+             "print: 1 int\n"
+             "print: no newline\n"
+             "print: int\n"
+             "print: 6\n");
 }
 
 /* ---- broken scripts ---------------------------------------------------------------- */

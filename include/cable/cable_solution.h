@@ -30,6 +30,11 @@ typedef struct cable_solution {
   int pvls_nicp;
   double pvls_ds;  /* while the engine calls PVLS: the step that reached this point (AUTO's
                       GETP('STP')); 0 otherwise */
+  double pvls_fld; /* while the engine calls PVLS: the fold test function at this point, the
+                      principal parameter's component of the unit tangent (AUTO's GETP('FLD')) */
+  double pvls_bif; /* ... and the branch-point test function, the smallest singular value of the
+                      extended Newton matrix signed by its determinant (GETP('BIF')); 0 when
+                      neither ISP nor NSV asks for it */
 } cable_solution;
 
 /* Every field zeroed except the sizes; arrays allocated.  NULL when a size

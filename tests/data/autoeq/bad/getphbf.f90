@@ -52,7 +52,7 @@ SUBROUTINE PVLS(NDIM,U,PAR)
   PAR(3) = GETP('INT', 1, U)
   PAR(4) = GETP('MAX', 1, U)
   PAR(5) = GETP('BV0', 2, U)
-  PAR(6) = GETP('FLD', 1, U)
+  PAR(6) = GETP('HBF', 1, U)
   PAR(7) = GETP('BV1', 2, U)
   PAR(8) = GETP('MIN', 2, U)
 END SUBROUTINE PVLS
