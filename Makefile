@@ -35,7 +35,7 @@ SAN_LD_asan := -fsanitize=address,undefined
 LDFLAGS := $(SAN_LD_$(MODE)) $(EXTRA_LDFLAGS)
 LIBS    := -lsundials_kinsol -lsundials_sunlinsolklu -lsundials_sunmatrixsparse \
            -lsundials_nvecserial -lsundials_generic -lklu \
-           -lgsl -llapacke -llapack -lblas -lcairo -ldl -lm
+           -lgsl -llapacke -llapack -lblas -lcairo -ldl -lpthread -lm
 
 LIB_SRCS := $(filter-out auto_iface/cable_main.c,$(wildcard $(addsuffix /*.c,$(MODULES))))
 LIB_OBJS := $(LIB_SRCS:%.c=$(BUILD)/%.o)

@@ -940,6 +940,7 @@ static const key_desc key_table[] = {
   /* cable extensions */
   {"LINSOLVER", apply_linsolver, 0, 0, 0, 2, KI_NONE},
   {"NSV", apply_int, OFF(nsv), 0, BIG, 2, KI_NONE},
+  {"NTHREADS", apply_int, OFF(nthreads), 0, CABLE_THREADS_MAX, 2, KI_NONE},
   {"BPDIR", apply_int, OFF(bpsym), 0, 1, 2, KI_NONE},
   {"BPANGLE", apply_real, OFF(bpangle), 0, 0, 2, KI_NONE},
   {"PAR", apply_par, 0, 0, 0, 2, KI_NONE},

@@ -1,5 +1,7 @@
 #include "cable/cable_constants.h"
 
+#include <unistd.h>
+
 #include <math.h>
 #include <string.h>
 
@@ -18,7 +20,7 @@ void cable_constants_init(cable_constants *c)
   c->thu_default = 1.0;
   c->iid = 2; c->iis = 3;
   c->linsolver = CABLE_LINSOLVER_CONDENSE;
-  c->nsv = 0; c->bpsym = 0; c->bpangle = (double)NAN;
+  c->nsv = 0; c->nthreads = 0; c->bpsym = 0; c->bpangle = (double)NAN;
   c->npkey = 0;
 }
 
@@ -29,4 +31,12 @@ double cable_constants_key(const cable_constants *c, const cable_problem *pb, co
   for (int i = 0; i < c->npkey && i < CABLE_MAX_PKEYS; i++)
     if (strcmp(c->pkey[i].name, name) == 0) return c->pkey[i].value;
   return k->def;
+}
+
+int cable_threads(const cable_constants *c)
+{
+  if (c->nthreads > 0) return c->nthreads;
+  long np = sysconf(_SC_NPROCESSORS_ONLN);
+  if (np < 1) np = 1;
+  return np < CABLE_THREADS_DEFAULT_MAX ? (int)np : CABLE_THREADS_DEFAULT_MAX;
 }

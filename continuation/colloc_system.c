@@ -344,7 +344,11 @@ int colloc_system_jacobian(colloc_system *s, const double *x, colloc_jac *J)
   int ldc = nc * nd, nde = J->ndense;
   s->njac++;
   load_params(s, x);
-  colloc_jac_zero(J);
+  /* the collocation blocks are overwritten entry by entry below (every row
+     m*nd..m*nd+nd-1 of every column): zero only the accumulated blocks */
+  memset(J->bc, 0, (size_t)J->nbc * (size_t)(2 * J->ndim + J->nfpr) * sizeof(double));
+  memset(J->dense, 0, (size_t)J->ntst * J->dense_stride * sizeof(double));
+  memset(J->dense_par, 0, (size_t)J->ndense * (size_t)J->nfpr * sizeof(double));
   for (int j = 0; j < s->ntst; j++) {
     double h = s->mesh[j + 1] - s->mesh[j];
     double *B = colloc_jac_coll_block(J, j);

@@ -73,6 +73,7 @@ void cable_cont_free(cable_cont *cc)
   cable_solution_free(cc->sol);
   cable_solution_free(cc->pvsol);
   cont_pencil_free(cc);
+  cont_gate_free(cc);
   free(cc);
 }
 
@@ -147,13 +148,14 @@ cable_cont *cable_cont_alloc(const cable_problem *pb, const cable_constants *c, 
   rc = CABLE_ERR_ALLOC;
   cc->J = colloc_jac_alloc(cc->ndim, cc->ntst, cc->ncol, cc->nfpr, pb->nbc, pb->nint);
   cc->abd = abd_solver_alloc(cc->ndim, cc->ntst, cc->ncol, cc->nfpr, pb->nbc, pb->nint);
+  abd_solver_set_threads(cc->abd, cable_threads(c));
   size_t n = (size_t)cc->n;
   cc->x = calloc(n, sizeof(double)); cc->xdot = calloc(n, sizeof(double));
   cc->xp = calloc(n, sizeof(double)); cc->xdotp = calloc(n, sizeof(double));
   cc->xt = calloc(n, sizeof(double)); cc->xdott = calloc(n, sizeof(double));
   cc->w1 = calloc(n, sizeof(double)); cc->w2 = calloc(n, sizeof(double)); cc->w3 = calloc(n, sizeof(double));
   cc->svec = calloc(3 * n, sizeof(double)); /* up to three singular vectors (switching) */
-  if (cont_pencil_alloc(cc) != CABLE_SUCCESS) goto fail;
+  if (cont_pencil_alloc(cc) != CABLE_SUCCESS || cont_gate_alloc(cc) != CABLE_SUCCESS) goto fail;
   cc->xq = calloc(n, sizeof(double)); cc->xdotq = calloc(n, sizeof(double));
   cc->umax = calloc((size_t)cc->ndim, sizeof(double));
   cc->sol = cable_solution_alloc(cc->ndim, cc->ntst, cc->ncol, cc->npar, cc->nfpr);
@@ -371,6 +373,7 @@ static int pencil_step(cable_cont *cc, pencil_result *pr, double *ds_step)
   pr->n = 0;
   pr->coincident = pr->unresolved = 0;
   if (cc->c.isp <= 0 || !cc->tan_abd) return 0;
+  if (!cont_gate_needed(cc)) return 0;
   double t[CONT_PAIR_MAXCROSS];
   int ndouble = 0, nc = cont_pencil_crossings(cc, cc->tan_abd, t, CONT_PAIR_MAXCROSS, &ndouble);
   if (nc < 0) return 0; /* the test is advisory: the determinant test still runs */
@@ -445,6 +448,7 @@ int cable_cont_step(cable_cont *cc)
   }
   double ds_step = cc->ds;
   pencil_result pr = {0};
+  cont_gate_start(cc);
   /* AUTO reports no special point in the first step of a run: neither the
      start (on a UZR value, or the BP a switch starts from, where the test
      functions vanish) nor a crossing inside the step.  The test functions

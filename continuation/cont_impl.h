@@ -72,6 +72,14 @@ struct cable_cont {
   colloc_jac *Ja;               /* Newton matrix at the step's start */
   int pen_m;                    /* Arnoldi steps */
   double *pen_V, *pen_H, *pen_work; /* Krylov basis [n*(m+1)], Hessenberg, eigenvalues */
+  /* the pencil test's gate (cont_gate.c) */
+  colloc_jac *tan_J;            /* the matrix behind tan_abd (not owned) */
+  double *tan_v, *tan_u;        /* [n*2] right, left singular vectors of the last tangent's matrix */
+  double tan_sv[2];             /* their singular values */
+  double *gate_v, *gate_u, *gate_w; /* [n*2] the same at the step's start x; work */
+  double gate_sv[2];
+  int gate_valid;               /* gate_v, gate_u, gate_sv belong to x */
+  long gate_skipped, gate_run;  /* pencil tests skipped and run on this branch */
 };
 
 /* cont_tangent.c */
@@ -107,6 +115,15 @@ int cont_dip_in_step(cable_cont *cc, double smid);
 int cont_pencil_alloc(cable_cont *cc);
 void cont_pencil_free(cable_cont *cc);
 int cont_pencil_crossings(cable_cont *cc, const abd_solver *fb, double *t, int tmax, int *ndouble);
+
+/* cont_gate.c: the pencil test only when the tracked singular values say a
+ * crossing may lie inside the step.  cont_gate_start at the start of a step
+ * (keeps x's singular vectors), cont_gate_needed after the trial point's
+ * tangent: 1 when the pencil test is to run. */
+int cont_gate_alloc(cable_cont *cc);
+void cont_gate_free(cable_cont *cc);
+void cont_gate_start(cable_cont *cc);
+int cont_gate_needed(cable_cont *cc);
 
 /* cont_mesh.c */
 int cont_adapt_mesh(cable_cont *cc);

@@ -19,6 +19,10 @@
 /* NCOL: collocation points per mesh interval (AUTO allows the same range). */
 #define CABLE_NCOL_MIN 2
 #define CABLE_NCOL_MAX 7
+/* NTHREADS: at most this many; the default (NTHREADS = 0) is the number of
+ * processors this process may run on, at most CABLE_THREADS_DEFAULT_MAX */
+#define CABLE_THREADS_MAX 64
+#define CABLE_THREADS_DEFAULT_MAX 2
 
 typedef struct {
   int par;          /* 0-based parameter index (or -1: unused) */
@@ -82,6 +86,8 @@ typedef struct cable_constants {
   /* cable extensions (documented in doc/constants.md) */
   cable_linsolver linsolver;              /* LINSOLVER = condense | klu */
   int nsv;                                /* NSV: singular values tracked for BP test (0: off) */
+  int nthreads;                           /* NTHREADS: threads of the structured solver's
+                                             per-interval stages (0: the default, cable_threads) */
   int bpsym;                              /* BPDIR: kernel vector index for 2-d kernels */
   double bpangle;                         /* BPANGLE: direction in a 2-d kernel, degrees from
                                              the canonical e1 towards e2 (NAN: use BPDIR) */
@@ -101,6 +107,8 @@ typedef struct cable_constants {
 
 /* AUTO-07p defaults (no problem key set). */
 CABLE_API void cable_constants_init(cable_constants *c);
+/* The thread count a run uses: NTHREADS, or its default when 0. */
+CABLE_API int cable_threads(const cable_constants *c);
 
 /* A problem-specific key's value: as set in c, else the default pb declares
  * for it; NAN when pb declares no such key (or an argument is NULL). */
