@@ -309,3 +309,27 @@ def test_fold_run_through_python(work):
     assert abs(u['Delta'] - 0.0163) <= 1e-9 * 0.0163
     assert abs(lp['Delta'] - 0.0163) <= 1e-14 * 0.0163
     assert abs(u['T'] - lp['T']) <= 1e-7 * abs(lp['T'])
+
+
+def test_problem_keys_and_prepare(work):
+    """The braid problems prepare themselves from their keys and PAR={...}
+    (plug-in ABI 2, issue 13): every run from STPNT works through the
+    package, and bad keys are refused naming the key (ported from main's
+    tests/test_script.c)."""
+    rn = cable.Runner()
+    cases = [
+        (dict(e='braid_knot'), "PAR: a braid start needs the strand distance: PAR={'Delta': ...}"),
+        (dict(e='braid_link_sym'), "e: 'braid_link_sym' has no start from STPNT: restart from a stored "
+                                   "solution (run(sol) or IRS with s=)"),
+        (dict(e='braid_knot', TORUS=-3), "TORUS: must be an integer in 0..1001, got -3 (the start from STPNT: "
+                                         "the (p,2) torus knot (odd p) or link (even p >= 2); 0: the two rings) "
+                                         "(in 'TORUS=-3')"),
+        (dict(e='braid_knot', HAND='up'), "HAND: unknown value string 'up' (handedness of the start: 1 or "
+                                          "'right', -1 or 'left') (in 'HAND='up'')"),
+        (dict(e='bratu', TORUS=7), "TORUS: unknown key (in 'TORUS=7')"),
+    ]
+    for kw, msg in cases:
+        with pytest.raises(cable.CableError) as e:
+            rn.run(**kw)
+        assert str(e.value) == msg, (kw, str(e.value))
+    assert os.listdir('.') == []
