@@ -23,7 +23,7 @@ t0=$(date +%s)
 median() { sort -g | awk '{a[NR] = $1} END {if (NR % 2) print a[(NR + 1) / 2]; else print (a[NR / 2] + a[NR / 2 + 1]) / 2}'; }
 
 # The knot72 acceptance path (the flat branch and modes 1-4 of runs/knot72/knot72.auto, the
-# lines tests/test_knot72_scene.c replays) in a scratch directory, NTHREADS as given.
+# lines tests/python/test_knot72_scene.py replays) in a scratch directory, NTHREADS as given.
 path_time() {
   local nt=$1 d="$work/path$1"
   rm -rf "$d" && mkdir -p "$d"

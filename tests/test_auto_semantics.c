@@ -7,7 +7,7 @@
  *   3. after a switch at a branch point (ISW = -1) the first step reports no
  *      BP and is not shortened (the test function is ~0 at the start);
  *   4. UZR and UZSTOP on a parameter that PVLS computes fire.
- * (run('NAME') = e='NAME', c='NAME': tests/test_cli.c and test_script.c.) */
+ * (run('NAME') = e='NAME', c='NAME': tests/test_cli.c and tests/python/test_commands.py.) */
 #include <math.h>
 #include <string.h>
 

@@ -16,7 +16,7 @@
 #include "api_check.h"
 #include "cable/cable.h"
 
-/* Bratu's fold (30-digit mpmath value, as in tests/test_script.c). */
+/* Bratu's fold (30-digit mpmath value, as in tests/python/test_commands.py). */
 #define BRATU_FOLD_LAMBDA 3.5138307191251612062
 /* NTST=20, NCOL=4, EPSS=1e-7: tests/test_engine_bvp.c bounds the fold's
  * lambda by 1e-9 (discretisation O(h^8) ~ 1e-11, location to EPSS). */
