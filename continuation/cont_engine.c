@@ -328,7 +328,10 @@ static int first_point(cable_cont *cc)
   }
   cc->npt = 1;
   cc->ds_used = 0.0;
-  cc->itp = (!cc->restart || cc->switch_pending) ? CABLE_TY_EP : CABLE_TY_NONE;
+  /* AUTO labels the first point of a run EP only when it is a new start: a
+     restart, the switched first point at a branch point (ISW = -1) included,
+     is not labelled (auto-07p, demo lin: run 2 from BP1 has no EP at PT 1) */
+  cc->itp = !cc->restart ? CABLE_TY_EP : CABLE_TY_NONE;
   cc->switch_pending = 0;
   cont_store_solution(cc, cc->itp, 0);
   return CABLE_SUCCESS;
@@ -392,7 +395,7 @@ static int pencil_step(cable_cont *cc, pencil_result *pr, double *ds_step)
 {
   pr->n = 0;
   pr->coincident = pr->unresolved = 0;
-  if (cc->c.isp <= 0 || !cc->tan_abd) return 0;
+  if (!cont_bp_detect(cc) || !cc->tan_abd) return 0;
   if (!cont_gate_needed(cc)) return 0;
   double t[CONT_PAIR_MAXCROSS];
   int ndouble = 0, nc = cont_pencil_crossings(cc, cc->tan_abd, t, CONT_PAIR_MAXCROSS, &ndouble);
