@@ -148,6 +148,16 @@ static int bi_print(script_interp *in, const script_call *c, script_value *out)
   return 0;
 }
 
+/* fail('text'): stop the script with that message (Python's raise; a scene
+ * that does not find the branch point it expects says so and stops). */
+static int bi_fail(script_interp *in, const script_call *c, script_value *out)
+{
+  (void)out;
+  const char *text = c->args[0].type == SCRIPT_STRING ? script_string_chars(&c->args[0]) : NULL;
+  return script_fail(in, CABLE_ERR_NOTFOUND, c->line, c->name, "%s",
+                     text ? text : "fail() takes the message as a string");
+}
+
 static int bi_len(script_interp *in, const script_call *c, script_value *out)
 {
   const script_value *v = &c->args[0];
@@ -279,7 +289,7 @@ static const script_builtin builtins[] = {
   {"bd", 0, 1, 1, bi_loadbd},      {"save", 2, 2, 0, bi_save},      {"sv", 2, 2, 0, bi_save},
   {"merge", 1, 1, 0, bi_merge},    {"mb", 1, 1, 0, bi_merge},       {"relabel", 1, 1, 0, bi_relabel},
   {"rl", 1, 1, 0, bi_relabel},     {"clean", 0, 0, 0, bi_clean},    {"cl", 0, 0, 0, bi_clean},
-  {"print", 0, SCRIPT_MAX_ARGS, 0, bi_print},
+  {"print", 0, SCRIPT_MAX_ARGS, 0, bi_print},      {"fail", 1, 1, 0, bi_fail},
   {"len", 1, 1, 0, bi_len},        {"range", 1, 3, 0, bi_range},    {"str", 1, 1, 0, bi_str},
   {"int", 1, 1, 0, bi_int},        {"float", 1, 1, 0, bi_float},    {"enumerate", 1, 2, 0, bi_enumerate},
   {NULL, 0, 0, 0, NULL}};

@@ -890,9 +890,15 @@ static int rp_getitem(void *ctx, const script_value *h, const script_value *key,
   else if (strcmp(k, "BR") == 0) *out = script_integer(s->ibr);
   else if (strcmp(k, "PT") == 0) *out = script_integer(s->ntot);
   else if (strcmp(k, "TY") == 0) return script_string_new(out, cable_type_name(s->itp), strlen(cable_type_name(s->itp)));
+  else if (strcmp(k, "kind") == 0) {
+    /* how the detector found a BP: 'simple', 'double', 'pair'; '' otherwise or when read from a file */
+    static const char *const kinds[] = {"", "simple", "double", "pair"};
+    const char *kd = s->bp_kind >= 0 && s->bp_kind <= CABLE_BP_PAIR ? kinds[s->bp_kind] : "";
+    return script_string_new(out, kd, strlen(kd));
+  }
   else if (sscanf(k, "PAR(%d)", &idx) == 1 && idx >= 1 && idx <= s->npar) *out = script_number(s->par[idx - 1]);
   else if ((idx = cable_names_par_index(&so->br->names, k, NULL, 0)) >= 0 && idx < s->npar) *out = script_number(s->par[idx]);
-  else return cable_error_set(err, CABLE_ERR_NOTFOUND, NULL, 0, k, "no such parameter (names: the problem's parnames, PAR(k), LAB, BR, PT, TY)");
+  else return cable_error_set(err, CABLE_ERR_NOTFOUND, NULL, 0, k, "no such parameter (names: the problem's parnames, PAR(k), LAB, BR, PT, TY, kind)");
   return 0;
 }
 

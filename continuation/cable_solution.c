@@ -41,6 +41,7 @@ int cable_solution_copy(cable_solution *dst, const cable_solution *src)
     return -1;
   size_t np = (size_t)cable_solution_npts(src);
   dst->ibr = src->ibr; dst->ntot = src->ntot; dst->itp = src->itp; dst->lab = src->lab;
+  dst->bp_kind = src->bp_kind;
   dst->isw = src->isw; dst->err_est = src->err_est;
   memcpy(dst->t, src->t, np * sizeof *dst->t);
   memcpy(dst->u, src->u, np * (size_t)src->ndim * sizeof *dst->u);

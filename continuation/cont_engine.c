@@ -66,7 +66,7 @@ void cable_cont_free(cable_cont *cc)
   colloc_jac_free(cc->J);
   abd_solver_free(cc->abd);
   double *v[] = {cc->x, cc->xdot, cc->xp, cc->xdotp, cc->xt, cc->xdott, cc->w1, cc->w2, cc->w3,
-                 cc->svec, cc->umax, cc->xq, cc->xdotq};
+                 cc->xlo, cc->xhi, cc->svec, cc->umax, cc->xq, cc->xdotq};
   for (size_t i = 0; i < sizeof v / sizeof v[0]; i++) free(v[i]);
   cable_solution_free(cc->sol);
   cable_solution_free(cc->pvsol);
@@ -141,13 +141,14 @@ cable_cont *cable_cont_alloc(const cable_problem *pb, const cable_constants *c, 
   cc->xp = calloc(n, sizeof(double)); cc->xdotp = calloc(n, sizeof(double));
   cc->xt = calloc(n, sizeof(double)); cc->xdott = calloc(n, sizeof(double));
   cc->w1 = calloc(n, sizeof(double)); cc->w2 = calloc(n, sizeof(double)); cc->w3 = calloc(n, sizeof(double));
+  cc->xlo = calloc(n, sizeof(double)); cc->xhi = calloc(n, sizeof(double));
   cc->svec = calloc(3 * n, sizeof(double)); /* up to three singular vectors (switching) */
   if (cont_pencil_alloc(cc) != CABLE_SUCCESS || cont_gate_alloc(cc) != CABLE_SUCCESS) goto fail;
   cc->xq = calloc(n, sizeof(double)); cc->xdotq = calloc(n, sizeof(double));
   cc->umax = calloc((size_t)cc->ndim, sizeof(double));
   cc->sol = cable_solution_alloc(cc->ndim, cc->ntst, cc->ncol, cc->npar, cc->nfpr);
   if (!cc->J || !cc->abd || !cc->x || !cc->xdot || !cc->xp || !cc->xdotp || !cc->xt || !cc->xdott ||
-      !cc->w1 || !cc->w2 || !cc->w3 || !cc->svec || !cc->umax || !cc->sol || !cc->xq || !cc->xdotq)
+      !cc->w1 || !cc->w2 || !cc->w3 || !cc->xlo || !cc->xhi || !cc->svec || !cc->umax || !cc->sol || !cc->xq || !cc->xdotq)
     goto fail;
   /* a user zero on a parameter that is not free is a value PVLS computes
      (AUTO calls PVLS before its test functions): PVLS runs at every point
@@ -194,13 +195,20 @@ static int check_nodes(cable_cont *cc, const double *x)
  * pseudo-arclength equation <x - x0, xdot0> = ds. */
 int cont_correct(cable_cont *cc, const double *x0, const double *xdot0, double ds, double *x)
 {
+  for (int i = 0; i < cc->n; i++) x[i] = x0[i] + ds * xdot0[i];
+  return cont_correct_from(cc, x0, xdot0, ds, x);
+}
+
+/* Newton from the initial guess in x instead of the linear predictor (the
+ * locating iterations start from the interpolant of the bracket's ends). */
+int cont_correct_from(cable_cont *cc, const double *x0, const double *xdot0, double ds, double *x)
+{
   colloc_system *s = cc->sys;
   size_t n = (size_t)cc->n;
   memcpy(s->x0, x0, n * sizeof *x0);
   memcpy(s->xdot0, xdot0, n * sizeof *xdot0);
   s->ds = ds;
   s->closing = COLLOC_CLOSE_ARCLENGTH;
-  for (size_t i = 0; i < n; i++) x[i] = x0[i] + ds * xdot0[i];
   int rc = colloc_newton_solve(cc->nw, x);
   cc->newton_iters = colloc_newton_iterations(cc->nw);
   cc->rejected[0] = '\0';
@@ -509,6 +517,7 @@ int cable_cont_step(cable_cont *cc)
     double seed = type == CABLE_TY_BP && pr.n > 0 ? pr.t[0] * ds_step : (double)NAN;
     rc = cont_locate(cc, type, which, seed); /* replaces the trial point by the located one */
     if (rc == CABLE_SUCCESS) cc->itp = type;
+    if (rc == CABLE_SUCCESS && type == CABLE_TY_BP) cc->bp_kind = CABLE_BP_SIMPLE; /* det changed sign */
     else snprintf(cc->note, sizeof cc->note, "%s", cc->err);
   } else if (pr.coincident && cont_dip_in_step(cc, pr.tmid * ds_step) == CABLE_SUCCESS && cc->queued) {
     cc->itp = CABLE_TY_BP;

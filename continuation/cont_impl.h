@@ -32,6 +32,7 @@ struct cable_cont {
   double *xp, *xdotp;           /* previous accepted point and tangent */
   double *xt, *xdott;           /* trial point and tangent */
   double *w1, *w2, *w3;         /* work vectors of length n */
+  double *xlo, *xhi;            /* locating: the solutions at the bracket's ends */
   double *svec;                 /* [n * 3] singular-vector work */
   double ds;                    /* signed step size for the next step */
   double ds_used;               /* step size that produced the current point */
@@ -56,6 +57,7 @@ struct cable_cont {
   char note[600];               /* remark on the current point for the d-file ("" none) */
   int itp;                      /* type of the current point (0 regular) */
   int itp_x;                    /* type found for x when it was accepted (located points) */
+  int bp_kind;                  /* enum cable_bp_kind of the current point when it is a BP */
   int uz_hit;                   /* index of the user zero located at x, or -1 */
   int uz_stop;                  /* the located user zero asks to stop */
   /* output */
@@ -142,6 +144,8 @@ int cont_switch_direction(cable_cont *cc);
 
 /* cont_engine.c */
 int cont_correct(cable_cont *cc, const double *x0, const double *xdot0, double ds, double *x);
+/* the same corrector from the initial guess x (on the hyperplane of ds) */
+int cont_correct_from(cable_cont *cc, const double *x0, const double *xdot0, double ds, double *x);
 void cont_set_error(cable_cont *cc, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 
 #endif

@@ -1387,7 +1387,12 @@ static void test_engine_errors(void)
   expect_replay_error("IRS without solutions", "r = run(c='bratu', IRS=3)\n", CABLE_ERR_INPUT,
                       "t.auto:1: run: IRS: a restart needs solutions: give a result, a solution, a name or s='NAME'");
   expect_replay_error("unknown parameter name", "r = run(c='bratu')\nx = r('LP1')['mu']\n", CABLE_ERR_NOTFOUND,
-                      "t.auto:2: [: mu: no such parameter (names: the problem's parnames, PAR(k), LAB, BR, PT, TY)");
+                      "t.auto:2: [: mu: no such parameter (names: the problem's parnames, PAR(k), LAB, BR, PT, TY, kind)");
+  /* fail('text') stops the script with the text (a scene that misses its BP) */
+  expect_replay_error("fail()", "r = run(c='bratu')\nfail('no fold with 3 < lambda < 4')\nr = run(c='bratu')\n",
+                      CABLE_ERR_NOTFOUND, "t.auto:2: fail: no fold with 3 < lambda < 4");
+  expect_replay_error("fail() without a string", "fail(3)\n", CABLE_ERR_NOTFOUND,
+                      "t.auto:1: fail: fail() takes the message as a string");
   expect_replay_error("solution plus result", "r = run(c='bratu')\nx = r('LP1') + r\n", CABLE_ERR_INPUT,
                       "t.auto:2: +: '+' needs a result, got a solution");
   expect_replay_error("None as a constant", "r = run(c='bratu', DS=None)\n", CABLE_ERR_INPUT,

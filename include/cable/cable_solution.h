@@ -6,6 +6,12 @@
 
 #include "cable/cable_api.h"
 
+/* How the branch-point detector found a BP (cont_special.c): the
+ * determinant changed sign (one singular value crossed zero: simple), or
+ * sigma_1 dipped to zero without a sign change, with sigma_2 vanishing
+ * too (double) or not (a pair of simple BPs in one step). */
+enum cable_bp_kind { CABLE_BP_UNKNOWN = 0, CABLE_BP_SIMPLE = 1, CABLE_BP_DOUBLE = 2, CABLE_BP_PAIR = 3 };
+
 typedef struct cable_solution {
   int ndim, ntst, ncol;
   int npar;        /* length of par[] (AUTO's NPAR) */
@@ -35,6 +41,9 @@ typedef struct cable_solution {
   double pvls_bif; /* ... and the branch-point test function, the smallest singular value of the
                       extended Newton matrix signed by its determinant (GETP('BIF')); 0 when
                       neither ISP nor NSV asks for it */
+  /* last, so that the fields above keep their offsets for plug-ins built before it */
+  int bp_kind;     /* a BP's kind as the detector found it (enum cable_bp_kind); 0: not a BP or
+                      unknown (the s-file does not store it) */
 } cable_solution;
 
 /* Every field zeroed except the sizes; arrays allocated; NULL on failure. */
