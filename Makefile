@@ -37,7 +37,7 @@ SAN_LD_asan := -fsanitize=address,undefined
 LDFLAGS := $(SAN_LD_$(MODE)) $(EXTRA_LDFLAGS)
 LIBS    := -lsundials_kinsol -lsundials_sunlinsolklu -lsundials_sunmatrixsparse \
            -lsundials_nvecserial -lsundials_generic -lklu \
-           -lgsl -llapacke -llapack -lblas -lcairo -ldl -lm
+           -lgsl -llapacke -llapack -lblas -lcairo -ldl -lpthread -lm
 
 PY_SRCS  := $(wildcard auto_iface/pycable_*.c)
 LIB_SRCS := $(filter-out auto_iface/cable_main.c $(PY_SRCS),$(wildcard $(addsuffix /*.c,$(MODULES))))
@@ -50,6 +50,9 @@ TEST_SRCS := $(wildcard tests/test_*.c)
 TEST_BINS := $(TEST_SRCS:tests/%.c=$(BUILD)/tests/%)
 BENCH_SRCS := $(wildcard tests/bench_*.c)
 BENCH_BINS := $(BENCH_SRCS:tests/%.c=$(BUILD)/tests/%)
+# API tests: the public headers only, linked with libcable.so
+API_SRCS := $(wildcard tests/api/api_*.c)
+API_BINS := $(API_SRCS:tests/api/api_%.c=$(BUILD)/tests/test_api_%)
 PLUGIN_SRCS := $(wildcard tests/plugins/*.c)
 PLUGINS  := $(PLUGIN_SRCS:tests/plugins/%.c=$(BUILD)/plugins/%.so)
 LIBCABLE := $(BUILD)/libcable.a
@@ -141,6 +144,11 @@ cable: $(BUILD)/cable
 $(BUILD)/tests/%: $(BUILD)/tests/%.o $(LIBCABLE)
 	$(CC) $(LDFLAGS) -rdynamic $^ $(LIBS) -o $@
 
+# Programs written against include/cable/ only, linked with the shared library.
+$(BUILD)/tests/test_api_%: tests/api/api_%.c $(LIBSO) | $(DEPS_OK)
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) $(PUBINC) $< $(LDFLAGS) -L$(BUILD) -lcable -Wl,-rpath,$(abspath $(BUILD)) -lm -o $@
+
 # Plug-ins see the public headers only.
 $(BUILD)/plugins/%.so: tests/plugins/%.c | $(DEPS_OK)
 	@mkdir -p $(dir $@)
@@ -148,7 +156,7 @@ $(BUILD)/plugins/%.so: tests/plugins/%.c | $(DEPS_OK)
 
 # the Python package only in release builds (CPython cannot load a sanitized extension)
 PY_TARGET_release := python
-tests-build: $(TEST_BINS) $(PLUGINS) $(BUILD)/cable cable $(LIBSO) $(PY_TARGET_$(MODE))
+tests-build: $(TEST_BINS) $(API_BINS) $(PLUGINS) $(BUILD)/cable cable $(LIBSO) $(PY_TARGET_$(MODE))
 
 # The README's test command: build and run every test program, one summary line.
 check: tests-build
@@ -219,4 +227,4 @@ help:
 	@echo "make fuzz       fuzz the parsers (libFuzzer, 10 minutes)"
 
 .PRECIOUS: $(BUILD)/%.o $(BUILD)/tests/%.o
--include $(LIB_OBJS:.o=.d) $(GEN_OBJS:.o=.d) $(PY_OBJS:.o=.d) $(TEST_BINS:=.d) $(BENCH_BINS:=.d) $(PLUGINS:.so=.d) $(BUILD)/auto_iface/cable_main.d
+-include $(LIB_OBJS:.o=.d) $(GEN_OBJS:.o=.d) $(PY_OBJS:.o=.d) $(TEST_BINS:=.d) $(API_BINS:=.d) $(BENCH_BINS:=.d) $(PLUGINS:.so=.d) $(BUILD)/auto_iface/cable_main.d

@@ -184,7 +184,8 @@ static void definition_lines(const char *src, int *lines)
 }
 
 /* GETP codes cable provides (autoeq_shim.c) and why it refuses the others. */
-static const char *const getp_codes[] = {"NRM", "INT", "MAX", "MIN", "BV0", "BV1", "STP", "FLD", "BIF"};
+static const char *const getp_codes[] = {"NRM", "INT", "MAX", "MIN", "BV0", "BV1", "STP", "FLD", "BIF", "MXT",
+                                          "MNT", "NDI", "NDX", "NTS", "NCO", "NBC", "NIN", "DTM", "WIN"};
 static const struct {
   const char *code, *why;
 } getp_refused[] = {
@@ -225,7 +226,7 @@ static int check_getp_codes(const cable_autoeq *m, const char *src, cable_error 
       for (size_t i = 0; i < sizeof getp_refused / sizeof getp_refused[0]; i++)
         if (strcmp(code, getp_refused[i].code) == 0) why = getp_refused[i].why;
       return cable_error_set(err, CABLE_ERR_PLUGIN, m->src, line, "GETP",
-                             "'%s': cable does not provide it (%s); it provides NRM, INT, MAX, MIN, BV0, BV1, STP, FLD and BIF",
+                             "'%s': cable does not provide it (%s); it provides NRM, INT, MAX, MIN, MXT, MNT, BV0, BV1, STP, FLD, BIF, NDIM, NDX, NTST, NCOL, NBC, NINT, DTM and WINT",
                              code, why);
     }
     if (!eol) break;

@@ -100,6 +100,29 @@ static double getp_value(cable_autoeq *m, const char *code, int ic)
   if (strcasecmp(code, "STP") == 0) return s->pvls_ds;
   if (strcasecmp(code, "FLD") == 0) return s->pvls_fld;
   if (strcasecmp(code, "BIF") == 0) return s->pvls_bif;
+  /* the discretisation and the problem's sizes (AUTO: NDIM, NDX, NTST, NCOL,
+     NBC, NINT, read by their first three letters) */
+  if (strcasecmp(code, "NDI") == 0 || strcasecmp(code, "NDX") == 0) return nd;
+  if (strcasecmp(code, "NTS") == 0) return s->ntst;
+  if (strcasecmp(code, "NCO") == 0) return s->ncol;
+  if (strcasecmp(code, "NBC") == 0) return m->nbc;
+  if (strcasecmp(code, "NIN") == 0) return m->nint;
+  if (strcasecmp(code, "DTM") == 0) {   /* the length of mesh interval IC, 1..NTST */
+    if (ic < 1 || ic > s->ntst) {
+      snprintf(m->getp_error, sizeof m->getp_error, "GETP('DTM', %d): the interval must be 1..NTST = %d", ic,
+               s->ntst);
+      return nan("");
+    }
+    return s->t[ic * s->ncol] - s->t[(ic - 1) * s->ncol];
+  }
+  if (strcasecmp(code, "WIN") == 0) {   /* the node quadrature weight IC, 0..NCOL, on a unit interval */
+    colloc_basis b;
+    if (ic < 0 || ic > s->ncol || colloc_basis_init(&b, s->ncol) != 0) {
+      snprintf(m->getp_error, sizeof m->getp_error, "GETP('WINT', %d): the node must be 0..NCOL = %d", ic, s->ncol);
+      return nan("");
+    }
+    return b.wn[ic];
+  }
   if (ic < 1 || ic > nd) {
     snprintf(m->getp_error, sizeof m->getp_error, "GETP('%s', %d): the component must be 1..NDIM = %d", code, ic, nd);
     return nan("");
@@ -107,14 +130,22 @@ static double getp_value(cable_autoeq *m, const char *code, int ic)
   int i = ic - 1;
   if (strcasecmp(code, "BV0") == 0) return s->u[i];
   if (strcasecmp(code, "BV1") == 0) return s->u[(size_t)(npts - 1) * (size_t)nd + (size_t)i];
-  if (strcasecmp(code, "MAX") == 0 || strcasecmp(code, "MIN") == 0) {
-    int mx = toupper((unsigned char)code[1]) == 'A';
+  if (strcasecmp(code, "MAX") == 0 || strcasecmp(code, "MIN") == 0 || strcasecmp(code, "MXT") == 0 ||
+      strcasecmp(code, "MNT") == 0) {
+    /* MAX, MIN: the largest and smallest U(IC) over the stored points; MXT,
+       MNT: the t where they are (the first such point) */
+    int mx = toupper((unsigned char)code[1]) == 'A' || toupper((unsigned char)code[1]) == 'X';
+    int at_t = toupper((unsigned char)code[2]) == 'T';
     double v = s->u[i];
+    int kbest = 0;
     for (int k = 1; k < npts; k++) {
       double x = s->u[(size_t)k * (size_t)nd + (size_t)i];
-      v = mx ? fmax(v, x) : fmin(v, x);
+      if (mx ? x > v : x < v) {
+        v = x;
+        kbest = k;
+      }
     }
-    return v;
+    return at_t ? s->t[kbest] : v;
   }
   if (strcasecmp(code, "INT") == 0 || strcasecmp(code, "NRM") == 0) {
     colloc_basis b;

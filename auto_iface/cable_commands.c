@@ -89,7 +89,6 @@ int cable_cmd_run(int argc, char **argv, cable_error *err)
     cable_session_options o;
     cable_session_options_init(&o);
     o.dir = ".";
-    o.problems = cable_session_braid_problems();
     cable_session *r = cable_session_alloc(&o);
     a.name = runname;
     a.nover = nover;

@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include "cable/cable_aufile.h"
+#include "cable/cable_cont.h"
 #include "cable_commands.h"
 #include "cable/cable_pictures.h"
 #include "cable/cable_status.h"
@@ -131,6 +132,9 @@ int main(int argc, char **argv)
     return 2;
   }
   const char *cmd = argv[1];
+  /* the application's choice, not the library's: small BLAS blocks run
+     fastest on one thread */
+  cable_blas_single_thread();
   cable_error err;
   cable_error_clear(&err);
   if (strcmp(cmd, "--version") == 0) {

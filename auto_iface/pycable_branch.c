@@ -153,7 +153,9 @@ static PyObject *branch_solution(PyObject *self, PyObject *arg)
 }
 
 /* Labels, types and the parameters of the labelled solutions, cheaply:
- * [(LAB, TY, BR, PT, par ndarray, note or None), ...]. */
+ * [(LAB, TY, BR, PT, par ndarray, note or None, BP kind), ...]; the kind is
+ * the detector's (cable_solution.bp_kind): 'simple', 'double', 'pair', or ''
+ * (not a BP, or read from an s-file, which does not store it). */
 static PyObject *branch_labels(PyObject *self, PyObject *unused)
 {
   (void)unused;
@@ -162,9 +164,11 @@ static PyObject *branch_labels(PyObject *self, PyObject *unused)
   PyObject *out = PyList_New(n);
   for (int i = 0; out && i < n; i++) {
     const cable_solution *s = cable_branch_solution(b, i);
+    static const char *const kinds[] = {"", "simple", "double", "pair"};
+    const char *kind = s->bp_kind >= CABLE_BP_UNKNOWN && s->bp_kind <= CABLE_BP_PAIR ? kinds[s->bp_kind] : "";
     PyObject *par = array1(s->par, s->npar);
-    PyObject *t = par ? Py_BuildValue("(isiiNz)", s->lab, cable_type_name(s->itp), s->ibr, s->ntot, par,
-                                      cable_branch_solution_note(b, i))
+    PyObject *t = par ? Py_BuildValue("(isiiNzs)", s->lab, cable_type_name(s->itp), s->ibr, s->ntot, par,
+                                      cable_branch_solution_note(b, i), kind)
                       : NULL;
     if (!t) {
       Py_DECREF(out);

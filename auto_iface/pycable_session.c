@@ -32,7 +32,6 @@ static int session_init(PyObject *obj, PyObject *args, PyObject *kw)
   cable_session_options o;
   cable_session_options_init(&o);
   o.dir = NULL;   /* the current directory: the Python layer changes it (AUTO's cd) */
-  o.problems = cable_session_braid_problems();
   o.interrupt = session_interrupt;
   o.interrupt_ctx = self;
   self->s = cable_session_alloc(&o);

@@ -20,14 +20,19 @@
  *   u_j, u_{j+1}, q_{j+1}, s_j, s_{j+1}. */
 #include "abd_solver.h"
 
+#include "cable_team.h"
+
 #include <cblas.h>
 #include <lapacke.h>
+#include <float.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
 enum { STATE_NONE = 0, STATE_OK = 1, STATE_SINGULAR = 2 };
+
+
 
 struct abd_solver {
   int nd, N, nc, nf, nb, nint, nq; /* sizes of colloc_jac.h; nq = nint + 1 */
@@ -57,6 +62,15 @@ struct abd_solver {
   int det_sign;
   double det_log;
   double growth;
+  /* per-interval results of the parallel stages, reduced in interval order
+     (the same numbers for every thread count) */
+  cable_team *team;                /* threads for the per-interval stages (NULL: none) */
+  int *iv_status;                  /* [N] 0 ok, 1 singular, -1 LAPACK, -2 non-finite, -3 band overflow */
+  int *iv_sign;                    /* [N] sign of the interval's pivots and interchanges */
+  double *iv_logabs;               /* [N] sum of log |pivot| */
+  double *iv_umax, *iv_amax;       /* [N] max |U| and max |entry| of the local block */
+  double *w_g;                     /* [N*r] per-interval local right-hand sides */
+  double *w_oo;                    /* [N*nO] per-interval outer values */
   /* smallest_sv workspace, grown on demand */
   int sv_k;
   double *sv_v, *sv_w, *sv_b, *sv_r, *sv_x, *sv_yt, *sv_s, *sv_work, *sv_vec, *sv_res;
@@ -70,14 +84,18 @@ static int grow_base(const abd_solver *s, int j) { return s->a + j * s->m; }
 static int end_base(const abd_solver *s) { return s->a + s->N * s->m; }
 static double *loc_block(const abd_solver *s, int j) { return s->loc + (size_t)j * s->loc_size; }
 
-static void band_put(abd_solver *s, int row, int col, double v)
+/* Writes one band entry; 1 when it falls outside kl/ku (internal error). */
+static int band_set(const abd_solver *s, int row, int col, double v)
 {
   int d = row - col;
-  if (d > s->kl || -d > s->ku) {
-    s->band_overflow = 1;
-    return;
-  }
+  if (d > s->kl || -d > s->ku) return 1;
   s->ab[(size_t)col * (size_t)s->ldab + (size_t)(s->kl + s->ku + d)] = v;
+  return 0;
+}
+
+static void band_put(abd_solver *s, int row, int col, double v)
+{
+  if (band_set(s, row, col, v)) s->band_overflow = 1;
 }
 
 static void extent_update(int row, int col, int *kl, int *ku)
@@ -257,7 +275,16 @@ abd_solver *abd_solver_alloc(int ndim, int ntst, int ncol, int nfpr, int nbc, in
   s->w_piv = malloc((nIt ? nIt : 1) * sizeof(double));
   s->w_loc = malloc((size_t)s->r * sizeof(double));
   s->w_o = malloc((size_t)s->nO * sizeof(double));
-  if (!s->loc || !s->loc_piv || !s->ab || !s->band_piv || !s->w_rhs || !s->w_piv || !s->w_loc || !s->w_o) goto fail;
+  s->iv_status = malloc((size_t)ntst * sizeof(int));
+  s->iv_sign = malloc((size_t)ntst * sizeof(int));
+  s->iv_logabs = malloc((size_t)ntst * sizeof(double));
+  s->iv_umax = malloc((size_t)ntst * sizeof(double));
+  s->iv_amax = malloc((size_t)ntst * sizeof(double));
+  s->w_g = malloc((size_t)ntst * (size_t)s->r * sizeof(double));
+  s->w_oo = malloc((size_t)ntst * (size_t)s->nO * sizeof(double));
+  if (!s->loc || !s->loc_piv || !s->ab || !s->band_piv || !s->w_rhs || !s->w_piv || !s->w_loc || !s->w_o ||
+      !s->iv_status || !s->iv_sign || !s->iv_logabs || !s->iv_umax || !s->iv_amax || !s->w_g || !s->w_oo)
+    goto fail;
   s->perm_sign = structural_sign(s);
   if (s->perm_sign == 0) goto fail;
   s->det_log = -INFINITY;
@@ -295,11 +322,33 @@ void abd_solver_free(abd_solver *s)
   free(s->w_piv);
   free(s->w_loc);
   free(s->w_o);
+  free(s->iv_status);
+  free(s->iv_sign);
+  free(s->iv_logabs);
+  free(s->iv_umax);
+  free(s->iv_amax);
+  free(s->w_g);
+  free(s->w_oo);
+  cable_team_free(s->team);
   sv_free(s);
   free(s);
 }
 
 int abd_solver_size(const abd_solver *s) { return s->n; }
+
+int abd_solver_set_threads(abd_solver *s, int nthreads)
+{
+  if (!s) return ABD_ERR_SIZE;
+  if (nthreads < 1) nthreads = 1;
+  if (cable_team_size(s->team) == nthreads) return ABD_OK;
+  cable_team_free(s->team);
+  s->team = NULL;
+  if (nthreads == 1) return ABD_OK;
+  s->team = cable_team_alloc(nthreads);
+  return s->team ? ABD_OK : ABD_ERR_MEM;
+}
+
+int abd_solver_threads(const abd_solver *s) { return s ? cable_team_size(s->team) : 0; }
 
 void abd_solver_bandwidths(const abd_solver *s, int *kl, int *ku)
 {
@@ -311,30 +360,15 @@ void abd_solver_space(const abd_solver *s, long *ndoubles, long *nints)
 {
   long nIt = (long)s->N * s->nI;
   *ndoubles = (long)s->N * (long)s->loc_size + (long)s->ldab * s->nband + s->nband + nIt + s->r + s->nO +
+              3L * s->N + (long)s->N * (s->r + s->nO) +
               (s->sv_k ? (long)s->sv_k * (3L * s->n + 3L * s->sv_k + 1) + 2L * s->n : 0L) + (long)s->sv_lwork;
-  *nints = s->nO + nIt + s->nband;
+  *nints = s->nO + nIt + s->nband + 2L * s->N;
 }
 
 static int jac_matches(const abd_solver *s, const colloc_jac *J)
 {
   return J->ndim == s->nd && J->ntst == s->N && J->ncol == s->nc && J->nfpr == s->nf && J->nbc == s->nb &&
          J->nint == s->nint && J->n == s->n;
-}
-
-/* Largest |entry| of J, or NaN when an entry is not finite. */
-static double jac_maxabs(const colloc_jac *J)
-{
-  double mx = 0.0;
-  size_t len[4] = {(size_t)J->ntst * J->coll_stride, (size_t)J->nbc * (size_t)(2 * J->ndim + J->nfpr),
-                   (size_t)J->ntst * J->dense_stride, (size_t)J->ndense * (size_t)J->nfpr};
-  const double *v[4] = {J->coll, J->bc, J->dense, J->dense_par};
-  for (int b = 0; b < 4; b++)
-    for (size_t i = 0; i < len[b]; i++) {
-      if (!isfinite(v[b][i])) return NAN;
-      double x = fabs(v[b][i]);
-      if (x > mx) mx = x;
-    }
-  return mx;
 }
 
 /* Interval j's local block (r x (nI+nO), ld r) from J. */
@@ -371,43 +405,49 @@ static void det_accumulate(double pivot, int *sign, double *logabs)
   *logabs += log(fabs(pivot));
 }
 
-int abd_solver_factor(abd_solver *s, const colloc_jac *J)
+/* Interval j's stage of the factorisation: local fill, condensation, growth
+ * and its band rows.  Touches only interval j's storage and band rows, so
+ * intervals run in parallel; the results go to the iv_ arrays. */
+typedef struct {
+  abd_solver *s;
+  const colloc_jac *J;
+} factor_ctx;
+
+/* Zero mesh point j's m band columns. */
+static void band_zero(void *p, int j)
 {
-  if (!s) return ABD_ERR_SIZE;
-  s->state = STATE_NONE;
-  s->det_sign = 0;
-  s->det_log = -INFINITY;
-  if (!J || !jac_matches(s, J)) return ABD_ERR_SIZE;
-  double amax = jac_maxabs(J);
-  if (isnan(amax)) return ABD_ERR_NONFINITE;
-  if (amax < 1.0) amax = 1.0; /* the identity copy entries */
+  const factor_ctx *c = p;
+  const abd_solver *s = c->s;
+  memset(s->ab + (size_t)j * (size_t)s->m * (size_t)s->ldab, 0, (size_t)s->m * (size_t)s->ldab * sizeof(double));
+}
 
-  const int nd = s->nd, nf = s->nf, nq = s->nq, nI = s->nI, r = s->r, nO = s->nO, N = s->N;
-  int sign = s->perm_sign, singular = 0;
-  double logabs = 0.0, umax = 0.0;
-
-  memset(s->ab, 0, (size_t)s->ldab * (size_t)s->nband * sizeof(double));
-  s->band_overflow = 0;
-  for (int i = 0; i < nd; i++) {
-    band_put(s, i, zcol(s, 0, s->off_c, i), 1.0);
-    band_put(s, i, zcol(s, 0, s->off_u, i), -1.0);
+static void factor_interval(void *ctx, int j)
+{
+  const factor_ctx *fc = ctx;
+  abd_solver *s = fc->s;
+  const colloc_jac *J = fc->J;
+  const int nd = s->nd, nf = s->nf, nI = s->nI, r = s->r, nO = s->nO;
+  double *L = loc_block(s, j);
+  double *O = L + (size_t)nI * (size_t)r;
+  lapack_int *piv = s->loc_piv + (size_t)j * (size_t)nI;
+  int sign = 1, status = 0;
+  double logabs = 0.0, umax = 0.0, amax = 0.0;
+  local_fill(s, J, j, L);
+  for (size_t i = 0; i < s->loc_size; i++) {
+    double x = fabs(L[i]);
+    if (!(x <= DBL_MAX)) status = -2; /* NaN or infinity */
+    if (x > amax) amax = x;
   }
-  for (int d = 0; d < nq; d++) band_put(s, nd + d, zcol(s, 0, s->off_s, d), 1.0);
-
-  for (int j = 0; j < N; j++) {
-    double *L = loc_block(s, j);
-    double *O = L + (size_t)nI * (size_t)r;
-    lapack_int *piv = s->loc_piv + (size_t)j * (size_t)nI;
-    local_fill(s, J, j, L);
-    if (nI > 0) {
-      lapack_int info = LAPACKE_dgetrf_work(LAPACK_COL_MAJOR, r, nI, L, r, piv);
-      if (info < 0) return ABD_ERR_LAPACK;
-      if (info > 0) singular = 1;
-      for (int i = 0; i < nI; i++) {
-        if (piv[i] != i + 1) sign = -sign;
-        det_accumulate(L[(size_t)i * (size_t)r + (size_t)i], &sign, &logabs);
-      }
-      if (LAPACKE_dlaswp_work(LAPACK_COL_MAJOR, nO, O, r, 1, nI, piv, 1) < 0) return ABD_ERR_LAPACK;
+  if (status == 0 && nI > 0) {
+    lapack_int info = LAPACKE_dgetrf_work(LAPACK_COL_MAJOR, r, nI, L, r, piv);
+    if (info < 0) status = -1;
+    else if (info > 0) status = 1;
+    for (int i = 0; status >= 0 && i < nI; i++) {
+      if (piv[i] != i + 1) sign = -sign;
+      det_accumulate(L[(size_t)i * (size_t)r + (size_t)i], &sign, &logabs);
+    }
+    if (status >= 0 && LAPACKE_dlaswp_work(LAPACK_COL_MAJOR, nO, O, r, 1, nI, piv, 1) < 0) status = -1;
+    if (status >= 0) {
       cblas_dtrsm(CblasColMajor, CblasLeft, CblasLower, CblasNoTrans, CblasUnit, nI, nO, 1.0, L, r, O, r);
       cblas_dgemm(CblasColMajor, CblasNoTrans, CblasNoTrans, r - nI, nO, nI, -1.0, L + nI, r, O, r, 1.0, O + nI, r);
       /* growth: the U rows of this stage and the condensed rows passed on */
@@ -419,19 +459,82 @@ int abd_solver_factor(abd_solver *s, const colloc_jac *J)
         }
       }
     }
-    int g = grow_base(s, j);
+  }
+  if (status >= 0) {
+    int over = 0, g = grow_base(s, j);
+    /* this interval's band columns are zeroed by the interval that writes
+       their first rows: columns of z_{j+1} (and z_0 by interval 0) */
     for (int k = 0; k < r - nI; k++)
       for (int o = 0; o < nO; o++)
-        band_put(s, g + nd + nf + k, j * s->m + s->omap[o], O[(size_t)o * (size_t)r + (size_t)(nI + k)]);
+        over |= band_set(s, g + nd + nf + k, j * s->m + s->omap[o], O[(size_t)o * (size_t)r + (size_t)(nI + k)]);
     for (int i = 0; i < nd; i++) {
-      band_put(s, g + i, zcol(s, j, s->off_c, i), -1.0);
-      band_put(s, g + i, zcol(s, j + 1, s->off_c, i), 1.0);
+      over |= band_set(s, g + i, zcol(s, j, s->off_c, i), -1.0);
+      over |= band_set(s, g + i, zcol(s, j + 1, s->off_c, i), 1.0);
     }
     for (int p = 0; p < nf; p++) {
-      band_put(s, g + nd + p, zcol(s, j, s->off_q, p), -1.0);
-      band_put(s, g + nd + p, zcol(s, j + 1, s->off_q, p), 1.0);
+      over |= band_set(s, g + nd + p, zcol(s, j, s->off_q, p), -1.0);
+      over |= band_set(s, g + nd + p, zcol(s, j + 1, s->off_q, p), 1.0);
     }
+    if (over) status = -3;
   }
+  s->iv_status[j] = status;
+  s->iv_sign[j] = sign;
+  s->iv_logabs[j] = logabs;
+  s->iv_umax[j] = umax;
+  s->iv_amax[j] = amax;
+}
+
+/* Largest |entry| of the boundary and dense-parameter blocks, or NaN when an
+ * entry is not finite (the interval blocks are scanned by factor_interval). */
+static double end_maxabs(const colloc_jac *J)
+{
+  double mx = 0.0;
+  size_t len[2] = {(size_t)J->nbc * (size_t)(2 * J->ndim + J->nfpr), (size_t)J->ndense * (size_t)J->nfpr};
+  const double *v[2] = {J->bc, J->dense_par};
+  for (int b = 0; b < 2; b++)
+    for (size_t i = 0; i < len[b]; i++) {
+      if (!isfinite(v[b][i])) return NAN;
+      double x = fabs(v[b][i]);
+      if (x > mx) mx = x;
+    }
+  return mx;
+}
+
+int abd_solver_factor(abd_solver *s, const colloc_jac *J)
+{
+  if (!s) return ABD_ERR_SIZE;
+  s->state = STATE_NONE;
+  s->det_sign = 0;
+  s->det_log = -INFINITY;
+  if (!J || !jac_matches(s, J)) return ABD_ERR_SIZE;
+  double amax = end_maxabs(J);
+  if (isnan(amax)) return ABD_ERR_NONFINITE;
+
+  const int nd = s->nd, nf = s->nf, nq = s->nq, N = s->N;
+  int sign = s->perm_sign, singular = 0;
+  double logabs = 0.0, umax = 0.0;
+
+  s->band_overflow = 0;
+  factor_ctx fc = {s, J};
+  cable_team_run(s->team, band_zero, &fc, N + 1);
+  for (int i = 0; i < nd; i++) {
+    band_put(s, i, zcol(s, 0, s->off_c, i), 1.0);
+    band_put(s, i, zcol(s, 0, s->off_u, i), -1.0);
+  }
+  for (int d = 0; d < nq; d++) band_put(s, nd + d, zcol(s, 0, s->off_s, d), 1.0);
+
+  cable_team_run(s->team, factor_interval, &fc, N);
+  /* reduce in interval order */
+  for (int j = 0; j < N; j++) {
+    if (s->iv_status[j] == -2) return ABD_ERR_NONFINITE;
+    if (s->iv_status[j] == -1 || s->iv_status[j] == -3) return ABD_ERR_LAPACK;
+    if (s->iv_status[j] == 1) singular = 1;
+    sign *= s->iv_sign[j];
+    logabs += s->iv_logabs[j];
+    if (s->iv_umax[j] > umax) umax = s->iv_umax[j];
+    if (s->iv_amax[j] > amax) amax = s->iv_amax[j];
+  }
+  if (amax < 1.0) amax = 1.0; /* the identity copy entries */
 
   const int e = end_base(s), nb = s->nb;
   for (int b = 0; b < nb; b++) {
@@ -483,35 +586,65 @@ static int solve_state(const abd_solver *s)
   return ABD_OK;
 }
 
+/* The per-interval stages of the solves, one interval per call (run by the
+ * team: each writes only its interval's rows and scratch). */
+typedef struct {
+  const abd_solver *s;
+  double *x;
+} solve_ctx;
+
+/* J x = b, stage 1: apply interval j's L^{-1} P to its rows' right-hand side. */
+static void solve_forward(void *p, int j)
+{
+  const solve_ctx *c = p;
+  const abd_solver *s = c->s;
+  const int nd = s->nd, nf = s->nf, nq = s->nq, nI = s->nI, r = s->r, nr = s->nr;
+  double *g = s->w_g + (size_t)j * (size_t)r;
+  const double *L = loc_block(s, j);
+  const lapack_int *piv = s->loc_piv + (size_t)j * (size_t)nI;
+  memcpy(g, c->x + (size_t)j * (size_t)nr, (size_t)nr * sizeof(double));
+  for (int d = 0; d < nq; d++) g[nr + d] = 0.0;
+  if (nI > 0) {
+    for (int i = 0; i < nI; i++) {
+      int ip = (int)piv[i] - 1;
+      if (ip != i) {
+        double t = g[i];
+        g[i] = g[ip];
+        g[ip] = t;
+      }
+    }
+    cblas_dtrsv(CblasColMajor, CblasLower, CblasNoTrans, CblasUnit, nI, L, r, g, 1);
+    cblas_dgemv(CblasColMajor, CblasNoTrans, r - nI, nI, -1.0, L + nI, r, g, 1, 1.0, g + nI, 1);
+    memcpy(s->w_piv + (size_t)j * (size_t)nI, g, (size_t)nI * sizeof(double));
+  }
+  memcpy(s->w_rhs + grow_base(s, j) + nd + nf, g + nI, (size_t)(r - nI) * sizeof(double));
+}
+
+/* J x = b, stage 3: interior unknowns, U_j x_I = g_j - X_j x_O. */
+static void solve_back(void *p, int j)
+{
+  const solve_ctx *c = p;
+  const abd_solver *s = c->s;
+  const int nd = s->nd, nI = s->nI, r = s->r, nr = s->nr, nO = s->nO;
+  if (nI == 0) return;
+  const double *L = loc_block(s, j);
+  double *t = s->w_piv + (size_t)j * (size_t)nI, *wo = s->w_oo + (size_t)j * (size_t)nO;
+  for (int o = 0; o < nO; o++) wo[o] = s->w_rhs[j * s->m + s->omap[o]];
+  cblas_dgemv(CblasColMajor, CblasNoTrans, nI, nO, -1.0, L + (size_t)nI * (size_t)r, r, wo, 1, 1.0, t, 1);
+  cblas_dtrsv(CblasColMajor, CblasUpper, CblasNoTrans, CblasNonUnit, nI, L, r, t, 1);
+  memcpy(c->x + (size_t)j * (size_t)nr + (size_t)nd, t, (size_t)nI * sizeof(double));
+}
+
 int abd_solver_solve(const abd_solver *s, double *x)
 {
   int st = solve_state(s);
   if (st != ABD_OK) return st;
-  const int nd = s->nd, nf = s->nf, nq = s->nq, nI = s->nI, r = s->r, nr = s->nr, nO = s->nO, N = s->N;
-  double *rhs = s->w_rhs, *g = s->w_loc;
+  const int nd = s->nd, nf = s->nf, nq = s->nq, nr = s->nr, N = s->N;
+  double *rhs = s->w_rhs;
+  solve_ctx c = {s, x};
 
   memset(rhs, 0, (size_t)s->nband * sizeof(double));
-  /* Apply each interval's L^{-1} P to its rows' right-hand side. */
-  for (int j = 0; j < N; j++) {
-    const double *L = loc_block(s, j);
-    const lapack_int *piv = s->loc_piv + (size_t)j * (size_t)nI;
-    memcpy(g, x + (size_t)j * (size_t)nr, (size_t)nr * sizeof(double));
-    for (int d = 0; d < nq; d++) g[nr + d] = 0.0;
-    if (nI > 0) {
-      for (int i = 0; i < nI; i++) {
-        int ip = (int)piv[i] - 1;
-        if (ip != i) {
-          double t = g[i];
-          g[i] = g[ip];
-          g[ip] = t;
-        }
-      }
-      cblas_dtrsv(CblasColMajor, CblasLower, CblasNoTrans, CblasUnit, nI, L, r, g, 1);
-      cblas_dgemv(CblasColMajor, CblasNoTrans, r - nI, nI, -1.0, L + nI, r, g, 1, 1.0, g + nI, 1);
-      memcpy(s->w_piv + (size_t)j * (size_t)nI, g, (size_t)nI * sizeof(double));
-    }
-    memcpy(rhs + grow_base(s, j) + nd + nf, g + nI, (size_t)(r - nI) * sizeof(double));
-  }
+  cable_team_run(s->team, solve_forward, &c, N);
   const int e = end_base(s);
   memcpy(rhs + e, x + (size_t)N * (size_t)nr, (size_t)(s->nb + nq) * sizeof(double));
 
@@ -519,20 +652,52 @@ int abd_solver_solve(const abd_solver *s, double *x)
                           s->nband) < 0)
     return ABD_ERR_LAPACK;
 
-  /* Interior unknowns: U_j x_I = g_j - X_j x_O. */
-  for (int j = 0; j < N; j++) {
-    if (nI == 0) break;
-    const double *L = loc_block(s, j);
-    double *t = s->w_piv + (size_t)j * (size_t)nI;
-    for (int o = 0; o < nO; o++) s->w_o[o] = rhs[j * s->m + s->omap[o]];
-    cblas_dgemv(CblasColMajor, CblasNoTrans, nI, nO, -1.0, L + (size_t)nI * (size_t)r, r, s->w_o, 1, 1.0, t, 1);
-    cblas_dtrsv(CblasColMajor, CblasUpper, CblasNoTrans, CblasNonUnit, nI, L, r, t, 1);
-    memcpy(x + (size_t)j * (size_t)nr + (size_t)nd, t, (size_t)nI * sizeof(double));
-  }
+  cable_team_run(s->team, solve_back, &c, N);
   for (int j = 0; j <= N; j++)
     memcpy(x + (size_t)j * (size_t)nr, rhs + zcol(s, j, s->off_u, 0), (size_t)nd * sizeof(double));
   memcpy(x + s->n - nf, rhs + zcol(s, 0, s->off_q, 0), (size_t)nf * sizeof(double));
   return ABD_OK;
+}
+
+/* J^T y = c, stage 1: w_I = U_j^{-T} c_I and X_j^T w_I (subtracted later). */
+static void solve_t_first(void *p, int j)
+{
+  const solve_ctx *c = p;
+  const abd_solver *s = c->s;
+  const int nd = s->nd, nI = s->nI, r = s->r, nr = s->nr, nO = s->nO;
+  if (nI == 0) return;
+  const double *L = loc_block(s, j);
+  double *wI = s->w_piv + (size_t)j * (size_t)nI, *wo = s->w_oo + (size_t)j * (size_t)nO;
+  memcpy(wI, c->x + (size_t)j * (size_t)nr + (size_t)nd, (size_t)nI * sizeof(double));
+  cblas_dtrsv(CblasColMajor, CblasUpper, CblasTrans, CblasNonUnit, nI, L, r, wI, 1);
+  cblas_dgemv(CblasColMajor, CblasTrans, nI, nO, 1.0, L + (size_t)nI * (size_t)r, r, wI, 1, 0.0, wo, 1);
+}
+
+/* J^T y = c, stage 3: undo interval j's row operations, P_j^T L_j^{-T}. */
+static void solve_t_last(void *p, int j)
+{
+  const solve_ctx *c = p;
+  const abd_solver *s = c->s;
+  const int nd = s->nd, nf = s->nf, nI = s->nI, r = s->r, nr = s->nr;
+  double *g = s->w_g + (size_t)j * (size_t)r;
+  const double *L = loc_block(s, j);
+  const lapack_int *piv = s->loc_piv + (size_t)j * (size_t)nI;
+  if (nI > 0) memcpy(g, s->w_piv + (size_t)j * (size_t)nI, (size_t)nI * sizeof(double));
+  memcpy(g + nI, s->w_rhs + grow_base(s, j) + nd + nf, (size_t)(r - nI) * sizeof(double));
+  if (nI > 0) {
+    cblas_dgemv(CblasColMajor, CblasTrans, r - nI, nI, -1.0, L + nI, r, g + nI, 1, 1.0, g, 1);
+    cblas_dtrsv(CblasColMajor, CblasLower, CblasTrans, CblasUnit, nI, L, r, g, 1);
+    for (int i = nI - 1; i >= 0; i--) {
+      int ip = (int)piv[i] - 1;
+      if (ip != i) {
+        double t = g[i];
+        g[i] = g[ip];
+        g[ip] = t;
+      }
+    }
+  }
+  /* slots nr.. are the running-sum definitions: not equations of J */
+  memcpy(c->x + (size_t)j * (size_t)nr, g, (size_t)nr * sizeof(double));
 }
 
 /* J^T y = c through the augmented matrix M (det M = det J): M^T (y, w) =
@@ -543,47 +708,26 @@ int abd_solver_solve_transpose(const abd_solver *s, double *x)
 {
   int st = solve_state(s);
   if (st != ABD_OK) return st;
-  const int nd = s->nd, nf = s->nf, nq = s->nq, nI = s->nI, r = s->r, nr = s->nr, nO = s->nO, N = s->N;
-  double *rhs = s->w_rhs, *g = s->w_loc;
+  const int nd = s->nd, nf = s->nf, nq = s->nq, nI = s->nI, nr = s->nr, nO = s->nO, N = s->N;
+  double *rhs = s->w_rhs;
+  solve_ctx c = {s, x};
 
   memset(rhs, 0, (size_t)s->nband * sizeof(double));
   for (int j = 0; j <= N; j++)
     memcpy(rhs + zcol(s, j, s->off_u, 0), x + (size_t)j * (size_t)nr, (size_t)nd * sizeof(double));
   memcpy(rhs + zcol(s, 0, s->off_q, 0), x + s->n - nf, (size_t)nf * sizeof(double));
-  for (int j = 0; j < N; j++) {
-    if (nI == 0) break;
-    const double *L = loc_block(s, j);
-    double *wI = s->w_piv + (size_t)j * (size_t)nI;
-    memcpy(wI, x + (size_t)j * (size_t)nr + (size_t)nd, (size_t)nI * sizeof(double));
-    cblas_dtrsv(CblasColMajor, CblasUpper, CblasTrans, CblasNonUnit, nI, L, r, wI, 1);
-    cblas_dgemv(CblasColMajor, CblasTrans, nI, nO, 1.0, L + (size_t)nI * (size_t)r, r, wI, 1, 0.0, s->w_o, 1);
-    for (int o = 0; o < nO; o++) rhs[j * s->m + s->omap[o]] -= s->w_o[o];
+  cable_team_run(s->team, solve_t_first, &c, N);
+  /* in interval order: neighbouring intervals share a mesh point's entries */
+  for (int j = 0; j < N && nI > 0; j++) {
+    const double *wo = s->w_oo + (size_t)j * (size_t)nO;
+    for (int o = 0; o < nO; o++) rhs[j * s->m + s->omap[o]] -= wo[o];
   }
 
   if (LAPACKE_dgbtrs_work(LAPACK_COL_MAJOR, 'T', s->nband, s->kl, s->ku, 1, s->ab, s->ldab, s->band_piv, rhs,
                           s->nband) < 0)
     return ABD_ERR_LAPACK;
 
-  for (int j = 0; j < N; j++) {
-    const double *L = loc_block(s, j);
-    const lapack_int *piv = s->loc_piv + (size_t)j * (size_t)nI;
-    if (nI > 0) memcpy(g, s->w_piv + (size_t)j * (size_t)nI, (size_t)nI * sizeof(double));
-    memcpy(g + nI, rhs + grow_base(s, j) + nd + nf, (size_t)(r - nI) * sizeof(double));
-    if (nI > 0) {
-      cblas_dgemv(CblasColMajor, CblasTrans, r - nI, nI, -1.0, L + nI, r, g + nI, 1, 1.0, g, 1);
-      cblas_dtrsv(CblasColMajor, CblasLower, CblasTrans, CblasUnit, nI, L, r, g, 1);
-      for (int i = nI - 1; i >= 0; i--) {
-        int ip = (int)piv[i] - 1;
-        if (ip != i) {
-          double t = g[i];
-          g[i] = g[ip];
-          g[ip] = t;
-        }
-      }
-    }
-    /* slots nr.. are the running-sum definitions: not equations of J */
-    memcpy(x + (size_t)j * (size_t)nr, g, (size_t)nr * sizeof(double));
-  }
+  cable_team_run(s->team, solve_t_last, &c, N);
   memcpy(x + (size_t)N * (size_t)nr, rhs + end_base(s), (size_t)(s->nb + nq) * sizeof(double));
   return ABD_OK;
 }
@@ -695,6 +839,13 @@ static void sv_start(int n, int k, double *V)
 
 int abd_solver_smallest_sv(abd_solver *s, const colloc_jac *J, int k, double *sv, double *vecs, int maxit, double tol)
 {
+  return abd_solver_smallest_svd(s, J, k, NULL, sv, vecs, NULL, maxit, tol, NULL);
+}
+
+int abd_solver_smallest_svd(abd_solver *s, const colloc_jac *J, int k, const double *start, double *sv, double *vecs,
+                            double *uvecs, int maxit, double tol, int *iters)
+{
+  if (iters) *iters = 0;
   if (!s || !J || !jac_matches(s, J) || k < 1 || k > s->n || maxit < 1 || !(tol > 0.0)) return ABD_ERR_SIZE;
   if (s->state != STATE_OK) return s->state == STATE_SINGULAR ? ABD_SINGULAR : ABD_ERR_NOT_FACTORED;
   if (sv_reserve(s, k) != 0) return ABD_ERR_MEM;
@@ -703,10 +854,16 @@ int abd_solver_smallest_sv(abd_solver *s, const colloc_jac *J, int k, double *sv
   double *u = s->sv_vec, *res = s->sv_res;
   const double normF = jac_frobenius(J);
 
-  sv_start(n, k, V);
-  if (orthonormalise(n, k, V, NULL) != 0) return ABD_ERR_LAPACK;
+  if (start) memcpy(V, start, (size_t)n * (size_t)k * sizeof(double));
+  else sv_start(n, k, V);
+  if (orthonormalise(n, k, V, NULL) != 0) {
+    if (!start) return ABD_ERR_LAPACK;
+    sv_start(n, k, V); /* a degenerate start block: the fixed one */
+    if (orthonormalise(n, k, V, NULL) != 0) return ABD_ERR_LAPACK;
+  }
   int status = ABD_NOT_CONVERGED;
   for (int it = 0; it < maxit && status != ABD_OK; it++) {
+    if (iters) *iters = it + 1;
     /* Left block QL = orth(J^{-T} V), right block W R = J^{-1} QL.  Then
      * J W = QL R^{-1} up to the solves' backward error, so the projection
      * QL^T J W is R^{-1}: with R = X S Y^T, the Ritz triplets are
@@ -741,6 +898,7 @@ int abd_solver_smallest_sv(abd_solver *s, const colloc_jac *J, int k, double *sv
       cblas_daxpy(n, -sv[i], vi, 1, res, 1);
       double r2 = cblas_dnrm2(n, res, 1);
       if (!(fmax(r1, r2) <= tol * normF)) status = ABD_NOT_CONVERGED;
+      if (uvecs) memcpy(uvecs + (size_t)i * (size_t)n, u, (size_t)n * sizeof(double));
     }
   }
   memcpy(vecs, V, (size_t)n * (size_t)k * sizeof(double));

@@ -64,6 +64,18 @@ void abd_solver_det(const abd_solver *s, int *sign, double *logabs);
  * practice; a large value flags a loss of accuracy (doc/linear-algebra.md). */
 double abd_solver_growth(const abd_solver *s);
 
+/* Threads for the per-interval stages of factor and the solves (local
+ * condensation, its application to right-hand sides, back-substitution) on
+ * a team owned by the solver (cable_team.h); the banded stage is
+ * sequential.  Each interval's arithmetic is the same whichever thread does
+ * it and every reduction runs in interval order, so the results are
+ * identical, bit for bit, for every thread count.  Default 1.  The BLAS must
+ * be sequential inside the team (cable_blas_single_thread).  Returns 0, or
+ * ABD_ERR_MEM when the threads cannot be created (the solver then runs on
+ * one thread). */
+int abd_solver_set_threads(abd_solver *s, int nthreads);
+int abd_solver_threads(const abd_solver *s);
+
 /* Unknowns n of the original system. */
 int abd_solver_size(const abd_solver *s);
 
@@ -93,5 +105,15 @@ void abd_solver_space(const abd_solver *s, long *ndoubles, long *nints);
  * first use (and when k grows); it is not a hot-loop routine. */
 int abd_solver_smallest_sv(abd_solver *s, const colloc_jac *J, int k, double *sv, double *vecs, int maxit,
                            double tol);
+
+/* The same with a start block and the left vectors: start[n*k] (NULL: the
+ * fixed start of abd_solver_smallest_sv) is the first block, e.g. the right
+ * singular vectors of a nearby matrix (warm start: then one or two
+ * iterations usually meet tol); uvecs[n*k] (NULL: not wanted) receives the
+ * unit left singular vectors u_i (J v_i ~ sv[i] u_i); *iters (NULL: not
+ * wanted) the iterations made.  A start block of dependent columns falls
+ * back to the fixed start. */
+int abd_solver_smallest_svd(abd_solver *s, const colloc_jac *J, int k, const double *start, double *sv, double *vecs,
+                            double *uvecs, int maxit, double tol, int *iters);
 
 #endif

@@ -117,6 +117,7 @@ colloc_newton *colloc_newton_alloc(colloc_system *sys, const cable_constants *c,
   } else {
     nw->A = SUNMat_Colloc(nw->J, nw->ctx);
     if (nw->A) nw->LS = SUNLinSol_Colloc(nw->x, nw->A, nw->ctx);
+    if (nw->LS) abd_solver_set_threads(SUNLinSol_Colloc_Solver(nw->LS), cable_threads(c));
   }
   if (!nw->A || !nw->LS) goto fail;
   nw->kin = KINCreate(nw->ctx);

@@ -227,7 +227,7 @@ int colloc_system_residual(colloc_system *s, const double *x, double *F)
     row += (size_t)s->nint;
   }
   if (s->closing == COLLOC_CLOSE_FIXPAR) {
-    F[row] = s->par[s->icp[0]] - s->fixval;
+    F[row] = s->par[s->icp[s->fixpar]] - s->fixval;
   } else {
     /* <x - x0, xdot0> - ds, without forming x - x0 in a work vector */
     F[row] = colloc_system_inner(s, x, s->xdot0) - colloc_system_inner(s, s->x0, s->xdot0) - s->ds;
@@ -344,7 +344,11 @@ int colloc_system_jacobian(colloc_system *s, const double *x, colloc_jac *J)
   int ldc = nc * nd, nde = J->ndense;
   s->njac++;
   load_params(s, x);
-  colloc_jac_zero(J);
+  /* the collocation blocks are overwritten entry by entry below (every row
+     m*nd..m*nd+nd-1 of every column): zero only the accumulated blocks */
+  memset(J->bc, 0, (size_t)J->nbc * (size_t)(2 * J->ndim + J->nfpr) * sizeof(double));
+  memset(J->dense, 0, (size_t)J->ntst * J->dense_stride * sizeof(double));
+  memset(J->dense_par, 0, (size_t)J->ndense * (size_t)J->nfpr * sizeof(double));
   for (int j = 0; j < s->ntst; j++) {
     double h = s->mesh[j + 1] - s->mesh[j];
     double *B = colloc_jac_coll_block(J, j);
@@ -398,7 +402,7 @@ int colloc_system_jacobian(colloc_system *s, const double *x, colloc_jac *J)
   /* closing row: the last dense row */
   int r = nde - 1;
   if (s->closing == COLLOC_CLOSE_FIXPAR) {
-    J->dense_par[r + nde * 0] = 1.0;
+    J->dense_par[r + nde * s->fixpar] = 1.0;
   } else {
     for (int j = 0; j < s->ntst; j++) {
       double h = s->mesh[j + 1] - s->mesh[j];

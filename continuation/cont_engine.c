@@ -5,7 +5,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "blas_threads.h"
 #include "cont_impl.h"
 
 /* Step-size control (IADS): Newton iteration counts at or below
@@ -56,7 +55,10 @@ void cont_set_error(cable_cont *cc, const char *fmt, ...)
   va_end(ap);
 }
 
-const char *cable_cont_error(const cable_cont *cc) { return cc->err; }
+const char *cable_cont_error(const cable_cont *cc)
+{
+  return cc ? cc->err : "no continuation handle (NULL)";
+}
 
 void cable_cont_free(cable_cont *cc)
 {
@@ -66,11 +68,12 @@ void cable_cont_free(cable_cont *cc)
   colloc_jac_free(cc->J);
   abd_solver_free(cc->abd);
   double *v[] = {cc->x, cc->xdot, cc->xp, cc->xdotp, cc->xt, cc->xdott, cc->w1, cc->w2, cc->w3,
-                 cc->svec, cc->umax, cc->xq, cc->xdotq};
+                 cc->xlo, cc->xhi, cc->svec, cc->umax, cc->xq, cc->xdotq};
   for (size_t i = 0; i < sizeof v / sizeof v[0]; i++) free(v[i]);
   cable_solution_free(cc->sol);
   cable_solution_free(cc->pvsol);
   cont_pencil_free(cc);
+  cont_gate_free(cc);
   free(cc);
 }
 
@@ -104,20 +107,31 @@ static int check_input(const cable_problem *pb, const cable_constants *c, char *
   return CABLE_SUCCESS;
 }
 
-cable_cont *cable_cont_alloc(const cable_problem *pb, const cable_constants *c, int *status)
+int cable_cont_check(const cable_problem *pb, const cable_constants *c, cable_error *err)
 {
   char msg[512];
-  cable_blas_single_thread();
+  if (!pb || !c)
+    return cable_error_set(err, CABLE_ERR_NULL, NULL, 0, NULL, "cable_cont_check: %s is NULL",
+                           !pb ? "the problem" : "the constants");
   int rc = check_input(pb, c, msg, sizeof msg);
+  if (rc) return cable_error_set(err, rc, NULL, 0, NULL, "%s", msg);
+  if (err) cable_error_clear(err);
+  return CABLE_SUCCESS;
+}
+
+cable_cont *cable_cont_alloc(const cable_problem *pb, const cable_constants *c, int *status)
+{
+  int dummy;
+  if (!status) status = &dummy;
+  int rc = cable_cont_check(pb, c, NULL);
+  if (rc) {
+    *status = rc;
+    return NULL;
+  }
   cable_cont *cc = calloc(1, sizeof *cc);
   if (!cc) {
     *status = CABLE_ERR_ALLOC;
     return NULL;
-  }
-  snprintf(cc->err, sizeof cc->err, "%s", rc ? msg : "");
-  if (rc) {
-    *status = rc;
-    return cc; /* the caller reads the message, then frees */
   }
   cc->pb = pb;
   cc->c = *c;
@@ -134,18 +148,20 @@ cable_cont *cable_cont_alloc(const cable_problem *pb, const cable_constants *c, 
   rc = CABLE_ERR_ALLOC;
   cc->J = colloc_jac_alloc(cc->ndim, cc->ntst, cc->ncol, cc->nfpr, pb->nbc, pb->nint);
   cc->abd = abd_solver_alloc(cc->ndim, cc->ntst, cc->ncol, cc->nfpr, pb->nbc, pb->nint);
+  abd_solver_set_threads(cc->abd, cable_threads(c));
   size_t n = (size_t)cc->n;
   cc->x = calloc(n, sizeof(double)); cc->xdot = calloc(n, sizeof(double));
   cc->xp = calloc(n, sizeof(double)); cc->xdotp = calloc(n, sizeof(double));
   cc->xt = calloc(n, sizeof(double)); cc->xdott = calloc(n, sizeof(double));
   cc->w1 = calloc(n, sizeof(double)); cc->w2 = calloc(n, sizeof(double)); cc->w3 = calloc(n, sizeof(double));
+  cc->xlo = calloc(n, sizeof(double)); cc->xhi = calloc(n, sizeof(double));
   cc->svec = calloc(3 * n, sizeof(double)); /* up to three singular vectors (switching) */
-  if (cont_pencil_alloc(cc) != CABLE_SUCCESS) goto fail;
+  if (cont_pencil_alloc(cc) != CABLE_SUCCESS || cont_gate_alloc(cc) != CABLE_SUCCESS) goto fail;
   cc->xq = calloc(n, sizeof(double)); cc->xdotq = calloc(n, sizeof(double));
   cc->umax = calloc((size_t)cc->ndim, sizeof(double));
   cc->sol = cable_solution_alloc(cc->ndim, cc->ntst, cc->ncol, cc->npar, cc->nfpr);
   if (!cc->J || !cc->abd || !cc->x || !cc->xdot || !cc->xp || !cc->xdotp || !cc->xt || !cc->xdott ||
-      !cc->w1 || !cc->w2 || !cc->w3 || !cc->svec || !cc->umax || !cc->sol || !cc->xq || !cc->xdotq)
+      !cc->w1 || !cc->w2 || !cc->w3 || !cc->xlo || !cc->xhi || !cc->svec || !cc->umax || !cc->sol || !cc->xq || !cc->xdotq)
     goto fail;
   /* a user zero on a parameter that is not free is a value PVLS computes
      (AUTO calls PVLS before its test functions): PVLS runs at every point
@@ -165,11 +181,10 @@ cable_cont *cable_cont_alloc(const cable_problem *pb, const cable_constants *c, 
   *status = CABLE_SUCCESS;
   return cc;
 fail:
+  /* a constructor returns a usable object or nothing: undo what was built */
   *status = rc ? rc : CABLE_ERR_ALLOC;
-  snprintf(cc->err, sizeof cc->err, "could not set up the solver: %s", cable_status_message(*status));
-  cc->ended = 1;
-  cc->end_status = *status;
-  return cc;
+  cable_cont_free(cc);
+  return NULL;
 }
 
 /* A converged point whose stored nodes leave FUNC's domain is rejected like
@@ -192,13 +207,20 @@ static int check_nodes(cable_cont *cc, const double *x)
  * pseudo-arclength equation <x - x0, xdot0> = ds. */
 int cont_correct(cable_cont *cc, const double *x0, const double *xdot0, double ds, double *x)
 {
+  for (int i = 0; i < cc->n; i++) x[i] = x0[i] + ds * xdot0[i];
+  return cont_correct_from(cc, x0, xdot0, ds, x);
+}
+
+/* Newton from the initial guess in x instead of the linear predictor (the
+ * locating iterations start from the interpolant of the bracket's ends). */
+int cont_correct_from(cable_cont *cc, const double *x0, const double *xdot0, double ds, double *x)
+{
   colloc_system *s = cc->sys;
   size_t n = (size_t)cc->n;
   memcpy(s->x0, x0, n * sizeof *x0);
   memcpy(s->xdot0, xdot0, n * sizeof *xdot0);
   s->ds = ds;
   s->closing = COLLOC_CLOSE_ARCLENGTH;
-  for (size_t i = 0; i < n; i++) x[i] = x0[i] + ds * xdot0[i];
   int rc = colloc_newton_solve(cc->nw, x);
   cc->newton_iters = colloc_newton_iterations(cc->nw);
   cc->rejected[0] = '\0';
@@ -211,8 +233,34 @@ static double principal(const cable_cont *cc, const double *x)
   return x[cc->n - cc->nfpr];
 }
 
-/* The first point: converge a STPNT start at fixed principal parameter, or
- * take a stored solution as it is; then its tangent and test functions. */
+/* The free parameter a STPNT start is converged and its direction computed
+ * at: the principal one, except on a fold curve (ISW = 2), where it is the
+ * second parameter q.  At a simple LP the fold system at fixed q is regular
+ * (<psi, F_p1> != 0 because the LP is a regular point of its branch), at
+ * fixed p1 only where the fold curve does not turn in p1: it does at a
+ * symmetric problem's fold (AUTO's demo int, q = PAR(2) in u(0) - u(1) = q,
+ * whose fold curve is even in q). doc/fold-continuation.md. */
+static int start_fixpar(const cable_cont *cc)
+{
+  return cc->c.isw == 2 && cc->nfpr >= 2 ? 1 : 0;
+}
+
+/* A start direction computed at fixed q is oriented as the one at fixed p1
+ * was (p1 increasing) wherever p1 moves along it; where it does not (to
+ * round-off), q increases. */
+#define START_P1_MOVES 1e-6
+static void orient_start_direction(cable_cont *cc, int fix)
+{
+  if (fix == 0) return;
+  double p1 = cc->xdot[cc->n - cc->nfpr], q = cc->xdot[cc->n - cc->nfpr + fix];
+  double lead = fabs(p1) > START_P1_MOVES ? p1 : q;
+  if (lead < 0)
+    for (int i = 0; i < cc->n; i++) cc->xdot[i] = -cc->xdot[i];
+}
+
+/* The first point: converge a STPNT start at fixed principal parameter (q on
+ * a fold curve), or take a stored solution as it is; then its tangent and
+ * test functions. */
 static void check_limits(cable_cont *cc);
 
 static int first_point(cable_cont *cc)
@@ -220,10 +268,13 @@ static int first_point(cable_cont *cc)
   colloc_system *s = cc->sys;
   int rc;
   cc->started = 1;
+  int fix = cc->restart ? 0 : start_fixpar(cc);
   if (!cc->restart) {
     s->closing = COLLOC_CLOSE_FIXPAR;
-    s->fixval = principal(cc, cc->x);
+    s->fixpar = fix;
+    s->fixval = cc->x[cc->n - cc->nfpr + fix];
     rc = colloc_newton_solve(cc->nw, cc->x);
+    s->fixpar = 0;
     cc->newton_iters = colloc_newton_iterations(cc->nw);
     cc->rejected[0] = '\0';
     if (rc == CABLE_SUCCESS) rc = check_nodes(cc, cc->x);
@@ -256,7 +307,9 @@ static int first_point(cable_cont *cc)
   } else if (!have_dir) {
     /* tangent at fixed principal parameter: the closing row is e_p0, rhs e_last */
     s->closing = COLLOC_CLOSE_FIXPAR;
+    s->fixpar = fix;
     rc = cont_factor_at(cc, cc->x, NULL, NULL);
+    s->fixpar = 0;
     if (rc != CABLE_SUCCESS) {
       cont_set_error(cc, "cannot compute a direction at the starting point: %s", cable_status_message(rc));
       cc->ended = 1;
@@ -266,6 +319,7 @@ static int first_point(cable_cont *cc)
     cc->xdot[cc->n - 1] = 1.0; /* rhs: last equation is the closing row */
     abd_solver_solve(cc->abd, cc->xdot);
     cont_normalize(cc, cc->xdot);
+    orient_start_direction(cc, fix);
     if (cc->c.ds < 0) for (int i = 0; i < cc->n; i++) cc->xdot[i] = -cc->xdot[i];
     cc->ds = fabs(cc->c.ds);
   } else {
@@ -294,7 +348,10 @@ static int first_point(cable_cont *cc)
   }
   cc->npt = 1;
   cc->ds_used = 0.0;
-  cc->itp = (!cc->restart || cc->switch_pending) ? CABLE_TY_EP : CABLE_TY_NONE;
+  /* AUTO labels the first point of a run EP only when it is a new start: a
+     restart, the switched first point at a branch point (ISW = -1) included,
+     is not labelled (auto-07p, demo lin: run 2 from BP1 has no EP at PT 1) */
+  cc->itp = !cc->restart ? CABLE_TY_EP : CABLE_TY_NONE;
   cc->switch_pending = 0;
   cont_store_solution(cc, cc->itp, 0);
   return CABLE_SUCCESS;
@@ -358,7 +415,8 @@ static int pencil_step(cable_cont *cc, pencil_result *pr, double *ds_step)
 {
   pr->n = 0;
   pr->coincident = pr->unresolved = 0;
-  if (cc->c.isp <= 0 || !cc->tan_abd) return 0;
+  if (!cont_bp_detect(cc) || !cc->tan_abd) return 0;
+  if (!cont_gate_needed(cc)) return 0;
   double t[CONT_PAIR_MAXCROSS];
   int ndouble = 0, nc = cont_pencil_crossings(cc, cc->tan_abd, t, CONT_PAIR_MAXCROSS, &ndouble);
   if (nc < 0) return 0; /* the test is advisory: the determinant test still runs */
@@ -409,7 +467,12 @@ static void pencil_note(cable_cont *cc, const pencil_result *pr)
 
 int cable_cont_step(cable_cont *cc)
 {
+  if (!cc) return CABLE_ERR_NULL;
   if (cc->ended) return cc->end_status;
+  if (!cc->have_start) {
+    cont_set_error(cc, "cable_cont_step before cable_cont_set_start");
+    return CABLE_ERR_STATE;
+  }
   if (!cc->started) return first_point(cc);
   int rc;
   cc->note[0] = '\0';
@@ -428,6 +491,7 @@ int cable_cont_step(cable_cont *cc)
   }
   double ds_step = cc->ds;
   pencil_result pr = {0};
+  cont_gate_start(cc);
   /* AUTO reports no special point in the first step of a run: neither the
      start (on a UZR value, or the BP a switch starts from, where the test
      functions vanish) nor a crossing inside the step.  The test functions
@@ -470,6 +534,7 @@ int cable_cont_step(cable_cont *cc)
     double seed = type == CABLE_TY_BP && pr.n > 0 ? pr.t[0] * ds_step : (double)NAN;
     rc = cont_locate(cc, type, which, seed); /* replaces the trial point by the located one */
     if (rc == CABLE_SUCCESS) cc->itp = type;
+    if (rc == CABLE_SUCCESS && type == CABLE_TY_BP) cc->bp_kind = CABLE_BP_SIMPLE; /* det changed sign */
     else snprintf(cc->note, sizeof cc->note, "%s", cc->err);
   } else if (pr.coincident && cont_dip_in_step(cc, pr.tmid * ds_step) == CABLE_SUCCESS && cc->queued) {
     cc->itp = CABLE_TY_BP;
@@ -497,5 +562,5 @@ int cable_cont_step(cable_cont *cc)
   return CABLE_SUCCESS;
 }
 
-const cable_solution *cable_cont_solution(const cable_cont *cc) { return cc->sol; }
-const cable_point *cable_cont_point(const cable_cont *cc) { return &cc->pt; }
+const cable_solution *cable_cont_solution(const cable_cont *cc) { return cc && cc->npt > 0 ? cc->sol : NULL; }
+const cable_point *cable_cont_point(const cable_cont *cc) { return cc && cc->npt > 0 ? &cc->pt : NULL; }

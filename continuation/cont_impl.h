@@ -32,10 +32,12 @@ struct cable_cont {
   double *xp, *xdotp;           /* previous accepted point and tangent */
   double *xt, *xdott;           /* trial point and tangent */
   double *w1, *w2, *w3;         /* work vectors of length n */
+  double *xlo, *xhi;            /* locating: the solutions at the bracket's ends */
   double *svec;                 /* [n * 3] singular-vector work */
   double ds;                    /* signed step size for the next step */
   double ds_used;               /* step size that produced the current point */
   double ds_prev;               /* step size that produced the previous point */
+  int have_start;               /* cable_cont_set_start succeeded */
   int started;                  /* the start has been processed */
   int restart;                  /* start came from a stored solution */
   int switch_pending;           /* ISW = -1 from a BP: first step along the kernel */
@@ -56,6 +58,7 @@ struct cable_cont {
   char note[600];               /* remark on the current point for the d-file ("" none) */
   int itp;                      /* type of the current point (0 regular) */
   int itp_x;                    /* type found for x when it was accepted (located points) */
+  int bp_kind;                  /* enum cable_bp_kind of the current point when it is a BP */
   int uz_hit;                   /* index of the user zero located at x, or -1 */
   int uz_stop;                  /* the located user zero asks to stop */
   /* output */
@@ -71,6 +74,14 @@ struct cable_cont {
   colloc_jac *Ja;               /* Newton matrix at the step's start */
   int pen_m;                    /* Arnoldi steps */
   double *pen_V, *pen_H, *pen_work; /* Krylov basis [n*(m+1)], Hessenberg, eigenvalues */
+  /* the pencil test's gate (cont_gate.c) */
+  colloc_jac *tan_J;            /* the matrix behind tan_abd (not owned) */
+  double *tan_v, *tan_u;        /* [n*2] right, left singular vectors of the last tangent's matrix */
+  double tan_sv[2];             /* their singular values */
+  double *gate_v, *gate_u, *gate_w; /* [n*2] the same at the step's start x; work */
+  double gate_sv[2];
+  int gate_valid;               /* gate_v, gate_u, gate_sv belong to x */
+  long gate_skipped, gate_run;  /* pencil tests skipped and run on this branch */
 };
 
 /* cont_tangent.c */
@@ -90,6 +101,13 @@ int cont_find_event(const cable_cont *cc, const cont_tests *a, const cont_tests 
 /* The branch-point test function's value (the one whose sign change is a BP):
  * the signed smallest singular value; 0 when ISP and NSV are both 0. */
 double cont_bp_value(const cable_cont *cc, const cont_tests *t);
+/* AUTO's rule for boundary-value problems: branch points are looked for
+ * with |ISP| = 2 or 3, not with ISP = 0, 1 or 4 (auto-07p 0.9.2 on the
+ * elastica: BPs at (n pi)^2 with ISP=2, 3, none with ISP=1, 4) */
+static inline int cont_bp_detect(const cable_cont *cc)
+{
+  return cc->c.isp == 2 || cc->c.isp == 3 || cc->c.isp == -2 || cc->c.isp == -3;
+}
 /* seed: a first guess of the arclength of the special point (NAN: none) */
 int cont_locate(cable_cont *cc, int type, int which, double seed);
 int cont_check_dip(cable_cont *cc);
@@ -107,6 +125,15 @@ int cont_pencil_alloc(cable_cont *cc);
 void cont_pencil_free(cable_cont *cc);
 int cont_pencil_crossings(cable_cont *cc, const abd_solver *fb, double *t, int tmax, int *ndouble);
 
+/* cont_gate.c: the pencil test only when the tracked singular values say a
+ * crossing may lie inside the step.  cont_gate_start at the start of a step
+ * (keeps x's singular vectors), cont_gate_needed after the trial point's
+ * tangent: 1 when the pencil test is to run. */
+int cont_gate_alloc(cable_cont *cc);
+void cont_gate_free(cable_cont *cc);
+void cont_gate_start(cable_cont *cc);
+int cont_gate_needed(cable_cont *cc);
+
 /* cont_mesh.c */
 int cont_adapt_mesh(cable_cont *cc);
 double cont_error_estimate(const cable_cont *cc, const double *x);
@@ -118,6 +145,8 @@ int cont_switch_direction(cable_cont *cc);
 
 /* cont_engine.c */
 int cont_correct(cable_cont *cc, const double *x0, const double *xdot0, double ds, double *x);
+/* the same corrector from the initial guess x (on the hyperplane of ds) */
+int cont_correct_from(cable_cont *cc, const double *x0, const double *xdot0, double ds, double *x);
 void cont_set_error(cable_cont *cc, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 
 #endif

@@ -223,6 +223,7 @@ void cont_store_solution(cable_cont *cc, int itp, int lab)
   sol->ntot = cc->npt;
   sol->itp = itp;
   sol->lab = lab;
+  sol->bp_kind = itp == CABLE_TY_BP ? cc->bp_kind : CABLE_BP_UNKNOWN;
   sol->isw = cc->c.isw;
   sol->err_est = cont_error_estimate(cc, cc->x);
   sol->pvls_icp = cc->c.icp;   /* PVLS computes only the columns the run prints */

@@ -20,6 +20,7 @@
  * branch and labelled BP when sigma_1 nearly vanishes there.  (Pairs of
  * simple BPs in one step are normally separated by the pencil test first,
  * cont_pencil.c.) */
+#include <float.h>
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_min.h>
 #include <math.h>
@@ -32,9 +33,13 @@
  * is kept twice, its function value is scaled by this factor (Dowell and
  * Jarratt 1971), which restores superlinear convergence. */
 #define CONT_ILLINOIS 0.5
-/* Alternative points tried when the corrector fails at a locating iterate
- * (each halfway to the farther end of the bracket). */
-#define CONT_LOCATE_RETRIES 3
+/* When the corrector fails at a locating iterate, how much farther from it
+ * each alternative point is than the one before (see locate()). */
+#define CONT_LOCATE_GROW 16.0
+/* sigma_1 below this fraction of its values at the ends of a step (or at a
+ * dip's neighbours) has vanished to discretisation accuracy: a branch point
+ * (cont_check_dip below; locate() when the corrector fails inside a bracket) */
+#define CONT_SV_ZERO_REL 1.0e-2
 
 static double param_value(const cable_cont *cc, const double *x, int k)
 {
@@ -84,7 +89,7 @@ static double bp_test(const cont_tests *t) { return t->det_sign * (t->sv1 > 0 ? 
 
 double cont_bp_value(const cable_cont *cc, const cont_tests *t)
 {
-  return (cc->c.isp > 0 || cc->c.nsv > 0) ? bp_test(t) : 0.0;
+  return (cont_bp_detect(cc) || cc->c.nsv > 0) ? bp_test(t) : 0.0;
 }
 
 static double test_value(const cont_tests *t, int type, int which)
@@ -114,7 +119,7 @@ int cont_find_event(const cable_cont *cc, const cont_tests *a, const cont_tests 
     }                                                                       \
   } while (0)
   if (cc->c.ilp > 0) CONSIDER(CABLE_TY_LP, -1);
-  if (cc->c.isp > 0 && a->det_sign != b->det_sign) CONSIDER(CABLE_TY_BP, -1);
+  if (cont_bp_detect(cc) && a->det_sign != b->det_sign) CONSIDER(CABLE_TY_BP, -1);
   for (int k = 0; k < cc->c.nuzr; k++) CONSIDER(CABLE_TY_UZ, k);
 #undef CONSIDER
   return best;
@@ -131,16 +136,39 @@ static void branch_tangent(cable_cont *cc, double theta, double *out)
   cont_normalize(cc, out);
 }
 
+/* The corrector at arclength s of the step, started from the linear
+ * interpolant of the solutions xlo, xhi at the bracket's ends s0, s1 (it lies
+ * on the hyperplane of s: the arclength condition is affine).  The linear
+ * predictor from the step's start leaves an error of order curvature * s^2,
+ * and next to a branch point the nearly singular Newton matrix amplifies its
+ * kernel component by 1 / sigma_1: the corrector then failed at the located
+ * point itself (link102's simple BPs at T = 30.77 and 35.75: every iterate
+ * that came within 1e-5 of the zero of sigma_1, with DS = 5).  The interpolant
+ * of the bracket's ends is off only by curvature * |s1 - s0|^2, which
+ * shrinks with the bracket. */
+static int correct_in_bracket(cable_cont *cc, double s, double s0, double s1, double *out)
+{
+  double w = (s - s0) / (s1 - s0);
+  for (int i = 0; i < cc->n; i++) out[i] = (1.0 - w) * cc->xlo[i] + w * cc->xhi[i];
+  return cont_correct_from(cc, cc->x, cc->xdot, s, out);
+}
+
 static int locate(cable_cont *cc, int type, int which, double seed, int plain)
 {
   double s0 = 0.0, f0 = test_value(&cc->tf, type, which);
   double s1 = cc->ds_used, f1 = test_value(&cc->tft, type, which);
   double far = f1, sprev = s1;
+  /* the test function's true values at the bracket's ends (f0, f1 are
+     scaled by the Illinois rule), and at the step's ends */
+  double g0 = f0, g1 = f1, gstep = fmin(fabs(f0), fabs(f1));
   /* the last two evaluated points, for the secant step */
   double sp = s0, fp = f0, sq = s1, fq = f1;
-  int side = 0;
+  int side = 0, corrector_failed = 0;
   cont_tests ts = cc->tft;
   double *xs = cc->w1, *xds = cc->w2;
+  /* the solutions at the bracket's ends: the step's start and the trial point */
+  memcpy(cc->xlo, cc->x, (size_t)cc->n * sizeof *cc->x);
+  memcpy(cc->xhi, cc->xt, (size_t)cc->n * sizeof *cc->xt);
   const char *what = type == CABLE_TY_LP ? "fold" : type == CABLE_TY_BP ? "branch point" : "user zero";
   double tol = cc->c.epss * fabs(cc->ds_used);
   for (int it = 0; it < cc->c.itmx; it++) {
@@ -159,39 +187,76 @@ static int locate(cable_cont *cc, int type, int which, double seed, int plain)
     if (!plain && it == 0 && seed > lo && seed < hi) s = seed;
     if (!(s > lo && s < hi)) s = s1 - f1 * (s1 - s0) / (f1 - f0);
     if (!(s > lo && s < hi)) s = 0.5 * (s0 + s1);
-    int rc = cont_correct(cc, cc->x, cc->xdot, s, xs);
+    int rc = correct_in_bracket(cc, s, s0, s1, xs);
     if (rc == CABLE_SUCCESS) rc = cont_tangent(cc, xs, cc->xdot, xds, &ts);
-    /* Next to a branch point the extended matrix is nearly singular and the
-       corrector can run out of ITNW iterations there (link62's simple BP at
-       T = 29.81, seeded by the pencil test right on it): move halfway to
-       the farther end of the bracket, where it is better conditioned, and
-       go on from there. */
-    for (int retry = 0; retry < CONT_LOCATE_RETRIES && (rc == CABLE_ERR_NEWTON || rc == CABLE_ERR_RECOVERABLE);
-         retry++) {
-      s = (s - lo > hi - s) ? 0.5 * (lo + s) : 0.5 * (s + hi);
-      rc = cont_correct(cc, cc->x, cc->xdot, s, xs);
+    /* The corrector fails at and next to a branch point: the extended
+       matrix is singular there, exactly (a zero pivot, CABLE_ERR_LINSOLVE)
+       or nearly, and Newton's kernel component does not settle within ITNW
+       iterations (KINSOL's maximum iterations: link102's simple BPs at
+       T = 30.77 and 35.75, every iterate within about 1e-6 of the zero of
+       sigma_1, 2e-7 of the step).  The failing s is the secant's estimate of
+       the zero, so step off it into the larger part of the bracket, first
+       by half the location tolerance, then CONT_LOCATE_GROW times farther
+       each retry, up to halfway to that end (link62's simple BP at
+       T = 29.81, seeded by the pencil test right on it, needed the
+       halfway point).  The converged point is an ordinary iterate: it
+       shrinks the bracket, and the location ends when the bracket is no
+       wider than the tolerance. */
+    int singular = rc == CABLE_ERR_LINSOLVE, nudged = 0;
+    if (rc == CABLE_ERR_NEWTON || rc == CABLE_ERR_RECOVERABLE || rc == CABLE_ERR_LINSOLVE) corrector_failed = 1;
+    /* a zero pivot (the matrix singular to working precision, e.g. an exact
+       trivial branch started from exact neighbours): sfail is the BP, and a
+       step of sqrt(eps) of the step makes the matrix regular while moving
+       the point far less than the tolerance (half the tolerance moved the
+       elastica's BP2 by 1e-5 in lambda) */
+    double sfail = s, off = singular ? sqrt(DBL_EPSILON) * fabs(cc->ds_used) : 0.5 * tol;
+    const double off0 = off;
+    for (int last = 0; !last && (rc == CABLE_ERR_NEWTON || rc == CABLE_ERR_RECOVERABLE || rc == CABLE_ERR_LINSOLVE);
+         off *= CONT_LOCATE_GROW) {
+      double room = (sfail - lo > hi - sfail) ? lo - sfail : hi - sfail; /* signed, to the farther end */
+      last = !(0.5 * fabs(room) > off);
+      s = sfail + (last ? 0.5 * room : copysign(off, room));
+      rc = correct_in_bracket(cc, s, s0, s1, xs);
       if (rc == CABLE_SUCCESS) rc = cont_tangent(cc, xs, cc->xdot, xds, &ts);
+      /* a zero pivot at sfail: it is the branch point to working precision */
+      nudged = singular && rc == CABLE_SUCCESS && off == off0;
     }
-    int nudged = 0;
-    if (rc == CABLE_ERR_LINSOLVE) {
-      /* The extended matrix is exactly singular at s (a zero pivot: s is
-         the branch point to working precision).  A stored point there could
-         not be restarted from (switching factorises it), so step off by the
-         location tolerance, into the larger part of the bracket, where the
-         matrix is regular. */
-      s += (s - lo < hi - s) ? tol : -tol;
-      rc = cont_correct(cc, cc->x, cc->xdot, s, xs);
+    if (rc != CABLE_SUCCESS && type == CABLE_TY_BP && rc != CABLE_ERR_CALLBACK && rc != CABLE_ERR_ALLOC &&
+        fmax(fabs(g0), fabs(g1)) < CONT_SV_ZERO_REL * gstep) {
+      /* No point between the bracket's ends converges, and sigma_1 has
+         nearly vanished at both (below CONT_SV_ZERO_REL of its values at
+         the step's ends, the dip test's criterion for a branch point): the
+         bracket is the branch point to the corrector's resolution.  Take
+         the end where sigma_1 is smaller and say how wide the bracket is. */
+      s = fabs(g0) <= fabs(g1) ? s0 : s1;
+      rc = correct_in_bracket(cc, s, s0, s1, xs);
       if (rc == CABLE_SUCCESS) rc = cont_tangent(cc, xs, cc->xdot, xds, &ts);
-      nudged = 1;
+      if (rc == CABLE_SUCCESS) {
+        snprintf(cc->note, sizeof cc->note,
+                 "branch point located to %.3e of arclength (sigma1 = %.3e, %.3e at the ends; the corrector does not "
+                 "converge between them)",
+                 fabs(s1 - s0), fabs(g0), fabs(g1));
+        nudged = 1; /* done */
+      }
     }
     if (rc != CABLE_SUCCESS) {
-      cont_set_error(cc, "could not locate the %s: %s at arclength %.10g of the step (%s)", what,
-                     rc == CABLE_ERR_LINSOLVE ? "the extended Jacobian is singular" : "the corrector failed", s,
+      cont_set_error(cc,
+                     "could not locate the %s in the bracket [%.10g, %.10g] of arclength from the last point "
+                     "(test function %.3e, %.3e at its ends, %.3e at the step's ends): %s at %.10g and at every "
+                     "point tried towards the bracket's far end (%s)",
+                     what, lo, hi, s0 < s1 ? g0 : g1, s0 < s1 ? g1 : g0, gstep,
+                     rc == CABLE_ERR_LINSOLVE ? "the extended Jacobian is singular" : "the corrector failed", sfail,
                      cc->rejected[0] ? cc->rejected : colloc_newton_message(cc->nw));
       return rc;
     }
     double f = test_value(&ts, type, which);
-    int done = nudged || fabs(s - sprev) <= tol || f == 0.0;
+    /* the bracket this iterate leaves, and whether it is within tolerance */
+    double width = (f > 0) == (f1 > 0) ? fabs(s - s0) : fabs(s1 - s);
+    /* the width test only after the corrector failed inside the bracket: the
+       secant's own test (successive iterates within tol) is far more
+       accurate when every point converges (AUTO equation file elastica.f:
+       its BP2 moved by 1e-5 in lambda with the width test alone) */
+    int done = nudged || fabs(s - sprev) <= tol || f == 0.0 || (corrector_failed && width <= tol);
     sprev = s;
     sp = sq; fp = fq;
     sq = s; fq = f;
@@ -223,16 +288,20 @@ static int locate(cable_cont *cc, int type, int which, double seed, int plain)
       return CABLE_SUCCESS;
     }
     if ((f > 0) == (f1 > 0)) {
-      s1 = s; f1 = f;
+      s1 = s; f1 = f; g1 = f;
+      memcpy(cc->xhi, xs, (size_t)cc->n * sizeof *xs);
       if (side == 1) f0 *= CONT_ILLINOIS;
       side = 1;
     } else {
-      s0 = s; f0 = f;
+      s0 = s; f0 = f; g0 = f;
+      memcpy(cc->xlo, xs, (size_t)cc->n * sizeof *xs);
       if (side == -1) f1 *= CONT_ILLINOIS;
       side = -1;
     }
   }
-  cont_set_error(cc, "could not locate the %s within ITMX=%d iterations", what, cc->c.itmx);
+  cont_set_error(cc, "could not locate the %s within ITMX=%d iterations: bracket [%.10g, %.10g] of arclength from the "
+                 "last point, test function %.3e, %.3e at its ends", what, cc->c.itmx, fmin(s0, s1), fmax(s0, s1),
+                 s0 < s1 ? g0 : g1, s0 < s1 ? g1 : g0);
   return CABLE_ERR_NEWTON;
 }
 
@@ -245,12 +314,12 @@ int cont_locate(cable_cont *cc, int type, int which, double seed)
 {
   int rc = locate(cc, type, which, seed, 0);
   if (rc == CABLE_SUCCESS || rc == CABLE_ERR_CALLBACK) return rc;
-  char first[200];
-  snprintf(first, sizeof first, "%.190s", cc->err);
+  char first[230]; /* both messages fit in cc->err */
+  snprintf(first, sizeof first, "%.229s", cc->err);
   rc = locate(cc, type, which, (double)NAN, 1);
   if (rc != CABLE_SUCCESS && rc != CABLE_ERR_CALLBACK) {
-    char second[200];
-    snprintf(second, sizeof second, "%.190s", cc->err);
+    char second[260];
+    snprintf(second, sizeof second, "%.259s", cc->err);
     cont_set_error(cc, "%s; regula falsi: %s", first, second);
   }
   return rc;
@@ -265,7 +334,6 @@ int cont_locate(cable_cont *cc, int type, int which, double seed)
  * near miss keeps a minimum of the order of the neighbours' values).  A
  * false alarm costs one minimisation (about 10-20 corrector solves). */
 #define CONT_DIP_RATIO 0.9
-#define CONT_SV_ZERO_REL 1.0e-2
 #define CONT_DIP_MAXIT 60
 
 typedef struct {
@@ -323,6 +391,7 @@ static int dip_minimise(cable_cont *cc, double lo, double mid, double fm, double
   cc->tft.det_sign = cc->tfq.det_sign; /* no sign change is counted across the dip */
   cc->ds_used = smin;
   int dbl = ctx.t.sv2 > 0 && ctx.t.sv2 < CONT_SV_ZERO_REL * fmin(a, b);
+  cc->bp_kind = dbl ? CABLE_BP_DOUBLE : CABLE_BP_PAIR;
   snprintf(cc->note, sizeof cc->note,
            "%s: det keeps its sign, sigma1 = %.3e, sigma2 = %.3e (neighbours %.3e, %.3e)%s",
            dbl ? "double branch point" : "branch point without a sign change (a pair of BPs in one step?)",
@@ -336,7 +405,7 @@ int cont_check_dip(cable_cont *cc)
   double a = cc->tfp.sv1, m = cc->tf.sv1, b = cc->tft.sv1;
   /* the three points must not include the start: its first step reports
      nothing (AUTO), and after a switch its sigma_1 is the BP's ~0 */
-  if (cc->c.isp <= 0 || cc->npt < 3 || !(a > 0 && m > 0 && b > 0)) return CABLE_TY_NONE;
+  if (!cont_bp_detect(cc) || cc->npt < 3 || !(a > 0 && m > 0 && b > 0)) return CABLE_TY_NONE;
   if (!(m < a && m < b && m < CONT_DIP_RATIO * fmax(a, b))) return CABLE_TY_NONE;
   return dip_minimise(cc, -fabs(cc->ds_prev), 0.0, m, fabs(cc->ds_used), a, b);
 }
@@ -344,7 +413,7 @@ int cont_check_dip(cable_cont *cc)
 int cont_dip_in_step(cable_cont *cc, double smid)
 {
   double a = cc->tf.sv1, b = cc->tft.sv1;
-  if (cc->c.isp <= 0 || !(a > 0 && b > 0) || !(smid > 0 && smid < cc->ds_used)) return CABLE_TY_NONE;
+  if (!cont_bp_detect(cc) || !(a > 0 && b > 0) || !(smid > 0 && smid < cc->ds_used)) return CABLE_TY_NONE;
   dip_ctx ctx = {cc, cc->tf, fmax(a, b)};
   double m = dip_fn(smid, &ctx);
   if (!(m < a && m < b)) return CABLE_TY_NONE;

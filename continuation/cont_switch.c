@@ -126,6 +126,21 @@ static int canonical_kernel(cable_cont *cc, const double *v1, const double *v2, 
   return comp;
 }
 
+/* The kernel's dimension from the three smallest singular values: the
+ * numerical rank drops where the gap between consecutive singular values is
+ * largest, and that gap must be at least 1 / CONT_SWITCH_SV_RATIO.  Testing
+ * sigma1 <= 0.1 sigma2 first called the double BP of the (6,2) link at
+ * T = 23.57 (sigma = 1.5e-14, 2.4e-12, 8.8e-6; the detector: "double branch
+ * point") simple; the simple BP at T = 29.81 next to a double one
+ * (2.8e-16, 1.95e-8, 2.3e-7) has its largest gap after sigma1.  0: no gap. */
+static int kernel_dimension(const double *sv)
+{
+  double r1 = sv[0] / sv[1], r2 = sv[1] / sv[2]; /* NaN for zero singular values: no gap */
+  int one = r1 <= CONT_SWITCH_SV_RATIO, two = r2 <= CONT_SWITCH_SV_RATIO;
+  if (one && two) return r2 < r1 ? 2 : 1;
+  return one ? 1 : two ? 2 : 0;
+}
+
 int cont_switch_direction(cable_cont *cc)
 {
   int n = cc->n;
@@ -150,7 +165,7 @@ int cont_switch_direction(cable_cont *cc)
     cont_set_error(cc, "ISW=-1: singular vectors did not converge");
     return CABLE_ERR_SWITCH;
   }
-  int dim = sv[0] <= CONT_SWITCH_SV_RATIO * sv[1] ? 1 : sv[1] <= CONT_SWITCH_SV_RATIO * sv[2] ? 2 : 0;
+  int dim = kernel_dimension(sv);
   if (dim == 0) {
     cont_set_error(cc, "ISW=-1: not a branch point (smallest singular values %.3e, %.3e, %.3e)", sv[0], sv[1],
                    sv[2]);

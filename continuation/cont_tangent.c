@@ -49,14 +49,17 @@ static int tangent_from(cable_cont *cc, abd_solver *abd, colloc_jac *J, const do
   if (abd_solver_solve(abd, xdot_new) != 0) return CABLE_ERR_LINSOLVE;
   cont_normalize(cc, xdot_new);
   cc->tan_abd = abd;
+  cc->tan_J = J;
   tf->det_sign = sign;
   tf->det_log = logdet;
   tf->sv1 = tf->sv2 = 0.0;
-  if (cc->c.nsv > 0 || cc->c.isp > 0) {
+  if (cc->c.nsv > 0 || cont_bp_detect(cc)) {
     double sv[2] = {0, 0};
     /* two values: the second tells a double branch point from a simple one;
        ABD_NOT_CONVERGED (2) still leaves usable estimates */
-    int src = abd_solver_smallest_sv(abd, J, 2, sv, cc->svec, CONT_SV_MAXIT, CONT_SV_RTOL);
+    int src = abd_solver_smallest_svd(abd, J, 2, NULL, sv, cc->tan_v, cc->tan_u, CONT_SV_MAXIT, CONT_SV_RTOL, NULL);
+    cc->tan_sv[0] = src == 0 || src == 2 ? sv[0] : 0.0;
+    cc->tan_sv[1] = src == 0 || src == 2 ? sv[1] : 0.0;
     if (src == 0 || src == 2) {
       tf->sv1 = sv[0];
       tf->sv2 = sv[1];

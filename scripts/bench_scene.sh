@@ -87,13 +87,6 @@ if [ -n "$best" ]; then
   pick=$(printf "%s" "$best" | sort -g | head -1)
   g="${pick#* }"
   echo "Fastest setting with every relative error <= 1e-8: NTST = ${g%:*}, NCOL = ${g#*:} (${pick%% *} s, ${S[$g]} steps)."
-  echo
-  echo "Against AUTO-07p (an estimate, not a run): at its yardstick of 0.33 s per step (NTST = 150,"
-  echo "NCOL = 4, finite-difference Jacobians), the same ${S[$g]} steps would take"
-  awk -v st="${S[$g]}" -v t="${pick%% *}" 'BEGIN {printf "%.0f s, %.1f times this path'"'"'s %.2f s.", 0.33 * st, 0.33 * st / t, t}'
-  echo " NCOL = 4 at NTST = 150 has, by the h^8 rate from the NTST = 100 row, an error in F(d) near"
-  echo "(100/150)^8 = 0.039 times that row's, i.e. about the accuracy of the setting picked here. AUTO would"
-  echo "also have to find the double branch points, which its determinant test does not see."
 else
   echo "No setting of the grid reaches 1e-8 at all four points."
 fi

@@ -20,6 +20,7 @@ probes=(
   "/usr/lib/python3/dist-packages/numpy/core/include/numpy/arrayobject.h:python3-numpy"
   "/usr/lib/python3/dist-packages/pytest/__init__.py:python3-pytest"
   "/usr/lib/python3/dist-packages/distributed/__init__.py:python3-distributed"
+  "/usr/bin/pkg-config:pkgconf"            # make check builds against an installed libcable
 )
 
 arch_dir=$(dpkg-architecture -qDEB_HOST_MULTIARCH 2>/dev/null || echo x86_64-linux-gnu)

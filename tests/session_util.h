@@ -73,7 +73,6 @@ static cable_session *session_open(const char *dir, FILE **log)
   cable_session_options o;
   cable_session_options_init(&o);
   o.dir = dir;
-  o.problems = cable_session_braid_problems();
   *log = fopen("/dev/null", "w");
   o.log = *log;
   return cable_session_alloc(&o);

@@ -331,11 +331,21 @@ static void fold_bp_functions(void)
     for (int r = 1; r < br->nrow && lp > 1; r++)
       if (r != lp) signs_ok &= (r < lp) == (col(br, "PAR(2)", r) > 0);
     test_true("GETP('FLD') > 0 before the fold and < 0 after it, at every point", signs_ok);
-    /* no BP on Bratu's branch: the BP function keeps its sign and is nonzero */
+    /* c.bratufb has ISP=1: no branch-point test for a BVP (AUTO's rule), so
+       'BIF' is 0 at every point, as AUTO's is */
+    double bmax = 0;
+    for (int r = 0; r < br->nrow; r++) bmax = fmax(bmax, fabs(col(br, "PAR(3)", r)));
+    test_abs("GETP('BIF') = 0 on Bratu's branch with ISP=1 (no BP test, as AUTO)", bmax, 0.0, 0.0);
+  }
+  cable_bfile_free(bf);
+  bf = cable_bfile_read(TMP "/fldbif/b.bratufb3", &err);
+  if (test_true("b.bratufb3 (ISP=3) was written", bf != NULL && bf->nbranch == 1)) {
+    const cable_bfile_branch *br = &bf->branch[0];
+    /* no BP on Bratu's branch: with the test on, the BP function keeps its sign and is nonzero */
     double b0 = col(br, "PAR(3)", 0);
     int same = b0 != 0;
     for (int r = 1; r < br->nrow; r++) same &= col(br, "PAR(3)", r) * b0 > 0;
-    test_true("GETP('BIF') keeps its sign on Bratu's branch (no BP)", same);
+    test_true("GETP('BIF') keeps its sign on Bratu's branch with ISP=3 (no BP)", same);
   }
   cable_bfile_free(bf);
   bf = cable_bfile_read(TMP "/fldbif/b.elasfb", &err);
@@ -367,6 +377,41 @@ static void fold_bp_functions(void)
     double m = 0;
     for (int r = 0; r < br->nrow; r++) m = fmax(m, fabs(col(br, "PAR(3)", r)));
     test_abs("GETP('BIF') = 0 when ISP=0 (no branch-point test, as in AUTO)", m, 0.0, 0.0);
+  }
+  cable_bfile_free(bf);
+}
+
+/* GETP's discretisation codes (getpmesh/: an equation file written for this
+ * test; PVLS stores what GETP gives in PAR(2..10)). */
+static void getp_mesh_codes(void)
+{
+  const char *files[] = {"bratumesh.f90", "c.bratumesh", "getpmesh.auto", NULL};
+  stage("getpmesh", files);
+  cable_error err;
+  cable_error_clear(&err);
+  int rc = replay("getpmesh", "bratumesh", "bratumesh", "bratumesh", &err);   /* what getpmesh.auto says */
+  char buf[1200];
+  test_report(rc == 0, "getpmesh.auto: runs (%s)", rc ? cable_error_format(&err, buf, sizeof buf) : "ok");
+  cable_bfile *bf = cable_bfile_read(TMP "/getpmesh/b.bratumesh", &err);
+  if (test_true("b.bratumesh was written", bf != NULL && bf->nbranch == 1)) {
+    const cable_bfile_branch *br = &bf->branch[0];
+    int uz = row_of(br, -4, 0);
+    test_abs("GETP('NDX') = NDIM = 2", col(br, "PAR(2)", uz), 2, 0);
+    test_abs("GETP('NTST') = 20 (c.bratumesh)", col(br, "PAR(3)", uz), 20, 0);
+    test_abs("GETP('NCOL') = 4", col(br, "PAR(4)", uz), 4, 0);
+    test_abs("10 GETP('NBC') + GETP('NINT') = 20", col(br, "PAR(5)", uz), 20, 0);
+    /* the mesh intervals cover [0,1]; the node weights integrate the linear
+       function j = NCOL t exactly: sum_j WINT(j) j = NCOL / 2 */
+    test_abs("sum over j of GETP('DTM', j) = 1", col(br, "PAR(6)", uz), 1.0, 1e-14);
+    test_abs("sum over j of GETP('WINT', j) j = NCOL/2 = 2", col(br, "PAR(7)", uz), 2.0, 1e-13);
+    /* u = 2 ln cosh s - 2 ln cosh(s(2t - 1)) is largest at t = 1/2 (a mesh
+       point of the uniform mesh, IAD=0); u' = -4 s tanh(s(2t - 1)) is
+       smallest at t = 1 */
+    test_abs("GETP('MXT', 1) = 1/2 at the UZ lambda = 1", col(br, "PAR(8)", uz), 0.5, 1e-14);
+    test_abs("GETP('MNT', 2) = 1 at the UZ lambda = 1", col(br, "PAR(9)", uz), 1.0, 0);
+    double dmax = 0;
+    for (int r = 0; r < br->nrow; r++) dmax = fmax(dmax, fabs(col(br, "PAR(10)", r)));
+    test_abs("U(2, NCOL*NTST) read as AUTO lays U out equals GETP('BV1', 2), every point", dmax, 0, 0);
   }
   cable_bfile_free(bf);
 }
@@ -491,6 +536,7 @@ int main(void)
   bratu_integral_getp("bratuint_c", "bratuint.c");
   iplt_integral();
   fold_bp_functions();
+  getp_mesh_codes();
   dat_start();
   cache();
   bad_file("syntax", "syntax.f90", 8, "array reference");

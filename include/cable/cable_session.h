@@ -60,9 +60,6 @@ typedef struct cable_session_options {
 } cable_session_options;
 
 CABLE_API void cable_session_options_init(cable_session_options *o);
-/* The braid problems from STPNT (TORUS, HAND, PAR of the constants): the
- * problem source `cable run` and the Python package use. */
-CABLE_API const cable_session_problems *cable_session_braid_problems(void);
 
 typedef struct cable_session cable_session;
 typedef struct cable_branch cable_branch;

@@ -288,5 +288,5 @@ class Runner:
                 ns[a] = fn
         ns.update({'CableError': CableError, 'branch_points': scenes.branch_points, 'bp_kind': scenes.bp_kind,
                    'branch_point': _command('branch_point')(scenes.branch_point),
-                   'mirror_table': scenes.mirror_table})
+                   'mirror_table': scenes.mirror_table, 'fail': _command('fail')(scenes.fail)})
         return ns

@@ -73,13 +73,21 @@ class Parameters:
 class Solution:
     """One labelled solution of a branch (AUTO's parseS.AUTOSolution)."""
 
-    __slots__ = ('_br', '_i', '_lab', '_ty', '_ibr', '_pt', '_par', '_note', '_data')
+    __slots__ = ('_br', '_i', '_lab', '_ty', '_ibr', '_pt', '_par', '_note', '_kind', '_data')
 
     def __init__(self, branch, index, info):
         self._br = branch
         self._i = index
-        self._lab, self._ty, self._ibr, self._pt, self._par, self._note = info
+        self._lab, self._ty, self._ibr, self._pt, self._par, self._note, self._kind = info
         self._data = None
+
+    @property
+    def kind(self):
+        """A branch point's kind as the detector found it: 'simple' (the
+        determinant changed sign), 'double' (two singular values vanished) or
+        'pair' (two simple ones in one step); '' when this is not a BP or the
+        solution was read from an s-file (which does not store it)."""
+        return self._kind
 
     @property
     def note(self):
@@ -140,6 +148,8 @@ class Solution:
             return self._ibr
         if key == 'PT':
             return self._pt
+        if key == 'kind':
+            return self._kind
         if key == 'PAR':
             return self.PAR
         if key == 't':

@@ -3,7 +3,7 @@ solutions only (nothing here runs during continuation).  The numerical
 analysis of one solution (Lk, writhe, knot type, tube distance, pressure,
 axis self-passages) is C (cable._cable); what is done with it is here.
 
-  branch_points(r, T=(lo, hi), kind='double')   branch points chosen by what they are
+  branch_points(r, T=(lo, hi), kind='double')   branch points chosen by what they are (sol['kind'])
   branch_point(r, T=(lo, hi), kind='simple')    exactly one of them
   compare('table.txt', rows, ref=sol, notes=[...])
   overlap_free(result)
@@ -52,15 +52,23 @@ def _knot_text(a):
 # ---- branch points by what they are ---------------------------------------------------
 
 def bp_kind(sol):
-    """'double' when the engine located the branch point as a double one (the
-    determinant kept its sign and two singular values vanished: its note says
-    so), else 'simple'."""
-    return 'double' if sol.note and sol.note.startswith('double branch point') else 'simple'
+    """The branch point's kind as the detector recorded it
+    (cable_solution.bp_kind): 'simple', 'double' or 'pair'; '' for a solution
+    read from an s-file (the file does not store it)."""
+    return sol.kind
+
+
+def fail(message):
+    """fail('text'): stop the script with that message (a CableError; in
+    Python a scene may equally raise it itself)."""
+    if not isinstance(message, str):
+        raise CableError('fail() takes the message as a string')
+    raise CableError(message)
 
 
 def branch_points(result, T=None, kind=None):
     """The branch points of a result whose T lies in the window T = (lo, hi)
-    (None: any) and whose kind is 'simple' or 'double' (None: any), in branch
+    (None: any) and whose kind is 'simple', 'double' or 'pair' (None: any), in branch
     order."""
     out = []
     for s in result('BP'):

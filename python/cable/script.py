@@ -1,7 +1,7 @@
 """Running .auto scripts in CPython, as AUTO's `auto X.auto` does: the
 commands preloaded, the script's directory the working directory (where
-its c./s./b./d. files are read and written), Python-2 `print "..."`
-statements accepted.  An error stops the script with one line naming the
+its c./s./b./d. files are read and written), AUTO's shorthand `name args`
+(Python-2 `print "..."`, `ld 'x'`) accepted.  An error stops the script with one line naming the
 script's file and line, the line itself, and a non-zero exit status:
 
     cable: knot.auto:4: run: NMXX: unknown AUTO constant
@@ -10,7 +10,9 @@ script's file and line, the line itself, and a non-zero exit status:
 Ctrl-C stops a run at its next point (nothing of that run is written) and
 the script with status 130.
 """
+import builtins
 import io
+import keyword
 import os
 import sys
 import tokenize
@@ -22,10 +24,29 @@ from .commands import Runner
 _STOPS = ('NEWLINE', 'ENDMARKER')
 
 
-def py2_prints(text):
-    """Python-2 print statements rewritten as calls (AUTO's CLI accepts both):
-    print "a", x -> print("a", x); a trailing comma keeps the line open
-    (end=' '); a bare print -> print().  Other text is left as it is."""
+# what may follow NAME in AUTO's shorthand `NAME args` (its CLI's rule): not
+# '(' ')' '=' '!' (a call, an assignment, a comparison), not an operator that
+# makes `NAME op x` an expression, not is/not/in/and/or; '[' only for a
+# callable without item access.  Python-2 print also takes a leading sign.
+_NOT_ARGS_KW = ('is', 'not', 'in', 'and', 'or', 'if', 'else', 'for')
+_ARG_OPS = ('[', '{', '~')
+
+
+def _callable_in(namespace, name):
+    obj = namespace.get(name) if namespace is not None and name in namespace else getattr(builtins, name, None)
+    return obj if callable(obj) else None
+
+
+def shorthand(text, namespace=None):
+    """AUTO's command-line shorthand rewritten as calls, as AUTO's CLI does
+    for every line of a script: a statement `NAME args` whose NAME is a
+    callable of the namespace (the commands) or a builtin becomes
+    `NAME(args)`, a bare `NAME` becomes `NAME()`; so Python-2 `print "a", x`
+    is print("a", x) (a trailing comma keeps the line open: end=' ') and
+    `ld 'x'` is ld('x').  `NAME(...)`, `NAME = ...`, `NAME op ...`,
+    `NAME.attr` and `x [1]` (indexing; x not a callable) keep their meaning.
+    Only statement starts outside brackets are rewritten (never a continuation
+    line or a string).  Text that does not tokenize is left as it is."""
     try:
         toks = list(tokenize.generate_tokens(io.StringIO(text).readline))
     except (tokenize.TokenError, IndentationError, SyntaxError):
@@ -40,12 +61,23 @@ def py2_prints(text):
         elif kind == 'OP' and t.string in ')]}':
             depth -= 1
         stmt_start = prev is None or prev in ('NEWLINE', 'INDENT', 'DEDENT', 'NL') or prev == ':' or prev == ';'
-        if kind == 'NAME' and t.string == 'print' and depth == 0 and stmt_start:
+        obj = (_callable_in(namespace, t.string)
+               if kind == 'NAME' and depth == 0 and stmt_start and not keyword.iskeyword(t.string) else None)
+        if obj is not None:
             nxt = toks[k + 1] if k + 1 < len(toks) else None
             nkind = tokenize.tok_name[nxt.type] if nxt else 'ENDMARKER'
-            if nkind == 'OP' and nxt.string in ('(', '=', '.', '[', ')', ','):
-                pass
+            ends = nkind in _STOPS or nkind == 'COMMENT' or (nkind == 'OP' and nxt.string == ';')
+            is_print = t.string == 'print'
+            if ends or nkind in ('STRING', 'NUMBER'):
+                args = True
+            elif nkind == 'NAME':
+                args = nxt.string not in _NOT_ARGS_KW
+            elif nkind == 'OP':
+                args = ((nxt.string in _ARG_OPS and not (nxt.string == '[' and hasattr(obj, '__getitem__')))
+                        or (is_print and nxt.string in ('-', '+')))
             else:
+                args = False
+            if args:
                 # the end of the statement: NEWLINE, ';' or a comment at depth 0
                 j, d = k + 1, 0
                 while j < len(toks):
@@ -58,16 +90,15 @@ def py2_prints(text):
                         break
                     j += 1
                 last = toks[j - 1] if j - 1 > k else None
-                end = toks[j] if j < len(toks) else None
-                gap = nxt.start[1] if nxt and nxt.start[0] == t.end[0] else t.end[1]
-                edits.append((t.end[0], t.end[1], gap, '('))
-                if last is not None and tokenize.tok_name[last.type] == 'OP' and last.string == ',':
-                    edits.append((last.start[0], last.start[1], last.end[1], ", end=' ')"))
-                elif last is not None:
-                    edits.append((last.end[0], last.end[1], ')'))
+                if last is None:
+                    edits.append((t.end[0], t.end[1], t.end[1], '()'))
                 else:
-                    edits[-1] = (t.end[0], t.end[1], t.end[1], '()')
-                del end
+                    gap = nxt.start[1] if nxt.start[0] == t.end[0] else t.end[1]
+                    edits.append((t.end[0], t.end[1], gap, '('))
+                    if is_print and tokenize.tok_name[last.type] == 'OP' and last.string == ',':
+                        edits.append((last.start[0], last.start[1], last.end[1], ", end=' ')"))
+                    else:
+                        edits.append((last.end[0], last.end[1], ')'))
         if kind not in ('COMMENT', 'NL') or prev is None:
             prev = kind if kind != 'OP' else t.string
         if kind == 'NL' and depth == 0:
@@ -85,19 +116,16 @@ def py2_prints(text):
     return ''.join(lines)
 
 
-def compile_script(text, filename):
-    """The code object of a script; Python-2 prints are accepted.  A syntax
-    error is the original text's."""
-    try:
-        return compile(text, filename, 'exec')
-    except SyntaxError as first:
-        converted = py2_prints(text)
-        if converted == text:
-            raise
-        try:
-            return compile(converted, filename, 'exec')
-        except SyntaxError:
-            raise first from None
+def py2_prints(text):
+    """Python-2 print statements rewritten as calls (shorthand() with the builtins only)."""
+    return shorthand(text, {})
+
+
+def compile_script(text, filename, namespace=None):
+    """The code object of a script, AUTO's shorthand rewritten first (as
+    AUTO's CLI does) with the commands of the namespace.  The rewrite keeps
+    every line where it was, so a syntax error names the script's line."""
+    return compile(shorthand(text, namespace), filename, 'exec')
 
 
 class ScriptRunner:
@@ -112,7 +140,7 @@ class ScriptRunner:
     def run_file(self, path):
         with open(path, encoding='utf-8') as f:
             text = f.read()
-        code = compile_script(text, path)
+        code = compile_script(text, path, self.namespace)
         self.files.add(path)
         ns = self.namespace
         ns['__name__'] = '__main__'
@@ -168,7 +196,7 @@ def run_script(path, out=None):
     try:
         with open(path, encoding='utf-8') as f:
             text = f.read()
-        code = compile_script(text, name)
+        code = compile_script(text, name, sr.namespace)
         if d:
             os.chdir(d)
         sr.namespace.update({'__name__': '__main__', '__file__': name})

@@ -17,7 +17,7 @@ import numpy as np
 import pytest
 
 import cable
-from cable.script import py2_prints
+from cable.script import py2_prints, shorthand
 
 from conftest import BUILD, ROOT, copy_in, run_script, snapshot
 
@@ -180,6 +180,73 @@ def test_py2_prints():
     assert py2_prints('for i in r: print i; y = 1\n') == 'for i in r: print(i); y = 1\n'
 
 
+def test_shorthand_rewrite():
+    """AUTO's CLI rewrites a statement `name args` as `name(args)` when name
+    is a callable it knows (interactiveBindings.processShorthand): the
+    commands and the builtins; nothing else changes."""
+    ns = cable.Runner().namespace()
+    assert shorthand("ld 'x'\n", ns) == "ld('x')\n"
+    assert shorthand("sv r, 'a'  # save\n", ns) == "sv(r, 'a')  # save\n"
+    assert shorthand('cl\n', ns) == 'cl()\n'
+    assert shorthand("run [1]\n", ns) == "run([1])\n"
+    # indexing, assignment, calls, attribute access, operators, continuation
+    # lines, strings and names that are not callables keep their meaning
+    same = ['x [1]\n', 'ld = 3\n', "ld('x')\n", 'run.__doc__\n', 'ld == 3\n', 'ld + 1\n', 'ld in xs\n',
+            "r = run(e='a',\n        c='b')\n", 'x 3\n', 'y = """\nld "x"\n"""\n', 'd = {ld: 1}\n']
+    for text in same:
+        assert shorthand(text, ns) == text, text
+    # print is a builtin: Python 2's print statement
+    assert shorthand('print -1\n', ns) == 'print(-1)\n'
+    assert shorthand('print xs [1]\n', ns) == 'print(xs [1])\n'
+
+
+def test_shorthand_replay(work):
+    """AUTO's own demo scripts' print statements and `ld 'x'` lines run as
+    AUTO runs them: strings, %, commas, a trailing comma (Python 2 keeps the
+    line open), inside a for, and `xs [1]` still indexing."""
+    copy_in(work, 'runs/bratu/c.bratu')
+    text = ("pgm = 'int'\n"
+            "print \"\\nDemo %s is started\"%pgm\n"
+            "print \"Branch \" , 2 , \"***\"\n"
+            "for i in range(2):\n"
+            "    print i, pgm\n"
+            "print 'no newline',\n"
+            "print(pgm)\n"
+            "xs = [5, 6]\n"
+            "print xs [1]\n"
+            "x = xs [1]\n"
+            "print 'x', x\n"
+            "r = run(e='bratu', c='bratu', sv='lower')\n"
+            "cl\n"
+            "ld e='bratu', c='bratu', s='lower'\n"
+            "bd 'lower'\n"
+            "s = ld 'bratu'\n")
+    rc, out, err = run_script(work, text)
+    # the last line is no shorthand (an assignment): the error names it
+    assert rc == 1 and err.startswith('cable: t.auto:16: SyntaxError'), err
+    text = text[:text.rindex('s = ld')]
+    rc, out, err = run_script(work, text)
+    assert rc == 0, err
+    lines = out.splitlines()
+    assert lines[:7] == ['', 'Demo int is started', 'Branch  2 ***', '0 int', '1 int', 'no newline int', '6'], out
+    assert 'x 6' in lines
+    assert os.path.exists('b.lower') and os.path.exists('s.lower')
+
+
+def test_fail_and_kind(work):
+    """fail('text') stops a script with the text (main's scene builtin;
+    raising CableError does the same); sol['kind'] is the detector's BP kind
+    (cable_solution.bp_kind): '' for points that are no BP."""
+    copy_in(work, 'runs/bratu/c.bratu')
+    rc, out, err = run_script(work, "r = run(e='bratu', c='bratu')\nfail('no fold with 3 < lambda < 4')\n"
+                                    "r = run(e='bratu', c='bratu')\n")
+    assert rc == 1 and err.splitlines()[0] == 'cable: t.auto:2: fail: no fold with 3 < lambda < 4', err
+    rc, out, err = run_script(work, 'fail(3)\n')
+    assert rc == 1 and err.splitlines()[0] == 'cable: t.auto:1: fail: fail() takes the message as a string', err
+    r = cable.Runner().run(e='bratu', c='bratu')
+    assert [s['kind'] for s in r()] == [''] * len(r()) and r('LP1').kind == ''
+
+
 def test_ctrl_c_stops_a_run(work):
     """SIGINT during a long run: the run stops at its next point, nothing of
     it is written, the files saved before are complete, status 130."""
@@ -214,3 +281,55 @@ def test_ctrl_c_stops_a_run(work):
     assert time.monotonic() - t0 < 60
     r = cable.Runner().loadbd('first')
     assert len(r()) == 8
+
+
+def test_run_name_is_e_and_c(bratu):
+    """run('NAME') is AUTO's e='NAME', c='NAME': the package passes the name
+    through to the session (the C side decides, doc/auto-users.md)."""
+    r = bratu.run('bratu', sv='byname')
+    assert abs(r('LP1')['lambda'] - LAMBDA_FOLD) < 1e-8
+    with pytest.raises(cable.CableError) as e:
+        bratu.run('nosuch')
+    assert 'nosuch' in str(e.value)
+
+
+def test_fold_run_through_python(work):
+    """ISW=2 fold continuation (runs/link62fold) through the package: the
+    scene's fold run from tests/data/fold/s.link62lp (its LP at NTST = 40, as
+    tests/test_fold_scene.c) reaches Delta = 0.0163 at the T where the
+    ordinary branch at that fixed Delta has its LP (both located to the
+    Newton tolerances, far below 1e-7)."""
+    copy_in(work, 'runs/link62fold/c.link62mode', 'runs/link62fold/c.link62fold', 'tests/data/fold/s.link62lp')
+    rn = cable.Runner()
+    f = rn.run(s='link62lp', IRS='LP1', c='link62fold', NTST=40, IAD=0, ISP=0, NMX=8, NPR=100,
+               UZR={'Delta': [0.0163]}, sv='fold')
+    c = rn.run(s='link62lp', IRS='LP1', c='link62mode', NTST=40, IAD=0, ISW=1, ILP=1, ISP=0, ITMX=24,
+               PAR={'Delta': 0.0163}, DS=-0.01, DSMAX=0.2, NMX=30, STOP=['LP1'], sv='chk')
+    u, lp = f('UZ1'), c('LP1')
+    assert abs(u['Delta'] - 0.0163) <= 1e-9 * 0.0163
+    assert abs(lp['Delta'] - 0.0163) <= 1e-14 * 0.0163
+    assert abs(u['T'] - lp['T']) <= 1e-7 * abs(lp['T'])
+
+
+def test_problem_keys_and_prepare(work):
+    """The braid problems prepare themselves from their keys and PAR={...}
+    (plug-in ABI 2, issue 13): every run from STPNT works through the
+    package, and bad keys are refused naming the key (ported from main's
+    tests/test_script.c)."""
+    rn = cable.Runner()
+    cases = [
+        (dict(e='braid_knot'), "PAR: a braid start needs the strand distance: PAR={'Delta': ...}"),
+        (dict(e='braid_link_sym'), "e: 'braid_link_sym' has no start from STPNT: restart from a stored "
+                                   "solution (run(sol) or IRS with s=)"),
+        (dict(e='braid_knot', TORUS=-3), "TORUS: must be an integer in 0..1001, got -3 (the start from STPNT: "
+                                         "the (p,2) torus knot (odd p) or link (even p >= 2); 0: the two rings) "
+                                         "(in 'TORUS=-3')"),
+        (dict(e='braid_knot', HAND='up'), "HAND: unknown value string 'up' (handedness of the start: 1 or "
+                                          "'right', -1 or 'left') (in 'HAND='up'')"),
+        (dict(e='bratu', TORUS=7), "TORUS: unknown key (in 'TORUS=7')"),
+    ]
+    for kw, msg in cases:
+        with pytest.raises(cable.CableError) as e:
+            rn.run(**kw)
+        assert str(e.value) == msg, (kw, str(e.value))
+    assert os.listdir('.') == []
