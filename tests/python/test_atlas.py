@@ -31,7 +31,7 @@ kind = "link"
 p = [4]
 
 [mesh]
-NTST = 20
+NTST = 30
 NCOL = 4
 
 [flat]
@@ -45,7 +45,7 @@ NPR = 10
 # Lk = Tw + Wr of a closed ribbon: a half-integer for a knot, an integer for
 # a link; on the flat (p,2) braid and on the branch from its branch point
 # until the axis passes through itself it is hand x p/2.  The quadrature of
-# Tw and Wr on NTST = 20 is far better than 0.01; a wrong topology is off by 1.
+# Tw and Wr on NTST = 30 is far better than 0.01; a wrong topology is off by 1.
 LK_TOL = 0.01
 TIMEOUT = 600
 
