@@ -47,6 +47,9 @@ TEST_SRCS := $(wildcard tests/test_*.c)
 TEST_BINS := $(TEST_SRCS:tests/%.c=$(BUILD)/tests/%)
 BENCH_SRCS := $(wildcard tests/bench_*.c)
 BENCH_BINS := $(BENCH_SRCS:tests/%.c=$(BUILD)/tests/%)
+# API tests: the public headers only, linked with libcable.so
+API_SRCS := $(wildcard tests/api/api_*.c)
+API_BINS := $(API_SRCS:tests/api/api_%.c=$(BUILD)/tests/test_api_%)
 PLUGIN_SRCS := $(wildcard tests/plugins/*.c)
 PLUGINS  := $(PLUGIN_SRCS:tests/plugins/%.c=$(BUILD)/plugins/%.so)
 LIBCABLE := $(BUILD)/libcable.a
@@ -111,12 +114,17 @@ cable: $(BUILD)/cable
 $(BUILD)/tests/%: $(BUILD)/tests/%.o $(LIBCABLE)
 	$(CC) $(LDFLAGS) -rdynamic $^ $(LIBS) -o $@
 
+# Programs written against include/cable/ only, linked with the shared library.
+$(BUILD)/tests/test_api_%: tests/api/api_%.c $(LIBSO) | $(DEPS_OK)
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) $(PUBINC) $< $(LDFLAGS) -L$(BUILD) -lcable -Wl,-rpath,$(abspath $(BUILD)) -lm -o $@
+
 # Plug-ins see the public headers only.
 $(BUILD)/plugins/%.so: tests/plugins/%.c | $(DEPS_OK)
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) $(PUBINC) -Itests/plugins -shared $< -o $@
 
-tests-build: $(TEST_BINS) $(PLUGINS) $(BUILD)/cable cable $(LIBSO)
+tests-build: $(TEST_BINS) $(API_BINS) $(PLUGINS) $(BUILD)/cable cable $(LIBSO)
 
 # The README's test command: build and run every test program, one summary line.
 check: tests-build
@@ -178,4 +186,4 @@ help:
 	@echo "make fuzz       fuzz the parsers (libFuzzer, 10 minutes)"
 
 .PRECIOUS: $(BUILD)/%.o $(BUILD)/tests/%.o
--include $(LIB_OBJS:.o=.d) $(GEN_OBJS:.o=.d) $(TEST_BINS:=.d) $(BENCH_BINS:=.d) $(PLUGINS:.so=.d) $(BUILD)/auto_iface/cable_main.d
+-include $(LIB_OBJS:.o=.d) $(GEN_OBJS:.o=.d) $(TEST_BINS:=.d) $(API_BINS:=.d) $(BENCH_BINS:=.d) $(PLUGINS:.so=.d) $(BUILD)/auto_iface/cable_main.d

@@ -22,6 +22,7 @@
 int cable_aufile_parse_double(const char *tok, double *out)
 {
   char buf[1040];   /* a constants file's longest token (1023 characters) fits */
+  if (!tok || !out) return -1;
   size_t n = strlen(tok);
   if (n == 0 || n + 2 >= sizeof buf) return -1;
   memcpy(buf, tok, n + 1);
@@ -317,6 +318,7 @@ const cable_solution *cable_sfile_find(const cable_sfile *s, const char *spec, c
 int cable_sfile_resolve_irs(const cable_sfile *s, cable_constants *c, cable_error *err)
 {
   char spec[32];
+  if (!s || !c) return cable_error_set(err, CABLE_ERR_NULL, "", 0, "IRS", "no s-file or no constants (NULL)");
   if (c->irs_name[0]) snprintf(spec, sizeof spec, "%s", c->irs_name);
   else snprintf(spec, sizeof spec, "%d", c->irs);
   if (!c->irs_name[0] && c->irs == 0) return 0;   /* STPNT start: nothing to look up */

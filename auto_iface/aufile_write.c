@@ -52,6 +52,7 @@ struct cable_aufile {
 
 char *cable_aufile_format_es(char *buf, double x, int width, int digits, int expdigits)
 {
+  if (!buf) return NULL;
   char body[128];
   if (digits < 0) digits = 0;
   if (digits > 30) digits = 30;
@@ -681,6 +682,7 @@ static int solution_cb(void *ctx, const cable_point *pt, const cable_solution *s
 
 void cable_aufile_options_init(cable_aufile_options *o)
 {
+  if (!o) return;
   o->append = 0;
   o->write_csv = 1;
   o->err_par = -2;
@@ -799,7 +801,8 @@ void cable_aufile_set_constants(cable_aufile *w, const cable_constants *c)
 
 cable_sink cable_aufile_sink(cable_aufile *w)
 {
-  cable_sink s;
+  cable_sink s = {NULL, NULL, NULL, NULL};
+  if (!w) return s;   /* nothing to write to: a sink without callbacks */
   s.ctx = w;
   s.point = point_cb;
   s.solution = solution_cb;
@@ -819,7 +822,7 @@ int cable_aufile_last_branch(const cable_aufile *w)
 
 int cable_aufile_checkpoint(cable_aufile *w, cable_error *err)
 {
-  if (!w) return cable_error_set(err, CABLE_ERR_INPUT, "", 0, "", "no writer");
+  if (!w) return cable_error_set(err, CABLE_ERR_NULL, "", 0, "", "no writer (NULL)");
   if (w->failed) {
     if (err) *err = w->err;
     return w->err.status;
@@ -860,7 +863,7 @@ static int check_labels(cable_aufile *w)
  * the files after it. */
 int cable_aufile_close(cable_aufile *w, cable_error *err)
 {
-  if (!w) return cable_error_set(err, CABLE_ERR_INPUT, "", 0, "", "no writer");
+  if (!w) return cable_error_set(err, CABLE_ERR_NULL, "", 0, "", "no writer (NULL)");
   if (!w->failed) check_labels(w);
   cable_error e;
   cable_atomic_file **all[3] = {&w->s, &w->b, &w->d};

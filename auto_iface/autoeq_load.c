@@ -92,6 +92,7 @@ cable_autoeq *cable_autoeq_open(const char *src, cable_error *err)
 int cable_autoeq_problem(cable_autoeq *m, const cable_constants *c, const char *dat, const cable_problem **pb,
                          cable_error *err)
 {
+  if (!pb) return cable_error_set(err, CABLE_ERR_NULL, "", 0, "", "no place for the problem (NULL)");
   *pb = NULL;
   if (!m) return cable_error_set(err, CABLE_ERR_INPUT, "", 0, "", "no equation module");
   if (!c) {   /* names only: AUTO's equations have no names of their own */

@@ -6,7 +6,7 @@
 
 #include "cable/cable_aufile.h"
 #include "cable/cable_analysis.h"
-#include "replay_braid.h"
+#include "script_host_cable.h"
 #include "braid_state.h"
 #include "cable/cable_status.h"
 #include "cable/cable_names.h"
@@ -94,7 +94,6 @@ int cable_cmd_run(int argc, char **argv, cable_error *err)
     cable_replay_options o;
     cable_replay_options_init(&o);
     o.dir = ".";
-    o.problems = cable_braid_resolver();
     cable_replay *r = cable_replay_alloc(&o);
     script_kwargs kw = {nkw, kwv};
     rc = r ? cable_replay_run_cli(r, runname, &kw, nover, over, err)
@@ -118,7 +117,6 @@ int cable_cmd_replay(const char *script, cable_error *err)
   cable_replay_options o;
   cable_replay_options_init(&o);
   o.dir = dir;
-  o.problems = cable_braid_resolver();
   return cable_replay_run_file(script, &o, err);
 }
 

@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "cable/cable_aufile.h"
+#include "cable/cable_cont.h"
 #include "cable_commands.h"
 #include "cable/cable_pictures.h"
 #include "cable/cable_status.h"
@@ -54,6 +55,9 @@ int main(int argc, char **argv)
     return 2;
   }
   const char *cmd = argv[1];
+  /* the application's choice, not the library's: small BLAS blocks run
+     fastest on one thread */
+  cable_blas_single_thread();
   cable_error err;
   cable_error_clear(&err);
   if (strcmp(cmd, "--version") == 0) {

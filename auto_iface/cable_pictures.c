@@ -55,9 +55,15 @@ int cable_plot_files(const char *dir, const char *const *bfiles, int nfiles, con
                      cable_error *err)
 {
   static const char *const plot_suffixes[2] = {".png", ".svg"};
+  cable_error local;
+  if (!err) err = &local;   /* the function reads err->status below */
   if (!out) return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, "o", "no output file");
   if (check_suffix(out, "o", plot_suffixes, 2, err)) return err->status;
   if (nfiles < 1 || nfiles > 64) return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, "", "give 1 to 64 b-files");
+  if (!bfiles) return cable_error_set(err, CABLE_ERR_NULL, NULL, 0, "", "no b-file names (NULL)");
+  for (int f = 0; f < nfiles; f++)
+    if (!bfiles[f]) return cable_error_set(err, CABLE_ERR_NULL, NULL, 0, "", "b-file name %d is NULL", f + 1);
+  if (nmarks > 0 && !marks) return cable_error_set(err, CABLE_ERR_NULL, NULL, 0, "", "%d marks but no array", nmarks);
   cable_bfile *files[64] = {NULL};
   plot_branch br[PLOT_MAX_BRANCHES];
   char names[PLOT_MAX_BRANCHES][64];
@@ -201,6 +207,9 @@ int cable_render_solution(const cable_solution *s, const render_options *o, cons
                           const char *ply, cable_error *err)
 {
   static const char *const png[1] = {".png"}, *const vtk[1] = {".vtp"}, *const plyx[1] = {".ply"};
+  cable_error local;
+  if (!err) err = &local;   /* the function reads err->status below */
+  if (!s) return cable_error_set(err, CABLE_ERR_NULL, NULL, 0, "", "no solution (NULL)");
   if ((out && check_suffix(out, "o", png, 1, err)) || (vtp && check_suffix(vtp, "vtp", vtk, 1, err)) ||
       (ply && check_suffix(ply, "ply", plyx, 1, err)))
     return err->status;

@@ -9,6 +9,7 @@ void ilaver_(int *major, int *minor, int *patch);
 
 const char *cable_version_string(char *buf, unsigned long len)
 {
+  if (!buf || len == 0) return NULL;
   int ma = 0, mi = 0, pa = 0;
   ilaver_(&ma, &mi, &pa);
   snprintf(buf, len, "cable %s (SUNDIALS %s, GSL %s, LAPACK %d.%d.%d)", CABLE_VERSION,

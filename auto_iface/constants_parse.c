@@ -113,6 +113,7 @@ typedef struct {
   cable_names names;
   const char *const *parnames;
   int npar_caller;
+  const cable_problem *pb;  /* the problem whose keys are accepted (NULL: none) */
   int line_of[64];          /* line of the statement that set a checked key */
   thu_entry thu[THU_MAX];
   int nthu, thu_set, thu_line;
@@ -758,21 +759,6 @@ static int apply_par(pctx *x, const key_desc *d, const stmt *s)
   return 0;
 }
 
-/* HAND = 1 | -1 | 'right' | 'left' */
-static int apply_hand(pctx *x, const key_desc *d, const stmt *s)
-{
-  (void)d;
-  const cv *v = s->value;
-  char b[160];
-  if (v->kind == CV_INT && (v->i == 1 || v->i == -1)) x->c.hand = (int)v->i;
-  else if (v->kind == CV_STR && strcasecmp(v->text, "right") == 0) x->c.hand = 1;
-  else if (v->kind == CV_STR && strcasecmp(v->text, "left") == 0) x->c.hand = -1;
-  else
-    return perr(x, CABLE_ERR_INPUT, s->line, s->key, "must be 1, -1, 'right' or 'left', got %s",
-                describe(v, b, sizeof b));
-  return 0;
-}
-
 /* THU is kept raw and checked at the end, when NDIM is known. */
 static int apply_thu(pctx *x, const key_desc *d, const stmt *s)
 {
@@ -958,8 +944,6 @@ static const key_desc key_table[] = {
   {"BPDIR", apply_int, OFF(bpsym), 0, 1, 2, KI_NONE},
   {"BPANGLE", apply_real, OFF(bpangle), 0, 0, 2, KI_NONE},
   {"PAR", apply_par, 0, 0, 0, 2, KI_NONE},
-  {"TORUS", apply_int, OFF(torus_p), 0, 1001, 2, KI_NONE},
-  {"HAND", apply_hand, 0, 0, 0, 2, KI_NONE},
 };
 #define KEY_TABLE_N ((int)(sizeof key_table / sizeof key_table[0]))
 
@@ -991,6 +975,7 @@ static const key_desc *key_find(const char *key)
 
 void cable_constants_take_problem_dims(cable_constants *c, int ndim, int nbc, int nint)
 {
+  if (!c) return;
   if (c->ndim == 0) c->ndim = ndim;
   if (c->nbc == 0) c->nbc = nbc;
   if (c->nint == 0) c->nint = nint;
@@ -1001,9 +986,65 @@ int cable_constants_key_known(const char *key)
   return key && key_find(key) != NULL;
 }
 
+int cable_constants_key_known_for(const cable_problem *pb, const char *key)
+{
+  return cable_constants_key_known(key) || cable_problem_key_find(pb, key) != NULL;
+}
+
+/* A problem-specific key: type, range and words as the problem declares
+ * them; the value replaces an earlier one of the same key. */
+static int apply_problem_key(pctx *x, const cable_problem_key *k, const stmt *s)
+{
+  const cv *v = s->value;
+  char b[160];
+  double val = 0.0;
+  const char *help = k->help ? k->help : "";
+  if (v->kind == CV_STR && k->words) {
+    int found = 0;
+    for (const cable_key_word *w = k->words; w->word; w++)
+      if (strcasecmp(w->word, v->text) == 0) {
+        val = w->value;
+        found = 1;
+        break;
+      }
+    if (!found) return perr(x, CABLE_ERR_INPUT, s->line, s->key, "unknown value %s (%s)", describe(v, b, sizeof b), help);
+  } else if (k->type == CABLE_KEY_INT) {
+    if (v->kind != CV_INT)
+      return perr(x, CABLE_ERR_INPUT, s->line, s->key, "must be an integer, got %s (%s)", describe(v, b, sizeof b),
+                  help);
+    val = (double)v->i;
+    if (k->words) {
+      int found = 0;
+      for (const cable_key_word *w = k->words; w->word; w++) found |= w->value == val;
+      if (!found)
+        return perr(x, CABLE_ERR_INPUT, s->line, s->key, "%ld is not an accepted value (%s)", v->i, help);
+    } else if (val < k->min || val > k->max) {
+      return perr(x, CABLE_ERR_INPUT, s->line, s->key, "must be an integer in %.0f..%.0f, got %ld (%s)", k->min,
+                  k->max, v->i, help);
+    }
+  } else if (k->type == CABLE_KEY_REAL) {
+    int st = real_value(x, s->key, v, s->line, &val);
+    if (st) return st;
+    if (val < k->min || val > k->max)
+      return perr(x, CABLE_ERR_INPUT, s->line, s->key, "must be in [%g, %g], got %g (%s)", k->min, k->max, val, help);
+  } else {
+    return perr(x, CABLE_ERR_INPUT, s->line, s->key, "problem key of unknown type %d", k->type);
+  }
+  int i = 0;
+  while (i < x->c.npkey && strcmp(x->c.pkey[i].name, k->name) != 0) i++;
+  if (i == x->c.npkey) {
+    if (x->c.npkey >= CABLE_MAX_PKEYS)
+      return perr(x, CABLE_ERR_INPUT, s->line, s->key, "more than %d problem keys", CABLE_MAX_PKEYS);
+    x->c.npkey++;
+  }
+  snprintf(x->c.pkey[i].name, sizeof x->c.pkey[i].name, "%s", k->name);
+  x->c.pkey[i].value = val;
+  return 0;
+}
+
 static int key_check(pctx *x, const char *key, int line)
 {
-  if (key_find(key)) return 0;
+  if (key_find(key) || cable_problem_key_find(x->pb, key)) return 0;
   for (int i = 0; i < IGNORED_N; i++)
     if (strcmp(ignored_for_bvp[i], key) == 0) {
       size_t n = strlen(x->c.ignored);
@@ -1019,6 +1060,9 @@ static int key_check(pctx *x, const char *key, int line)
     if (strcasecmp(key_table[i].key, key) == 0)
       return perr(x, CABLE_ERR_INPUT, line, key, "unknown key (keys are case-sensitive: did you mean '%s'?)",
                   key_table[i].key);
+  if (x->pb && x->pb->nkeys > 0)
+    return perr(x, CABLE_ERR_INPUT, line, key, "unknown key (neither cable's nor one of problem '%s''s %d keys)",
+                x->pb->name ? x->pb->name : "?", x->pb->nkeys);
   return perr(x, CABLE_ERR_INPUT, line, key, "unknown key");
 }
 
@@ -1081,6 +1125,13 @@ static int apply_statements(pctx *x)
   for (int pass = 1; pass <= 2; pass++)
     for (int i = 0; i < x->nst; i++) {
       const key_desc *d = key_find(x->st[i].key);
+      const cable_problem_key *pk = d ? NULL : cable_problem_key_find(x->pb, x->st[i].key);
+      if (pk && pass == 2) {
+        int st = apply_problem_key(x, pk, &x->st[i]);
+        if (st) return st;
+        x->applied++;
+        continue;
+      }
       if (!d || d->pass != pass) continue;  /* every key was checked when collected */
       int st = d->apply(x, d, &x->st[i]);
       if (st) return st;
@@ -1181,10 +1232,11 @@ static pctx *pctx_new(const char *file, const char *src, cable_error *err)
   return x;
 }
 
-static int run(pctx *x, const char *const *parnames, int npar)
+static int run(pctx *x, const char *const *parnames, int npar, const cable_problem *pb)
 {
   x->parnames = parnames;
   x->npar_caller = parnames ? npar : 0;
+  x->pb = pb;
   int st = parse_statements(x);
   if (st == 0) st = apply_statements(x);
   if (st == 0) st = finalize(x);
@@ -1192,16 +1244,15 @@ static int run(pctx *x, const char *const *parnames, int npar)
   return st;
 }
 
-int cable_constants_parse_string(const char *name, const char *text, cable_constants *c,
-                                 cable_names *names, const char *const *parnames, int npar,
-                                 cable_error *err)
+static int parse_string(const char *name, const char *text, const cable_problem *pb, const char *const *parnames,
+                        int npar, cable_constants *c, cable_names *names, cable_error *err)
 {
   if (!text || !c) return cable_error_set(err, CABLE_ERR_INPUT, name, 0, "", "no text to parse");
   pctx *x = pctx_new(name ? name : "", text, err);
   if (!x) return CABLE_ERR_ALLOC;
   cable_constants_init(&x->c);
   cable_names_init(&x->names);
-  int st = run(x, parnames, npar);
+  int st = run(x, parnames, npar, pb);
   if (st == 0) {
     memcpy(c, &x->c, sizeof *c);   /* padding included: callers may memcmp */
     if (names) *names = x->names;
@@ -1211,8 +1262,21 @@ int cable_constants_parse_string(const char *name, const char *text, cable_const
   return st;
 }
 
-int cable_constants_parse_file(const char *path, cable_constants *c, cable_names *names,
-                               const char *const *parnames, int npar, cable_error *err)
+int cable_constants_parse_string(const char *name, const char *text, cable_constants *c,
+                                 cable_names *names, const char *const *parnames, int npar,
+                                 cable_error *err)
+{
+  return parse_string(name, text, NULL, parnames, npar, c, names, err);
+}
+
+int cable_constants_parse_string_for(const char *name, const char *text, const cable_problem *pb,
+                                     cable_constants *c, cable_names *names, cable_error *err)
+{
+  return parse_string(name, text, pb, pb ? pb->parnames : NULL, pb ? pb->npar : 0, c, names, err);
+}
+
+static int parse_file(const char *path, const cable_problem *pb, const char *const *parnames, int npar,
+                      cable_constants *c, cable_names *names, cable_error *err)
 {
   if (!path) return cable_error_set(err, CABLE_ERR_INPUT, "", 0, "", "no constants file given");
   FILE *f = fopen(path, "rb");
@@ -1235,14 +1299,26 @@ int cable_constants_parse_file(const char *path, cable_constants *c, cable_names
     st = cable_error_set(err, CABLE_ERR_PARSE, path, 0, "", "file contains NUL bytes: not a constants file");
   } else {
     buf[n] = '\0';
-    st = cable_constants_parse_string(path, buf, c, names, parnames, npar, err);
+    st = parse_string(path, buf, pb, parnames, npar, c, names, err);
   }
   free(buf);
   return st;
 }
 
-int cable_constants_parse_override(const char *keyvalue, cable_constants *c, cable_names *names,
-                                   const char *const *parnames, int npar, cable_error *err)
+int cable_constants_parse_file(const char *path, cable_constants *c, cable_names *names,
+                               const char *const *parnames, int npar, cable_error *err)
+{
+  return parse_file(path, NULL, parnames, npar, c, names, err);
+}
+
+int cable_constants_parse_file_for(const char *path, const cable_problem *pb, cable_constants *c,
+                                   cable_names *names, cable_error *err)
+{
+  return parse_file(path, pb, pb ? pb->parnames : NULL, pb ? pb->npar : 0, c, names, err);
+}
+
+static int parse_override(const char *keyvalue, const cable_problem *pb, const char *const *parnames, int npar,
+                          cable_constants *c, cable_names *names, cable_error *err)
 {
   if (!keyvalue || !c) return cable_error_set(err, CABLE_ERR_INPUT, "", 0, "", "no override given");
   if (strchr(keyvalue, '\n'))
@@ -1254,7 +1330,7 @@ int cable_constants_parse_override(const char *keyvalue, cable_constants *c, cab
   for (int k = 0; k < c->nuzr && k < CABLE_MAX_UZR; k++) x->uzr_from_stop[k] = (char)(c->uzr[k].stop != 0);
   if (names) x->names = *names;
   else cable_names_init(&x->names);
-  int st = run(x, parnames, npar);
+  int st = run(x, parnames, npar, pb);
   if (st == 0 && x->applied == 0)
     st = cable_error_set(err, CABLE_ERR_PARSE, "", 0, "", "empty override: expected KEY=VALUE");
   if (st == 0) {
@@ -1264,4 +1340,16 @@ int cable_constants_parse_override(const char *keyvalue, cable_constants *c, cab
   }
   free(x);
   return st;
+}
+
+int cable_constants_parse_override(const char *keyvalue, cable_constants *c, cable_names *names,
+                                   const char *const *parnames, int npar, cable_error *err)
+{
+  return parse_override(keyvalue, NULL, parnames, npar, c, names, err);
+}
+
+int cable_constants_parse_override_for(const char *keyvalue, const cable_problem *pb, cable_constants *c,
+                                       cable_names *names, cable_error *err)
+{
+  return parse_override(keyvalue, pb, pb ? pb->parnames : NULL, pb ? pb->npar : 0, c, names, err);
 }

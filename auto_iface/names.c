@@ -8,7 +8,7 @@
 
 void cable_names_init(cable_names *n)
 {
-  memset(n, 0, sizeof *n);
+  if (n) memset(n, 0, sizeof *n);
 }
 
 int cable_names_par_index(const cable_names *n, const char *name,
@@ -53,6 +53,7 @@ static void names_fill_one(char tab[][CABLE_NAME_LEN], const char *const *src, i
 void cable_names_fill(cable_names *n, const char *const *parnames, int npar,
                       const char *const *unames, int ndim)
 {
+  if (!n) return;
   names_fill_one(n->par, parnames, npar);
   names_fill_one(n->u, unames, ndim);
 }
@@ -71,7 +72,7 @@ static const type_entry type_table[] = {
 
 int cable_type_base(int itp)
 {
-  return itp >= 0 ? itp % 10 : -((-itp) % 10);
+  return itp % 10;   /* C's remainder keeps the sign: -14 -> -4 (no overflow at INT_MIN) */
 }
 
 const char *cable_type_name(int itp)

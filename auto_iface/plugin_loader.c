@@ -13,6 +13,7 @@
 #include <string.h>
 #include <sys/stat.h>
 
+#include "cable/cable_constants.h"
 #include "cable/cable_status.h"
 
 /* Longest parameter or variable name: names become constants-file keys and
@@ -69,6 +70,36 @@ static int check_names(const char *const *names, int n, const char *field, const
   return 0;
 }
 
+/* ABI 2: the problem's constants keys and its prepare/release pair. */
+static int check_keys(const cable_problem *pb, const char *origin, cable_error *err)
+{
+  if (pb->prepare && !pb->release)
+    return reject(err, origin, "release", "is NULL but prepare is set (an instance must be given back)");
+  if (!pb->prepare && pb->release) return reject(err, origin, "prepare", "is NULL but release is set");
+  if (pb->nkeys < 0 || pb->nkeys > CABLE_MAX_PKEYS)
+    return reject(err, origin, "nkeys", "must be between 0 and %d, got %d", CABLE_MAX_PKEYS, pb->nkeys);
+  if (pb->nkeys > 0 && !pb->keys) return reject(err, origin, "keys", "is NULL but nkeys = %d", pb->nkeys);
+  char key[64];
+  for (int i = 0; i < pb->nkeys; i++) {
+    const cable_problem_key *k = &pb->keys[i];
+    snprintf(key, sizeof key, "keys[%d]", i);
+    const char *why = k->name ? name_problem(k->name) : "is NULL";
+    if (!why && strlen(k->name) >= CABLE_PKEY_LEN) why = "is longer than 31 characters";
+    if (why) return reject(err, origin, key, "the key name %s", why);
+    if (cable_constants_key_known(k->name))
+      return reject(err, origin, key, "'%s' is one of cable's own constants keys", k->name);
+    for (int j = 0; j < i; j++)
+      if (pb->keys[j].name && strcmp(pb->keys[j].name, k->name) == 0)
+        return reject(err, origin, key, "the key '%s' is also keys[%d]", k->name, j);
+    if (k->type != CABLE_KEY_INT && k->type != CABLE_KEY_REAL)
+      return reject(err, origin, key, "'%s': type must be CABLE_KEY_INT or CABLE_KEY_REAL, got %d", k->name, k->type);
+    if (!(k->min <= k->max) || !(k->def >= k->min && k->def <= k->max))
+      return reject(err, origin, key, "'%s': need min <= def <= max, got %g <= %g <= %g", k->name, k->min, k->def,
+                    k->max);
+  }
+  return 0;
+}
+
 int cable_problem_validate(const cable_problem *pb, int npar_max, const char *origin,
                            cable_error *err)
 {
@@ -111,7 +142,7 @@ int cable_problem_validate(const cable_problem *pb, int npar_max, const char *or
     return reject(err, origin, "parnames", "names are given but npar is 0");
   if (pb->parnames && check_names(pb->parnames, pb->npar, "parnames", origin, err)) return CABLE_ERR_PLUGIN;
   if (pb->unames && check_names(pb->unames, pb->ndim, "unames", origin, err)) return CABLE_ERR_PLUGIN;
-  return 0;
+  return check_keys(pb, origin, err);
 }
 
 cable_plugin *cable_plugin_open_npar(const char *path, int npar_max, const cable_problem **pb,
@@ -198,5 +229,5 @@ const cable_problem *cable_plugin_problem(const cable_plugin *p)
 
 const char *cable_plugin_path(const cable_plugin *p)
 {
-  return p ? p->path : NULL;
+  return p ? p->path : "";
 }

@@ -13,8 +13,6 @@
 #include <unistd.h>
 
 #include "cable/cable_aufile.h"
-#include "cable/cable_analysis.h"
-#include "braid_problems.h"
 #include "cable/cable_cont.h"
 #include "cable/cable_fold.h"
 #include "cable/cable_status.h"
@@ -37,17 +35,20 @@ static int file_exists(const char *path)
 /* ---- problems ---------------------------------------------------------------- */
 
 typedef struct rp_problem {
-  const cable_problem *pb;
-  int user;     /* from opt.problems: released after use */
-  int autoeq;   /* from an AUTO equation file: dimensions from the constants */
+  const cable_problem *tmpl;  /* what e=NAME names (built-in, equation file, plug-in or opt.problems) */
+  const cable_problem *pb;    /* the instance a run uses (prepared), or tmpl */
+  int user;                   /* from opt.problems: released after use */
+  int autoeq;                 /* from an AUTO equation file: dimensions from the constants */
 } rp_problem;
 
 static void problem_release(cable_replay *r, rp_problem *p)
 {
+  if (p->pb && p->pb != p->tmpl) cable_problem_release(p->tmpl, p->pb);
   if (p->user && r->opt.problems && r->opt.problems->release)
-    r->opt.problems->release(r->opt.problems->ctx, p->pb);
-  p->pb = NULL;
+    r->opt.problems->release(r->opt.problems->ctx, p->tmpl);
+  p->pb = p->tmpl = NULL;
   p->user = 0;
+  p->autoeq = 0;
 }
 
 /* A plug-in for e=NAME: NAME.so (or NAME itself when it ends in .so), opened
@@ -106,50 +107,48 @@ static int autoeq_problem(cable_replay *r, const char *e, const cable_constants 
   return cable_autoeq_problem(m, c, dat, pb, err);
 }
 
-/* The problem for e=NAME.  c NULL: only its names are needed. */
+/* The problem for e=NAME.  c NULL: only its names and keys are needed;
+ * otherwise the problem prepares itself for the run (its prepare). */
 static int find_problem(cable_replay *r, const char *e, const cable_constants *c, int from_stpnt,
                         rp_problem *out, cable_error *err)
 {
-  out->pb = NULL;
+  out->pb = out->tmpl = NULL;
   out->user = 0;
   out->autoeq = 0;
   if (!e[0])
     return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, "e", "no problem given (e='NAME' in the call or the constants file)");
   const cable_replay_problems *up = r->opt.problems;
+  int rc = CABLE_ERR_NOTFOUND;
   if (up && up->find) {
-    int rc = up->find(up->ctx, e, c, from_stpnt, &out->pb, err);
-    if (rc == 0) {
-      out->user = 1;
-      return 0;
-    }
-    if (rc != CABLE_ERR_NOTFOUND) return rc;
+    rc = up->find(up->ctx, e, c, from_stpnt, &out->tmpl, err);
+    if (rc == 0) out->user = 1;
+    else if (rc != CABLE_ERR_NOTFOUND) return rc;
   }
   /* an AUTO user's own equation file wins over cable's test problems */
-  int rc_ae = autoeq_problem(r, e, c, &out->pb, err);
-  if (rc_ae != CABLE_ERR_NOTFOUND) {
-    out->autoeq = rc_ae == 0;
-    return rc_ae;
+  if (rc == CABLE_ERR_NOTFOUND) {
+    rc = autoeq_problem(r, e, c, &out->tmpl, err);
+    if (rc == 0) out->autoeq = 1;
+    else if (rc != CABLE_ERR_NOTFOUND) return rc;
   }
-  const cable_problem *braid = braid_problem_find(e), *builtin = cable_problem_builtin(e);
-  if (builtin && !braid) {   /* the engine's test problems */
-    out->pb = builtin;
-    return 0;
+  if (rc == CABLE_ERR_NOTFOUND && (out->tmpl = cable_problem_builtin(e)) != NULL) rc = 0;
+  if (rc == CABLE_ERR_NOTFOUND) {
+    rc = plugin_problem(r, e, &out->tmpl, err);
+    if (rc == CABLE_ERR_NOTFOUND)
+      return cable_error_set(err, CABLE_ERR_NOTFOUND, NULL, 0, "e",
+                             "unknown problem '%s' (not a built-in problem, no equation file %s.f90, %s.f or %s.c and "
+                             "no %s.so plug-in)", e, e, e, e, e);
+    if (rc) return rc;
   }
-  if (braid) {
-    if (c && from_stpnt)
-      return cable_error_set(err, CABLE_ERR_UNSUPPORTED, NULL, 0, "e",
-                             "'%s' from STPNT needs prepared starting parameters, which this host does not "
-                             "have: restart from a stored solution (run(sol) or IRS with s=)",
-                             e);
-    out->pb = braid;   /* params NULL: valid for restarts (braid_problems.h) */
-    return 0;
+  out->pb = out->tmpl;
+  if (!c) return 0;
+  const cable_problem *inst = NULL;
+  rc = cable_problem_prepare(out->tmpl, c, from_stpnt, &inst, err);
+  if (rc) {
+    problem_release(r, out);
+    return rc;
   }
-  int rc = plugin_problem(r, e, &out->pb, err);
-  if (rc == CABLE_ERR_NOTFOUND)
-    return cable_error_set(err, CABLE_ERR_NOTFOUND, NULL, 0, "e",
-                           "unknown problem '%s' (not a built-in problem, no equation file %s.f90, %s.f or %s.c and "
-                           "no %s.so plug-in)", e, e, e, e, e);
-  return rc;
+  out->pb = inst;
+  return 0;
 }
 
 /* ---- handles ------------------------------------------------------------------- */
@@ -272,7 +271,8 @@ static int read_constants_file(cable_replay *r, const char *name, rp_setup *s, i
   rp_problem p;
   int rc = problem_names(r, s->e, &p, &parnames, &npar, err);
   if (rc) return rc;
-  rc = cable_constants_parse_file(path, &s->c, &s->names, parnames, npar, err);
+  (void)parnames, (void)npar;
+  rc = cable_constants_parse_file_for(path, p.pb, &s->c, &s->names, err);
   /* the file's names win; the problem names the rest (sol['lambda']) */
   if (!rc && p.pb) cable_names_fill(&s->names, p.pb->parnames, p.pb->npar, p.pb->unames, p.pb->ndim);
   problem_release(r, &p);
@@ -457,10 +457,11 @@ static int build_setup(cable_replay *r, const script_value *data, const script_k
     if (k == ke || k == kc || k == ks || strcmp(k->name, "sv") == 0 || strcmp(k->name, "ap") == 0) continue;
     char text[4200];
     rc = kw_text(k, text, sizeof text, err);
-    if (!rc) rc = cable_constants_parse_override(text, &s->c, &s->names, parnames, npar, err);
+    if (!rc) rc = cable_constants_parse_override_for(text, p.pb, &s->c, &s->names, err);
   }
+  (void)parnames, (void)npar;
   for (int i = 0; i < nover && !rc; i++) {
-    rc = cable_constants_parse_override(over[i], &s->c, &s->names, parnames, npar, err);
+    rc = cable_constants_parse_override_for(over[i], p.pb, &s->c, &s->names, err);
     if (rc && err && !err->file[0]) {
       snprintf(err->file, sizeof err->file, "<command line>");
       err->line = 0;   /* the message quotes the argument */
@@ -563,16 +564,18 @@ static void log_branch(const cable_replay *r, const rp_branch *b, int status, co
   }
   fprintf(f, "  branch %d: %d points, %d labelled; end: %s%s%s\n", b->ibr, b->npt, b->nsol,
           cable_status_message(status), why && why[0] ? ": " : "", why ? why : "");
-  /* summary: special points, time, the worst first-integral drift of the
-     stored solutions (braid problems: |F|^2, F.M, h, Hamiltonian along s) */
+  /* summary: special points, time, and the worst first-integral drift of
+     the stored solutions when the problem's PVLS reports one (a parameter
+     named "drift", e.g. the braid problems' |F|^2, F.M, h, Hamiltonian along s) */
   int nbp = 0, nlp = 0, nuz = 0;
   double drift = -1;
+  int kdrift = cable_names_par_index(&b->names, "drift", NULL, 0);
   for (int i = 0; i < b->nsol; i++) {
     int ty = cable_type_base(b->sol[i]->itp);
     nbp += ty == 6;
     nlp += ty == 5;
     nuz += ty == -4;
-    drift = fmax(drift, braid_first_integral_drift(b->sol[i]));
+    if (kdrift >= 0 && kdrift < b->sol[i]->npar) drift = fmax(drift, b->sol[i]->par[kdrift]);
   }
   fprintf(f, "  summary: %d BP, %d LP, %d UZ; %.1f s", nbp, nlp, nuz, seconds);
   if (drift >= 0) fprintf(f, "; worst first-integral drift %.2e", drift);
@@ -626,11 +629,17 @@ static int engine_run(cable_replay *r, rp_setup *s, rp_branch **out, cable_error
     start = NULL;
   }
   cable_names_fill(&s->names, pb->parnames, pb->npar, pb->unames, pb->ndim);
+  st = cable_cont_check(pb, crun, err);
+  if (st) {
+    cable_fold_free(fold);
+    problem_release(r, &prob);
+    return st;
+  }
   cable_cont *cc = cable_cont_alloc(pb, crun, &st);
   if (!cc) {
     cable_fold_free(fold);
     problem_release(r, &prob);
-    return cable_error_set(err, CABLE_ERR_ALLOC, NULL, 0, NULL, "out of memory");
+    return cable_error_set(err, st, NULL, 0, NULL, "could not set up the solver: %s", cable_status_message(st));
   }
   if (st == 0 && fold) {
     /* the fold run starts on the LP's mesh */

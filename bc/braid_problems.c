@@ -6,7 +6,9 @@
 #include "braid_integrals.h"
 #include "braid_model.h"
 #include "braid_pressure.h"
+#include "braid_prepare.h"
 #include "braid_problems.h"
+#include "cable/cable_analysis.h"
 #include "cable/cable_solution.h"
 #include "cable/cable_status.h"
 #include "ribbon.h"
@@ -15,7 +17,7 @@
 static const char *const braid_parnames[BP_NPAR] = {
   "T", "L", "L2", "Ltot", "Delta", "Phi", "w2fix", "B1", "B2", "C1", "C2", "w01", "w02",
   "eps21", "eps13", "F", "FM", "h", "qnorm", "Ham", "pmin", "dmin", "Lk", "Tw", "Wr", "err",
-  "Wrerr", "T1", "T2"};
+  "Wrerr", "T1", "T2", "drift"};
 
 static const char *const braid_unames[BR_NDIM] = {
   "F1", "F2", "F3", "M1", "M2", "M3", "eta", "w2", "w3", "xi1", "T1",
@@ -60,6 +62,10 @@ int braid_pvls(const cable_solution *sol, double *par, void *params)
   par[BP_T1END] = u1[BR_T1];
   par[BP_T2END] = u1[BR_T2];
   if (sol->err_est >= 0) par[BP_ERR] = sol->err_est;
+  /* the spread of the first integrals over the mesh points (cheap: no
+     geometry; negative when a mesh point leaves the model's domain); the
+     run log reports its worst value per branch */
+  par[BP_DRIFT] = braid_first_integral_drift(sol);
   /* The geometric columns cost a pressure sweep (pmin), a tube-distance
    * search (dmin) or the writhe double integral (Lk, Tw, Wr): only when the
    * run prints them.  A quantity that cannot be computed (e.g. Lk of a braid
@@ -94,7 +100,8 @@ int braid_pvls(const cable_solution *sol, double *par, void *params)
   .abi_version = CABLE_PROBLEM_ABI, .struct_size = sizeof(cable_problem), .ndim = BR_NDIM, \
   .nint = 0, .npar = BP_NPAR, .parnames = braid_parnames, .unames = braid_unames,       \
   .func = braid_func, .icnd = NULL, .stpnt = braid_start_stpnt, .pvls = braid_pvls,     \
-  .func_has_jac = 1, .bcnd_has_jac = 1, .icnd_has_jac = 0, .params = NULL
+  .func_has_jac = 1, .bcnd_has_jac = 1, .icnd_has_jac = 0, .params = NULL,             \
+  .keys = braid_keys, .nkeys = BRAID_NKEYS, .prepare = braid_prepare, .release = braid_release
 
 static const cable_problem knot_template = {
   BRAID_PROBLEM_COMMON,

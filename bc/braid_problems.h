@@ -32,7 +32,9 @@ int braid_problem_instance(const char *name, const braid_start_params *sp, cable
  *  always (cheap): F = |F|, FM = F.M, h, Ham (the Hamiltonian), at t = 0
  *    (they are first integrals); qnorm = |q(1)|^2 - 1; T1, T2 = the strand
  *    torques at t = 1 (first integrals: T and -T); err = sol->err_est when
- *    known;
+ *    known; drift = braid_first_integral_drift (the max relative spread of
+ *    |F|^2, F.M, h and Ham over the mesh points; < 0 when a mesh point is
+ *    outside the model's domain);
  *  only when the run prints them (sol->pvls_icp lists the slot, or is NULL):
  *    pmin (braid_contact_pressure_min), dmin (braid_tube_distance_solution),
  *    Lk, Tw, Wr and Wrerr, the writhe's error estimate (braid_ribbon_compute;

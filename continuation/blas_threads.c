@@ -1,5 +1,5 @@
 #define _GNU_SOURCE 1 /* RTLD_DEFAULT */
-#include "blas_threads.h"
+#include "cable/cable_cont.h"
 
 #include <dlfcn.h>
 #include <stdlib.h>

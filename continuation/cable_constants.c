@@ -7,6 +7,7 @@
 
 void cable_constants_init(cable_constants *c)
 {
+  if (!c) return;
   memset(c, 0, sizeof *c);
   c->ndim = 0; c->ips = 4; c->nbc = 0; c->nint = 0; c->npar = 36;
   c->ntst = 20; c->ncol = 4; c->iad = 3;
@@ -20,7 +21,16 @@ void cable_constants_init(cable_constants *c)
   c->iid = 2; c->iis = 3;
   c->linsolver = CABLE_LINSOLVER_CONDENSE;
   c->nsv = 0; c->nthreads = 0; c->bpsym = 0; c->bpangle = (double)NAN;
-  c->torus_p = 0; c->hand = 1;
+  c->npkey = 0;
+}
+
+double cable_constants_key(const cable_constants *c, const cable_problem *pb, const char *name)
+{
+  const cable_problem_key *k = cable_problem_key_find(pb, name);
+  if (!c || !k) return (double)NAN;
+  for (int i = 0; i < c->npkey && i < CABLE_MAX_PKEYS; i++)
+    if (strcmp(c->pkey[i].name, name) == 0) return c->pkey[i].value;
+  return k->def;
 }
 
 int cable_threads(const cable_constants *c)

@@ -17,6 +17,7 @@ int cable_error_set(cable_error *e, int status, const char *file, int line, cons
   snprintf(e->file, sizeof e->file, "%s", file ? file : "");
   e->line = line;
   snprintf(e->key, sizeof e->key, "%s", key ? key : "");
+  if (!fmt) fmt = "";
   va_list ap;
   va_start(ap, fmt);
   vsnprintf(e->msg, sizeof e->msg, fmt, ap);
@@ -26,8 +27,10 @@ int cable_error_set(cable_error *e, int status, const char *file, int line, cons
 
 const char *cable_error_format(const cable_error *e, char *buf, size_t len)
 {
+  if (!buf || len == 0) return "";
   size_t n = 0;
   buf[0] = '\0';
+  if (!e) return buf;
   if (e->file[0]) n += (size_t)snprintf(buf + n, len - n, "%s:", e->file);
   if (n < len && e->file[0] && e->line > 0) n += (size_t)snprintf(buf + n, len - n, "%d:", e->line);
   if (n < len && n > 0) n += (size_t)snprintf(buf + n, len - n, " ");

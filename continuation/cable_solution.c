@@ -1,14 +1,21 @@
 #include "cable/cable_solution.h"
 
+#include <limits.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+
+#include "cable/cable_status.h"
 
 #include "colloc_basis.h"
 
 cable_solution *cable_solution_alloc(int ndim, int ntst, int ncol, int npar, int nfpr)
 {
   if (ndim < 1 || ntst < 1 || ncol < 1 || npar < 1 || nfpr < 0) return NULL;
+  /* point counts and indices are ints (cable_solution_npts): sizes whose
+     products do not fit are refused before anything is allocated */
+  long long npts_ll = (long long)ntst * ncol + 1;
+  if (npts_ll > INT_MAX || npts_ll * ndim > INT_MAX || nfpr == INT_MAX) return NULL;
   cable_solution *s = calloc(1, sizeof *s);
   if (!s) return NULL;
   s->ndim = ndim; s->ntst = ntst; s->ncol = ncol; s->npar = npar; s->nfpr = nfpr;
@@ -36,9 +43,11 @@ void cable_solution_free(cable_solution *s)
 
 int cable_solution_copy(cable_solution *dst, const cable_solution *src)
 {
+  if (!dst || !src) return CABLE_ERR_NULL;
   if (dst->ndim != src->ndim || dst->ntst != src->ntst || dst->ncol != src->ncol ||
       dst->npar != src->npar || dst->nfpr != src->nfpr)
-    return -1;
+    return CABLE_ERR_SIZE;
+  if (!src->t || !src->u || !src->par || (src->nfpr > 0 && (!src->icp || !src->pardot))) return CABLE_ERR_NULL;
   size_t np = (size_t)cable_solution_npts(src);
   dst->ibr = src->ibr; dst->ntot = src->ntot; dst->itp = src->itp; dst->lab = src->lab;
   dst->bp_kind = src->bp_kind;
@@ -50,11 +59,12 @@ int cable_solution_copy(cable_solution *dst, const cable_solution *src)
   memcpy(dst->par, src->par, (size_t)src->npar * sizeof *dst->par);
   memcpy(dst->icp, src->icp, (size_t)src->nfpr * sizeof *dst->icp);
   memcpy(dst->pardot, src->pardot, (size_t)src->nfpr * sizeof *dst->pardot);
-  return 0;
+  return CABLE_SUCCESS;
 }
 
 cable_solution *cable_solution_clone(const cable_solution *src)
 {
+  if (!src) return NULL;
   cable_solution *s = cable_solution_alloc(src->ndim, src->ntst, src->ncol, src->npar, src->nfpr);
   if (s && cable_solution_copy(s, src) != 0) {
     cable_solution_free(s);
@@ -65,6 +75,7 @@ cable_solution *cable_solution_clone(const cable_solution *src)
 
 double cable_solution_measure(const cable_solution *s, int iplt, double l2)
 {
+  if (!s || !s->u || !s->t || s->ndim < 1) return l2;
   int nd = s->ndim, npts = cable_solution_npts(s);
   if (iplt == 0 || iplt < -nd || iplt > 3 * nd) return l2;
   int i = (iplt > 0 ? iplt - 1 : -iplt - 1) % nd;

@@ -5,7 +5,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "blas_threads.h"
 #include "cont_impl.h"
 
 /* Step-size control (IADS): Newton iteration counts at or below
@@ -56,7 +55,10 @@ void cont_set_error(cable_cont *cc, const char *fmt, ...)
   va_end(ap);
 }
 
-const char *cable_cont_error(const cable_cont *cc) { return cc->err; }
+const char *cable_cont_error(const cable_cont *cc)
+{
+  return cc ? cc->err : "no continuation handle (NULL)";
+}
 
 void cable_cont_free(cable_cont *cc)
 {
@@ -106,20 +108,31 @@ static int check_input(const cable_problem *pb, const cable_constants *c, char *
   return CABLE_SUCCESS;
 }
 
-cable_cont *cable_cont_alloc(const cable_problem *pb, const cable_constants *c, int *status)
+int cable_cont_check(const cable_problem *pb, const cable_constants *c, cable_error *err)
 {
   char msg[512];
-  cable_blas_single_thread();
+  if (!pb || !c)
+    return cable_error_set(err, CABLE_ERR_NULL, NULL, 0, NULL, "cable_cont_check: %s is NULL",
+                           !pb ? "the problem" : "the constants");
   int rc = check_input(pb, c, msg, sizeof msg);
+  if (rc) return cable_error_set(err, rc, NULL, 0, NULL, "%s", msg);
+  if (err) cable_error_clear(err);
+  return CABLE_SUCCESS;
+}
+
+cable_cont *cable_cont_alloc(const cable_problem *pb, const cable_constants *c, int *status)
+{
+  int dummy;
+  if (!status) status = &dummy;
+  int rc = cable_cont_check(pb, c, NULL);
+  if (rc) {
+    *status = rc;
+    return NULL;
+  }
   cable_cont *cc = calloc(1, sizeof *cc);
   if (!cc) {
     *status = CABLE_ERR_ALLOC;
     return NULL;
-  }
-  snprintf(cc->err, sizeof cc->err, "%s", rc ? msg : "");
-  if (rc) {
-    *status = rc;
-    return cc; /* the caller reads the message, then frees */
   }
   cc->pb = pb;
   cc->c = *c;
@@ -169,11 +182,10 @@ cable_cont *cable_cont_alloc(const cable_problem *pb, const cable_constants *c, 
   *status = CABLE_SUCCESS;
   return cc;
 fail:
+  /* a constructor returns a usable object or nothing: undo what was built */
   *status = rc ? rc : CABLE_ERR_ALLOC;
-  snprintf(cc->err, sizeof cc->err, "could not set up the solver: %s", cable_status_message(*status));
-  cc->ended = 1;
-  cc->end_status = *status;
-  return cc;
+  cable_cont_free(cc);
+  return NULL;
 }
 
 /* A converged point whose stored nodes leave FUNC's domain is rejected like
@@ -424,7 +436,12 @@ static void pencil_note(cable_cont *cc, const pencil_result *pr)
 
 int cable_cont_step(cable_cont *cc)
 {
+  if (!cc) return CABLE_ERR_NULL;
   if (cc->ended) return cc->end_status;
+  if (!cc->have_start) {
+    cont_set_error(cc, "cable_cont_step before cable_cont_set_start");
+    return CABLE_ERR_STATE;
+  }
   if (!cc->started) return first_point(cc);
   int rc;
   cc->cnt.steps++;
@@ -515,5 +532,5 @@ int cable_cont_step(cable_cont *cc)
   return CABLE_SUCCESS;
 }
 
-const cable_solution *cable_cont_solution(const cable_cont *cc) { return cc->sol; }
-const cable_point *cable_cont_point(const cable_cont *cc) { return &cc->pt; }
+const cable_solution *cable_cont_solution(const cable_cont *cc) { return cc && cc->npt > 0 ? cc->sol : NULL; }
+const cable_point *cable_cont_point(const cable_cont *cc) { return cc && cc->npt > 0 ? &cc->pt : NULL; }

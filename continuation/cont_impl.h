@@ -51,6 +51,7 @@ struct cable_cont {
   double ds;                    /* signed step size for the next step */
   double ds_used;               /* step size that produced the current point */
   double ds_prev;               /* step size that produced the previous point */
+  int have_start;               /* cable_cont_set_start succeeded */
   int started;                  /* the start has been processed */
   int restart;                  /* start came from a stored solution */
   int switch_pending;           /* ISW = -1 from a BP: first step along the kernel */

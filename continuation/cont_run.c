@@ -9,6 +9,7 @@
 
 int cable_cont_set_mesh(cable_cont *cc, const double *mesh)
 {
+  if (!cc || !mesh) return CABLE_ERR_NULL;
   if (cc->ended) return cc->end_status;
   int nt = cc->sys->ntst;
   int ok = mesh[0] == 0.0 && mesh[nt] == 1.0;
@@ -23,7 +24,9 @@ int cable_cont_set_mesh(cable_cont *cc, const double *mesh)
 
 int cable_cont_set_start(cable_cont *cc, const cable_solution *start)
 {
+  if (!cc) return CABLE_ERR_NULL;
   if (cc->ended) return cc->end_status;
+  cc->have_start = 0;
   colloc_system *s = cc->sys;
   int rc;
   memset(cc->xdot, 0, (size_t)cc->n * sizeof *cc->xdot);
@@ -64,6 +67,7 @@ int cable_cont_set_start(cable_cont *cc, const cable_solution *start)
       return CABLE_ERR_NONFINITE;
     }
   cc->started = 0;
+  cc->have_start = 1;
   return CABLE_SUCCESS;
 }
 
@@ -123,6 +127,12 @@ static int stop_reached(const cable_cont *cc, int *seen)
 
 int cable_cont_run(cable_cont *cc, const cable_sink *sink, int ibr, int first_label, int *next_label)
 {
+  if (next_label) *next_label = first_label;
+  if (!cc) return CABLE_ERR_NULL;
+  if (!cc->have_start && !cc->ended) {
+    cont_set_error(cc, "cable_cont_run before cable_cont_set_start");
+    return CABLE_ERR_STATE;
+  }
   int lab = first_label, rc;
   int seen[sizeof cc->c.stop_on / sizeof cc->c.stop_on[0]] = {0};
   while ((rc = cable_cont_step(cc)) == CABLE_SUCCESS) {
@@ -148,6 +158,12 @@ int cable_cont_run(cable_cont *cc, const cable_sink *sink, int ibr, int first_la
 
 void cable_cont_test_functions(const cable_cont *cc, int *det_sign, double *sv1, double *sv2)
 {
+  if (!cc) {
+    if (det_sign) *det_sign = 0;
+    if (sv1) *sv1 = 0;
+    if (sv2) *sv2 = 0;
+    return;
+  }
   if (det_sign) *det_sign = cc->tf.det_sign;
   if (sv1) *sv1 = cc->tf.sv1;
   if (sv2) *sv2 = cc->tf.sv2;

@@ -28,7 +28,9 @@ static double spread(double lo, double hi, double scale)
 
 double braid_first_integral_drift(const cable_solution *sol)
 {
-  if (sol->ndim != BR_NDIM || sol->npar <= BP_EPS13) return -1.0;
+  if (!sol || !sol->u || !sol->par || sol->ntst < 1 || sol->ncol < 1 || sol->ndim != BR_NDIM ||
+      sol->npar <= BP_EPS13)
+    return -1.0;
   braid_material m;
   braid_material_from_par(sol->par, &m);
   double lo[4] = {HUGE_VAL, HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[4] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
@@ -51,6 +53,9 @@ double braid_first_integral_drift(const cable_solution *sol)
 
 int braid_pressure_at(const cable_solution *sol, double t, double *p1, double *p2, double *sigma)
 {
+  if (!sol || !p1 || !p2) return CABLE_ERR_NULL;
+  if (sol->ndim != BR_NDIM || sol->npar <= BP_W02 || curve_interp_check(sol) != 0 || !(t >= 0 && t <= 1))
+    return CABLE_ERR_INPUT;
   double u[BR_NDIM];
   braid_material m;
   braid_material_from_par(sol->par, &m);
@@ -100,6 +105,7 @@ static int record_sign_change(const cable_solution *sol, int which, double ta, d
 
 int braid_pressure_signs(const cable_solution *sol, braid_analysis *out)
 {
+  if (!sol || !out) return CABLE_ERR_NULL;
   if (sol->ndim != BR_NDIM || sol->npar <= BP_W02 || curve_interp_check(sol) != 0) return CABLE_ERR_INPUT;
   braid_material m;
   braid_material_from_par(sol->par, &m);
@@ -129,8 +135,9 @@ int braid_pressure_signs(const cable_solution *sol, braid_analysis *out)
 
 int braid_analysis_compute(const cable_solution *sol, braid_analysis *out)
 {
+  if (!sol || !out) return CABLE_ERR_NULL;
   memset(out, 0, sizeof *out);
-  if (sol->ndim != BR_NDIM || sol->npar <= BP_EPS13) return CABLE_ERR_INPUT;
+  if (sol->ndim != BR_NDIM || sol->npar <= BP_EPS13 || curve_interp_check(sol) != 0) return CABLE_ERR_INPUT;
   int rc = braid_topology_compute(sol, 0, &out->topo);
   if (rc) return rc;
   rc = braid_tube_distance_solution(sol, 0, &out->tube);
@@ -152,11 +159,18 @@ int braid_analysis_compute(const cable_solution *sol, braid_analysis *out)
 
 int braid_axis_same_type(const braid_analysis *a, const braid_analysis *b)
 {
+  if (!a || !b) return 0;
   return strcmp(a->topo.axis.name, b->topo.axis.name) == 0 && a->topo.axis.handedness == b->topo.axis.handedness;
 }
 
 int braid_branch_settled(const braid_analysis *const *a, int n, int *first)
 {
+  if (!a || n <= 0) {
+    if (first) *first = -1;
+    return -1;
+  }
+  int dummy;
+  if (!first) first = &dummy;
   int last = n - 1;
   while (last >= 0 && !a[last]) last--;
   *first = last;

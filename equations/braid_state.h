@@ -44,6 +44,7 @@ enum braid_par {
   BP_WRERR,       /* "Wrerr" error estimate of Wr (and so of Lk) */
   BP_T1END,       /* "T1"    strand torque T1 at s = L (a first integral: = T) */
   BP_T2END,       /* "T2"    strand torque T2 at s = L (a first integral: = -T) */
+  BP_DRIFT,       /* "drift" max relative spread of |F|^2, F.M, h, Hamiltonian over the mesh points */
   BP_NPAR         /* number of slots used */
 };
 

@@ -9,6 +9,9 @@
 set -euo pipefail
 build=${1:?usage: bench.sh BUILD_DIR}
 cd "$(dirname "$0")/.."
+# The test programs are applications of libcable, which leaves the BLAS thread
+# count alone; small blocks run fastest on one thread (as `cable` sets it).
+export OPENBLAS_NUM_THREADS=${OPENBLAS_NUM_THREADS:-1}
 reps=${BENCH_REPEATS:-3}
 out=doc/benchmarks.md
 tmp=$(mktemp "$out.tmpXXXXXX")

@@ -43,11 +43,11 @@ FLAGS=(-std=c11 -D_POSIX_C_SOURCE=200809L -g -O1 -fno-omit-frame-pointer
        -Iinclude -Icontinuation -Iauto_iface -Iequations)
 common=(continuation/cable_error.c continuation/cable_status.c)
 srcs_constants=(auto_iface/constants_parse.c auto_iface/names.c continuation/cable_constants.c
-                auto_iface/aufile_read.c continuation/cable_solution.c)
+                auto_iface/aufile_read.c continuation/cable_solution.c continuation/cable_problem.c)
 srcs_script=(auto_iface/script_builtins.c auto_iface/script_eval.c auto_iface/script_format.c
              auto_iface/script_lex.c auto_iface/script_parse.c auto_iface/script_value.c)
 srcs_sfile=(auto_iface/aufile_read.c auto_iface/names.c continuation/cable_constants.c
-            continuation/cable_solution.c)
+            continuation/cable_solution.c continuation/cable_problem.c)
 # inputs longer than this are cut: real constants files and scripts are a few
 # kB; s-files are larger, and a few solutions of a small NTST cover the reader
 declare -A maxlen=([constants]=4096 [script]=4096 [sfile]=16384)

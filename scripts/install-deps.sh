@@ -15,6 +15,7 @@ probes=(
   "/usr/include/cairo/cairo.h:libcairo2-dev"
   "/usr/bin/gfortran:gfortran"
   "/usr/bin/auto-07p:auto-07p"
+  "/usr/bin/pkg-config:pkgconf"            # make check builds against an installed libcable
 )
 
 arch_dir=$(dpkg-architecture -qDEB_HOST_MULTIARCH 2>/dev/null || echo x86_64-linux-gnu)

@@ -122,7 +122,8 @@ static cable_solution *flat_to_bp1(const scene *sc, const cable_constants *cf, c
     if (cf->par_override[k].index >= 0 && cf->par_override[k].index < BP_NPAR)
       par[cf->par_override[k].index] = cf->par_override[k].value;
   braid_start_params sp;
-  braid_start_params_init(&sp, BRAID_START_TORUS, cf->torus_p, cf->hand, par[BP_DELTA], par[BP_LTOT], par[BP_T]);
+  braid_start_params_init(&sp, BRAID_START_TORUS, (int)cable_constants_key(cf, sc->knot, "TORUS"),
+                          (int)cable_constants_key(cf, sc->knot, "HAND"), par[BP_DELTA], par[BP_LTOT], par[BP_T]);
   if (braid_start_prepare(&sp) != 0) return NULL;
   cable_problem knot = *sc->knot;
   knot.params = &sp;
@@ -197,7 +198,7 @@ static int load_constants(const char *path, const cable_problem *pb, cable_const
 {
   cable_error err;
   memset(&err, 0, sizeof err);
-  int rc = cable_constants_parse_file(path, c, NULL, pb->parnames, pb->npar, &err);
+  int rc = cable_constants_parse_file_for(path, pb, c, NULL, &err);
   if (rc) {
     fprintf(stderr, "bench_workprecision: %s: error %d\n", path, rc);
     return rc;

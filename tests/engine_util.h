@@ -86,7 +86,13 @@ static inline int memrun_run(const cable_problem *pb, const cable_constants *c, 
     st = cable_cont_run(cc, &sink, 1, 1, NULL);
   }
   r->status = st;
-  if (cc) snprintf(r->err, sizeof r->err, "%s", cable_cont_error(cc));
+  if (cc) {
+    snprintf(r->err, sizeof r->err, "%s", cable_cont_error(cc));
+  } else {
+    cable_error e;   /* a refused constructor returns nothing: ask the check why */
+    cable_cont_check(pb, c, &e);
+    snprintf(r->err, sizeof r->err, "%s", e.msg);
+  }
   cable_cont_free(cc);
   return st;
 }

@@ -1,6 +1,9 @@
-/* Test harness: one PASS/FAIL line per check, with the compared values and the
- * tolerance.  NaN and Inf never pass a numeric check.  A test program ends with
- * `return test_summary();`, which exits non-zero when any check failed. */
+/* Test harness: one PASS/FAIL/SKIP line per check, with the compared values
+ * and the tolerance.  NaN and Inf never pass a numeric check.  A check that
+ * cannot be performed in this build or environment (e.g. counting mallocs
+ * under a sanitizer that owns malloc) is reported with test_skip and the
+ * reason, never as a PASS.  A test program ends with `return test_summary();`,
+ * which exits non-zero when any check failed. */
 #ifndef CABLE_TEST_HARNESS_H
 #define CABLE_TEST_HARNESS_H
 
@@ -12,6 +15,7 @@
 typedef struct {
   int passed;
   int failed;
+  int skipped;
 } test_counts;
 
 /* One counter per test program; it lives in the program's own translation unit. */
@@ -71,8 +75,17 @@ static inline int test_true(const char *what, int cond)
   return cond != 0;
 }
 
+/* A check that was not performed: "SKIP what: why".  Neither passes nor fails. */
+static inline void test_skip(const char *what, const char *why)
+{
+  printf("SKIP %s: %s\n", what, why);
+  fflush(stdout);
+  test_counts_state.skipped++;
+}
+
 static inline int test_summary(void)
 {
+  if (test_counts_state.skipped) printf("%d skipped\n", test_counts_state.skipped);
   printf("%d passed, %d failed\n", test_counts_state.passed, test_counts_state.failed);
   return test_counts_state.failed == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -14,7 +14,7 @@
 
 #include "cable/cable_error.h"
 #include "cable/cable_status.h"
-#include "replay_braid.h"
+#include "script_host_cable.h"
 #include "script.h"
 #include "script_host_cable.h"
 #include "test_files.h"
@@ -70,7 +70,6 @@ static inline int scene_replay(const scene_scratch *sc, const char *path, const 
   cable_replay_options o;
   cable_replay_options_init(&o);
   o.dir = sc->dir;
-  o.problems = cable_braid_resolver();
   o.log = f;
   cable_replay *r = cable_replay_alloc(&o);
   int rc = CABLE_ERR_ALLOC;

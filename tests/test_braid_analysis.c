@@ -21,7 +21,7 @@
 
 #include "cable/cable_analysis.h"
 #include "braid_problems.h"
-#include "replay_braid.h"
+#include "script_host_cable.h"
 #include "braid_start.h"
 #include "engine_util.h"
 #include "harness.h"
@@ -261,7 +261,6 @@ static int replay_text(const char *dir, const char *text, char **log, cable_erro
   cable_replay_options o;
   cable_replay_options_init(&o);
   o.dir = dir;
-  o.problems = cable_braid_resolver();
   o.log = f;
   cable_replay *r = cable_replay_alloc(&o);
   int rc = script_run_string("t.auto", text, cable_replay_host(r), err);

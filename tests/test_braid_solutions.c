@@ -28,7 +28,7 @@
 
 #include "cable/cable_aufile.h"
 #include "cable/cable_analysis.h"
-#include "replay_braid.h"
+#include "script_host_cable.h"
 #include "braid_problems.h"
 #include "braid_start.h"
 #include "cable/cable_cont.h"
@@ -200,7 +200,6 @@ static void test_pvls_columns(void)
   cable_replay_options o;
   cable_replay_options_init(&o);
   o.dir = dir;
-  o.problems = cable_braid_resolver();
   FILE *log = fopen("/dev/null", "w");
   o.log = log;
   cable_replay *r = cable_replay_alloc(&o);
@@ -305,7 +304,6 @@ static void test_branch_lk(void)
   cable_replay_options o;
   cable_replay_options_init(&o);
   o.dir = dir;
-  o.problems = cable_braid_resolver();
   FILE *log = fopen("/dev/null", "w");
   o.log = log;
   cable_replay *r = cable_replay_alloc(&o);
@@ -397,7 +395,6 @@ static int replay_in(const char *dir, const char *script, cable_error *err)
   cable_replay_options o;
   cable_replay_options_init(&o);
   o.dir = dir;
-  o.problems = cable_braid_resolver();
   FILE *log = fopen("/dev/null", "w");
   o.log = log;
   cable_replay *r = cable_replay_alloc(&o);

@@ -304,10 +304,51 @@ static void test_names(void)
                 strcmp(cable_type_name(0), "") == 0);
 }
 
+/* Problem-specific keys (ABI 2): the braid problems declare TORUS and HAND;
+ * the parser checks them with file:line:key errors, keeps their values, and
+ * refuses them for a problem that does not declare them. */
+static void test_problem_keys(void)
+{
+  const cable_problem *knot = cable_problem_builtin("braid_knot");
+  cable_constants c;
+  cable_error err;
+  char buf[1200];
+  test_true("braid_knot declares keys", knot && knot->nkeys == 2);
+  int rc = cable_constants_parse_string_for("c.k", "NTST = 50\nTORUS = 7, HAND = 'left'\n", knot, &c, NULL, &err);
+  test_int("TORUS and HAND parse for braid_knot", rc, 0);
+  test_abs("  TORUS", cable_constants_key(&c, knot, "TORUS"), 7, 0);
+  test_abs("  HAND 'left' is -1", cable_constants_key(&c, knot, "HAND"), -1, 0);
+  rc = cable_constants_parse_string_for("c.k", "NTST = 50\n", knot, &c, NULL, &err);
+  test_abs("  HAND unset: the problem's default 1", cable_constants_key(&c, knot, "HAND"), 1, 0);
+  test_abs("  TORUS unset: the default 0", cable_constants_key(&c, knot, "TORUS"), 0, 0);
+  test_true("  a key the problem does not declare: NaN", isnan(cable_constants_key(&c, knot, "NOSUCH")));
+  rc = cable_constants_parse_string_for("c.k", "NTST = 50\n\nTORUS = 2.5\n", knot, &c, NULL, &err);
+  test_int("TORUS = 2.5: CABLE_ERR_INPUT", rc, CABLE_ERR_INPUT);
+  cable_error_format(&err, buf, sizeof buf);
+  test_true("  message names file, line and key", strncmp(buf, "c.k:3: TORUS: must be an integer", 32) == 0);
+  rc = cable_constants_parse_string_for("c.k", "HAND = 0\n", knot, &c, NULL, &err);
+  test_int("HAND = 0 (not one of the words' values): CABLE_ERR_INPUT", rc, CABLE_ERR_INPUT);
+  test_true("  message", strstr(cable_error_format(&err, buf, sizeof buf), "c.k:1: HAND: 0 is not an accepted value") == buf);
+  rc = cable_constants_parse_string_for("c.b", "TORUS = 7\n", cable_problem_builtin("bratu"), &c, NULL, &err);
+  test_int("TORUS for bratu: unknown key", rc, CABLE_ERR_INPUT);
+  test_true("  message", strcmp(cable_error_format(&err, buf, sizeof buf), "c.b:1: TORUS: unknown key") == 0);
+  rc = cable_constants_parse_string("c.n", "TORUS = 7\n", &c, NULL, NULL, 0, &err);
+  test_int("TORUS without a problem: unknown key", rc, CABLE_ERR_INPUT);
+  cable_constants_parse_string_for("c.k", "TORUS = 5\n", knot, &c, NULL, &err);
+  rc = cable_constants_parse_override_for("TORUS=9", knot, &c, NULL, &err);
+  test_int("an override replaces a problem key", rc, 0);
+  test_abs("  TORUS now 9", cable_constants_key(&c, knot, "TORUS"), 9, 0);
+  test_int("  and is kept once", c.npkey, 1);
+  test_true("cable_constants_key_known_for: TORUS for braid_knot, not for bratu",
+            cable_constants_key_known_for(knot, "TORUS") &&
+                !cable_constants_key_known_for(cable_problem_builtin("bratu"), "TORUS"));
+}
+
 int main(void)
 {
   test_every_key();
   test_bad_cases();
   test_names();
+  test_problem_keys();
   return test_summary();
 }

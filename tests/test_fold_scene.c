@@ -22,7 +22,7 @@
 #include <unistd.h>
 
 #include "cable/cable_aufile.h"
-#include "replay_braid.h"
+#include "script_host_cable.h"
 #include "cable/cable_error.h"
 #include "cable/cable_status.h"
 #include "harness.h"
@@ -57,7 +57,6 @@ static int replay(const char *text, char **log, cable_error *err)
   cable_replay_options o;
   cable_replay_options_init(&o);
   o.dir = dir;
-  o.problems = cable_braid_resolver();
   o.log = f;
   cable_replay *r = cable_replay_alloc(&o);
   int rc = r ? script_run_string("t.auto", text, cable_replay_host(r), err) : CABLE_ERR_ALLOC;

@@ -22,7 +22,7 @@ int main(void)
   test_abs("clone keeps last u", c->u[20 * 3 + 2], 7.5, 0);
   test_abs("clone keeps last par", c->par[35], -1.25, 0);
   cable_solution *d = cable_solution_alloc(3, 6, 4, 36, 2);
-  test_int("copy refuses other sizes", cable_solution_copy(d, s), -1);
+  test_int("copy refuses other sizes (CABLE_ERR_SIZE, not an allocation error)", cable_solution_copy(d, s), CABLE_ERR_SIZE);
   cable_solution_free(d);
   cable_solution_free(c);
   cable_solution_free(s);

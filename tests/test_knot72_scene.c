@@ -24,7 +24,7 @@
 #include <unistd.h>
 
 #include "axis_passages.h"
-#include "replay_braid.h"
+#include "script_host_cable.h"
 #include "cable/cable_error.h"
 #include "cable/cable_status.h"
 #include "harness.h"
@@ -72,7 +72,6 @@ static int replay(const scratch *sc, const char *text, char **log, cable_error *
   cable_replay_options o;
   cable_replay_options_init(&o);
   o.dir = sc->dir;
-  o.problems = cable_braid_resolver();
   o.log = f;
   cable_replay *r = cable_replay_alloc(&o);
   int rc = r ? script_run_string("t.auto", text, cable_replay_host(r), err) : CABLE_ERR_ALLOC;

@@ -295,7 +295,7 @@ static void test_broken(void)
                 "cable_problem_entry: the plug-in does not export it (define `const cable_problem "
                 "*cable_problem_entry(void)` with external linkage)");
   expect_reject("broken_abi", CABLE_ERR_PLUGIN,
-                "abi_version: built for ABI 99, this cable expects 1 (rebuild the plug-in against "
+                "abi_version: built for ABI 99, this cable expects 2 (rebuild the plug-in against "
                 "this cable's cable_problem.h)");
   char tail[400];
   snprintf(tail, sizeof tail,
@@ -309,6 +309,9 @@ static void test_broken(void)
   expect_reject("broken_null", CABLE_ERR_PLUGIN, "cable_problem_entry: returned NULL (no problem)");
   expect_reject("broken_names", CABLE_ERR_PLUGIN, "parnames[2]: the name 'T' is also parnames[0]");
   expect_reject("broken_npar", CABLE_ERR_PLUGIN, "npar: must be between 0 and NPAR = 36, got 40");
+  expect_reject("broken_keys", CABLE_ERR_PLUGIN, "keys[0]: 'NTST' is one of cable's own constants keys");
+  expect_reject("broken_prepare", CABLE_ERR_PLUGIN,
+                "release: is NULL but prepare is set (an instance must be given back)");
   expect_reject("no_such_plugin", CABLE_ERR_IO, "cannot open the plug-in: No such file or directory");
 
   /* not a shared object: the dynamic loader's reason follows */

@@ -16,7 +16,7 @@
 #include "cable/cable_aufile.h"
 #include "cable/cable_error.h"
 #include "cable/cable_status.h"
-#include "replay_braid.h"
+#include "script_host_cable.h"
 #include "harness.h"
 #include "test_files.h"
 #include "script.h"
@@ -1340,7 +1340,7 @@ static void test_overlap_free(void)
                   "iv = overlap_free(r)\n"
                   "print('ov', len(iv), iv[0][0], iv[0][1], r('EP1')['T'], r('EP2')['T'], analyze(r('EP2'))['dmin'])\n"
                   "x = overlap_free(r('EP2'))\n",
-                  cable_braid_resolver(), &log, &err);
+                  NULL, &log, &err);
   if (rc != CABLE_ERR_INPUT) printf("  error: %s\n", cable_error_format(&err, buf, sizeof buf));
   test_int("overlap_free(solution) is refused", rc, CABLE_ERR_INPUT);
   test_true("  with a message naming the function", strstr(err.msg, "overlap_free(result)") != NULL);
@@ -1375,13 +1375,25 @@ static void test_engine_errors(void)
                       "nosuch.f or nosuch.c and no nosuch.so plug-in)");
   snprintf(text, sizeof text, "r = run(e='%s/broken_abi.so', c='bratu')\n", plugin_dir);
   snprintf(want, sizeof want,
-           "t.auto:1: run: %s/broken_abi.so: abi_version: built for ABI 99, this cable expects 1 (rebuild the "
+           "t.auto:1: run: %s/broken_abi.so: abi_version: built for ABI 99, this cable expects 2 (rebuild the "
            "plug-in against this cable's cable_problem.h)",
            plugin_dir);
   expect_replay_error("rejected plug-in", text, CABLE_ERR_PLUGIN, want);
-  expect_replay_error("braid from STPNT", "r = run(e='braid_knot')\n", CABLE_ERR_UNSUPPORTED,
-                      "t.auto:1: run: e: 'braid_knot' from STPNT needs prepared starting parameters, which this "
-                      "host does not have: restart from a stored solution (run(sol) or IRS with s=)");
+  /* every host runs the braid problems from STPNT: they prepare themselves
+     from their keys and PAR={...} */
+  expect_replay_error("braid from STPNT without Delta", "r = run(e='braid_knot')\n", CABLE_ERR_INPUT,
+                      "t.auto:1: run: PAR: a braid start needs the strand distance: PAR={'Delta': ...}");
+  expect_replay_error("braid_link_sym from STPNT", "r = run(e='braid_link_sym')\n", CABLE_ERR_UNSUPPORTED,
+                      "t.auto:1: run: e: 'braid_link_sym' has no start from STPNT: restart from a stored solution "
+                      "(run(sol) or IRS with s=)");
+  expect_replay_error("a problem key out of range", "r = run(e='braid_knot', TORUS=-3)\n", CABLE_ERR_INPUT,
+                      "t.auto:1: run: TORUS: must be an integer in 0..1001, got -3 (the start from STPNT: the (p,2) "
+                      "torus knot (odd p) or link (even p >= 2); 0: the two rings) (in 'TORUS=-3')");
+  expect_replay_error("a problem key's words", "r = run(e='braid_knot', HAND='up')\n", CABLE_ERR_INPUT,
+                      "t.auto:1: run: HAND: unknown value string 'up' (handedness of the start: 1 or 'right', -1 or "
+                      "'left') (in 'HAND='up'')");
+  expect_replay_error("another problem's key", "r = run(e='bratu', TORUS=7)\n", CABLE_ERR_INPUT,
+                      "t.auto:1: run: TORUS: unknown key (in 'TORUS=7')");
   expect_replay_error("missing label", "r = run(c='bratu')\nbp = r('BP1')\n", CABLE_ERR_NOTFOUND,
                       "t.auto:2: r: BP1: no such label in the result");
   expect_replay_error("IRS without solutions", "r = run(c='bratu', IRS=3)\n", CABLE_ERR_INPUT,

@@ -8,11 +8,14 @@
 #include "cable/cable_api.h"
 #include "cable/cable_error.h"
 #include "cable/cable_names.h"
+#include "cable/cable_problem.h"
 
 #define CABLE_MAX_ICP 64
 #define CABLE_MAX_UZR 128
 #define CABLE_MAX_THL 64
 #define CABLE_NAME_MAX 256
+#define CABLE_MAX_PKEYS 16   /* problem-specific keys set in one constants file */
+#define CABLE_PKEY_LEN 32
 /* NCOL: collocation points per mesh interval (AUTO allows the same range). */
 #define CABLE_NCOL_MIN 2
 #define CABLE_NCOL_MAX 7
@@ -36,6 +39,12 @@ typedef struct {
   int index;        /* 0-based parameter index */
   double value;
 } cable_parval;
+
+/* The value of a problem-specific key (cable_problem_key) as set. */
+typedef struct {
+  char name[CABLE_PKEY_LEN];
+  double value;
+} cable_keyval;
 
 /* Where a key was set: a constants file and line, or an override (file holds
  * the statement, line 0).  file "" and line 0: not set. */
@@ -82,9 +91,8 @@ typedef struct cable_constants {
   int bpsym;                              /* BPDIR: kernel vector index for 2-d kernels */
   double bpangle;                         /* BPANGLE: direction in a 2-d kernel, degrees from
                                              the canonical e1 towards e2 (NAN: use BPDIR) */
-  int torus_p;                            /* TORUS: braid start, (p,2) torus knot (odd p) or
-                                             link (even p); 0: the two-ring start */
-  int hand;                               /* HAND: +1 right-handed, -1 left-handed */
+  /* problem-specific keys (the problem's cable_problem_key list), as set */
+  cable_keyval pkey[CABLE_MAX_PKEYS]; int npkey;
   /* names */
   char e[CABLE_NAME_MAX], s[CABLE_NAME_MAX], sv[CABLE_NAME_MAX], dat[CABLE_NAME_MAX];
   int stop_on[8]; int nstop;              /* STOP=['BP1'...] parsed by type code and count */
@@ -97,10 +105,14 @@ typedef struct cable_constants {
   char ignored[256];
 } cable_constants;
 
-/* AUTO-07p defaults. */
+/* AUTO-07p defaults (no problem key set). */
 CABLE_API void cable_constants_init(cable_constants *c);
 /* The thread count a run uses: NTHREADS, or its default when 0. */
 CABLE_API int cable_threads(const cable_constants *c);
+
+/* A problem-specific key's value: as set in c, else the default pb declares
+ * for it; NAN when pb declares no such key (or an argument is NULL). */
+CABLE_API double cable_constants_key(const cable_constants *c, const cable_problem *pb, const char *name);
 
 /* ---------------------------------------------------------------- constants files
  * AUTO-07p constants files (c.NAME) and KEY=VALUE overrides.
@@ -136,12 +148,24 @@ CABLE_API int cable_constants_parse_string(const char *name, const char *text, c
                                  cable_names *names, const char *const *parnames, int npar,
                                  cable_error *err);
 
+/* The same for a given problem (may be NULL): its parameter names resolve
+ * parameter names, and the keys it declares (cable_problem_key) are
+ * accepted and checked (type, range, words) with file:line:key errors. */
+CABLE_API int cable_constants_parse_file_for(const char *path, const cable_problem *pb, cable_constants *c,
+                                             cable_names *names, cable_error *err);
+CABLE_API int cable_constants_parse_string_for(const char *name, const char *text, const cable_problem *pb,
+                                               cable_constants *c, cable_names *names, cable_error *err);
+
 /* Merge `KEY=VALUE` (e.g. from `cable run DS=-0.01` or a script keyword) into
  * an already filled *c: the key's old value is replaced (UZR replaces the user
  * zeros, UZSTOP the stopping ones); DS='-' reverses the current DS.  Several
  * statements separated by commas are accepted; a key may appear once. */
 CABLE_API int cable_constants_parse_override(const char *keyvalue, cable_constants *c, cable_names *names,
                                    const char *const *parnames, int npar, cable_error *err);
+
+/* The same for a given problem (may be NULL), with its keys. */
+CABLE_API int cable_constants_parse_override_for(const char *keyvalue, const cable_problem *pb, cable_constants *c,
+                                                 cable_names *names, cable_error *err);
 
 /* NDIM, NBC and NINT left at 0 ("take them from the problem") get the
  * problem's values; the run driver calls this before the engine and the
@@ -150,5 +174,7 @@ CABLE_API void cable_constants_take_problem_dims(cable_constants *c, int ndim, i
 
 /* 1 when `key` is a key cable accepts (case-sensitive, as in AUTO). */
 CABLE_API int cable_constants_key_known(const char *key);
+/* 1 when `key` is one of cable's keys or a key pb declares (pb may be NULL). */
+CABLE_API int cable_constants_key_known_for(const cable_problem *pb, const char *key);
 
 #endif

@@ -13,6 +13,7 @@
 #include "cable/cable_api.h"
 
 #include "cable/cable_constants.h"
+#include "cable/cable_error.h"
 #include "cable/cable_output.h"
 #include "cable/cable_problem.h"
 #include "cable/cable_solution.h"
@@ -20,8 +21,16 @@
 
 typedef struct cable_cont cable_cont;
 
-/* Check the problem against the constants and allocate all workspaces.
- * On failure returns NULL and sets *status (message via cable_cont_error). */
+/* Check the problem against the constants (dimensions, callbacks, ICP,
+ * NTST, NCOL, step sizes, tolerances) without allocating anything.  0, or a
+ * status (CABLE_ERR_NULL, CABLE_ERR_INPUT, CABLE_ERR_UNSUPPORTED) with the
+ * reason in err (may be NULL). */
+CABLE_API int cable_cont_check(const cable_problem *pb, const cable_constants *c, cable_error *err);
+
+/* Check (as cable_cont_check) and allocate every workspace.  Returns a
+ * usable handle, or NULL with *status (status may be NULL) set and nothing
+ * left allocated; cable_cont_check gives the message.  The library changes
+ * no process-wide setting (see cable_blas_single_thread). */
 CABLE_API cable_cont *cable_cont_alloc(const cable_problem *pb, const cable_constants *c, int *status);
 CABLE_API void cable_cont_free(cable_cont *cc);   /* NULL is a no-op */
 
@@ -40,7 +49,8 @@ CABLE_API int cable_cont_set_mesh(cable_cont *cc, const double *mesh);
  * (the last good point stays available). */
 CABLE_API int cable_cont_step(cable_cont *cc);
 
-/* The current (last accepted) point and solution; owned by cc. */
+/* The current (last accepted) point and solution; owned by cc.  NULL
+ * before the first point (and for a NULL handle). */
 CABLE_API const cable_point *cable_cont_point(const cable_cont *cc);
 CABLE_API const cable_solution *cable_cont_solution(const cable_cont *cc);
 
@@ -54,7 +64,18 @@ CABLE_API int cable_cont_run(cable_cont *cc, const cable_sink *sink, int ibr, in
  * matrix and its smallest singular values (0 when not computed). */
 CABLE_API void cable_cont_test_functions(const cable_cont *cc, int *det_sign, double *sv1, double *sv2);
 
+/* Every entry point checks its handle: NULL gives CABLE_ERR_NULL, step and
+ * run before a successful set_start give CABLE_ERR_STATE. */
+
 /* Human-readable account of the last error (never NULL). */
 CABLE_API const char *cable_cont_error(const cable_cont *cc);
+
+/* For applications: ask a threaded BLAS (OpenBLAS) for one thread.  The
+ * structured solver works on blocks of a few dozen rows, where BLAS threads
+ * only add hand-offs (measured: 42% of a braid run's time in sched_yield).
+ * This is a process-wide setting, so the library never calls it itself; the
+ * `cable` program does at start.  CABLE_BLAS_THREADS=n asks for n threads
+ * instead.  Nothing happens when the BLAS has no such setter. */
+CABLE_API void cable_blas_single_thread(void);
 
 #endif

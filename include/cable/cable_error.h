@@ -20,7 +20,8 @@ CABLE_API void cable_error_clear(cable_error *e);
 /* Fill e (when not NULL) and return status. */
 CABLE_API int cable_error_set(cable_error *e, int status, const char *file, int line, const char *key,
                     const char *fmt, ...) __attribute__((format(printf, 6, 7)));
-/* "file:line: key: msg" (parts omitted when empty) into buf. */
+/* "file:line: key: msg" (parts omitted when empty) into buf; returns buf
+ * ("" for a NULL error), or "" when buf is NULL or len is 0. */
 CABLE_API const char *cable_error_format(const cable_error *e, char *buf, size_t len);
 
 #endif

@@ -26,11 +26,14 @@
 
 #include <stddef.h>
 
-#define CABLE_PROBLEM_ABI 1        /* bump when the struct layout changes */
+#define CABLE_PROBLEM_ABI 2        /* bump when the struct layout changes (2: keys, prepare, release) */
 #define CABLE_NPAR_DEFAULT 36      /* AUTO's default NPAR */
 #define CABLE_PROBLEM_ENTRY "cable_problem_entry"
 
 struct cable_solution;
+struct cable_constants;
+struct cable_error;
+struct cable_problem;
 
 typedef int cable_func_fn(int ndim, const double *u, const int *icp, const double *par,
                           int ijac, double *f, double *dfdu, double *dfdp, void *params);
@@ -48,6 +51,41 @@ typedef int cable_stpnt_fn(int ndim, double t, double *u, double *par, void *par
 /* Derived quantities of a converged solution, written into par[] slots that the
  * constants file may list in ICP after the free parameters (AUTO's PVLS). */
 typedef int cable_pvls_fn(const struct cable_solution *sol, double *par, void *params);
+
+/* Problem-specific constants keys (e.g. the braid's TORUS and HAND).  The
+ * constants parser accepts a key a problem declares, checks its type and
+ * range with the same file:line:key errors as cable's own keys, and keeps
+ * the value in cable_constants (cable_constants_key reads it). */
+enum cable_key_type {
+  CABLE_KEY_INT = 1,    /* an integer in [min, max] */
+  CABLE_KEY_REAL = 2    /* a finite real in [min, max] */
+};
+
+/* A value that may be given by name (HAND = 'left'). */
+typedef struct cable_key_word {
+  const char *word;             /* compared without regard to case; NULL ends a list */
+  double value;
+} cable_key_word;
+
+typedef struct cable_problem_key {
+  const char *name;             /* as written in constants files; not one of cable's keys */
+  int type;                     /* enum cable_key_type */
+  double min, max;              /* accepted range, inclusive */
+  double def;                   /* the value when the constants do not set the key */
+  const cable_key_word *words;  /* NULL, or the accepted values by name ({NULL, 0} ends the
+                                   list); an INT key with words accepts only their values */
+  const char *help;             /* one line: what the key means (shown in errors) */
+} cable_problem_key;
+
+/* prepare (optional): a runnable instance of the problem for a run with
+ * constants c (every override applied); from_stpnt is 1 when the run starts
+ * from STPNT, 0 for a restart from a stored solution.  Sets *instance (pb
+ * itself when nothing needs preparing) and returns 0, or returns a negative
+ * status with err naming the key at fault.  Whatever prepare builds belongs
+ * to the instance until release(pb, instance). */
+typedef int cable_prepare_fn(const struct cable_problem *pb, const struct cable_constants *c, int from_stpnt,
+                             const struct cable_problem **instance, struct cable_error *err);
+typedef void cable_release_fn(const struct cable_problem *pb, const struct cable_problem *instance);
 
 typedef struct cable_problem {
   int abi_version;              /* CABLE_PROBLEM_ABI */
@@ -69,6 +107,11 @@ typedef struct cable_problem {
   int bcnd_has_jac;
   int icnd_has_jac;
   void *params;                 /* passed to every callback */
+  /* ABI 2 */
+  const cable_problem_key *keys;  /* nkeys problem-specific constants keys, or NULL */
+  int nkeys;
+  cable_prepare_fn *prepare;    /* optional (NULL: the problem runs as it is) */
+  cable_release_fn *release;    /* required with prepare */
 } cable_problem;
 
 /* A plug-in exports `const cable_problem *cable_problem_entry(void);`. */
@@ -81,5 +124,15 @@ typedef const cable_problem *cable_problem_entry_fn(void);
 CABLE_API const cable_problem *cable_problem_builtin(const char *name);
 /* The i-th built-in problem's name (0-based), NULL past the last. */
 CABLE_API const char *cable_problem_builtin_name(int i);
+
+/* What a front end calls before a run: pb's prepare, or *instance = pb when
+ * it has none.  0, or a negative status with err (CABLE_ERR_NULL for a NULL
+ * argument).  *instance is NULL after a failure. */
+CABLE_API int cable_problem_prepare(const cable_problem *pb, const struct cable_constants *c, int from_stpnt,
+                                    const cable_problem **instance, struct cable_error *err);
+/* Gives back an instance from cable_problem_prepare (NULL is a no-op). */
+CABLE_API void cable_problem_release(const cable_problem *pb, const cable_problem *instance);
+/* The problem's key called name, or NULL. */
+CABLE_API const cable_problem_key *cable_problem_key_find(const cable_problem *pb, const char *name);
 
 #endif

@@ -46,19 +46,25 @@ typedef struct cable_solution {
                       unknown (the s-file does not store it) */
 } cable_solution;
 
-/* Every field zeroed except the sizes; arrays allocated; NULL on failure. */
+/* Every field zeroed except the sizes; arrays allocated.  NULL when a size
+ * is out of range (ndim, ntst, ncol, npar < 1 or nfpr < 0) or memory ran
+ * out; nothing is left allocated then. */
 CABLE_API cable_solution *cable_solution_alloc(int ndim, int ntst, int ncol, int npar, int nfpr);
 CABLE_API void cable_solution_free(cable_solution *s);            /* NULL is a no-op */
-CABLE_API int cable_solution_copy(cable_solution *dst, const cable_solution *src); /* same sizes */
+/* Copies the values of src into dst, which must have the same sizes.
+ * CABLE_SUCCESS, CABLE_ERR_NULL (a NULL solution or array) or
+ * CABLE_ERR_SIZE (the sizes differ; dst is unchanged). */
+CABLE_API int cable_solution_copy(cable_solution *dst, const cable_solution *src);
 /* AUTO's principal solution measure for IPLT (doc/constants.md): 0 the
  * L2-NORM of the whole solution (passed in as l2); i in 1..NDIM the maximum
  * of U(i); -i its minimum; NDIM+i the integral of U(i); 2 NDIM+i the L2-norm
  * of U(i), over the stored points with the collocation node quadrature.  An
  * IPLT outside -NDIM..3 NDIM gives l2. */
 CABLE_API double cable_solution_measure(const cable_solution *s, int iplt, double l2);
+/* A new solution equal to src; NULL for NULL or when memory ran out. */
 CABLE_API cable_solution *cable_solution_clone(const cable_solution *src);
 
-/* Number of stored points, ntst*ncol + 1. */
-static inline int cable_solution_npts(const cable_solution *s) { return s->ntst * s->ncol + 1; }
+/* Number of stored points, ntst*ncol + 1 (0 for NULL). */
+static inline int cable_solution_npts(const cable_solution *s) { return s ? s->ntst * s->ncol + 1 : 0; }
 
 #endif

@@ -25,7 +25,11 @@
   X(CABLE_ERR_NOTFOUND,   -12, "not found") \
   X(CABLE_ERR_UNSUPPORTED,-13, "not supported by cable") \
   X(CABLE_ERR_NONFINITE,  -14, "a NaN or Inf appeared") \
-  X(CABLE_ERR_SWITCH,     -15, "branch switching failed")
+  X(CABLE_ERR_SWITCH,     -15, "branch switching failed") \
+  X(CABLE_ERR_NULL,       -16, "a required handle or argument is NULL") \
+  X(CABLE_ERR_STATE,      -17, "the handle is not in a state for this call (wrong order of calls)") \
+  X(CABLE_ERR_SIZE,       -18, "sizes do not match") \
+  X(CABLE_ERR_RANGE,      -19, "an argument is out of its range")
 
 enum cable_status {
 #define CABLE_STATUS_ENUM(name, value, msg) name = value,

@@ -12,7 +12,7 @@
 const cable_problem *cable_problem_entry(void);
 
 /* layout of the braid problems (equations/braid_state.h, bc/braid_bc.h) */
-enum { NDIM = 21, NBC = 21, NPAR = 29, U_T2 = 12, PAR_T = 0, ROW_T20 = 10 };
+enum { NDIM = 21, NBC = 21, NPAR = 30, U_T2 = 12, PAR_T = 0, ROW_T20 = 10 };
 
 static const cable_problem *base(void) { return cable_problem_builtin("braid_link"); }
 
@@ -46,7 +46,7 @@ static int t2plus_pvls(const struct cable_solution *sol, double *par, void *para
 static const char *const t2plus_parnames[NPAR] = {
   "T", "L", "L2", "Ltot", "Delta", "Phi", "w2fix", "B1", "B2", "C1", "C2", "w01", "w02",
   "eps21", "eps13", "F", "FM", "h", "qnorm", "Ham", "pmin", "dmin", "Lk", "Tw", "Wr", "err",
-  "Wrerr", "T1", "T2"};
+  "Wrerr", "T1", "T2", "drift"};
 
 static const cable_problem t2plus_problem = {
   .abi_version = CABLE_PROBLEM_ABI,

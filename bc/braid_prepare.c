@@ -1,4 +1,7 @@
-#include "braid_resolver.h"
+/* The braid problems prepare themselves: the start from STPNT is built from
+ * the problem's own constants keys (TORUS, HAND) and PAR={...}
+ * (include/cable/cable_problem.h, prepare/release). */
+#include "braid_prepare.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -22,12 +25,30 @@ static int override(const cable_constants *c, int index, double *value)
   return 0;
 }
 
-int braid_problem_prepare(const char *name, const cable_constants *c, int from_stpnt, const cable_problem **pb,
-                          cable_error *err)
+static const cable_key_word hand_words[] = {{"right", 1}, {"left", -1}, {NULL, 0}};
+
+const cable_problem_key braid_keys[BRAID_NKEYS] = {
+  {"TORUS", CABLE_KEY_INT, 0, 1001, 0, NULL,
+   "the start from STPNT: the (p,2) torus knot (odd p) or link (even p >= 2); 0: the two rings"},
+  {"HAND", CABLE_KEY_INT, -1, 1, 1, hand_words, "handedness of the start: 1 or 'right', -1 or 'left'"},
+};
+
+int braid_prepare(const cable_problem *tmpl, const cable_constants *c, int from_stpnt, const cable_problem **pb,
+                  cable_error *err)
 {
+  if (!tmpl || !c || !pb) return cable_error_set(err, CABLE_ERR_NULL, NULL, 0, NULL, "braid_prepare: NULL argument");
+  const char *name = tmpl->name;
+  *pb = NULL;
+  if (!from_stpnt) {
+    *pb = tmpl;   /* restarts read the stored solution: the template serves (params NULL) */
+    return CABLE_SUCCESS;
+  }
   int knot = strcmp(name, "braid_knot") == 0 || strcmp(name, "braid_knot_sym") == 0;
   int link = strcmp(name, "braid_link") == 0;
-  if ((!knot && !link) || !c || !from_stpnt) return CABLE_ERR_NOTFOUND;
+  if (!knot && !link)
+    return cable_error_set(err, CABLE_ERR_UNSUPPORTED, NULL, 0, "e",
+                           "'%s' has no start from STPNT: restart from a stored solution (run(sol) or IRS with s=)",
+                           name);
   double delta = 0, length = 0, torque = 0;
   if (!override(c, BP_DELTA, &delta))
     return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, "PAR",
@@ -37,7 +58,8 @@ int braid_problem_prepare(const char *name, const cable_constants *c, int from_s
     return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, "PAR", "a braid %s start needs PAR={'%s': ...}",
                            knot ? "knot" : "link", knot ? "Ltot" : "L");
   override(c, BP_T, &torque);
-  int p = c->torus_p;
+  int p = (int)cable_constants_key(c, tmpl, "TORUS");
+  int hand = (int)cable_constants_key(c, tmpl, "HAND");
   if (knot && p % 2 == 0)
     return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, "TORUS",
                            "%s starts from a (p,2) torus knot: TORUS must be odd, got %d", name, p);
@@ -51,7 +73,7 @@ int braid_problem_prepare(const char *name, const cable_constants *c, int from_s
                            "braid_link starts from a (p,2) torus link: TORUS must be even, got %d", p);
   braid_instance *bi = calloc(1, sizeof *bi);
   if (!bi) return cable_error_set(err, CABLE_ERR_ALLOC, NULL, 0, "", "out of memory");
-  braid_start_params_init(&bi->sp, p > 0 ? BRAID_START_TORUS : BRAID_START_RINGS, p, c->hand, delta, length,
+  braid_start_params_init(&bi->sp, p > 0 ? BRAID_START_TORUS : BRAID_START_RINGS, p, hand, delta, length,
                           torque);
   override(c, BP_B1, &bi->sp.b1);
   override(c, BP_B2, &bi->sp.b2);
@@ -63,7 +85,7 @@ int braid_problem_prepare(const char *name, const cable_constants *c, int from_s
   if (rc != 0) {
     free(bi);
     return cable_error_set(err, rc, NULL, 0, "TORUS", "cannot build the starting braid (TORUS=%d, HAND=%d, Delta=%g): %s",
-                           p, c->hand, delta, cable_status_message(rc));
+                           p, hand, delta, cable_status_message(rc));
   }
   rc = braid_problem_instance(name, &bi->sp, &bi->pb);
   if (rc != 0) {
@@ -74,7 +96,7 @@ int braid_problem_prepare(const char *name, const cable_constants *c, int from_s
   return CABLE_SUCCESS;
 }
 
-void braid_problem_release(const cable_problem *pb)
+void braid_release(const cable_problem *tmpl, const cable_problem *pb)
 {
-  free((void *)pb); /* pb is the first member of the braid_instance we allocated */
+  if (pb && pb != tmpl) free((void *)pb); /* pb is the first member of the braid_instance we allocated */
 }
