@@ -355,33 +355,19 @@ static double dip_fn(double s, void *p)
   return d->t.sv1;
 }
 
-/* The minimiser's objective: sigma_1^2, which has the same minimiser as
- * sigma_1.  Where an analytic singular value sigma(s) of the extended matrix
- * crosses zero (a branch point), sigma_1 = |sigma(s)| has a kink: Brent's
- * parabolic steps do not fit it and the search falls back to golden
- * sections (about 17 evaluations per dip on the flat (7,2) branch).
- * sigma_1^2 = sigma(s)^2 is smooth there, nearly a parabola, and the
- * parabolic steps converge superlinearly (doc/benchmarks.md, "Branch-point
- * location by counts"). */
-static double dip_fn_sq(double s, void *p)
-{
-  double f = dip_fn(s, p);
-  return f * f;
-}
-
-/* Brent minimisation of sigma_1 (as sigma_1^2) on [lo, hi] (arclength from
- * x) from the interior point mid where sigma_1 = fm is below the values fa,
- * fb at the ends; when the minimum nearly vanishes the located point becomes
- * the trial point and the old trial point is queued behind it. */
+/* Brent minimisation of sigma_1 on [lo, hi] (arclength from x) from the
+ * interior point mid where sigma_1 = fm is below the values fa, fb at the
+ * ends; when the minimum nearly vanishes the located point becomes the trial
+ * point and the old trial point is queued behind it. */
 static int dip_minimise(cable_cont *cc, double lo, double mid, double fm, double hi, double a, double b)
 {
   dip_ctx ctx = {cc, cc->tf, fmax(a, b)};
-  gsl_function F = {dip_fn_sq, &ctx};
+  gsl_function F = {dip_fn, &ctx};
   cc->cnt.dips++;
   gsl_min_fminimizer *mz = gsl_min_fminimizer_alloc(gsl_min_fminimizer_brent);
   if (!mz) return CABLE_ERR_ALLOC;
   gsl_error_handler_t *old = gsl_set_error_handler_off();
-  int st = gsl_min_fminimizer_set_with_values(mz, &F, mid, fm * fm, lo, a * a, hi, b * b);
+  int st = gsl_min_fminimizer_set_with_values(mz, &F, mid, fm, lo, a, hi, b);
   for (int it = 0; st == GSL_SUCCESS && it < CONT_DIP_MAXIT; it++) {
     if (gsl_min_fminimizer_iterate(mz) != GSL_SUCCESS) break;
     double l = gsl_min_fminimizer_x_lower(mz), u = gsl_min_fminimizer_x_upper(mz);
