@@ -227,7 +227,7 @@ int colloc_system_residual(colloc_system *s, const double *x, double *F)
     row += (size_t)s->nint;
   }
   if (s->closing == COLLOC_CLOSE_FIXPAR) {
-    F[row] = s->par[s->icp[0]] - s->fixval;
+    F[row] = s->par[s->icp[s->fixpar]] - s->fixval;
   } else {
     /* <x - x0, xdot0> - ds, without forming x - x0 in a work vector */
     F[row] = colloc_system_inner(s, x, s->xdot0) - colloc_system_inner(s, s->x0, s->xdot0) - s->ds;
@@ -402,7 +402,7 @@ int colloc_system_jacobian(colloc_system *s, const double *x, colloc_jac *J)
   /* closing row: the last dense row */
   int r = nde - 1;
   if (s->closing == COLLOC_CLOSE_FIXPAR) {
-    J->dense_par[r + nde * 0] = 1.0;
+    J->dense_par[r + nde * s->fixpar] = 1.0;
   } else {
     for (int j = 0; j < s->ntst; j++) {
       double h = s->mesh[j + 1] - s->mesh[j];

@@ -16,7 +16,7 @@
 #include "colloc_jac.h"
 
 typedef enum {
-  COLLOC_CLOSE_FIXPAR = 0,   /* par[icp[0]] = fixval */
+  COLLOC_CLOSE_FIXPAR = 0,   /* par[icp[fixpar]] = fixval */
   COLLOC_CLOSE_ARCLENGTH = 1 /* <x - x0, xdot0>_theta = ds */
 } colloc_closing;
 
@@ -33,6 +33,7 @@ typedef struct colloc_system {
   double *par;                /* [npar] all parameters; free ones overwritten from x */
   /* closing equation */
   colloc_closing closing;
+  int fixpar;                 /* which free parameter FIXPAR fixes (0: the principal one) */
   double fixval;
   double ds;
   double *x0, *xdot0;         /* [n] previous point and its tangent */

@@ -237,8 +237,34 @@ static double principal(const cable_cont *cc, const double *x)
   return x[cc->n - cc->nfpr];
 }
 
-/* The first point: converge a STPNT start at fixed principal parameter, or
- * take a stored solution as it is; then its tangent and test functions. */
+/* The free parameter a STPNT start is converged and its direction computed
+ * at: the principal one, except on a fold curve (ISW = 2), where it is the
+ * second parameter q.  At a simple LP the fold system at fixed q is regular
+ * (<psi, F_p1> != 0 because the LP is a regular point of its branch), at
+ * fixed p1 only where the fold curve does not turn in p1: it does at a
+ * symmetric problem's fold (AUTO's demo int, q = PAR(2) in u(0) - u(1) = q,
+ * whose fold curve is even in q). doc/fold-continuation.md. */
+static int start_fixpar(const cable_cont *cc)
+{
+  return cc->c.isw == 2 && cc->nfpr >= 2 ? 1 : 0;
+}
+
+/* A start direction computed at fixed q is oriented as the one at fixed p1
+ * was (p1 increasing) wherever p1 moves along it; where it does not (to
+ * round-off), q increases. */
+#define START_P1_MOVES 1e-6
+static void orient_start_direction(cable_cont *cc, int fix)
+{
+  if (fix == 0) return;
+  double p1 = cc->xdot[cc->n - cc->nfpr], q = cc->xdot[cc->n - cc->nfpr + fix];
+  double lead = fabs(p1) > START_P1_MOVES ? p1 : q;
+  if (lead < 0)
+    for (int i = 0; i < cc->n; i++) cc->xdot[i] = -cc->xdot[i];
+}
+
+/* The first point: converge a STPNT start at fixed principal parameter (q on
+ * a fold curve), or take a stored solution as it is; then its tangent and
+ * test functions. */
 static void check_limits(cable_cont *cc);
 
 static int first_point(cable_cont *cc)
@@ -246,10 +272,13 @@ static int first_point(cable_cont *cc)
   colloc_system *s = cc->sys;
   int rc;
   cc->started = 1;
+  int fix = cc->restart ? 0 : start_fixpar(cc);
   if (!cc->restart) {
     s->closing = COLLOC_CLOSE_FIXPAR;
-    s->fixval = principal(cc, cc->x);
+    s->fixpar = fix;
+    s->fixval = cc->x[cc->n - cc->nfpr + fix];
     rc = colloc_newton_solve(cc->nw, cc->x);
+    s->fixpar = 0;
     cc->newton_iters = colloc_newton_iterations(cc->nw);
     cc->rejected[0] = '\0';
     if (rc == CABLE_SUCCESS) rc = check_nodes(cc, cc->x);
@@ -282,7 +311,9 @@ static int first_point(cable_cont *cc)
   } else if (!have_dir) {
     /* tangent at fixed principal parameter: the closing row is e_p0, rhs e_last */
     s->closing = COLLOC_CLOSE_FIXPAR;
+    s->fixpar = fix;
     rc = cont_factor_at(cc, cc->x, NULL, NULL);
+    s->fixpar = 0;
     if (rc != CABLE_SUCCESS) {
       cont_set_error(cc, "cannot compute a direction at the starting point: %s", cable_status_message(rc));
       cc->ended = 1;
@@ -292,6 +323,7 @@ static int first_point(cable_cont *cc)
     cc->xdot[cc->n - 1] = 1.0; /* rhs: last equation is the closing row */
     abd_solver_solve(cc->abd, cc->xdot);
     cont_normalize(cc, cc->xdot);
+    orient_start_direction(cc, fix);
     if (cc->c.ds < 0) for (int i = 0; i < cc->n; i++) cc->xdot[i] = -cc->xdot[i];
     cc->ds = fabs(cc->c.ds);
   } else {
@@ -320,7 +352,10 @@ static int first_point(cable_cont *cc)
   }
   cc->npt = 1;
   cc->ds_used = 0.0;
-  cc->itp = (!cc->restart || cc->switch_pending) ? CABLE_TY_EP : CABLE_TY_NONE;
+  /* AUTO labels the first point of a run EP only when it is a new start: a
+     restart, the switched first point at a branch point (ISW = -1) included,
+     is not labelled (auto-07p, demo lin: run 2 from BP1 has no EP at PT 1) */
+  cc->itp = !cc->restart ? CABLE_TY_EP : CABLE_TY_NONE;
   cc->switch_pending = 0;
   cont_store_solution(cc, cc->itp, 0);
   return CABLE_SUCCESS;
@@ -384,7 +419,7 @@ static int pencil_step(cable_cont *cc, pencil_result *pr, double *ds_step)
 {
   pr->n = 0;
   pr->coincident = pr->unresolved = 0;
-  if (cc->c.isp <= 0 || !cc->tan_abd) return 0;
+  if (!cont_bp_detect(cc) || !cc->tan_abd) return 0;
   if (!cont_gate_needed(cc)) return 0;
   double t[CONT_PAIR_MAXCROSS];
   int ndouble = 0, nc = cont_pencil_crossings(cc, cc->tan_abd, t, CONT_PAIR_MAXCROSS, &ndouble);

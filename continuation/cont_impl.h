@@ -116,6 +116,13 @@ int cont_find_event(const cable_cont *cc, const cont_tests *a, const cont_tests 
 /* The branch-point test function's value (the one whose sign change is a BP):
  * the signed smallest singular value; 0 when ISP and NSV are both 0. */
 double cont_bp_value(const cable_cont *cc, const cont_tests *t);
+/* AUTO's rule for boundary-value problems: branch points are looked for
+ * with |ISP| = 2 or 3, not with ISP = 0, 1 or 4 (auto-07p 0.9.2 on the
+ * elastica: BPs at (n pi)^2 with ISP=2, 3, none with ISP=1, 4) */
+static inline int cont_bp_detect(const cable_cont *cc)
+{
+  return cc->c.isp == 2 || cc->c.isp == 3 || cc->c.isp == -2 || cc->c.isp == -3;
+}
 /* seed: a first guess of the arclength of the special point (NAN: none) */
 int cont_locate(cable_cont *cc, int type, int which, double seed);
 int cont_check_dip(cable_cont *cc);

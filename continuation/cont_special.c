@@ -89,7 +89,7 @@ static double bp_test(const cont_tests *t) { return t->det_sign * (t->sv1 > 0 ? 
 
 double cont_bp_value(const cable_cont *cc, const cont_tests *t)
 {
-  return (cc->c.isp > 0 || cc->c.nsv > 0) ? bp_test(t) : 0.0;
+  return (cont_bp_detect(cc) || cc->c.nsv > 0) ? bp_test(t) : 0.0;
 }
 
 static double test_value(const cont_tests *t, int type, int which)
@@ -119,7 +119,7 @@ int cont_find_event(const cable_cont *cc, const cont_tests *a, const cont_tests 
     }                                                                       \
   } while (0)
   if (cc->c.ilp > 0) CONSIDER(CABLE_TY_LP, -1);
-  if (cc->c.isp > 0 && a->det_sign != b->det_sign) CONSIDER(CABLE_TY_BP, -1);
+  if (cont_bp_detect(cc) && a->det_sign != b->det_sign) CONSIDER(CABLE_TY_BP, -1);
   for (int k = 0; k < cc->c.nuzr; k++) CONSIDER(CABLE_TY_UZ, k);
 #undef CONSIDER
   return best;
@@ -409,7 +409,7 @@ int cont_check_dip(cable_cont *cc)
   double a = cc->tfp.sv1, m = cc->tf.sv1, b = cc->tft.sv1;
   /* the three points must not include the start: its first step reports
      nothing (AUTO), and after a switch its sigma_1 is the BP's ~0 */
-  if (cc->c.isp <= 0 || cc->npt < 3 || !(a > 0 && m > 0 && b > 0)) return CABLE_TY_NONE;
+  if (!cont_bp_detect(cc) || cc->npt < 3 || !(a > 0 && m > 0 && b > 0)) return CABLE_TY_NONE;
   if (!(m < a && m < b && m < CONT_DIP_RATIO * fmax(a, b))) return CABLE_TY_NONE;
   return dip_minimise(cc, -fabs(cc->ds_prev), 0.0, m, fabs(cc->ds_used), a, b);
 }
@@ -417,7 +417,7 @@ int cont_check_dip(cable_cont *cc)
 int cont_dip_in_step(cable_cont *cc, double smid)
 {
   double a = cc->tf.sv1, b = cc->tft.sv1;
-  if (cc->c.isp <= 0 || !(a > 0 && b > 0) || !(smid > 0 && smid < cc->ds_used)) return CABLE_TY_NONE;
+  if (!cont_bp_detect(cc) || !(a > 0 && b > 0) || !(smid > 0 && smid < cc->ds_used)) return CABLE_TY_NONE;
   dip_ctx ctx = {cc, cc->tf, fmax(a, b)};
   double m = dip_fn(smid, &ctx);
   if (!(m < a && m < b)) return CABLE_TY_NONE;

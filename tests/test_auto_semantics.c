@@ -6,7 +6,9 @@
  *      a UZR value inside the first step);
  *   3. after a switch at a branch point (ISW = -1) the first step reports no
  *      BP and is not shortened (the test function is ~0 at the start);
- *   4. UZR and UZSTOP on a parameter that PVLS computes fire.
+ *   4. UZR and UZSTOP on a parameter that PVLS computes fire;
+ *   5. branch points of BVPs are looked for with ISP = 2 or 3 only, and a
+ *      switched run's first point has no label.
  * (run('NAME') = e='NAME', c='NAME': tests/test_cli.c and test_script.c.) */
 #include <math.h>
 #include <string.h>
@@ -146,6 +148,10 @@ static void test_after_switch(memrun *r)
     snprintf(what, sizeof what, "switch at BP%d with DS = %+.2f, ISP = 2: 10 points, no BP reported", cases[q].k + 1,
              c.ds);
     test_true(what, st > 0 && rec.n == 10 && rec.nbp == 0);
+    /* auto-07p (demos lin, bvp): a switched run's first point has no label */
+    snprintf(what, sizeof what, "switch at BP%d with DS = %+.2f: the first point is not labelled EP", cases[q].k + 1,
+             c.ds);
+    test_int(what, rec.n > 0 ? rec.itp[0] : -99, CABLE_TY_NONE);
     snprintf(what, sizeof what, "switch at BP%d with DS = %+.2f: the first step is |DS|", cases[q].k + 1, c.ds);
     test_rel(what, rec.n > 1 ? fabs(rec.ds[1]) : (double)NAN, fabs(c.ds), 1e-14);
     snprintf(what, sizeof what, "switch at BP%d with DS = %+.2f: L2-NORM after 9 steps > 1 (no collapse)",
@@ -153,6 +159,26 @@ static void test_after_switch(memrun *r)
     test_true(what, rec.n == 10 && rec.l2 > 1.0);
   }
   for (int k = 0; k < 3; k++) cable_solution_free(bp[k]);
+}
+
+/* 5. ISP: auto-07p 0.9.2 looks for branch points of boundary-value problems
+ * with ISP = 2 or 3 only (the elastica from P = 1 with ISP = 1, 2, 3, 4:
+ * BPs at pi^2 and 4 pi^2 with ISP = 2 and 3, none with 1 and 4). */
+static void test_isp(memrun *r)
+{
+  static const int want[5] = {0, 0, 3, 3, 0};
+  for (int isp = 1; isp <= 4; isp++) {
+    cable_constants c;
+    elastica_trivial_constants(&c, 50, 5);
+    c.isp = isp;
+    memrun_run(cable_testproblem_elastica(), &c, NULL, r);
+    int nbp = 0;
+    for (int i = 0; i < r->n; i++) nbp += r->itp[i] % 10 == CABLE_TY_BP;
+    char what[120];
+    snprintf(what, sizeof what, "elastica, ISP = %d: %d branch points reported (AUTO's rule)", isp, want[isp]);
+    test_int(what, nbp, want[isp]);
+    memrun_free(r);
+  }
 }
 
 /* 4. Bratu with PAR(2) = max u from PVLS (auto-07p fires UZR on PVLS
@@ -205,5 +231,6 @@ int main(void)
   test_first_step(&r);
   test_after_switch(&r);
   test_pvls_uzr(&r);
+  test_isp(&r);
   return test_summary();
 }

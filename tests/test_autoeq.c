@@ -309,11 +309,21 @@ static void fold_bp_functions(void)
     for (int r = 1; r < br->nrow && lp > 1; r++)
       if (r != lp) signs_ok &= (r < lp) == (col(br, "PAR(2)", r) > 0);
     test_true("GETP('FLD') > 0 before the fold and < 0 after it, at every point", signs_ok);
-    /* no BP on Bratu's branch: the BP function keeps its sign and is nonzero */
+    /* c.bratufb has ISP=1: no branch-point test for a BVP (AUTO's rule), so
+       'BIF' is 0 at every point, as AUTO's is */
+    double bmax = 0;
+    for (int r = 0; r < br->nrow; r++) bmax = fmax(bmax, fabs(col(br, "PAR(3)", r)));
+    test_abs("GETP('BIF') = 0 on Bratu's branch with ISP=1 (no BP test, as AUTO)", bmax, 0.0, 0.0);
+  }
+  cable_bfile_free(bf);
+  bf = cable_bfile_read(TMP "/fldbif/b.bratufb3", &err);
+  if (test_true("b.bratufb3 (ISP=3) was written", bf != NULL && bf->nbranch == 1)) {
+    const cable_bfile_branch *br = &bf->branch[0];
+    /* no BP on Bratu's branch: with the test on, the BP function keeps its sign and is nonzero */
     double b0 = col(br, "PAR(3)", 0);
     int same = b0 != 0;
     for (int r = 1; r < br->nrow; r++) same &= col(br, "PAR(3)", r) * b0 > 0;
-    test_true("GETP('BIF') keeps its sign on Bratu's branch (no BP)", same);
+    test_true("GETP('BIF') keeps its sign on Bratu's branch with ISP=3 (no BP)", same);
   }
   cable_bfile_free(bf);
   bf = cable_bfile_read(TMP "/fldbif/b.elasfb", &err);

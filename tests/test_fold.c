@@ -204,6 +204,81 @@ static void test_closed_form(double lstar)
   memrun_free(&r);
 }
 
+/* u(0) = b, u(1) = -b: t -> 1 - t maps b to -b, so the fold curve lambda(b)
+ * is even and does not move in lambda at b = 0 (AUTO's demo int has the same
+ * symmetry, q = PAR(2) in u(0) - u(1) = q).  There the fold system at fixed
+ * lambda is singular (lambda = lambda* is a double root in b); the start is
+ * converged at fixed q = b instead (cont_engine.c, start_fixpar). */
+static int ab_bcnd(int ndim, const double *par, const int *icp, int nbc, const double *u0, const double *u1, int ijac,
+                   double *fb, double *dbc, void *params)
+{
+  (void)ndim; (void)icp; (void)nbc; (void)ijac; (void)dbc; (void)params;
+  fb[0] = u0[0] - par[1];
+  fb[1] = u1[0] + par[1];
+  return 0;
+}
+
+/* lambda of the LP of the ordinary branch at fixed b (no fold code) */
+static double ab_branch_lp(const cable_problem *pb, double b, cable_solution **lp_out)
+{
+  cable_constants c;
+  base_constants(&c);
+  c.npar_override = 1;
+  c.par_override[0].index = 1;
+  c.par_override[0].value = b;
+  static memrun r;
+  memrun_run(pb, &c, NULL, &r);
+  const cable_solution *lp = memrun_find(&r, CABLE_TY_LP, 0);
+  double lam = lp ? lp->par[0] : (double)NAN;
+  if (lp_out) *lp_out = lp ? cable_solution_clone(lp) : NULL;
+  memrun_free(&r);
+  return lam;
+}
+
+static void test_even_fold_curve(double lstar)
+{
+  cable_problem pb = gb_problem(0);
+  pb.bcnd = ab_bcnd;
+  pb.description = "u'' + lambda e^u = 0, u(0) = b, u(1) = -b";
+  cable_solution *lp = NULL;
+  test_rel("even fold curve: the LP at b = 0 is Bratu's", ab_branch_lp(&pb, 0.0, &lp), lstar, FOLD_TOL);
+  double lam_half = ab_branch_lp(&pb, 0.5, NULL);
+  if (!lp) return;
+  for (int dir = -1; dir <= 1; dir += 2) {
+    cable_constants c;
+    base_constants(&c);
+    c.isw = 2;
+    c.icp[0] = 0; c.icp[1] = 1; c.nicp = 2;
+    c.ds = 0.1 * dir; c.dsmax = 0.2; c.nmx = 40; c.npr = 100;
+    c.rl0 = 0.5; c.rl1 = 6.0;
+    c.nuzr = 2;
+    c.uzr[0].par = 1; c.uzr[0].value = 0.5; c.uzr[0].stop = 0;
+    c.uzr[1].par = 1; c.uzr[1].value = -0.5; c.uzr[1].stop = 0;
+    int st = 0;
+    char msg[300], what[600];
+    cable_fold *f = cable_fold_alloc(&pb, &c, lp, &st, msg, sizeof msg);
+    test_true("even fold curve: the fold problem is set up", f != NULL);
+    if (!f) break;
+    static memrun r;
+    memrun_run(cable_fold_problem(f), cable_fold_constants(f), NULL, &r);
+    snprintf(what, sizeof what, "even fold curve, DS = %+.1f: the start converges and the curve goes on (%d points; %s)",
+             c.ds, r.n, r.err);
+    test_true(what, r.n > 5 && (r.status == CABLE_END_NMX || r.status == CABLE_END_BOUNDS));
+    const cable_solution *ep = r.nsol > 0 ? r.sol[0] : NULL;
+    test_rel("  its start is the LP (lambda = lambda*)", ep ? ep->par[0] : (double)NAN, lstar, FOLD_TOL);
+    test_le("  at b = 0 (the start is converged at fixed b)", ep ? fabs(ep->par[1]) : 1.0, 1e-14);
+    const cable_solution *uz = memrun_find(&r, CABLE_TY_UZ, 0);
+    /* DS > 0: b increases (lambda does not move at the start); DS < 0: it decreases */
+    snprintf(what, sizeof what, "  the first UZ is at b = %+.1f", 0.5 * dir);
+    test_rel(what, uz ? uz->par[1] : (double)NAN, 0.5 * dir, 1e-10);   /* located to EPSL = 1e-10 */
+    test_rel("  there lambda is the LP of the branch at fixed b = 0.5 (the fold curve is even)",
+             uz ? uz->par[0] : (double)NAN, lam_half, FOLD_TOL);
+    memrun_free(&r);
+    cable_fold_free(f);
+  }
+  cable_solution_free(lp);
+}
+
 static void test_bad_starts(const cable_problem *pb, const cable_solution *lp, const cable_solution *other)
 {
   cable_constants c;
@@ -231,6 +306,7 @@ int main(void)
 {
   double lstar = bratu_lambda_star();
   test_closed_form(lstar);
+  test_even_fold_curve(lstar);
   for (int k = 1; k <= 2; k++) {
     cable_problem pb = gb_problem(k - 1);
     cable_constants c;

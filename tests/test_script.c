@@ -1183,7 +1183,7 @@ static void test_bp_loop(void)
                   "for bp in r('BP'):\n"
                   "    k = k + 1\n"
                   "    b = run(bp, ISW=-1, DS=0.05, DSMAX=0.2, NMX=12, NPR=4, ISP=0, ap='sw')\n"
-                  "    print('switch', k, bp['lambda'], b('EP2')['lambda'], b('EP2')['LAB'])\n"
+                  "    print('switch', k, bp['lambda'], b('EP1')['lambda'], b('EP1')['LAB'])\n"
                   "print('bps', len(r('BP')))\n"
                   "d = run(r('BP1'), ISW=-1, DS=-0.05, DSMAX=0.2, NMX=12, NPR=4, ISP=0, ap='sw')\n"
                   "x = loadbd('sw')\n"
