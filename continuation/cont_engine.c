@@ -63,6 +63,7 @@ const char *cable_cont_error(const cable_cont *cc)
 void cable_cont_free(cable_cont *cc)
 {
   if (!cc) return;
+  cont_counts_report(cc);
   colloc_newton_free(cc->nw);
   colloc_system_free(cc->sys);
   colloc_jac_free(cc->J);
@@ -223,6 +224,9 @@ int cont_correct_from(cable_cont *cc, const double *x0, const double *xdot0, dou
   s->closing = COLLOC_CLOSE_ARCLENGTH;
   int rc = colloc_newton_solve(cc->nw, x);
   cc->newton_iters = colloc_newton_iterations(cc->nw);
+  cc->cnt.correct++;
+  cc->cnt.newton_iters += cc->newton_iters;
+  cc->cnt.newton_fact += colloc_newton_setups(cc->nw);
   cc->rejected[0] = '\0';
   if (rc == CABLE_SUCCESS) rc = check_nodes(cc, x);
   return rc;
@@ -475,6 +479,7 @@ int cable_cont_step(cable_cont *cc)
   }
   if (!cc->started) return first_point(cc);
   int rc;
+  cc->cnt.steps++;
   cc->note[0] = '\0';
   if (cc->queued) {
     /* the point computed before a located dip */

@@ -19,6 +19,20 @@ typedef struct cont_tests {
   double sv2;                   /* second smallest (NSV > 1) */
 } cont_tests;
 
+/* Work counters of one run (cont_counts.c): machine-independent measures of
+ * the cost of the corrector and of the branch-point tests. */
+typedef struct cont_counts {
+  long steps;                   /* calls of cable_cont_step after the start */
+  long correct;                 /* corrector solves (every call of cont_correct_from) */
+  long newton_iters;            /* their Newton iterations (one linear solve each) */
+  long newton_fact;             /* their factorisations */
+  long tan_fact;                /* factorisations made for a tangent (cont_tangent) */
+  long sv_calls, sv_iters;      /* smallest-singular-value iterations: calls, sweeps
+                                   (each sweep = 2 k solves with the factorisation) */
+  long dip_evals, dips;         /* corrector+tangent evaluations in sigma_1 minimisations, minimisations */
+  long locate_evals, locates;   /* the same in sign-change locations */
+} cont_counts;
+
 struct cable_cont {
   const cable_problem *pb;      /* not owned */
   cable_constants c;            /* copy of the constants */
@@ -82,6 +96,7 @@ struct cable_cont {
   double gate_sv[2];
   int gate_valid;               /* gate_v, gate_u, gate_sv belong to x */
   long gate_skipped, gate_run;  /* pencil tests skipped and run on this branch */
+  cont_counts cnt;              /* work counters of the run */
 };
 
 /* cont_tangent.c */
@@ -133,6 +148,10 @@ int cont_gate_alloc(cable_cont *cc);
 void cont_gate_free(cable_cont *cc);
 void cont_gate_start(cable_cont *cc);
 int cont_gate_needed(cable_cont *cc);
+
+/* cont_counts.c: the counters on stderr when the environment variable
+ * CABLE_COUNTS is set (called when the run's state is freed) */
+void cont_counts_report(const cable_cont *cc);
 
 /* cont_mesh.c */
 int cont_adapt_mesh(cable_cont *cc);

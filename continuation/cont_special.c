@@ -188,6 +188,7 @@ static int locate(cable_cont *cc, int type, int which, double seed, int plain)
     if (!(s > lo && s < hi)) s = s1 - f1 * (s1 - s0) / (f1 - f0);
     if (!(s > lo && s < hi)) s = 0.5 * (s0 + s1);
     int rc = correct_in_bracket(cc, s, s0, s1, xs);
+    cc->cnt.locate_evals++;
     if (rc == CABLE_SUCCESS) rc = cont_tangent(cc, xs, cc->xdot, xds, &ts);
     /* The corrector fails at and next to a branch point: the extended
        matrix is singular there, exactly (a zero pivot, CABLE_ERR_LINSOLVE)
@@ -312,6 +313,7 @@ static int locate(cable_cont *cc, int type, int which, double seed, int plain)
  * which keeps a bracket that shrinks every iteration. */
 int cont_locate(cable_cont *cc, int type, int which, double seed)
 {
+  cc->cnt.locates++;
   int rc = locate(cc, type, which, seed, 0);
   if (rc == CABLE_SUCCESS || rc == CABLE_ERR_CALLBACK) return rc;
   char first[230]; /* both messages fit in cc->err */
@@ -346,6 +348,7 @@ static double dip_fn(double s, void *p)
 {
   dip_ctx *d = p;
   cable_cont *cc = d->cc;
+  cc->cnt.dip_evals++;
   if (cont_correct(cc, cc->x, cc->xdot, s, cc->w1) != CABLE_SUCCESS ||
       cont_tangent(cc, cc->w1, cc->xdot, cc->w2, &d->t) != CABLE_SUCCESS)
     return d->penalty; /* steer the search away from points that do not converge */
@@ -360,6 +363,7 @@ static int dip_minimise(cable_cont *cc, double lo, double mid, double fm, double
 {
   dip_ctx ctx = {cc, cc->tf, fmax(a, b)};
   gsl_function F = {dip_fn, &ctx};
+  cc->cnt.dips++;
   gsl_min_fminimizer *mz = gsl_min_fminimizer_alloc(gsl_min_fminimizer_brent);
   if (!mz) return CABLE_ERR_ALLOC;
   gsl_error_handler_t *old = gsl_set_error_handler_off();

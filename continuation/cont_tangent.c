@@ -57,7 +57,10 @@ static int tangent_from(cable_cont *cc, abd_solver *abd, colloc_jac *J, const do
     double sv[2] = {0, 0};
     /* two values: the second tells a double branch point from a simple one;
        ABD_NOT_CONVERGED (2) still leaves usable estimates */
-    int src = abd_solver_smallest_svd(abd, J, 2, NULL, sv, cc->tan_v, cc->tan_u, CONT_SV_MAXIT, CONT_SV_RTOL, NULL);
+    int iters = 0;
+    int src = abd_solver_smallest_svd(abd, J, 2, NULL, sv, cc->tan_v, cc->tan_u, CONT_SV_MAXIT, CONT_SV_RTOL, &iters);
+    cc->cnt.sv_calls++;
+    cc->cnt.sv_iters += iters;
     cc->tan_sv[0] = src == 0 || src == 2 ? sv[0] : 0.0;
     cc->tan_sv[1] = src == 0 || src == 2 ? sv[1] : 0.0;
     if (src == 0 || src == 2) {
@@ -76,6 +79,7 @@ int cont_tangent(cable_cont *cc, const double *x, const double *xdot_old, double
   memcpy(s->xdot0, xdot_old, (size_t)cc->n * sizeof *xdot_old);
   s->closing = COLLOC_CLOSE_ARCLENGTH;
   int rc = cont_factor_at(cc, x, NULL, NULL);
+  cc->cnt.tan_fact++;
   if (rc != CABLE_SUCCESS) return rc;
   return tangent_from(cc, cc->abd, cc->J, x, xdot_new, tf);
 }

@@ -307,8 +307,9 @@ static void fold_bp_functions(void)
   cable_error err;
   cable_error_clear(&err);
   /* what fldbif.auto says */
-  static const char *const e0[] = {"ISP=0", "NMX=5"};
+  static const char *const e0[] = {"ISP=0", "NMX=5"}, *const isp3[] = {"ISP=3"};
   int rc = replay("fldbif", "bratufb", "bratufb", "bratufb", &err);
+  if (!rc) rc = replay_over("fldbif", "bratufb", "bratufb", "bratufb3", 1, isp3, &err);
   if (!rc) rc = replay("fldbif", "elasfb", "elasfb", "elasfb", &err);
   if (!rc) rc = replay_over("fldbif", "elasfb", "elasfb", "elasfb0", 2, e0, &err);
   char buf[1200];
