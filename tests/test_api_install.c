@@ -7,8 +7,6 @@
  *   - the installed library exports the public API and hides the rest.
  * Under a sanitizer build the check is skipped: a program compiled without
  * the sanitizer cannot load a sanitized libcable. */
-#define _GNU_SOURCE 1
-#include <dlfcn.h>
 #include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -103,17 +101,20 @@ int main(int argc, char **argv)
   snprintf(cmd, sizeof cmd, "grep -q '^PASS s-file: fold lambda' '%s/plugin.log'", prefix);
   test_int("  the plug-in run checked the fold", sh(cmd), 0);
 
-  snprintf(path, sizeof path, "%s/lib/libcable.so", prefix);
-  void *h = dlopen(path, RTLD_NOW | RTLD_LOCAL);
-  if (!h) printf("  dlopen: %s\n", dlerror());
-  test_true("the installed libcable.so loads", h != NULL);
-  if (h) {
-    test_true("  it exports the public API (cable_cont_alloc, cable_constants_parse_file_for)",
-              dlsym(h, "cable_cont_alloc") && dlsym(h, "cable_constants_parse_file_for"));
-    test_true("  and hides the rest (colloc_newton_solve, braid_pvls, cable_atomic_open)",
-              !dlsym(h, "colloc_newton_solve") && !dlsym(h, "braid_pvls") && !dlsym(h, "cable_atomic_open"));
-    dlclose(h);
-  }
+  /* The export table is read with nm, not by dlopen into this process: under
+   * valgrind the dynamic loader's own word-wise string reads and the
+   * constructors of libcable's dependencies (unmapped again at dlclose) are
+   * reported as errors that are not libcable's.  That the library loads is
+   * shown by the two runs above. */
+  snprintf(cmd, sizeof cmd, "nm -D --defined-only '%s/lib/libcable.so' > '%s/symbols.txt'", prefix, prefix);
+  test_int("the installed libcable.so has a dynamic symbol table", sh(cmd), 0);
+  snprintf(cmd, sizeof cmd,
+           "grep -qw cable_cont_alloc '%s/symbols.txt' && grep -qw cable_constants_parse_file_for '%s/symbols.txt'",
+           prefix, prefix);
+  test_int("  it exports the public API (cable_cont_alloc, cable_constants_parse_file_for)", sh(cmd), 0);
+  snprintf(cmd, sizeof cmd, "! grep -qwE 'colloc_newton_solve|braid_pvls|cable_atomic_open' '%s/symbols.txt'",
+           prefix);
+  test_int("  and hides the rest (colloc_newton_solve, braid_pvls, cable_atomic_open)", sh(cmd), 0);
   snprintf(cmd, sizeof cmd, "rm -rf '%s'", prefix);
   (void)!system(cmd);
   return test_summary();
