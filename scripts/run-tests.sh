@@ -27,7 +27,7 @@ for t in "$build"/tests/test_*; do
     echo "$name: exited with status $rc (see $log):"; tail -n 20 "$log" | sed 's/^/    /'
     f=1
   fi
-  if [ "$p" -eq 0 ] && [ "$f" -eq 0 ]; then
+  if [ "$p" -eq 0 ] && [ "$f" -eq 0 ] && [ "$k" -eq 0 ]; then
     echo "$name: ran no check"; f=1
   fi
   if [ "$k" -gt 0 ]; then

@@ -161,6 +161,16 @@ int main(int argc, char **argv)
   snprintf(cache, sizeof cache, "%s/%s/cache", root, TMP);
   setenv("CABLE_CACHE_DIR", cache, 1);
   test_true("auto-07p is installed (scripts/install-deps.sh installs it)", access("/usr/bin/auto-07p", X_OK) == 0);
-  for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) run_case(&cases[i]);
+  /* `cable replay` runs the script in CPython through the package's
+     extension; a sanitizer build has none (CPython cannot load an
+     instrumented extension), so there the comparison is not made. */
+  char ext[3 * PATH_MAX];
+  snprintf(ext, sizeof ext, "%s%s%s/../python/cable/_cable.so", self[0] == '/' ? "" : root, self[0] == '/' ? "" : "/",
+           self);
+  int have_python = access(ext, R_OK) == 0;
+  for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+    if (have_python) run_case(&cases[i]);
+    else test_skip(cases[i].folder, "no Python package in this build (a sanitizer build): cable replay cannot run");
+  }
   return test_summary();
 }
