@@ -147,20 +147,9 @@ static double getp_value(cable_autoeq *m, const char *code, int ic)
     }
     return at_t ? s->t[kbest] : v;
   }
-  if (strcasecmp(code, "INT") == 0 || strcasecmp(code, "NRM") == 0) {
-    colloc_basis b;
-    if (colloc_basis_init(&b, s->ncol) != 0) return nan("");
-    int sq = toupper((unsigned char)code[0]) == 'N';
-    double sum = 0.0;
-    for (int j = 0; j < s->ntst; j++) {
-      double h = s->t[(j + 1) * s->ncol] - s->t[j * s->ncol];
-      for (int k = 0; k <= s->ncol; k++) {
-        double x = s->u[(size_t)(j * s->ncol + k) * (size_t)nd + (size_t)i];
-        sum += h * b.wn[k] * (sq ? x * x : x);
-      }
-    }
-    return sq ? sqrt(sum) : sum;
-  }
+  if (strcasecmp(code, "INT") == 0 || strcasecmp(code, "NRM") == 0)
+    /* the integral and the L2 norm of U(IC): IPLT's measures NDIM+IC and 2 NDIM+IC */
+    return cable_solution_measure(s, (toupper((unsigned char)code[0]) == 'N' ? 2 : 1) * nd + ic, nan(""));
   snprintf(m->getp_error, sizeof m->getp_error, "GETP('%s'): not a code cable provides", code);
   return nan("");
 }
