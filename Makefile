@@ -169,7 +169,7 @@ asan:
 
 valgrind: tests-build
 	@CABLE_TEST_WRAPPER="valgrind --quiet --error-exitcode=99 --leak-check=full --errors-for-leak-kinds=definite,indirect" \
-	  CABLE_TEST_QUICK=1 bash scripts/run-tests.sh $(BUILD)
+	  CABLE_TEST_QUICK=1 CABLE_TEST_JOBS=$${CABLE_TEST_JOBS:-$$(nproc)} bash scripts/run-tests.sh $(BUILD)
 
 # The README's main job: the paper's knot scene on its defaults.
 demo: cable python

@@ -4,7 +4,8 @@
 # not performed: SKIP lines, e.g. malloc counting under a sanitizer).  A test
 # program that crashes or exits non-zero without printing a FAIL line counts
 # as one failure; one that performs no check at all (no PASS, no FAIL) too.
-# Environment: CABLE_TEST_WRAPPER (e.g. valgrind ...), CABLE_TEST_QUICK=1.
+# Environment: CABLE_TEST_WRAPPER (e.g. valgrind ...), CABLE_TEST_QUICK=1,
+# CABLE_TEST_JOBS (programs run at once; default 1).
 set -u
 build=${1:?usage: run-tests.sh BUILD_DIR}
 cd "$(dirname "$0")/.."
@@ -13,15 +14,37 @@ cd "$(dirname "$0")/.."
 export OPENBLAS_NUM_THREADS=${OPENBLAS_NUM_THREADS:-1}
 mkdir -p tests/tmp
 passed=0; failed=0; skipped=0
+programs=()
 for t in "$build"/tests/test_*; do
   case "$t" in *.o|*.d) continue;; esac
   [ -x "$t" ] || continue
   name=$(basename "$t")
   # a program left in an old build directory after its source was deleted
   [ -f "tests/$name.c" ] || [ -f "tests/api/${name#test_}.c" ] || continue
+  rm -f "tests/tmp/$name.rc"
+  programs+=("$t")
+done
+# Run the programs (CABLE_TEST_JOBS at a time: under valgrind the programs are
+# independent and each uses one core), then report them in a fixed order.
+run_one() {
+  local name; name=$(basename "$1")
+  ${CABLE_TEST_WRAPPER:-} "$1" >"tests/tmp/$name.log" 2>&1
+  echo $? >"tests/tmp/$name.rc"
+}
+export -f run_one
+export CABLE_TEST_WRAPPER
+jobs=${CABLE_TEST_JOBS:-1}
+if [ "${#programs[@]}" -gt 0 ]; then
+  if [ "$jobs" -gt 1 ]; then
+    printf '%s\0' "${programs[@]}" | xargs -0 -n 1 -P "$jobs" bash -c 'run_one "$0"'
+  else
+    for t in "${programs[@]}"; do run_one "$t"; done
+  fi
+fi
+for t in "${programs[@]}"; do
+  name=$(basename "$t")
   log="tests/tmp/$name.log"
-  ${CABLE_TEST_WRAPPER:-} "$t" >"$log" 2>&1
-  rc=$?
+  rc=$(cat "tests/tmp/$name.rc" 2>/dev/null || echo 127)
   p=$(grep -c '^PASS' "$log"); f=$(grep -c '^FAIL' "$log"); k=$(grep -c '^SKIP' "$log")
   grep '^SKIP' "$log" | sed "s/^/$name: /"
   grep '^FAIL' "$log" | sed "s/^/$name: /"
