@@ -11,6 +11,7 @@ import re
 import numpy as np
 
 from ._cable import Branch, CableError
+from .constants import Constants
 
 _SPEC = re.compile(r'^([A-Z][A-Z])(\d*)$')
 _TYPES = ('BP', 'LP', 'UZ', 'EP', 'MX', 'RG')
@@ -88,6 +89,11 @@ class Solution:
         'pair' (two simple ones in one step); '' when this is not a BP or the
         solution was read from an s-file (which does not store it)."""
         return self._kind
+
+    @property
+    def c(self):
+        """The constants the solution's run used (AUTO's s.c; print(s.c) shows them as a constants file)."""
+        return Constants(self._br.constants())
 
     @property
     def note(self):
