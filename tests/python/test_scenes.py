@@ -91,6 +91,7 @@ def test_branch_points_by_kind(work):
     # the engine's notes reach the d-file too
     assert open('d.flat').read().count('NOTE: double branch point') >= len(bps)
     assert scenes.branch_points(r, kind='double') == bps and scenes.branch_points(r, kind='simple') == []
+    assert r('BP1') == bps[0] and r('BP2') == bps[1] and r(bps[1]['LAB']) == bps[1]
     t1 = bps[1]['T']
     assert [b['LAB'] for b in scenes.branch_points(r, T=(t1 - 1e-9, t1 + 1e-9))] == [bps[1]['LAB']]
 
@@ -130,3 +131,28 @@ def test_compare_small(work):
             eval("compare('bad.txt', [['ok', r, 4.0, 100.0, 3.5], %s])" % row, ns)
         assert want_msg in str(e.value) and 'row 2' in str(e.value)
         assert not os.path.exists('bad.txt')
+
+
+def test_render(flat, monkeypatch, capsys):
+    """render(): a shaded picture of a braid solution (PNG of the asked size,
+    square), with the tube meshes for ParaView (VTK PolyData) and Blender
+    (ASCII PLY); bad arguments write nothing."""
+    import struct
+    runner, r, d = flat
+    monkeypatch.chdir(d)
+    ns = runner.namespace()
+    sol = r('EP1')
+    ns['render'](sol, 'k.png', view=[0, 0, 1], size=160, color='pressure', vtp='k.vtp', ply='k.ply')
+    with open('k.png', 'rb') as f:
+        head = f.read(24)
+    assert head[:8] == b'\x89PNG\r\n\x1a\n' and struct.unpack('>II', head[16:24]) == (160, 160)
+    assert open('k.vtp').read().count('<VTKFile type="PolyData"') == 1
+    assert open('k.ply').read().startswith('ply\nformat ascii 1.0\n')
+    assert 'label %d rendered to k.png' % sol['LAB'] in capsys.readouterr().out
+    with pytest.raises(cable.CableError) as e:
+        ns['render'](sol, 'v.png', view=[0, 1])
+    assert str(e.value) == 'render: view: view=[x, y, z]'
+    with pytest.raises(cable.CableError) as e:
+        ns['render'](r, 'v.png')
+    assert str(e.value) == "render: render(sol, 'fig.png', view=[x, y, z], ...)"
+    assert not os.path.exists('v.png')
