@@ -155,7 +155,7 @@ static PyObject *branch_solution(PyObject *self, PyObject *arg)
 /* Labels, types and the parameters of the labelled solutions, cheaply:
  * [(LAB, TY, BR, PT, par ndarray, note or None, BP kind), ...]; the kind is
  * the detector's (cable_solution.bp_kind): 'simple', 'double', 'pair', or ''
- * (not a BP, or read from an s-file, which does not store it). */
+ * (not a BP, or read from an s-file without its d-file, which keeps it). */
 static PyObject *branch_labels(PyObject *self, PyObject *unused)
 {
   (void)unused;

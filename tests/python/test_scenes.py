@@ -91,9 +91,24 @@ def test_branch_points_by_kind(work):
     # the engine's notes reach the d-file too
     assert open('d.flat').read().count('NOTE: double branch point') >= len(bps)
     assert scenes.branch_points(r, kind='double') == bps and scenes.branch_points(r, kind='simple') == []
-    assert r('BP1') == bps[0] and r('BP2') == bps[1] and r(bps[1]['LAB']) == bps[1]
     t1 = bps[1]['T']
     assert [b['LAB'] for b in scenes.branch_points(r, T=(t1 - 1e-9, t1 + 1e-9))] == [bps[1]['LAB']]
+    assert r('BP1') == bps[0] and r('BP2') == bps[1] and r(bps[1]['LAB']) == bps[1]
+    # read back from the files: the kinds and notes come from d.flat (the
+    # s-file, AUTO's format, has no place for them), so a script that
+    # restarts from saved files selects the same BPs (a new runner given the
+    # constants and so the parameter names first, as AUTO's ld(e=, c=))
+    rn = cable.Runner()
+    assert rn.load(e='braid_knot', c='knot72') is None
+    back = rn.loadbd('flat')
+    assert [(b['LAB'], b.kind, b.note) for b in back('BP')] == [(b['LAB'], 'double', b.note) for b in bps]
+    assert scenes.branch_point(back, T=(t1 - 1e-9, t1 + 1e-9), kind='double')['LAB'] == bps[1]['LAB']
+    # re-saved, the notes go with them
+    rn.save(back, 'again')
+    assert [b.kind for b in rn.loadbd('again')('BP')] == ['double'] * len(bps)
+    # without the d-file the kind is unknown: ''
+    os.remove('d.flat')
+    assert [b.kind for b in rn.loadbd('flat')('BP')] == [''] * len(bps)
 
 
 SMALL = """r = run(e='braid_knot', c='knot72', NTST=20, NCOL=4, ISP=0, NMX=30, UZSTOP={'T': 4.0})
