@@ -89,6 +89,21 @@ int main(void)
   api_check("  the names of the run's problem: PAR(1) 'lambda', U(1) 'u'",
             strcmp(names->par[0], "lambda") == 0 && strcmp(names->u[0], "u") == 0);
 
+  /* read back: the labelled points keep the engine's notes from d.one (the
+     start's Newton report on label 1), which also carry a BP's kind */
+  cable_branch **list = NULL;
+  int nlist = 0;
+  st = cable_session_loadbd(s, "one", &list, &nlist, &err);
+  api_check("loadbd('one'): one branch with its labelled solutions",
+            st == 0 && nlist == 1 && cable_branch_nsolutions(list[0]) == cable_branch_nsolutions(b));
+  const char *note = st == 0 && nlist == 1 ? cable_branch_solution_note(list[0], 0) : NULL;
+  const char *note0 = cable_branch_solution_note(b, 0);
+  api_check("  label 1's note read from d.one is the run's ('start: Newton converged ...')",
+            note && note0 && strcmp(note, note0) == 0 && strncmp(note, "start: Newton converged", 23) == 0);
+  api_check("  a point that is no BP has no kind",
+            st == 0 && nlist == 1 && cable_branch_solution(list[0], 0)->bp_kind == CABLE_BP_UNKNOWN);
+  cable_branch_list_free(list, nlist);
+
   /* a restart with IRS: the runner forgets IRS afterwards (the next run without a start uses STPNT) */
   const char *over3[] = {"IRS=2", "NMX=3"};
   memset(&a, 0, sizeof a);
