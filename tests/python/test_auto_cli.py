@@ -207,3 +207,26 @@ def test_plot(bratu, capsys):
     with pytest.raises(cable.CableError):
         ns['plot']('n.png', ['nosuch'], x='lambda', y='L2-NORM')
     assert not os.path.exists('m.png') and not os.path.exists('n.png')
+
+
+def test_python_m_cable(work):
+    """`python3 -m cable X.auto` runs a script as `cable replay X.auto` does:
+    the same output, the same error line and exit status; no script is a
+    usage error (status 2)."""
+    import subprocess
+    from conftest import BUILD, PYTHON
+    copy_in(work, 'runs/bratu/c.bratu')
+    text = ("r = run(e='bratu', c='bratu', NMX=5)\n"
+            "print 'labels', [s['LAB'] for s in r()], len(r('BP')), pc('NMX')\n"
+            "x = r('LP1')\n")
+    with open('m.auto', 'w') as f:
+        f.write(text)
+    env = dict(os.environ, PYTHONPATH=os.path.join(BUILD, 'python'))
+    p = subprocess.run([PYTHON, '-m', 'cable', 'm.auto'], capture_output=True, text=True, env=env, timeout=600)
+    rc, out, err = run_script(work, text, 'm.auto')
+    assert p.returncode == rc == 1
+    assert p.stderr == err == "cable: m.auto:3: LP1: no such label in the result\n    x = r('LP1')\n"
+    assert [l for l in p.stdout.splitlines() if l.startswith('labels')] == ['labels [1, 2] 0 5']
+    assert [l for l in out.splitlines() if l.startswith('labels')] == ['labels [1, 2] 0 5']
+    p = subprocess.run([PYTHON, '-m', 'cable'], capture_output=True, text=True, env=env, timeout=60)
+    assert p.returncode == 2 and p.stderr.startswith('usage: python3 -m cable SCRIPT')
