@@ -20,6 +20,7 @@
  *   u_j, u_{j+1}, q_{j+1}, s_j, s_{j+1}. */
 #include "abd_solver.h"
 
+#include "abd_band.h"
 #include "cable_team.h"
 
 #include <cblas.h>
@@ -52,7 +53,7 @@ struct abd_solver {
   double *loc;                     /* [N] local blocks after condensation: L\U | X over S */
   lapack_int *loc_piv;             /* [N*nI] local row interchanges */
   double *ab;                      /* [ldab*nband] banded LU */
-  lapack_int *band_piv;            /* [nband] */
+  abd_band band;                   /* its LU factors, compressed (abd_band.h) */
   double *w_rhs;                   /* [nband] band right-hand side */
   double *w_piv;                   /* [N*nI] transformed pivot-row right-hand sides */
   double *w_loc;                   /* [r] one interval's local right-hand side */
@@ -270,7 +271,6 @@ abd_solver *abd_solver_alloc(int ndim, int ntst, int ncol, int nfpr, int nbc, in
   s->loc = malloc((size_t)ntst * s->loc_size * sizeof(double));
   s->loc_piv = malloc((nIt ? nIt : 1) * sizeof(lapack_int));
   s->ab = malloc((size_t)s->ldab * (size_t)s->nband * sizeof(double));
-  s->band_piv = malloc((size_t)s->nband * sizeof(lapack_int));
   s->w_rhs = malloc((size_t)s->nband * sizeof(double));
   s->w_piv = malloc((nIt ? nIt : 1) * sizeof(double));
   s->w_loc = malloc((size_t)s->r * sizeof(double));
@@ -282,7 +282,8 @@ abd_solver *abd_solver_alloc(int ndim, int ntst, int ncol, int nfpr, int nbc, in
   s->iv_amax = malloc((size_t)ntst * sizeof(double));
   s->w_g = malloc((size_t)ntst * (size_t)s->r * sizeof(double));
   s->w_oo = malloc((size_t)ntst * (size_t)s->nO * sizeof(double));
-  if (!s->loc || !s->loc_piv || !s->ab || !s->band_piv || !s->w_rhs || !s->w_piv || !s->w_loc || !s->w_o ||
+  if (abd_band_alloc(&s->band, s->nband, s->kl, s->ku) != 0) goto fail;
+  if (!s->loc || !s->loc_piv || !s->ab || !s->w_rhs || !s->w_piv || !s->w_loc || !s->w_o ||
       !s->iv_status || !s->iv_sign || !s->iv_logabs || !s->iv_umax || !s->iv_amax || !s->w_g || !s->w_oo)
     goto fail;
   s->perm_sign = structural_sign(s);
@@ -317,7 +318,7 @@ void abd_solver_free(abd_solver *s)
   free(s->loc);
   free(s->loc_piv);
   free(s->ab);
-  free(s->band_piv);
+  abd_band_free(&s->band);
   free(s->w_rhs);
   free(s->w_piv);
   free(s->w_loc);
@@ -362,7 +363,9 @@ void abd_solver_space(const abd_solver *s, long *ndoubles, long *nints)
   *ndoubles = (long)s->N * (long)s->loc_size + (long)s->ldab * s->nband + s->nband + nIt + s->r + s->nO +
               3L * s->N + (long)s->N * (s->r + s->nO) +
               (s->sv_k ? (long)s->sv_k * (3L * s->n + 3L * s->sv_k + 1) + 2L * s->n : 0L) + (long)s->sv_lwork;
-  *nints = s->nO + nIt + s->nband + 2L * s->N;
+  long nu = (long)s->nband * (s->kl + s->ku) + 1, nl = (long)s->nband * s->kl + 1; /* compressed factors */
+  *ndoubles += s->nband + nu + nl;
+  *nints = s->nO + nIt + s->nband + s->kl + 1 + 2L * (s->nband + 1) + nu + nl + 2L * s->N;
 }
 
 static int jac_matches(const abd_solver *s, const colloc_jac *J)
@@ -378,7 +381,8 @@ static void local_fill(const abd_solver *s, const colloc_jac *J, int j, double *
   const int oU0 = nI, oU1 = nI + nd, oQ = nI + 2 * nd, oS0 = oQ + s->nf, oS1 = oS0 + nq;
   const double *C = colloc_jac_coll_block(J, j);
   const double *D = colloc_jac_dense_block(J, j);
-  memset(L, 0, s->loc_size * sizeof(double));
+  /* every entry is written once below (no memset of the whole block: it
+     was a tenth of a factorisation) */
   for (int k = 0; k <= nc; k++)
     for (int i = 0; i < nd; i++) {
       int src = k * nd + i;
@@ -387,8 +391,12 @@ static void local_fill(const abd_solver *s, const colloc_jac *J, int j, double *
       memcpy(Lc, C + (size_t)src * (size_t)nr, (size_t)nr * sizeof(double));
       for (int d = 0; d < nq; d++) Lc[nr + d] = -D[(size_t)src * (size_t)nq + (size_t)d];
     }
-  for (int p = 0; p < s->nf; p++)
-    memcpy(L + (size_t)(oQ + p) * (size_t)r, C + (size_t)((nc + 1) * nd + p) * (size_t)nr, (size_t)nr * sizeof(double));
+  for (int p = 0; p < s->nf; p++) {
+    double *Lc = L + (size_t)(oQ + p) * (size_t)r;
+    memcpy(Lc, C + (size_t)((nc + 1) * nd + p) * (size_t)nr, (size_t)nr * sizeof(double));
+    for (int d = 0; d < nq; d++) Lc[nr + d] = 0.0;
+  }
+  memset(L + (size_t)oS0 * (size_t)r, 0, 2 * (size_t)nq * (size_t)r * sizeof(double));
   for (int d = 0; d < nq; d++) {
     L[(size_t)(oS0 + d) * (size_t)r + (size_t)(nr + d)] = -1.0;
     L[(size_t)(oS1 + d) * (size_t)r + (size_t)(nr + d)] = 1.0;
@@ -552,19 +560,12 @@ int abd_solver_factor(abd_solver *s, const colloc_jac *J)
   }
   if (s->band_overflow) return ABD_ERR_LAPACK;
 
-  lapack_int info = LAPACKE_dgbtrf_work(LAPACK_COL_MAJOR, s->nband, s->nband, s->kl, s->ku, s->ab, s->ldab, s->band_piv);
-  if (info < 0) return ABD_ERR_LAPACK;
-  if (info > 0) singular = 1;
-  const int diag = s->kl + s->ku;
+  if (abd_band_factor(&s->band, s->ab, s->ldab) > 0) singular = 1;
   for (int i = 0; i < s->nband; i++) {
-    const double *col = s->ab + (size_t)i * (size_t)s->ldab;
-    if (s->band_piv[i] != i + 1) sign = -sign;
-    det_accumulate(col[diag], &sign, &logabs);
-    for (int k = 0; k <= diag; k++) { /* U occupies rows 0..kl+ku of the band storage */
-      double x = fabs(col[k]);
-      if (x > umax) umax = x;
-    }
+    if (s->band.ipiv[i] != i) sign = -sign;
+    det_accumulate(s->band.ud[i], &sign, &logabs);
   }
+  if (s->band.umax > umax) umax = s->band.umax;
 
   s->growth = umax / amax;
   if (singular || sign == 0) {
@@ -648,9 +649,7 @@ int abd_solver_solve(const abd_solver *s, double *x)
   const int e = end_base(s);
   memcpy(rhs + e, x + (size_t)N * (size_t)nr, (size_t)(s->nb + nq) * sizeof(double));
 
-  if (LAPACKE_dgbtrs_work(LAPACK_COL_MAJOR, 'N', s->nband, s->kl, s->ku, 1, s->ab, s->ldab, s->band_piv, rhs,
-                          s->nband) < 0)
-    return ABD_ERR_LAPACK;
+  abd_band_solve(&s->band, rhs);
 
   cable_team_run(s->team, solve_back, &c, N);
   for (int j = 0; j <= N; j++)
@@ -723,9 +722,7 @@ int abd_solver_solve_transpose(const abd_solver *s, double *x)
     for (int o = 0; o < nO; o++) rhs[j * s->m + s->omap[o]] -= wo[o];
   }
 
-  if (LAPACKE_dgbtrs_work(LAPACK_COL_MAJOR, 'T', s->nband, s->kl, s->ku, 1, s->ab, s->ldab, s->band_piv, rhs,
-                          s->nband) < 0)
-    return ABD_ERR_LAPACK;
+  abd_band_solve_transpose(&s->band, rhs);
 
   cable_team_run(s->team, solve_t_last, &c, N);
   memcpy(x + (size_t)N * (size_t)nr, rhs + end_base(s), (size_t)(s->nb + nq) * sizeof(double));
