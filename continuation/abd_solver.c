@@ -62,14 +62,14 @@ struct abd_solver {
   int band_overflow;               /* an entry fell outside kl/ku (internal error) */
   int det_sign;
   double det_log;
-  double growth;
+  double growth_band, amax;        /* max |U| of the band stage, max |entry| of the augmented matrix */
   /* per-interval results of the parallel stages, reduced in interval order
      (the same numbers for every thread count) */
   cable_team *team;                /* threads for the per-interval stages (NULL: none) */
   int *iv_status;                  /* [N] 0 ok, 1 singular, -1 LAPACK, -2 non-finite, -3 band overflow */
   int *iv_sign;                    /* [N] sign of the interval's pivots and interchanges */
   double *iv_logabs;               /* [N] sum of log |pivot| */
-  double *iv_umax, *iv_amax;       /* [N] max |U| and max |entry| of the local block */
+  double *iv_amax;                 /* [N] max |entry| of the local block */
   double *w_g;                     /* [N*r] per-interval local right-hand sides, per vector */
   double *w_oo;                    /* [N*nO] per-interval outer values, per vector */
   /* smallest_sv workspace, grown on demand */
@@ -278,13 +278,12 @@ abd_solver *abd_solver_alloc(int ndim, int ntst, int ncol, int nfpr, int nbc, in
   s->iv_status = malloc((size_t)ntst * sizeof(int));
   s->iv_sign = malloc((size_t)ntst * sizeof(int));
   s->iv_logabs = malloc((size_t)ntst * sizeof(double));
-  s->iv_umax = malloc((size_t)ntst * sizeof(double));
   s->iv_amax = malloc((size_t)ntst * sizeof(double));
   s->w_g = malloc(ABD_SOLVE_BLOCK * (size_t)ntst * (size_t)s->r * sizeof(double));
   s->w_oo = malloc(ABD_SOLVE_BLOCK * (size_t)ntst * (size_t)s->nO * sizeof(double));
   if (abd_band_alloc(&s->band, s->nband, s->kl, s->ku) != 0) goto fail;
   if (!s->loc || !s->loc_piv || !s->ab || !s->w_rhs || !s->w_piv || !s->w_loc || !s->w_o ||
-      !s->iv_status || !s->iv_sign || !s->iv_logabs || !s->iv_umax || !s->iv_amax || !s->w_g || !s->w_oo)
+      !s->iv_status || !s->iv_sign || !s->iv_logabs || !s->iv_amax || !s->w_g || !s->w_oo)
     goto fail;
   s->perm_sign = structural_sign(s);
   if (s->perm_sign == 0) goto fail;
@@ -328,7 +327,6 @@ void abd_solver_free(abd_solver *s)
   free(s->iv_status);
   free(s->iv_sign);
   free(s->iv_logabs);
-  free(s->iv_umax);
   free(s->iv_amax);
   free(s->w_g);
   free(s->w_oo);
@@ -363,7 +361,7 @@ void abd_solver_space(const abd_solver *s, long *ndoubles, long *nints)
 {
   long nIt = (long)s->N * s->nI;
   *ndoubles = (long)s->N * (long)s->loc_size + (long)s->ldab * s->nband + ABD_SOLVE_BLOCK * (s->nband + nIt) + s->r +
-              s->nO + 3L * s->N + ABD_SOLVE_BLOCK * (long)s->N * (s->r + s->nO) +
+              s->nO + 2L * s->N + ABD_SOLVE_BLOCK * (long)s->N * (s->r + s->nO) +
               (s->sv_k ? (long)s->sv_k * (5L * s->n + 3L * s->sv_k + 3) : 0L) + (long)s->sv_lwork;
   long nu = (long)s->nband * (s->kl + s->ku) + 1, nl = (long)s->nband * s->kl + 1; /* compressed factors */
   *ndoubles += s->nband + nu + nl;
@@ -441,7 +439,7 @@ static void factor_interval(void *ctx, int j)
   double *O = L + (size_t)nI * (size_t)r;
   lapack_int *piv = s->loc_piv + (size_t)j * (size_t)nI;
   int sign = 1, status = 0;
-  double logabs = 0.0, umax = 0.0, amax = 0.0;
+  double logabs = 0.0, amax = 0.0;
   local_fill(s, J, j, L);
   for (size_t i = 0; i < s->loc_size; i++) {
     double x = fabs(L[i]);
@@ -460,14 +458,6 @@ static void factor_interval(void *ctx, int j)
     if (status >= 0) {
       cblas_dtrsm(CblasColMajor, CblasLeft, CblasLower, CblasNoTrans, CblasUnit, nI, nO, 1.0, L, r, O, r);
       cblas_dgemm(CblasColMajor, CblasNoTrans, CblasNoTrans, r - nI, nO, nI, -1.0, L + nI, r, O, r, 1.0, O + nI, r);
-      /* growth: the U rows of this stage and the condensed rows passed on */
-      for (int c = 0; c < nI + nO; c++) {
-        int top = c < nI ? c + 1 : r;
-        for (int i = 0; i < top; i++) {
-          double x = fabs(L[(size_t)c * (size_t)r + (size_t)i]);
-          if (x > umax) umax = x;
-        }
-      }
     }
   }
   if (status >= 0) {
@@ -490,7 +480,6 @@ static void factor_interval(void *ctx, int j)
   s->iv_status[j] = status;
   s->iv_sign[j] = sign;
   s->iv_logabs[j] = logabs;
-  s->iv_umax[j] = umax;
   s->iv_amax[j] = amax;
 }
 
@@ -522,7 +511,7 @@ int abd_solver_factor(abd_solver *s, const colloc_jac *J)
 
   const int nd = s->nd, nf = s->nf, nq = s->nq, N = s->N;
   int sign = s->perm_sign, singular = 0;
-  double logabs = 0.0, umax = 0.0;
+  double logabs = 0.0;
 
   s->band_overflow = 0;
   factor_ctx fc = {s, J};
@@ -541,7 +530,6 @@ int abd_solver_factor(abd_solver *s, const colloc_jac *J)
     if (s->iv_status[j] == 1) singular = 1;
     sign *= s->iv_sign[j];
     logabs += s->iv_logabs[j];
-    if (s->iv_umax[j] > umax) umax = s->iv_umax[j];
     if (s->iv_amax[j] > amax) amax = s->iv_amax[j];
   }
   if (amax < 1.0) amax = 1.0; /* the identity copy entries */
@@ -567,9 +555,9 @@ int abd_solver_factor(abd_solver *s, const colloc_jac *J)
     if (s->band.ipiv[i] != i) sign = -sign;
     det_accumulate(s->band.ud[i], &sign, &logabs);
   }
-  if (s->band.umax > umax) umax = s->band.umax;
 
-  s->growth = umax / amax;
+  s->growth_band = s->band.umax; /* the local stages' part: abd_solver_growth */
+  s->amax = amax;
   if (singular || sign == 0) {
     s->state = STATE_SINGULAR;
     s->det_sign = 0;
@@ -790,7 +778,26 @@ void abd_solver_det(const abd_solver *s, int *sign, double *logabs)
   *logabs = s->det_log;
 }
 
-double abd_solver_growth(const abd_solver *s) { return s->state == STATE_NONE ? (double)NAN : s->growth; }
+/* The local stages' max |U| is taken here, from the factors kept in the
+ * local blocks (the U rows of each stage and the condensed rows it passed
+ * on), not in every factorisation: only tests and diagnostics ask. */
+double abd_solver_growth(const abd_solver *s)
+{
+  if (s->state == STATE_NONE) return (double)NAN;
+  const int nI = s->nI, r = s->r, nO = s->nO;
+  double umax = s->growth_band;
+  for (int j = 0; j < s->N && nI > 0; j++) {
+    const double *L = loc_block(s, j);
+    for (int c = 0; c < nI + nO; c++) {
+      int top = c < nI ? c + 1 : r;
+      for (int i = 0; i < top; i++) {
+        double x = fabs(L[(size_t)c * (size_t)r + (size_t)i]);
+        if (x > umax) umax = x;
+      }
+    }
+  }
+  return umax / s->amax;
+}
 
 /* ---- smallest singular values ----------------------------------------- */
 
