@@ -9,7 +9,8 @@
  *   4. UZR and UZSTOP on a parameter that PVLS computes fire;
  *   5. branch points of BVPs are looked for with ISP = 2 or 3 only, and a
  *      switched run's first point has no label;
- *   6. an LP and a BP inside one step are both reported, in arclength order.
+ *   6. an LP and a BP inside one step are both reported, in arclength order;
+ *   7. a switch at a simple BP is oriented by AUTO's rule for AUTO's equations.
  * (run('NAME') = e='NAME', c='NAME': tests/test_cli.c and tests/python/test_commands.py.) */
 #include <math.h>
 #include <string.h>
@@ -323,6 +324,49 @@ static void test_lp_bp_one_step(memrun *r)
   test_int(what, nbad, 0);
 }
 
+/* 7. The orientation of a switch at a simple branch point, for equations from
+ * AUTO files (AUTO's STDRBV, the BVP start that ISW = -1 uses): the first free
+ * parameter's component that is not negligible is positive, else the first
+ * U(i) at t = 1 that is not.  At the elastica's pitchforks the kernel
+ * cos(n pi t) leaves lambda fixed, so AUTO makes theta(1) positive: the switch
+ * with DS > 0 starts with theta(1) > 0 at BP1, BP2 and BP3 (auto-07p's lin
+ * demo by the same rule: u'(1) > 0 at its BP1).  cable's own rule (the largest
+ * component positive) gives theta(1) < 0 at BP3; it stays for cable's problems
+ * (the scenes' switches). */
+static void test_switch_orientation(memrun *r)
+{
+  cable_constants c;
+  elastica_trivial_constants(&c, 50, 5);
+  memrun_run(cable_testproblem_elastica(), &c, NULL, r);
+  cable_solution *bp[3];
+  for (int k = 0; k < 3; k++) bp[k] = cable_solution_clone(memrun_find(r, CABLE_TY_BP, k));
+  memrun_free(r);
+  for (int k = 0; k < 3 && bp[2]; k++)
+    for (int rule = 0; rule < 2; rule++) {
+      engine_constants(&c, 50, 5);
+      c.isw = -1;
+      c.ds = 0.05; c.dsmin = 1e-6; c.dsmax = 0.05; c.nmx = 3;
+      c.isp = 2; c.ilp = 0;
+      c.bp_orient_auto = rule;
+      memrun_run(cable_testproblem_elastica(), &c, bp[k], r);
+      const cable_solution *e = r->nsol > 0 ? r->sol[r->nsol - 1] : NULL;
+      double th1 = e ? e->u[(size_t)(e->ntst * e->ncol) * (size_t)e->ndim] : (double)NAN, th0 = e ? e->u[0] : (double)NAN;
+      char what[200];
+      if (rule) {
+        snprintf(what, sizeof what, "AUTO's orientation, switch at BP%d with DS = +0.05: theta(1) > 0 after 2 steps "
+                 "(theta(1) = %.4f)", k + 1, th1);
+        test_true(what, th1 > 0);
+      } else if (k == 2) {
+        /* the two rules differ here, so the check above can fail */
+        snprintf(what, sizeof what, "cable's orientation, switch at BP3 with DS = +0.05: theta(1) < 0 after 2 steps "
+                 "(theta(0) = %.4f, theta(1) = %.4f)", th0, th1);
+        test_true(what, th1 < 0);
+      }
+      memrun_free(r);
+    }
+  for (int k = 0; k < 3; k++) cable_solution_free(bp[k]);
+}
+
 int main(void)
 {
   static memrun r;
@@ -332,5 +376,6 @@ int main(void)
   test_pvls_uzr(&r);
   test_isp(&r);
   test_lp_bp_one_step(&r);
+  test_switch_orientation(&r);
   return test_summary();
 }
