@@ -537,8 +537,9 @@ static int engine_run(cable_session *r, rp_setup *s, rp_branch **out, cable_erro
         return CABLE_ERR_INPUT;
       }
   }
-  /* AUTO's equations switch branches the way AUTO orients them */
-  if (prob.autoeq) s->c.bp_orient_auto = 1;
+  /* AUTO's equations switch branches the way AUTO orients them, cable's own problems
+     theirs (a restart keeps the stored constants: set it for this run's problem) */
+  s->c.bp_orient_auto = prob.autoeq;
   if (s->c.ignored[0])
     fprintf(rp_log(r), "  note: accepted and ignored, as AUTO does for boundary-value problems: %s\n", s->c.ignored);
   int st = 0;
