@@ -309,7 +309,7 @@ static int build_setup(cable_session *r, const cable_run_args *a, rp_setup *s, c
       res = &view;
       b = res->br[res->nbr - 1];
     }
-    s->c = b->c;
+    s->c = b->has_c_user ? b->c_user : b->c;
     s->names = b->names;
     snprintf(s->e, sizeof s->e, "%s", b->e);
     /* a stored solution's IRS is history: AUTO resets it */
@@ -537,6 +537,9 @@ static int engine_run(cable_session *r, rp_setup *s, rp_branch **out, cable_erro
         return CABLE_ERR_INPUT;
       }
   }
+  /* AUTO's equations switch branches the way AUTO orients them, cable's own problems
+     theirs (a restart keeps the stored constants: set it for this run's problem) */
+  s->c.bp_orient_auto = prob.autoeq;
   if (s->c.ignored[0])
     fprintf(rp_log(r), "  note: accepted and ignored, as AUTO does for boundary-value problems: %s\n", s->c.ignored);
   int st = 0;
@@ -552,9 +555,13 @@ static int engine_run(cable_session *r, rp_setup *s, rp_branch **out, cable_erro
       problem_release(r, &prob);
       return cable_error_set(err, st, NULL, 0, "ISW", "%s", msg);
     }
+    /* a point of a fold curve (NDIM = 2n) restarts the curve as it is
+       stored, with its direction (run(r2) after a fold run goes on, as in
+       AUTO); an LP starts it through the extended problem's STPNT */
+    int curve_restart = s->start && s->start->ndim == 2 * pb->ndim;
     pb = cable_fold_problem(fold);
     crun = cable_fold_constants(fold);
-    start = NULL;
+    start = curve_restart ? s->start : NULL;
   }
   cable_names_fill(&s->names, pb->parnames, pb->npar, pb->unames, pb->ndim);
   st = cable_cont_check(pb, crun, err);
@@ -591,6 +598,10 @@ static int engine_run(cable_session *r, rp_setup *s, rp_branch **out, cable_erro
   double t_start = now_seconds();
   collector col = {rp_branch_alloc(ibr, crun, &s->names, s->e), r->opt.diag, 0, isatty(fileno(stderr)),
                    r->opt.interrupt, r->opt.interrupt_ctx, 0};
+  if (col.b && fold) {
+    col.b->has_c_user = 1;
+    col.b->c_user = s->c;
+  }
   if (!col.b) {
     cable_cont_free(cc);
     cable_fold_free(fold);

@@ -30,6 +30,11 @@ typedef struct cable_branch {
   int nsol, capsol;
   cable_solution **sol;
   char *end_note;   /* why the branch ended abnormally (d-file), NULL: normal end */
+  /* a fold run (ISW=2): c holds the extended problem's constants (its files'
+     headers), c_user the run's own (original NDIM, NBC, NINT, ICP, ISW=2),
+     which a restart from the branch takes, as AUTO's run(r2) does */
+  int has_c_user;
+  cable_constants c_user;
 } rp_branch;
 
 /* A result: branches in order. */

@@ -116,6 +116,8 @@ rp_branch *rp_branch_copy(const rp_branch *b)
 {
   rp_branch *n = rp_branch_alloc(b->ibr, &b->c, &b->names, b->e);
   if (!n) return NULL;
+  n->has_c_user = b->has_c_user;
+  n->c_user = b->c_user;
   for (int i = 0; i < b->npt; i++) {
     const rp_point *p = &b->pts[i];
     if (rp_branch_add(n, &p->pt, p->sol >= 0 ? b->sol[p->sol] : NULL)) {
@@ -310,6 +312,8 @@ static rp_branch *join(const rp_branch *a, const rp_branch *b)
 {
   rp_branch *n = rp_branch_alloc(a->ibr, &a->c, &a->names, a->e);
   if (!n) return NULL;
+  n->has_c_user = a->has_c_user;
+  n->c_user = a->c_user;
   int k = 0;
   for (int pass = 0; pass < 2; pass++) {
     const rp_branch *src = pass ? a : b;

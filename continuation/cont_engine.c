@@ -487,8 +487,17 @@ int cable_cont_step(cable_cont *cc)
     swap_ptr(&cc->xdott, &cc->xdotq);
     cc->tft = cc->tfq;
     cc->queued = 0;
-    cc->itp = cc->itp_x = CABLE_TY_NONE;
+    cc->itp = cc->itp_x = cc->itp_q;
     cc->dip_at_x = 0;
+    if (cc->itp_q != CABLE_TY_NONE) {
+      /* the second special point located in one step (cont_locate_events) */
+      cc->ds_prev = cc->ds_used;
+      cc->ds_used = cc->ds_q;
+      cc->bp_kind = cc->bp_kind_q;
+      cc->uz_hit = cc->uz_hit_q;
+      cc->uz_stop = cc->uz_stop_q;
+      cc->itp_q = CABLE_TY_NONE;
+    }
     accept_trial(cc);
     cont_store_solution(cc, cc->itp, 0);
     check_limits(cc);
@@ -537,10 +546,10 @@ int cable_cont_step(cable_cont *cc)
   if (type != CABLE_TY_NONE) {
     /* the pencil's first predicted crossing seeds the BP location */
     double seed = type == CABLE_TY_BP && pr.n > 0 ? pr.t[0] * ds_step : (double)NAN;
-    rc = cont_locate(cc, type, which, seed); /* replaces the trial point by the located one */
-    if (rc == CABLE_SUCCESS) cc->itp = type;
-    if (rc == CABLE_SUCCESS && type == CABLE_TY_BP) cc->bp_kind = CABLE_BP_SIMPLE; /* det changed sign */
-    else snprintf(cc->note, sizeof cc->note, "%s", cc->err);
+    int itp;
+    rc = cont_locate_events(cc, type, which, seed, &itp); /* replaces the trial point by the located one */
+    if (rc == CABLE_SUCCESS) cc->itp = itp;
+    if (!(rc == CABLE_SUCCESS && type == CABLE_TY_BP)) snprintf(cc->note, sizeof cc->note, "%s", cc->err);
   } else if (pr.coincident && cont_dip_in_step(cc, pr.tmid * ds_step) == CABLE_SUCCESS && cc->queued) {
     cc->itp = CABLE_TY_BP;
     cc->dip_at_x = 1;

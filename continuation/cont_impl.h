@@ -68,6 +68,11 @@ struct cable_cont {
   int queued;                   /* 1: xq/xdotq/tfq is the next point to accept */
   double *xq, *xdotq;
   cont_tests tfq;
+  /* the queued point is itself a located special point (two test functions
+     change sign in one step, cont_locate_events): its type, the arclength
+     from the point emitted before it, and its user zero */
+  int itp_q, bp_kind_q, uz_hit_q, uz_stop_q;
+  double ds_q;
   int dip_at_x;                 /* the current point is a located dip */
   char note[600];               /* remark on the current point for the d-file ("" none) */
   int itp;                      /* type of the current point (0 regular) */
@@ -125,6 +130,11 @@ static inline int cont_bp_detect(const cable_cont *cc)
 }
 /* seed: a first guess of the arclength of the special point (NAN: none) */
 int cont_locate(cable_cont *cc, int type, int which, double seed);
+/* cont_locate, then every other test function that changes sign between x
+ * and the located point: the first of them in arclength is located too and
+ * goes first, the first located point waits in the queue (AUTO reports each
+ * in turn).  On success *itp is the type of the point that goes first. */
+int cont_locate_events(cable_cont *cc, int type, int which, double seed, int *itp);
 int cont_check_dip(cable_cont *cc);
 /* A minimum of sigma_1 inside the step predicted at arclength smid (two
  * coincident crossings of the pencil test): located like cont_check_dip. */

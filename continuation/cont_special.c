@@ -327,6 +327,91 @@ int cont_locate(cable_cont *cc, int type, int which, double seed)
   return rc;
 }
 
+/* Two test functions may change sign inside one step: an LP and a BP that
+ * coincide (the (7,2) knot's mode branches turn in T where a branch point
+ * sits: the LP located to EPSS may lie on the far side of the BP), or any
+ * two zeros closer than the step.  The event cont_find_event picks is the
+ * first by linear interpolation, not necessarily the first in arclength; once
+ * it is located, the test functions between x and the located point show
+ * whether another lies before it.  Then that one is located in the shorter
+ * bracket and emitted first, and the first located point is queued behind it
+ * (before, its sign change was consumed: the next step started beyond it).
+ * A second zero beyond the located point needs nothing: the next step starts
+ * there and finds it.  At most CONT_EVENTS_MAX points come out of one step. */
+#define CONT_EVENTS_MAX 2
+/* the fold test at a located BP is taken this fraction of its arclength back */
+#define CONT_BP_LP_BACK 1.0e-3
+
+int cont_locate_events(cable_cont *cc, int type, int which, double seed, int *itp)
+{
+  *itp = CABLE_TY_NONE;
+  int rc = cont_locate(cc, type, which, seed);
+  if (rc != CABLE_SUCCESS) return rc;
+  *itp = type;
+  if (type == CABLE_TY_BP) cc->bp_kind = CABLE_BP_SIMPLE; /* det changed sign */
+  if (CONT_EVENTS_MAX < 2) return rc;
+  if (type == CABLE_TY_BP && cc->c.ilp > 0) {
+    /* At the located BP the tangent is the interpolated one (branch_tangent):
+       its principal-parameter component is no fold test when a fold is
+       closer than the step's curvature error (a BP 0.005 from an LP: the
+       sign came out either way).  The branch's own tangent a little before
+       the BP (CONT_BP_LP_BACK of the way back) is regular and decides on
+       which side of the fold the BP lies. */
+    double sb = cc->ds_used, sback = sb * (1.0 - CONT_BP_LP_BACK);
+    cont_tests tb;
+    if (cont_correct(cc, cc->x, cc->xdot, sback, cc->w1) == CABLE_SUCCESS &&
+        cont_tangent(cc, cc->w1, cc->xdot, cc->w2, &tb) == CABLE_SUCCESS)
+      cc->tft.lp = cc->w2[cc->n - cc->nfpr];
+  }
+  /* the zero just located counts as passed at the located point: mask it */
+  cont_tests seen = cc->tft;
+  if (type == CABLE_TY_LP) seen.lp = cc->tf.lp;
+  else if (type == CABLE_TY_BP) seen.det_sign = cc->tf.det_sign;
+  else
+    for (int k = 0; k < cc->c.nuzr; k++)
+      if (cc->c.uzr[k].par == cc->c.uzr[which].par && cc->c.uzr[k].value == cc->c.uzr[which].value)
+        seen.uz[k] = cc->tf.uz[k];
+  int which2 = -1, type2 = cont_find_event(cc, &cc->tf, &seen, &which2);
+  if (type2 == CABLE_TY_NONE) return rc;
+  /* keep the located point: it goes second */
+  const size_t nb = (size_t)cc->n * sizeof *cc->xt;
+  memcpy(cc->xq, cc->xt, nb);
+  memcpy(cc->xdotq, cc->xdott, nb);
+  cc->tfq = cc->tft;
+  cc->itp_q = type;
+  cc->bp_kind_q = cc->bp_kind;
+  cc->uz_hit_q = cc->uz_hit;
+  cc->uz_stop_q = cc->uz_stop;
+  double s_first = cc->ds_used;
+  cc->uz_hit = -1;
+  cc->uz_stop = 0;
+  char note[200];
+  snprintf(note, sizeof note, "%.199s", cc->note);
+  int rc2 = cont_locate(cc, type2, which2, (double)NAN);
+  if (rc2 == CABLE_ERR_CALLBACK) return rc2;
+  if (rc2 != CABLE_SUCCESS) {
+    /* the located first point stands alone, as before; say what was missed */
+    char err[300];
+    snprintf(err, sizeof err, "%.299s", cc->err);
+    memcpy(cc->xt, cc->xq, nb);
+    memcpy(cc->xdott, cc->xdotq, nb);
+    cc->tft = cc->tfq;
+    cc->ds_used = s_first;
+    cc->bp_kind = cc->bp_kind_q;
+    cc->uz_hit = cc->uz_hit_q;
+    cc->uz_stop = cc->uz_stop_q;
+    cc->itp_q = CABLE_TY_NONE;
+    snprintf(cc->note, sizeof cc->note, "%.199s%.2sa second special point in this step was not located: %.299s", note,
+             note[0] ? "; " : "", err);
+    return CABLE_SUCCESS;
+  }
+  *itp = type2;
+  if (type2 == CABLE_TY_BP) cc->bp_kind = CABLE_BP_SIMPLE;
+  cc->ds_q = s_first - cc->ds_used;
+  cc->queued = 1;
+  return CABLE_SUCCESS;
+}
+
 /* A dip counts when sigma_1 at the middle point is a local minimum below
  * this fraction of the larger neighbour (two samples can straddle a zero of
  * sigma_1 almost symmetrically, so the smaller neighbour may be as small as

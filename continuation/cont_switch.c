@@ -126,6 +126,31 @@ static int canonical_kernel(cable_cont *cc, const double *v1, const double *v2, 
   return comp;
 }
 
+/* AUTO-07p's orientation of a starting direction (its STDRBV, which also
+ * starts a switched BVP branch, ISW < 0): of the unit vector, the first free
+ * parameter's component that is not negligible, |p'| / (1 + |p|) > EPSL, is
+ * made positive; when every one is negligible (a pitchfork: the bifurcating
+ * direction leaves the parameters fixed), the first solution component at
+ * t = 1 with |u_i'| / (1 + |u_i|) > EPSU.  (auto-07p's demo lin: the switch
+ * at BP1 follows u = -sqrt(2) sin(pi t), whose u' is positive at t = 1.) */
+static void orient_auto(cable_cont *cc, double *v)
+{
+  int n = cc->n, nfpr = cc->nfpr, nd = cc->ndim;
+  cont_normalize(cc, v);
+  int pick = -1;
+  for (int q = 0; q < nfpr && pick < 0; q++) {
+    int i = n - nfpr + q;
+    if (fabs(v[i]) / (1.0 + fabs(cc->x[i])) > cc->c.epsl) pick = i;
+  }
+  size_t last = (size_t)cc->sys->ntst * (size_t)cc->sys->ncol * (size_t)nd; /* the node at t = 1 */
+  for (int c = 0; c < nd && pick < 0; c++) {
+    size_t i = last + (size_t)c;
+    if (fabs(v[i]) / (1.0 + fabs(cc->x[i])) > cc->c.epsu) pick = (int)i;
+  }
+  if (pick >= 0 && v[pick] < 0)
+    for (int i = 0; i < n; i++) v[i] = -v[i];
+}
+
 /* The kernel's dimension from the three smallest singular values: the
  * numerical rank drops where the gap between consecutive singular values is
  * largest, and that gap must be at least 1 / CONT_SWITCH_SV_RATIO.  Testing
@@ -181,11 +206,15 @@ int cont_switch_direction(cable_cont *cc)
   double *dir = cc->xdot;
   if (dim == 1) {
     memcpy(dir, cc->svec, (size_t)n * sizeof *dir);
-    /* a deterministic orientation: the largest component (parameters included) positive */
-    int imax = 0;
-    for (int i = 1; i < n; i++)
-      if (fabs(dir[i]) > fabs(dir[imax])) imax = i;
-    if (dir[imax] < 0) for (int i = 0; i < n; i++) dir[i] = -dir[i];
+    if (cc->c.bp_orient_auto) {
+      orient_auto(cc, dir);
+    } else {
+      /* a deterministic orientation: the largest component (parameters included) positive */
+      int imax = 0;
+      for (int i = 1; i < n; i++)
+        if (fabs(dir[i]) > fabs(dir[imax])) imax = i;
+      if (dir[imax] < 0) for (int i = 0; i < n; i++) dir[i] = -dir[i];
+    }
     if (angle_set) snprintf(cc->note + len, sizeof cc->note - (size_t)len, "; BPANGLE ignored (simple kernel)");
   } else {
     double *e1 = cc->w1, *e2 = cc->w2;

@@ -8,7 +8,9 @@
  *      BP and is not shortened (the test function is ~0 at the start);
  *   4. UZR and UZSTOP on a parameter that PVLS computes fire;
  *   5. branch points of BVPs are looked for with ISP = 2 or 3 only, and a
- *      switched run's first point has no label.
+ *      switched run's first point has no label;
+ *   6. an LP and a BP inside one step are both reported, in arclength order;
+ *   7. a switch at a simple BP is oriented by AUTO's rule for AUTO's equations.
  * (run('NAME') = e='NAME', c='NAME': tests/test_cli.c and tests/python/test_commands.py.) */
 #include <math.h>
 #include <string.h>
@@ -132,30 +134,30 @@ static void test_after_switch(memrun *r)
   for (size_t q = 0; q < sizeof cases / sizeof cases[0] && bp[2]; q++) {
     engine_constants(&c, 50, 5);
     c.isw = -1;
-    c.ds = cases[q].ds; c.dsmin = 1e-6; c.dsmax = 2.0; c.nmx = 10;
+    c.ds = cases[0].ds; c.dsmin = 1e-6; c.dsmax = 2.0; c.nmx = 10;
     c.isp = 2; c.ilp = 0;
     c.epss = 1e-10;
     int st;
     steprec rec = {0};
     cable_cont *cc = cable_cont_alloc(cable_testproblem_elastica(), &c, &st);
-    if (st == CABLE_SUCCESS) st = cable_cont_set_start(cc, bp[cases[q].k]);
+    if (st == CABLE_SUCCESS) st = cable_cont_set_start(cc, bp[cases[0].k]);
     if (st == CABLE_SUCCESS) {
       cable_sink sink = {&rec, steprec_point, NULL, NULL};
       st = cable_cont_run(cc, &sink, 1, 1, NULL);
     }
     cable_cont_free(cc);
     char what[160];
-    snprintf(what, sizeof what, "switch at BP%d with DS = %+.2f, ISP = 2: 10 points, no BP reported", cases[q].k + 1,
+    snprintf(what, sizeof what, "switch at BP%d with DS = %+.2f, ISP = 2: 10 points, no BP reported", cases[0].k + 1,
              c.ds);
     test_true(what, st > 0 && rec.n == 10 && rec.nbp == 0);
     /* auto-07p (demos lin, bvp): a switched run's first point has no label */
-    snprintf(what, sizeof what, "switch at BP%d with DS = %+.2f: the first point is not labelled EP", cases[q].k + 1,
+    snprintf(what, sizeof what, "switch at BP%d with DS = %+.2f: the first point is not labelled EP", cases[0].k + 1,
              c.ds);
     test_int(what, rec.n > 0 ? rec.itp[0] : -99, CABLE_TY_NONE);
-    snprintf(what, sizeof what, "switch at BP%d with DS = %+.2f: the first step is |DS|", cases[q].k + 1, c.ds);
+    snprintf(what, sizeof what, "switch at BP%d with DS = %+.2f: the first step is |DS|", cases[0].k + 1, c.ds);
     test_rel(what, rec.n > 1 ? fabs(rec.ds[1]) : (double)NAN, fabs(c.ds), 1e-14);
     snprintf(what, sizeof what, "switch at BP%d with DS = %+.2f: L2-NORM after 9 steps > 1 (no collapse)",
-             cases[q].k + 1, c.ds);
+             cases[0].k + 1, c.ds);
     test_true(what, rec.n == 10 && rec.l2 > 1.0);
   }
   for (int k = 0; k < 3; k++) cable_solution_free(bp[k]);
@@ -197,7 +199,7 @@ static void test_pvls_uzr(memrun *r)
 {
   static const char *const names[] = {"lambda", "umax"};
   cable_problem pb = *cable_testproblem_bratu();
-  pb.npar = 2;
+  pb.npar = 3;
   pb.parnames = names;
   pb.pvls = bratu_pvls_umax;
   cable_constants c;
@@ -224,6 +226,147 @@ static void test_pvls_uzr(memrun *r)
   memrun_free(r);
 }
 
+
+/* 6. An LP and a BP inside one step are both reported, in the order of
+ * arclength (AUTO locates each test function's zero in turn).  The problem,
+ * NDIM = NBC = 2, u' = 0, PAR(1) = lambda, PAR(2) = a, PAR(3) = c:
+ *   lambda - (u1(0) - a)^2 = 0,   u2(0) (u1(0) - c - u2(0)^2) = 0.
+ * Its branch u2 = 0, lambda = (u1 - a)^2 has the fold (LP) at u1 = a,
+ * lambda = 0, and a pitchfork (BP) at u1 = c, lambda = (c - a)^2, where
+ * u2^2 = u1 - c branches off (the symmetry u2 -> -u2 keeps the corrector on
+ * u2 = 0).  With |c - a| = 0.005 and steps of 0.1 to 0.29, many steps hold
+ * both.  Before the rule 5 of these 80 runs lost one of the two (the point
+ * located first lay beyond the other zero, whose sign change was consumed;
+ * or the fold test at a located BP, from the interpolated tangent, had the
+ * wrong sign). */
+typedef struct { double u, a, c; } parab_start;
+static int parab_func(int ndim, const double *u, const int *icp, const double *par, int ijac, double *f,
+                      double *dfdu, double *dfdp, void *params)
+{
+  (void)ndim; (void)u; (void)icp; (void)par; (void)ijac; (void)dfdu; (void)dfdp; (void)params;
+  f[0] = f[1] = 0.0;
+  return 0;
+}
+static int parab_bcnd(int ndim, const double *par, const int *icp, int nbc, const double *u0, const double *u1,
+                      int ijac, double *fb, double *dbc, void *params)
+{
+  (void)ndim; (void)icp; (void)nbc; (void)u1; (void)ijac; (void)dbc; (void)params;
+  double d = u0[0] - par[1];
+  fb[0] = par[0] - d * d;
+  fb[1] = u0[1] * (u0[0] - par[2] - u0[1] * u0[1]);
+  return 0;
+}
+static int parab_stpnt(int ndim, double t, double *u, double *par, void *params)
+{
+  (void)ndim; (void)t;
+  const parab_start *s = params;
+  double d = s->u - s->a;
+  u[0] = s->u;
+  u[1] = 0.0;
+  par[0] = d * d;
+  par[1] = s->a;
+  par[2] = s->c;
+  return 0;
+}
+
+static void test_lp_bp_one_step(memrun *r)
+{
+  static const char *const names[] = {"lambda", "a", "c"};
+  const double a = 0.05, cs[2] = {0.045, 0.055};
+  int nbad = 0, nruns = 0;
+  for (int ic = 0; ic < 2; ic++)
+    for (int side = 0; side < 2; side++)
+      for (int k = 0; k < 20; k++) {
+        /* from u1 = 0.75 with DS < 0 (lambda falls, u1 falls) or from
+           u1 = -0.7 (lambda falls, u1 grows) */
+        parab_start st0 = {side ? -0.7 : 0.75, a, cs[ic]};
+        cable_problem pb = *cable_testproblem_bratu();
+        pb.name = "lpbp";
+        pb.ndim = 2; pb.nbc = 2; pb.nint = 0; pb.npar = 3;
+        pb.parnames = names; pb.unames = NULL;
+        pb.func = parab_func; pb.bcnd = parab_bcnd; pb.icnd = NULL; pb.stpnt = parab_stpnt; pb.pvls = NULL;
+        pb.func_has_jac = pb.bcnd_has_jac = pb.icnd_has_jac = 0;
+        pb.params = &st0;
+        cable_constants c;
+        engine_constants(&c, 4, 2);
+        c.jac = 0;
+        c.ds = -(0.1 + 0.01 * k); c.dsmin = 1e-6; c.dsmax = fabs(c.ds); c.iads = 0; c.nmx = 40;
+        c.rl0 = -1.0; c.rl1 = 2.0;
+        c.ilp = 1; c.isp = 2;
+        c.epsl = c.epsu = 1e-10; c.epss = 1e-8;
+        memrun_run(&pb, &c, NULL, r);
+        /* u1 moves monotonically along the branch here: the order of arclength
+           is the order of u1, falling from the right, growing from the left */
+        int ilp = -1, ibp = -1, nlp = 0, nbp = 0;
+        for (int i = 0; i < r->nsol; i++) {
+          if (r->sol[i]->itp == CABLE_TY_LP) { ilp = i; nlp++; }
+          if (r->sol[i]->itp == CABLE_TY_BP) { ibp = i; nbp++; }
+        }
+        int lp_first = (cs[ic] < a) == (side == 0);
+        int ok = nlp == 1 && nbp == 1 && (lp_first ? ilp < ibp : ibp < ilp) &&
+                 fabs(r->sol[ilp]->par[0]) < 1e-9 && fabs(r->sol[ilp]->u[0] - a) < 1e-6 &&
+                 fabs(r->sol[ibp]->par[0] - (cs[ic] - a) * (cs[ic] - a)) < 1e-9 &&
+                 fabs(r->sol[ibp]->u[0] - cs[ic]) < 1e-6;
+        if (!ok) {
+          nbad++;
+          fprintf(stderr, "  c = %g, from u1 = %g, DS = %g: %d LP, %d BP (status %d)", cs[ic], st0.u, c.ds, nlp, nbp,
+                  r->status);
+          for (int i = 0; i < r->nsol; i++) fprintf(stderr, " [%d %.3g %.6g]", r->sol[i]->itp, r->sol[i]->par[0], r->sol[i]->u[0]);
+          fprintf(stderr, "\n");
+        }
+        nruns++;
+        memrun_free(r);
+      }
+  char what[200];
+  snprintf(what, sizeof what,
+           "an LP and a BP 0.005 apart, %d runs with steps 0.1..0.29: each reports one LP (lambda = 0, u1 = a) and one "
+           "BP (lambda = (c - a)^2, u1 = c), in the order of arclength", nruns);
+  test_int(what, nbad, 0);
+}
+
+/* 7. The orientation of a switch at a simple branch point, for equations from
+ * AUTO files (AUTO's STDRBV, the BVP start that ISW = -1 uses): the first free
+ * parameter's component that is not negligible is positive, else the first
+ * U(i) at t = 1 that is not.  At the elastica's pitchforks the kernel
+ * cos(n pi t) leaves lambda fixed, so AUTO makes theta(1) positive: the switch
+ * with DS > 0 starts with theta(1) > 0 at BP1, BP2 and BP3 (auto-07p's lin
+ * demo by the same rule: u'(1) > 0 at its BP1).  cable's own rule (the largest
+ * component positive) gives theta(1) < 0 at BP3; it stays for cable's problems
+ * (the scenes' switches). */
+static void test_switch_orientation(memrun *r)
+{
+  cable_constants c;
+  elastica_trivial_constants(&c, 50, 5);
+  memrun_run(cable_testproblem_elastica(), &c, NULL, r);
+  cable_solution *bp[3];
+  for (int k = 0; k < 3; k++) bp[k] = cable_solution_clone(memrun_find(r, CABLE_TY_BP, k));
+  memrun_free(r);
+  for (int k = 0; k < 3 && bp[2]; k++)
+    for (int rule = 0; rule < 2; rule++) {
+      engine_constants(&c, 50, 5);
+      c.isw = -1;
+      c.ds = 0.05; c.dsmin = 1e-6; c.dsmax = 0.05; c.nmx = 3;
+      c.isp = 2; c.ilp = 0;
+      c.bp_orient_auto = rule;
+      memrun_run(cable_testproblem_elastica(), &c, bp[k], r);
+      const cable_solution *e = r->nsol > 0 ? r->sol[r->nsol - 1] : NULL;
+      double th1 = e ? e->u[(size_t)(e->ntst * e->ncol) * (size_t)e->ndim] : (double)NAN, th0 = e ? e->u[0] : (double)NAN;
+      char what[200];
+      if (rule) {
+        snprintf(what, sizeof what, "AUTO's orientation, switch at BP%d with DS = +0.05: theta(1) > 0 after 2 steps "
+                 "(theta(1) = %.4f)", k + 1, th1);
+        test_true(what, th1 > 0);
+      } else if (k == 2) {
+        /* the two rules differ here, so the check above can fail */
+        snprintf(what, sizeof what, "cable's orientation, switch at BP3 with DS = +0.05: theta(1) < 0 after 2 steps "
+                 "(theta(0) = %.4f, theta(1) = %.4f)", th0, th1);
+        test_true(what, th1 < 0);
+      }
+      memrun_free(r);
+    }
+  for (int k = 0; k < 3; k++) cable_solution_free(bp[k]);
+}
+
 int main(void)
 {
   static memrun r;
@@ -232,5 +375,7 @@ int main(void)
   test_after_switch(&r);
   test_pvls_uzr(&r);
   test_isp(&r);
+  test_lp_bp_one_step(&r);
+  test_switch_orientation(&r);
   return test_summary();
 }

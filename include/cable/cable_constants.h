@@ -103,6 +103,13 @@ typedef struct cable_constants {
   /* keys AUTO accepts and ignores for boundary-value problems (MXBF, ...),
      "KEY (line N)" separated by ", ", for the run's log; "" when none */
   char ignored[256];
+  /* 1: ISW=-1 at a simple branch point orients the kernel vector by AUTO's
+     rule (its STDRBV): the first free parameter whose component is not
+     negligible (|PAR'| / (1 + |PAR|) > EPSL) increases, else the first U(i)
+     at t = 1 with |U(i)'| / (1 + |U(i)|) > EPSU.  0: cable's rule (the
+     largest component positive).  No key: the session sets it for equations
+     from AUTO files (doc/auto-users.md). */
+  int bp_orient_auto;
 } cable_constants;
 
 /* AUTO-07p defaults (no problem key set). */

@@ -309,6 +309,16 @@ def test_fold_run_through_python(work):
     assert abs(u['Delta'] - 0.0163) <= 1e-9 * 0.0163
     assert abs(lp['Delta'] - 0.0163) <= 1e-14 * 0.0163
     assert abs(u['T'] - lp['T']) <= 1e-7 * abs(lp['T'])
+    # run(f), AUTO's third run of its demo int: a restart from the fold run
+    # takes the fold run's own constants (ISW=2, the original NDIM, ICP), so
+    # it continues the fold curve from f's last point, in f's direction
+    # (before: "ICP must list the 2 free parameter(s)", the extended problem's
+    # constants had been kept)
+    g = rn.run(f, NMX=3, UZR={}, sv='fold2')
+    df, dg = f['Delta'], g['Delta']
+    assert len(dg) == 3 and dg[0] == df[-1]
+    step = df[-1] - df[-2]
+    assert all((dg[i + 1] - dg[i]) * step > 0 for i in range(2))
 
 
 def test_problem_keys_and_prepare(work):
