@@ -443,8 +443,14 @@ static double dip_fn(double s, void *p)
 /* Brent minimisation of sigma_1 on [lo, hi] (arclength from x) from the
  * interior point mid where sigma_1 = fm is below the values fa, fb at the
  * ends; when the minimum nearly vanishes the located point becomes the trial
- * point and the old trial point is queued behind it. */
-static int dip_minimise(cable_cont *cc, double lo, double mid, double fm, double hi, double a, double b)
+ * point and the old trial point is queued behind it.  ref: the scale of
+ * sigma_1 (and sigma_2) away from the dip that "nearly vanishes" is measured
+ * against: the smaller neighbour, or the other one when a neighbour is a
+ * located branch point (its sigma_1 vanishes by construction, to the
+ * location's accuracy: judged against it, a double BP right after a located
+ * simple one, sigma = 7.2e-14, 8.0e-13 against 1.6e-11, counted as a pair). */
+static int dip_minimise(cable_cont *cc, double lo, double mid, double fm, double hi, double a, double b,
+                        double ref)
 {
   /* GSL reports a start that does not bracket a minimum through its
    * process-wide error handler, which a library must leave alone: test the
@@ -468,7 +474,7 @@ static int dip_minimise(cable_cont *cc, double lo, double mid, double fm, double
   double smin = gsl_min_fminimizer_x_minimum(mz);
   gsl_min_fminimizer_free(mz);
   double fmin_val = dip_fn(smin, &ctx); /* leaves the point in w1, w2 and ctx.t */
-  if (!(fmin_val < CONT_SV_ZERO_REL * fmin(a, b))) {
+  if (!(fmin_val < CONT_SV_ZERO_REL * ref)) {
     snprintf(cc->note, sizeof cc->note,
              "smallest singular value dips to %.3e (neighbours %.3e, %.3e): no branch point", fmin_val, a, b);
     return CABLE_TY_NONE;
@@ -485,7 +491,7 @@ static int dip_minimise(cable_cont *cc, double lo, double mid, double fm, double
   cont_tests_fill(cc, cc->xt, cc->xdott, &cc->tft);
   cc->tft.det_sign = cc->tfq.det_sign; /* no sign change is counted across the dip */
   cc->ds_used = smin;
-  int dbl = ctx.t.sv2 > 0 && ctx.t.sv2 < CONT_SV_ZERO_REL * fmin(a, b);
+  int dbl = ctx.t.sv2 > 0 && ctx.t.sv2 < CONT_SV_ZERO_REL * ref;
   cc->bp_kind = dbl ? CABLE_BP_DOUBLE : CABLE_BP_PAIR;
   snprintf(cc->note, sizeof cc->note,
            "%s: det keeps its sign, sigma1 = %.3e, sigma2 = %.3e (neighbours %.3e, %.3e)%s",
@@ -502,7 +508,7 @@ int cont_check_dip(cable_cont *cc)
      nothing (AUTO), and after a switch its sigma_1 is the BP's ~0 */
   if (!cont_bp_detect(cc) || cc->npt < 3 || !(a > 0 && m > 0 && b > 0)) return CABLE_TY_NONE;
   if (!(m < a && m < b && m < CONT_DIP_RATIO * fmax(a, b))) return CABLE_TY_NONE;
-  return dip_minimise(cc, -fabs(cc->ds_prev), 0.0, m, fabs(cc->ds_used), a, b);
+  return dip_minimise(cc, -fabs(cc->ds_prev), 0.0, m, fabs(cc->ds_used), a, b, fmin(a, b));
 }
 
 int cont_dip_in_step(cable_cont *cc, double smid)
@@ -512,5 +518,9 @@ int cont_dip_in_step(cable_cont *cc, double smid)
   dip_ctx ctx = {cc, cc->tf, fmax(a, b)};
   double m = dip_fn(smid, &ctx);
   if (!(m < a && m < b)) return CABLE_TY_NONE;
-  return dip_minimise(cc, 0.0, smid, m, cc->ds_used, a, b);
+  /* x itself may be the branch point located at the start of this step
+     (cont_engine.c: the pencil test's coincident crossings are looked at
+     after the determinant's sign change is located) */
+  int x_located = cc->itp_x == CABLE_TY_BP;
+  return dip_minimise(cc, 0.0, smid, m, cc->ds_used, a, b, x_located ? b : fmin(a, b));
 }

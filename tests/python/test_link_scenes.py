@@ -20,7 +20,9 @@ These are also the regression tests of the BP location fixes (cont_special.c):
     one, was not located; the simple BP at 17.55 was missed by the location
     and found by the dip test;
   - link102: the simple BPs at T = 30.77 and 35.75 were not located;
-  - the double BP at T = 23.57 was switched as simple.
+  - the double BP at T = 23.57 was switched as simple;
+  - link62 at DSMAX = 5: the double BP at T = 29.93, found in the step after
+    the located simple BP at 29.81, was labelled a 'pair'.
 The mode branches themselves (hundreds of steps each) are left to
 make scenes; CABLE_TEST_QUICK skips the replays."""
 import os
@@ -77,9 +79,11 @@ def test_link62(work):
     # DSMAX = 5, the value that used to lose the simple BP at 29.81; doc/links.md
     # (NTST 100): 10.0783 double, 17.5496 simple, 23.5720 double, 29.8077
     # simple, 29.93 double; at DSMAX = 5 the last is found by the dip test
-    # right after the located simple one, whose sigma_1 makes the dip's
-    # neighbour vanish: it counts as a pair (two simple BPs in the step)
-    want = [(10.0783, 'double'), (17.5496, 'simple'), (23.5720, 'double'), (29.8077, 'simple'), (29.9320, 'pair')]
+    # in the step right after the located simple one, whose sigma_1 (1.6e-11)
+    # is the dip's neighbour: judged against it instead of the other
+    # neighbour (1.4e-7), sigma_2 = 8.0e-13 did not vanish and the double BP
+    # counted as a pair (cont_special.c, dip_minimise's ref)
+    want = [(10.0783, 'double'), (17.5496, 'simple'), (23.5720, 'double'), (29.8077, 'simple'), (29.9320, 'double')]
     out, bad = check_flat(
         work, 'link62', ['c.link62', 'c.link62mode'],
         "flat = run(e='braid_link', c='link62', NTST=50, DSMAX=5.0, %s, UZSTOP={'T': 30.5}, sv='flat')" % ICP,
