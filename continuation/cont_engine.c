@@ -549,7 +549,9 @@ int cable_cont_step(cable_cont *cc)
     int itp;
     rc = cont_locate_events(cc, type, which, seed, &itp); /* replaces the trial point by the located one */
     if (rc == CABLE_SUCCESS) cc->itp = itp;
-    if (!(rc == CABLE_SUCCESS && type == CABLE_TY_BP)) snprintf(cc->note, sizeof cc->note, "%s", cc->err);
+    /* only a failure's message: cc->err keeps the last failure of the run,
+       which a point located later must not inherit */
+    if (rc != CABLE_SUCCESS) snprintf(cc->note, sizeof cc->note, "%s", cc->err);
   } else if (pr.coincident && cont_dip_in_step(cc, pr.tmid * ds_step) == CABLE_SUCCESS && cc->queued) {
     cc->itp = CABLE_TY_BP;
     cc->dip_at_x = 1;
