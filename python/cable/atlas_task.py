@@ -32,6 +32,14 @@ _ICP = {('knot', False): ['T', 'L', 'L2', 'eps21', 'F', 'h', 'Ham'],
         ('link', False): ['T', 'F', 'h', 'Ham', 'Phi'],
         ('link', True): ['T', 'eps13', 'F', 'h', 'Ham', 'Phi']}
 
+# A task is one core's work: a Dask worker runs one task at a time and a
+# machine has a worker per core, so the structured solver runs on one thread
+# (NTHREADS; its results are the same bit for bit for every value, doc/engine.md)
+# and so does the BLAS (run_task: the choice the cable program makes at start;
+# a threaded OpenBLAS spent most of an atlas task spinning, doc/atlas.md 7).
+# Neither is an input of the task's key: neither changes its result.
+TASK_THREADS = 1
+
 ROW_FIELDS = ['family', 'kind', 'p', 'hand', 'Delta', 'arm', 'mode', 'bp_T', 'bp_F', 'bp_multiplicity',
               'formulation', 'segment', 'passages', 'companion', 'crossings', 'Lk', 'Lk_tube', 'overlap_free',
               'LAB_free', 'T_free', 'F_free', 'LAB_free_end', 'T_free_end', 'F_free_end', 'free_end', 'dmin',
@@ -57,6 +65,7 @@ def _flat_constants(inp):
          'PAR': par, 'NTST': inp['mesh']['NTST'], 'NCOL': inp['mesh']['NCOL'], 'JAC': 1, 'ISP': 2, 'ILP': 0,
          'NSV': 2}
     c.update(inp['flat'])
+    c['NTHREADS'] = TASK_THREADS
     c['DS'] = inp['arm'] * abs(c['DS'])
     c['STOP'] = ['BP%d' % inp['mode']]   # BPs of the other arm never come: the run goes one way from T = 0
     return c
@@ -67,6 +76,7 @@ def _branch_constants(inp, sym):
     c = {'e': e, 'NDIM': 21, 'IPS': 4, 'ICP': _ICP[(inp['kind'], sym)], 'NTST': inp['mesh']['NTST'],
          'NCOL': inp['mesh']['NCOL'], 'JAC': 1, 'ISW': -1, 'ISP': 0, 'ILP': 0}
     c.update(inp['branch'])
+    c['NTHREADS'] = TASK_THREADS
     return c
 
 
@@ -135,15 +145,19 @@ def branch_rows(mode_result, bp, lk_bp, base):
     return rows
 
 
-def compute(inp, log):
+def compute(inp, times):
     """The task's continuation and analysis in the current directory;
-    returns its rows (a failed step raises)."""
+    returns its rows (a failed step raises).  times (a dict) receives the
+    wall seconds of its stages: flat, branch (the two runs, their b./s./d.
+    files included) and analysis (the rows)."""
     runner = Runner()
+    t0 = time.time()
     fc = _flat_constants(inp)
     _constants_file('c.flat', '# flat branch of the atlas task (cable.atlas)', fc)
     # e= is given to run() as well: from a start solution the runner keeps the start's problem over a
     # constants file's e (measured: c.branch's e = 'braid_knot_sym' alone left the switch in braid_knot)
     flat = runner.run(c='flat', e=fc['e'], sv='flat')
+    times['flat'] = time.time() - t0
     bps = [b for b in flat('BP') if b['T'] * inp['arm'] > 0]
     if len(bps) < inp['mode']:
         end = flat()[-1]
@@ -157,11 +171,16 @@ def compute(inp, log):
     bc = _branch_constants(inp, sym)
     _constants_file('c.branch', '# the branch from branch point %d (cable.atlas)' % inp['mode'], bc)
     lk_bp = _cable.analyze(*bp.branch)['Lk']
+    t1 = time.time()
     mode = runner.run(bp, c='branch', e=bc['e'], sv='branch')
+    t2 = time.time()
+    times['branch'] = t2 - t1
     base = {'family': _family(inp), 'kind': inp['kind'], 'p': inp['p'], 'hand': inp['hand'], 'Delta': inp['Delta'],
             'arm': inp['arm'], 'mode': inp['mode'], 'bp_T': bp['T'], 'bp_F': bp['F'],
             'bp_multiplicity': 2 if sym else 1, 'formulation': bc['e']}
-    return branch_rows(mode, bp, lk_bp, base)
+    rows = branch_rows(mode, bp, lk_bp, base)
+    times['analysis'] = time.time() - t2 + (t1 - t0 - times['flat'])
+    return rows
 
 
 def _flush_all():
@@ -206,11 +225,13 @@ def run_task(inputs, name, out_dir):
         write_atomic(os.path.join(part, 'task.json'), json.dumps(inputs, indent=1, sort_keys=True) + '\n')
         write_atomic(os.path.join(part, 'pid'), '%d\n' % os.getpid())
         here = os.getcwd()
+        _cable.blas_single_thread()
+        times = {}
         t0 = time.time()
         saved = _redirect(os.path.join(part, 'log.txt'))
         try:
             os.chdir(part)
-            rows, status, error = compute(inputs, None), 'ok', ''
+            rows, status, error = compute(inputs, times), 'ok', ''
         except Exception as e:   # recorded in the result: the sweep goes on
             _flush_all()
             with open(os.path.join(part, 'log.txt'), 'a') as fh:
@@ -226,8 +247,9 @@ def run_task(inputs, name, out_dir):
             for f in os.listdir(part):
                 if f[:2] in ('b.', 's.', 'd.'):
                     os.remove(os.path.join(part, f))
+        times['total'] = wall
         result = {'name': name, 'status': status, 'error': error, 'wall': wall, 'rows': rows,
-                  'host': socket.gethostname(), 'inputs': inputs}
+                  'host': socket.gethostname(), 'inputs': inputs, 'times': times}
         write_atomic(os.path.join(part, 'result.json'), json.dumps(result, indent=1) + '\n')
         os.remove(os.path.join(part, 'pid'))
         if os.path.exists(final):   # another worker finished it meanwhile (a retried task): keep the first

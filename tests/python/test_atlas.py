@@ -301,3 +301,49 @@ def test_failing_task_is_recorded(work):
     assert len(rows) == 1 and rows[0]['status'] == 'failed' and rows[0]['task'] == t.name
     table = atlas.read_csv(os.path.join(sweep.output, 'atlas.csv'))
     assert table[0]['status'] == 'failed' and table[0]['error'] == r['error'] and table[0]['Lk'] == ''
+
+
+def _openblas_threads():
+    """OpenBLAS's thread count in this process (None: no OpenBLAS loaded)."""
+    import ctypes
+    for lib in ('libblas.so.3', 'libopenblas.so.0'):
+        try:
+            h = ctypes.CDLL(lib, mode=os.RTLD_NOLOAD | os.RTLD_LAZY)
+        except OSError:
+            continue
+        f = getattr(h, 'openblas_get_num_threads', None)
+        if f is not None:
+            return f()
+    return None
+
+
+def test_task_runs_on_one_core(work, monkeypatch):
+    """A task is one core's work (doc/atlas.md, 7): its runs have NTHREADS = 1
+    (not an input of its key: the engine's results are the same for every
+    NTHREADS), the process's OpenBLAS is asked for one thread (a threaded one
+    spun on the shared cores), and result.json splits the task's wall time
+    into its stages."""
+    from cable import _cable
+    monkeypatch.delenv('CABLE_BLAS_THREADS', raising=False)
+    before = _openblas_threads()
+    path = _write(work, TINY.replace('p = [4]', 'p = [6]').replace('NMX = 30', 'NMX = 4'))
+    sweep = atlas.load(path)
+    assert all('NTHREADS' not in t.inputs['flat'] and 'NTHREADS' not in t.inputs['branch'] for t in sweep.tasks)
+    t = sweep.tasks[0]
+    r = atlas.run_task(t.inputs, t.name, sweep.output)
+    assert r['status'] == 'ok', r['error']
+    d = os.path.join(sweep.output, 'tasks', t.name)
+    for c in ('c.flat', 'c.branch'):
+        assert 'NTHREADS=1\n' in open(os.path.join(d, c)).read(), c
+    if before is not None:   # OpenBLAS is this machine's BLAS (Debian's default alternative)
+        assert _openblas_threads() == 1
+        monkeypatch.setenv('CABLE_BLAS_THREADS', '2')   # the user's override, as for the cable program
+        _cable.blas_single_thread()
+        assert _openblas_threads() == 2
+        monkeypatch.delenv('CABLE_BLAS_THREADS')
+        _cable.blas_single_thread()
+        assert _openblas_threads() == 1
+    times = r['times']
+    assert set(times) == {'flat', 'branch', 'analysis', 'total'}
+    assert all(v >= 0 for v in times.values()) and times['total'] == r['wall']
+    assert times['flat'] + times['branch'] + times['analysis'] <= times['total']
