@@ -346,4 +346,52 @@ def test_task_runs_on_one_core(work, monkeypatch):
     times = r['times']
     assert set(times) == {'flat', 'branch', 'analysis', 'total'}
     assert all(v >= 0 for v in times.values()) and times['total'] == r['wall']
-    assert times['flat'] + times['branch'] + times['analysis'] <= times['total']
+    # the flat branch is the shared one's (its own result.json), computed before the task
+    with open(os.path.join(sweep.output, 'flat', r['flat'], 'result.json')) as f:
+        assert times['flat'] == json.load(f)['wall']
+    assert times['branch'] + times['analysis'] <= times['total']
+
+
+def test_flat_branch_shared_by_modes(work):
+    """A sweep computes a family's flat branch once per (family, Delta, arm),
+    to its highest mode's branch point, as a keyed result of its own
+    (OUT/flat/NAME), and each mode task starts from it.  The branch points
+    are those of a flat run that stops at the task's own branch point (the
+    run is the same up to there: equal bit for bit), and a resumed sweep
+    reuses the flat branch."""
+    path = _write(work, TINY.replace('modes = [1]', 'modes = [1, 2]').replace('p = [4]', 'p = [6]')
+                  .replace('kind = "link"', 'kind = "knot"').replace('p = [6]', 'p = [5]')
+                  .replace('NMX = 30', 'NMX = 6'))
+    sweep = atlas.load(path)
+    assert [(t.inputs['p'], t.inputs['mode']) for t in sweep.tasks] == [(3, 1), (3, 2), (5, 1), (5, 2)]
+    flats = {t.flat.key for t in sweep.tasks}
+    assert len(flats) == 2 and all(t.flat.inputs['bps'] == 2 for t in sweep.tasks)
+    rc, out, err = _finish(_start(path, workers=1))
+    assert rc == 0 and '4 computed (0 failed)' in out, out + err
+    fdir = os.path.join(sweep.output, 'flat')
+    assert sorted(os.listdir(fdir)) == sorted({t.flat.name for t in sweep.tasks})
+    results = {t.name: json.loads(d) for t, d in zip(sweep.tasks, [_results(sweep)[t.name] for t in sweep.tasks])}
+    for t in sweep.tasks:
+        r = results[t.name]
+        assert r['status'] == 'ok' and r['flat'] == t.flat.name
+        with open(os.path.join(fdir, t.flat.name, 'result.json')) as f:
+            flat = json.load(f)
+        assert flat['status'] == 'ok' and len(flat['bps']) == 2
+        bp = flat['bps'][t.inputs['mode'] - 1]
+        assert r['rows'][0]['bp_T'] == bp['T'] and r['rows'][0]['bp_F'] == bp['F']
+        assert r['rows'][0]['bp_multiplicity'] == 2 == (2 if bp['kind'] == 'double' else 1)
+        # the flat run stopped at the task's own branch point (run_task alone) finds it bit for bit
+        if t.inputs['mode'] == 1 and t.inputs['p'] == 3:
+            alone = atlas.run_task(t.inputs, t.name, os.path.join(str(work), 'alone'))
+            assert alone['flat'] != t.flat.name and alone['rows'][0]['bp_T'] == bp['T']
+            assert alone['rows'][0]['bp_F'] == bp['F']
+    # resumed after the flat branches (not the tasks) finished: the flat branches are not recomputed
+    keep = {n: os.stat(os.path.join(fdir, n, 'result.json')).st_mtime_ns for n in os.listdir(fdir)}
+    for t in sweep.tasks:
+        import shutil
+        shutil.rmtree(os.path.join(sweep.output, 'tasks', t.name))
+    rc, out, err = _finish(_start(path, workers=1))
+    assert rc == 0 and '0 finished earlier, 4 computed (0 failed)' in out, out + err
+    assert {n: os.stat(os.path.join(fdir, n, 'result.json')).st_mtime_ns for n in os.listdir(fdir)} == keep
+    for t in sweep.tasks:
+        assert json.loads(_results(sweep)[t.name])['rows'][0]['bp_T'] == results[t.name]['rows'][0]['bp_T']
