@@ -352,7 +352,7 @@ static double dip_fn(double s, void *p)
   if (cont_correct(cc, cc->x, cc->xdot, s, cc->w1) != CABLE_SUCCESS ||
       cont_tangent(cc, cc->w1, cc->xdot, cc->w2, &d->t) != CABLE_SUCCESS)
     return d->penalty; /* steer the search away from points that do not converge */
-  return d->t.sv1;
+  return isfinite(d->t.sv1) ? d->t.sv1 : d->penalty; /* GSL's Brent calls its error handler on NaN */
 }
 
 /* Brent minimisation of sigma_1 on [lo, hi] (arclength from x) from the
@@ -361,12 +361,19 @@ static double dip_fn(double s, void *p)
  * point and the old trial point is queued behind it. */
 static int dip_minimise(cable_cont *cc, double lo, double mid, double fm, double hi, double a, double b)
 {
+  /* GSL reports a start that does not bracket a minimum through its
+   * process-wide error handler, which a library must leave alone: test the
+   * same conditions here first (gsl_min_fminimizer_set_with_values). */
+  if (!(lo < mid && mid < hi && fm < a && fm < b && isfinite(a) && isfinite(b))) {
+    snprintf(cc->note, sizeof cc->note,
+             "smallest singular value %.3e does not dip below its neighbours %.3e, %.3e: no branch point", fm, a, b);
+    return CABLE_TY_NONE;
+  }
   dip_ctx ctx = {cc, cc->tf, fmax(a, b)};
   gsl_function F = {dip_fn, &ctx};
   cc->cnt.dips++;
   gsl_min_fminimizer *mz = gsl_min_fminimizer_alloc(gsl_min_fminimizer_brent);
   if (!mz) return CABLE_ERR_ALLOC;
-  gsl_error_handler_t *old = gsl_set_error_handler_off();
   int st = gsl_min_fminimizer_set_with_values(mz, &F, mid, fm, lo, a, hi, b);
   for (int it = 0; st == GSL_SUCCESS && it < CONT_DIP_MAXIT; it++) {
     if (gsl_min_fminimizer_iterate(mz) != GSL_SUCCESS) break;
@@ -375,7 +382,6 @@ static int dip_minimise(cable_cont *cc, double lo, double mid, double fm, double
   }
   double smin = gsl_min_fminimizer_x_minimum(mz);
   gsl_min_fminimizer_free(mz);
-  gsl_set_error_handler(old);
   double fmin_val = dip_fn(smin, &ctx); /* leaves the point in w1, w2 and ctx.t */
   if (!(fmin_val < CONT_SV_ZERO_REL * fmin(a, b))) {
     snprintf(cc->note, sizeof cc->note,
