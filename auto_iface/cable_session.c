@@ -795,9 +795,8 @@ int cable_session_load(cable_session *r, const cable_run_args *a, cable_branch *
   /* AUTO's load('name') / load(s='name') without IRS: the file's last solution */
   int n = s.sf ? cable_sfile_count(s.sf) : 0;
   if (!rc && !s.start && n > 0 && s.c.irs == 0 && !s.c.irs_name[0]) s.start = cable_sfile_get(s.sf, n - 1);
-  if (!rc && !s.start)
-    rc = cable_error_set(err, CABLE_ERR_NOTFOUND, NULL, 0, "load", "no solution to load (give a start, a name or s=)");
-  if (!rc) {
+  /* no solution (a run from STPNT): AUTO's ld(e=..., c=...) sets the runner's constants only */
+  if (!rc && s.start) {
     rp_branch *b = rp_branch_alloc(s.start->ibr, &s.c, &s.names, s.e);
     cable_point pt;
     memset(&pt, 0, sizeof pt);

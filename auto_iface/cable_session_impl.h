@@ -90,6 +90,25 @@ int rp_result_write(const cable_session *r, const rp_result *res, const char *na
 int rp_result_read(const cable_session *r, const char *name, const cable_constants *c,
                    const cable_names *names, const char *e, rp_result **out, cable_error *err);
 
+/* ---- d-file notes (cable_session_dnotes.c) ------------------------------------------- */
+
+/* The engine's NOTE of each labelled point of a d-file, by label. */
+typedef struct rp_dnotes {
+  int found;   /* the d-file exists */
+  int n;
+  int *lab;
+  char **note;
+} rp_dnotes;
+
+/* Reads path (a missing file gives no notes); 0 or CABLE_ERR_ALLOC. */
+int rp_dnotes_read(const char *path, rp_dnotes *d);
+void rp_dnotes_free(rp_dnotes *d);
+/* The note of label lab, NULL: none. */
+const char *rp_dnotes_find(const rp_dnotes *d, int lab);
+/* A BP's kind (enum cable_bp_kind) from its d-file note; CABLE_BP_UNKNOWN
+ * when itp is no BP. */
+int rp_bp_kind_from_note(int itp, const char *note);
+
 /* AUTO's merge: a branch that starts where the previous one started (the two
  * directions from one start) is joined to it; relabel: labels 1, 2, ... */
 int rp_result_merge(const rp_result *in, rp_result **out);

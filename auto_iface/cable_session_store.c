@@ -224,7 +224,11 @@ int rp_result_read(const cable_session *r, const char *name, const cable_constan
   rp_path(r, "b", name, path, sizeof path);
   cable_error berr;
   cable_bfile *bf = cable_bfile_read(path, &berr);   /* optional: only for the norms */
-  int n = cable_sfile_count(sf), rc = 0, nbr = 0;
+  /* the engine's notes (d.NAME) give the labelled points their notes and the BPs their kinds */
+  rp_dnotes dn;
+  rp_path(r, "d", name, path, sizeof path);
+  int rc = rp_dnotes_read(path, &dn);
+  int n = cable_sfile_count(sf), nbr = 0;
   for (int i = 0; i < n; i++)
     if (i == 0 || cable_sfile_get(sf, i)->ibr != cable_sfile_get(sf, i - 1)->ibr) nbr++;
   rp_result *res = rp_result_alloc(nbr);
@@ -268,8 +272,11 @@ int rp_result_read(const cable_session *r, const char *name, const cable_constan
         if (bb->lab[q] == s->lab) pt.l2norm = l2[q];
     }
     pt.measure = cable_solution_measure(s, c->iplt, pt.l2norm);
+    pt.note = rp_dnotes_find(&dn, s->lab);
     rc = rp_branch_add(res->br[k], &pt, s);
+    if (!rc && dn.found) res->br[k]->sol[res->br[k]->nsol - 1]->bp_kind = rp_bp_kind_from_note(s->itp, pt.note);
   }
+  rp_dnotes_free(&dn);
   cable_bfile_free(bf);
   cable_sfile_free(sf);
   if (rc) {

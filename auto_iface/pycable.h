@@ -31,6 +31,10 @@ int pyc_branches_from(PyObject *seq, cable_branch ***out, int *n);
 /* The solution i of a Branch argument, or NULL with an exception. */
 const cable_solution *pyc_solution_arg(PyObject *branch, int i);
 
+/* AUTO constants as a dict with AUTO's keys (pycable_constants.c); names
+ * name the parameters (NULL: indices); e the problem (NULL: c->e). */
+PyObject *pyc_constants_dict(const cable_constants *c, const cable_names *names, const char *e);
+
 PyObject *pyc_analyze(PyObject *mod, PyObject *args);
 PyObject *pyc_passages(PyObject *mod, PyObject *args);
 PyObject *pyc_tube_dmin(PyObject *mod, PyObject *args);

@@ -155,7 +155,7 @@ static PyObject *branch_solution(PyObject *self, PyObject *arg)
 /* Labels, types and the parameters of the labelled solutions, cheaply:
  * [(LAB, TY, BR, PT, par ndarray, note or None, BP kind), ...]; the kind is
  * the detector's (cable_solution.bp_kind): 'simple', 'double', 'pair', or ''
- * (not a BP, or read from an s-file, which does not store it). */
+ * (not a BP, or read from an s-file without its d-file, which keeps it). */
 static PyObject *branch_labels(PyObject *self, PyObject *unused)
 {
   (void)unused;
@@ -244,9 +244,18 @@ static PyObject *branch_get_icp(PyObject *self, void *closure)
   return out;
 }
 
+/* constants() -> dict: the constants the branch was computed with (AUTO's s.c) */
+static PyObject *branch_constants(PyObject *self, PyObject *noargs)
+{
+  (void)noargs;
+  const cable_branch *b = ((pyc_branch *)self)->b;
+  return pyc_constants_dict(cable_branch_constants(b), cable_branch_names(b), cable_branch_problem(b));
+}
+
 static PyMethodDef branch_methods[] = {
     {"points", branch_points, METH_NOARGS, "the branch's points (b-file rows) as numpy arrays"},
     {"solution", branch_solution, METH_O, "labelled solution i: a dict of its data (numpy arrays)"},
+    {"constants", branch_constants, METH_NOARGS, "the constants of the branch's run as a dict (AUTO's s.c)"},
     {"labels", branch_labels, METH_NOARGS, "[(LAB, TY, BR, PT, par), ...] of the labelled solutions"},
     {NULL, NULL, 0, NULL}};
 

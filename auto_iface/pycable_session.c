@@ -141,6 +141,7 @@ static PyObject *session_load(PyObject *obj, PyObject *args)
   cable_error_clear(&err);
   int rc = cable_session_load(self->s, &in.a, &b, &err);
   inputs_free(&in);
+  if (!rc && !b) Py_RETURN_NONE;   /* no solution: the runner's constants were set */
   return rc ? pyc_raise(rc, &err) : pyc_branch_wrap(b);
 }
 
@@ -210,13 +211,28 @@ static PyObject *session_transform_files(PyObject *obj, PyObject *args)
   Py_RETURN_NONE;
 }
 
+/* constants() -> dict: the runner's constants (AUTO's pr()), what the next
+ * run without a start and without c= uses */
+static PyObject *session_constants(PyObject *obj, PyObject *noargs)
+{
+  (void)noargs;
+  const cable_constants *c;
+  const cable_names *names;
+  const char *e;
+  cable_error err;
+  cable_error_clear(&err);
+  int rc = cable_session_constants(((pyc_session *)obj)->s, &c, &names, &e, &err);
+  return rc ? pyc_raise(rc, &err) : pyc_constants_dict(c, names, e);
+}
+
 static PyMethodDef session_methods[] = {
     {"run", session_run, METH_VARARGS, "run(start, sol, name, e, c, s, sv, ap, overrides) -> Branch"},
-    {"load", session_load, METH_VARARGS, "load(start, sol, name, e, c, s, sv, ap, overrides) -> Branch"},
+    {"load", session_load, METH_VARARGS, "load(start, sol, name, e, c, s, sv, ap, overrides) -> Branch or None (no solution)"},
     {"save", session_save, METH_VARARGS, "save(branches, sol, name, append)"},
     {"loadbd", session_loadbd, METH_VARARGS, "loadbd(name) -> [Branch, ...]"},
     {"transform", session_transform, METH_VARARGS, "transform(branches, relabel) -> [Branch, ...]"},
     {"transform_files", session_transform_files, METH_VARARGS, "transform_files(name, relabel)"},
+    {"constants", session_constants, METH_NOARGS, "constants() -> dict: the runner's constants (AUTO's pr())"},
     {NULL, NULL, 0, NULL}};
 
 PyTypeObject pyc_session_type = {

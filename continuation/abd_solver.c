@@ -20,6 +20,7 @@
  *   u_j, u_{j+1}, q_{j+1}, s_j, s_{j+1}. */
 #include "abd_solver.h"
 
+#include "abd_band.h"
 #include "cable_team.h"
 
 #include <cblas.h>
@@ -52,28 +53,28 @@ struct abd_solver {
   double *loc;                     /* [N] local blocks after condensation: L\U | X over S */
   lapack_int *loc_piv;             /* [N*nI] local row interchanges */
   double *ab;                      /* [ldab*nband] banded LU */
-  lapack_int *band_piv;            /* [nband] */
-  double *w_rhs;                   /* [nband] band right-hand side */
-  double *w_piv;                   /* [N*nI] transformed pivot-row right-hand sides */
+  abd_band band;                   /* its LU factors, compressed (abd_band.h) */
+  double *w_rhs;                   /* [nband] band right-hand side, per vector of a block */
+  double *w_piv;                   /* [N*nI] transformed pivot-row right-hand sides, per vector */
   double *w_loc;                   /* [r] one interval's local right-hand side */
   double *w_o;                     /* [nO] one interval's outer values */
   int state;                       /* STATE_* */
   int band_overflow;               /* an entry fell outside kl/ku (internal error) */
   int det_sign;
   double det_log;
-  double growth;
+  double growth_band, amax;        /* max |U| of the band stage, max |entry| of the augmented matrix */
   /* per-interval results of the parallel stages, reduced in interval order
      (the same numbers for every thread count) */
   cable_team *team;                /* threads for the per-interval stages (NULL: none) */
   int *iv_status;                  /* [N] 0 ok, 1 singular, -1 LAPACK, -2 non-finite, -3 band overflow */
   int *iv_sign;                    /* [N] sign of the interval's pivots and interchanges */
   double *iv_logabs;               /* [N] sum of log |pivot| */
-  double *iv_umax, *iv_amax;       /* [N] max |U| and max |entry| of the local block */
-  double *w_g;                     /* [N*r] per-interval local right-hand sides */
-  double *w_oo;                    /* [N*nO] per-interval outer values */
+  double *iv_amax;                 /* [N] max |entry| of the local block */
+  double *w_g;                     /* [N*r] per-interval local right-hand sides, per vector */
+  double *w_oo;                    /* [N*nO] per-interval outer values, per vector */
   /* smallest_sv workspace, grown on demand */
   int sv_k;
-  double *sv_v, *sv_w, *sv_b, *sv_r, *sv_x, *sv_yt, *sv_s, *sv_work, *sv_vec, *sv_res;
+  double *sv_v, *sv_w, *sv_b, *sv_r, *sv_x, *sv_yt, *sv_s, *sv_work, *sv_vec, *sv_res, *sv_rn;
   lapack_int sv_lwork;
 };
 
@@ -270,20 +271,19 @@ abd_solver *abd_solver_alloc(int ndim, int ntst, int ncol, int nfpr, int nbc, in
   s->loc = malloc((size_t)ntst * s->loc_size * sizeof(double));
   s->loc_piv = malloc((nIt ? nIt : 1) * sizeof(lapack_int));
   s->ab = malloc((size_t)s->ldab * (size_t)s->nband * sizeof(double));
-  s->band_piv = malloc((size_t)s->nband * sizeof(lapack_int));
-  s->w_rhs = malloc((size_t)s->nband * sizeof(double));
-  s->w_piv = malloc((nIt ? nIt : 1) * sizeof(double));
+  s->w_rhs = malloc(ABD_SOLVE_BLOCK * (size_t)s->nband * sizeof(double));
+  s->w_piv = malloc(ABD_SOLVE_BLOCK * (nIt ? nIt : 1) * sizeof(double));
   s->w_loc = malloc((size_t)s->r * sizeof(double));
   s->w_o = malloc((size_t)s->nO * sizeof(double));
   s->iv_status = malloc((size_t)ntst * sizeof(int));
   s->iv_sign = malloc((size_t)ntst * sizeof(int));
   s->iv_logabs = malloc((size_t)ntst * sizeof(double));
-  s->iv_umax = malloc((size_t)ntst * sizeof(double));
   s->iv_amax = malloc((size_t)ntst * sizeof(double));
-  s->w_g = malloc((size_t)ntst * (size_t)s->r * sizeof(double));
-  s->w_oo = malloc((size_t)ntst * (size_t)s->nO * sizeof(double));
-  if (!s->loc || !s->loc_piv || !s->ab || !s->band_piv || !s->w_rhs || !s->w_piv || !s->w_loc || !s->w_o ||
-      !s->iv_status || !s->iv_sign || !s->iv_logabs || !s->iv_umax || !s->iv_amax || !s->w_g || !s->w_oo)
+  s->w_g = malloc(ABD_SOLVE_BLOCK * (size_t)ntst * (size_t)s->r * sizeof(double));
+  s->w_oo = malloc(ABD_SOLVE_BLOCK * (size_t)ntst * (size_t)s->nO * sizeof(double));
+  if (abd_band_alloc(&s->band, s->nband, s->kl, s->ku) != 0) goto fail;
+  if (!s->loc || !s->loc_piv || !s->ab || !s->w_rhs || !s->w_piv || !s->w_loc || !s->w_o ||
+      !s->iv_status || !s->iv_sign || !s->iv_logabs || !s->iv_amax || !s->w_g || !s->w_oo)
     goto fail;
   s->perm_sign = structural_sign(s);
   if (s->perm_sign == 0) goto fail;
@@ -306,7 +306,9 @@ static void sv_free(abd_solver *s)
   free(s->sv_work);
   free(s->sv_vec);
   free(s->sv_res);
+  free(s->sv_rn);
   s->sv_v = s->sv_w = s->sv_b = s->sv_r = s->sv_x = s->sv_yt = s->sv_s = s->sv_work = s->sv_vec = s->sv_res = NULL;
+  s->sv_rn = NULL;
   s->sv_k = 0;
 }
 
@@ -317,7 +319,7 @@ void abd_solver_free(abd_solver *s)
   free(s->loc);
   free(s->loc_piv);
   free(s->ab);
-  free(s->band_piv);
+  abd_band_free(&s->band);
   free(s->w_rhs);
   free(s->w_piv);
   free(s->w_loc);
@@ -325,7 +327,6 @@ void abd_solver_free(abd_solver *s)
   free(s->iv_status);
   free(s->iv_sign);
   free(s->iv_logabs);
-  free(s->iv_umax);
   free(s->iv_amax);
   free(s->w_g);
   free(s->w_oo);
@@ -359,10 +360,12 @@ void abd_solver_bandwidths(const abd_solver *s, int *kl, int *ku)
 void abd_solver_space(const abd_solver *s, long *ndoubles, long *nints)
 {
   long nIt = (long)s->N * s->nI;
-  *ndoubles = (long)s->N * (long)s->loc_size + (long)s->ldab * s->nband + s->nband + nIt + s->r + s->nO +
-              3L * s->N + (long)s->N * (s->r + s->nO) +
-              (s->sv_k ? (long)s->sv_k * (3L * s->n + 3L * s->sv_k + 1) + 2L * s->n : 0L) + (long)s->sv_lwork;
-  *nints = s->nO + nIt + s->nband + 2L * s->N;
+  *ndoubles = (long)s->N * (long)s->loc_size + (long)s->ldab * s->nband + ABD_SOLVE_BLOCK * (s->nband + nIt) + s->r +
+              s->nO + 2L * s->N + ABD_SOLVE_BLOCK * (long)s->N * (s->r + s->nO) +
+              (s->sv_k ? (long)s->sv_k * (5L * s->n + 3L * s->sv_k + 3) : 0L) + (long)s->sv_lwork;
+  long nu = (long)s->nband * (s->kl + s->ku) + 1, nl = (long)s->nband * s->kl + 1; /* compressed factors */
+  *ndoubles += s->nband + nu + nl;
+  *nints = s->nO + nIt + s->nband + s->kl + 1 + 2L * (s->nband + 1) + nu + nl + 2L * s->N;
 }
 
 static int jac_matches(const abd_solver *s, const colloc_jac *J)
@@ -378,7 +381,8 @@ static void local_fill(const abd_solver *s, const colloc_jac *J, int j, double *
   const int oU0 = nI, oU1 = nI + nd, oQ = nI + 2 * nd, oS0 = oQ + s->nf, oS1 = oS0 + nq;
   const double *C = colloc_jac_coll_block(J, j);
   const double *D = colloc_jac_dense_block(J, j);
-  memset(L, 0, s->loc_size * sizeof(double));
+  /* every entry is written once below (no memset of the whole block: it
+     was a tenth of a factorisation) */
   for (int k = 0; k <= nc; k++)
     for (int i = 0; i < nd; i++) {
       int src = k * nd + i;
@@ -387,8 +391,12 @@ static void local_fill(const abd_solver *s, const colloc_jac *J, int j, double *
       memcpy(Lc, C + (size_t)src * (size_t)nr, (size_t)nr * sizeof(double));
       for (int d = 0; d < nq; d++) Lc[nr + d] = -D[(size_t)src * (size_t)nq + (size_t)d];
     }
-  for (int p = 0; p < s->nf; p++)
-    memcpy(L + (size_t)(oQ + p) * (size_t)r, C + (size_t)((nc + 1) * nd + p) * (size_t)nr, (size_t)nr * sizeof(double));
+  for (int p = 0; p < s->nf; p++) {
+    double *Lc = L + (size_t)(oQ + p) * (size_t)r;
+    memcpy(Lc, C + (size_t)((nc + 1) * nd + p) * (size_t)nr, (size_t)nr * sizeof(double));
+    for (int d = 0; d < nq; d++) Lc[nr + d] = 0.0;
+  }
+  memset(L + (size_t)oS0 * (size_t)r, 0, 2 * (size_t)nq * (size_t)r * sizeof(double));
   for (int d = 0; d < nq; d++) {
     L[(size_t)(oS0 + d) * (size_t)r + (size_t)(nr + d)] = -1.0;
     L[(size_t)(oS1 + d) * (size_t)r + (size_t)(nr + d)] = 1.0;
@@ -431,7 +439,7 @@ static void factor_interval(void *ctx, int j)
   double *O = L + (size_t)nI * (size_t)r;
   lapack_int *piv = s->loc_piv + (size_t)j * (size_t)nI;
   int sign = 1, status = 0;
-  double logabs = 0.0, umax = 0.0, amax = 0.0;
+  double logabs = 0.0, amax = 0.0;
   local_fill(s, J, j, L);
   for (size_t i = 0; i < s->loc_size; i++) {
     double x = fabs(L[i]);
@@ -450,14 +458,6 @@ static void factor_interval(void *ctx, int j)
     if (status >= 0) {
       cblas_dtrsm(CblasColMajor, CblasLeft, CblasLower, CblasNoTrans, CblasUnit, nI, nO, 1.0, L, r, O, r);
       cblas_dgemm(CblasColMajor, CblasNoTrans, CblasNoTrans, r - nI, nO, nI, -1.0, L + nI, r, O, r, 1.0, O + nI, r);
-      /* growth: the U rows of this stage and the condensed rows passed on */
-      for (int c = 0; c < nI + nO; c++) {
-        int top = c < nI ? c + 1 : r;
-        for (int i = 0; i < top; i++) {
-          double x = fabs(L[(size_t)c * (size_t)r + (size_t)i]);
-          if (x > umax) umax = x;
-        }
-      }
     }
   }
   if (status >= 0) {
@@ -480,7 +480,6 @@ static void factor_interval(void *ctx, int j)
   s->iv_status[j] = status;
   s->iv_sign[j] = sign;
   s->iv_logabs[j] = logabs;
-  s->iv_umax[j] = umax;
   s->iv_amax[j] = amax;
 }
 
@@ -512,7 +511,7 @@ int abd_solver_factor(abd_solver *s, const colloc_jac *J)
 
   const int nd = s->nd, nf = s->nf, nq = s->nq, N = s->N;
   int sign = s->perm_sign, singular = 0;
-  double logabs = 0.0, umax = 0.0;
+  double logabs = 0.0;
 
   s->band_overflow = 0;
   factor_ctx fc = {s, J};
@@ -531,7 +530,6 @@ int abd_solver_factor(abd_solver *s, const colloc_jac *J)
     if (s->iv_status[j] == 1) singular = 1;
     sign *= s->iv_sign[j];
     logabs += s->iv_logabs[j];
-    if (s->iv_umax[j] > umax) umax = s->iv_umax[j];
     if (s->iv_amax[j] > amax) amax = s->iv_amax[j];
   }
   if (amax < 1.0) amax = 1.0; /* the identity copy entries */
@@ -552,21 +550,14 @@ int abd_solver_factor(abd_solver *s, const colloc_jac *J)
   }
   if (s->band_overflow) return ABD_ERR_LAPACK;
 
-  lapack_int info = LAPACKE_dgbtrf_work(LAPACK_COL_MAJOR, s->nband, s->nband, s->kl, s->ku, s->ab, s->ldab, s->band_piv);
-  if (info < 0) return ABD_ERR_LAPACK;
-  if (info > 0) singular = 1;
-  const int diag = s->kl + s->ku;
+  if (abd_band_factor(&s->band, s->ab, s->ldab) > 0) singular = 1;
   for (int i = 0; i < s->nband; i++) {
-    const double *col = s->ab + (size_t)i * (size_t)s->ldab;
-    if (s->band_piv[i] != i + 1) sign = -sign;
-    det_accumulate(col[diag], &sign, &logabs);
-    for (int k = 0; k <= diag; k++) { /* U occupies rows 0..kl+ku of the band storage */
-      double x = fabs(col[k]);
-      if (x > umax) umax = x;
-    }
+    if (s->band.ipiv[i] != i) sign = -sign;
+    det_accumulate(s->band.ud[i], &sign, &logabs);
   }
 
-  s->growth = umax / amax;
+  s->growth_band = s->band.umax; /* the local stages' part: abd_solver_growth */
+  s->amax = amax;
   if (singular || sign == 0) {
     s->state = STATE_SINGULAR;
     s->det_sign = 0;
@@ -587,11 +578,21 @@ static int solve_state(const abd_solver *s)
 }
 
 /* The per-interval stages of the solves, one interval per call (run by the
- * team: each writes only its interval's rows and scratch). */
+ * team: each writes only its interval's rows and scratch).  A call handles
+ * the k right-hand sides one after the other (each with its own scratch,
+ * block v of every w_ array), so the interval's factors are read from memory
+ * once for all of them; each vector sees exactly the operations of a solve
+ * of its own. */
 typedef struct {
   const abd_solver *s;
-  double *x;
+  double *x; /* k vectors of length n, one after the other */
+  int k;
 } solve_ctx;
+
+static double *wv_rhs(const abd_solver *s, int v) { return s->w_rhs + (size_t)v * (size_t)s->nband; }
+static double *wv_piv(const abd_solver *s, int v) { return s->w_piv + (size_t)v * (size_t)s->N * (size_t)s->nI; }
+static double *wv_g(const abd_solver *s, int v) { return s->w_g + (size_t)v * (size_t)s->N * (size_t)s->r; }
+static double *wv_oo(const abd_solver *s, int v) { return s->w_oo + (size_t)v * (size_t)s->N * (size_t)s->nO; }
 
 /* J x = b, stage 1: apply interval j's L^{-1} P to its rows' right-hand side. */
 static void solve_forward(void *p, int j)
@@ -599,25 +600,28 @@ static void solve_forward(void *p, int j)
   const solve_ctx *c = p;
   const abd_solver *s = c->s;
   const int nd = s->nd, nf = s->nf, nq = s->nq, nI = s->nI, r = s->r, nr = s->nr;
-  double *g = s->w_g + (size_t)j * (size_t)r;
   const double *L = loc_block(s, j);
   const lapack_int *piv = s->loc_piv + (size_t)j * (size_t)nI;
-  memcpy(g, c->x + (size_t)j * (size_t)nr, (size_t)nr * sizeof(double));
-  for (int d = 0; d < nq; d++) g[nr + d] = 0.0;
-  if (nI > 0) {
-    for (int i = 0; i < nI; i++) {
-      int ip = (int)piv[i] - 1;
-      if (ip != i) {
-        double t = g[i];
-        g[i] = g[ip];
-        g[ip] = t;
+  for (int v = 0; v < c->k; v++) {
+    const double *x = c->x + (size_t)v * (size_t)s->n;
+    double *g = wv_g(s, v) + (size_t)j * (size_t)r;
+    memcpy(g, x + (size_t)j * (size_t)nr, (size_t)nr * sizeof(double));
+    for (int d = 0; d < nq; d++) g[nr + d] = 0.0;
+    if (nI > 0) {
+      for (int i = 0; i < nI; i++) {
+        int ip = (int)piv[i] - 1;
+        if (ip != i) {
+          double t = g[i];
+          g[i] = g[ip];
+          g[ip] = t;
+        }
       }
+      cblas_dtrsv(CblasColMajor, CblasLower, CblasNoTrans, CblasUnit, nI, L, r, g, 1);
+      cblas_dgemv(CblasColMajor, CblasNoTrans, r - nI, nI, -1.0, L + nI, r, g, 1, 1.0, g + nI, 1);
+      memcpy(wv_piv(s, v) + (size_t)j * (size_t)nI, g, (size_t)nI * sizeof(double));
     }
-    cblas_dtrsv(CblasColMajor, CblasLower, CblasNoTrans, CblasUnit, nI, L, r, g, 1);
-    cblas_dgemv(CblasColMajor, CblasNoTrans, r - nI, nI, -1.0, L + nI, r, g, 1, 1.0, g + nI, 1);
-    memcpy(s->w_piv + (size_t)j * (size_t)nI, g, (size_t)nI * sizeof(double));
+    memcpy(wv_rhs(s, v) + grow_base(s, j) + nd + nf, g + nI, (size_t)(r - nI) * sizeof(double));
   }
-  memcpy(s->w_rhs + grow_base(s, j) + nd + nf, g + nI, (size_t)(r - nI) * sizeof(double));
 }
 
 /* J x = b, stage 3: interior unknowns, U_j x_I = g_j - X_j x_O. */
@@ -628,34 +632,48 @@ static void solve_back(void *p, int j)
   const int nd = s->nd, nI = s->nI, r = s->r, nr = s->nr, nO = s->nO;
   if (nI == 0) return;
   const double *L = loc_block(s, j);
-  double *t = s->w_piv + (size_t)j * (size_t)nI, *wo = s->w_oo + (size_t)j * (size_t)nO;
-  for (int o = 0; o < nO; o++) wo[o] = s->w_rhs[j * s->m + s->omap[o]];
-  cblas_dgemv(CblasColMajor, CblasNoTrans, nI, nO, -1.0, L + (size_t)nI * (size_t)r, r, wo, 1, 1.0, t, 1);
-  cblas_dtrsv(CblasColMajor, CblasUpper, CblasNoTrans, CblasNonUnit, nI, L, r, t, 1);
-  memcpy(c->x + (size_t)j * (size_t)nr + (size_t)nd, t, (size_t)nI * sizeof(double));
+  for (int v = 0; v < c->k; v++) {
+    const double *rhs = wv_rhs(s, v);
+    double *t = wv_piv(s, v) + (size_t)j * (size_t)nI, *wo = wv_oo(s, v) + (size_t)j * (size_t)nO;
+    for (int o = 0; o < nO; o++) wo[o] = rhs[j * s->m + s->omap[o]];
+    cblas_dgemv(CblasColMajor, CblasNoTrans, nI, nO, -1.0, L + (size_t)nI * (size_t)r, r, wo, 1, 1.0, t, 1);
+    cblas_dtrsv(CblasColMajor, CblasUpper, CblasNoTrans, CblasNonUnit, nI, L, r, t, 1);
+    memcpy(c->x + (size_t)v * (size_t)s->n + (size_t)j * (size_t)nr + (size_t)nd, t, (size_t)nI * sizeof(double));
+  }
 }
 
-int abd_solver_solve(const abd_solver *s, double *x)
+static int solve_many(const abd_solver *s, double *X, int k)
+{
+  const int nd = s->nd, nf = s->nf, nq = s->nq, nr = s->nr, N = s->N;
+  solve_ctx c = {s, X, k};
+  for (int v = 0; v < k; v++) memset(wv_rhs(s, v), 0, (size_t)s->nband * sizeof(double));
+  cable_team_run(s->team, solve_forward, &c, N);
+  const int e = end_base(s);
+  for (int v = 0; v < k; v++) {
+    double *rhs = wv_rhs(s, v);
+    memcpy(rhs + e, X + (size_t)v * (size_t)s->n + (size_t)N * (size_t)nr, (size_t)(s->nb + nq) * sizeof(double));
+    abd_band_solve(&s->band, rhs);
+  }
+  cable_team_run(s->team, solve_back, &c, N);
+  for (int v = 0; v < k; v++) {
+    double *x = X + (size_t)v * (size_t)s->n;
+    const double *rhs = wv_rhs(s, v);
+    for (int j = 0; j <= N; j++)
+      memcpy(x + (size_t)j * (size_t)nr, rhs + zcol(s, j, s->off_u, 0), (size_t)nd * sizeof(double));
+    memcpy(x + s->n - nf, rhs + zcol(s, 0, s->off_q, 0), (size_t)nf * sizeof(double));
+  }
+  return ABD_OK;
+}
+
+int abd_solver_solve(const abd_solver *s, double *x) { return abd_solver_solve_many(s, x, 1); }
+
+int abd_solver_solve_many(const abd_solver *s, double *X, int k)
 {
   int st = solve_state(s);
   if (st != ABD_OK) return st;
-  const int nd = s->nd, nf = s->nf, nq = s->nq, nr = s->nr, N = s->N;
-  double *rhs = s->w_rhs;
-  solve_ctx c = {s, x};
-
-  memset(rhs, 0, (size_t)s->nband * sizeof(double));
-  cable_team_run(s->team, solve_forward, &c, N);
-  const int e = end_base(s);
-  memcpy(rhs + e, x + (size_t)N * (size_t)nr, (size_t)(s->nb + nq) * sizeof(double));
-
-  if (LAPACKE_dgbtrs_work(LAPACK_COL_MAJOR, 'N', s->nband, s->kl, s->ku, 1, s->ab, s->ldab, s->band_piv, rhs,
-                          s->nband) < 0)
-    return ABD_ERR_LAPACK;
-
-  cable_team_run(s->team, solve_back, &c, N);
-  for (int j = 0; j <= N; j++)
-    memcpy(x + (size_t)j * (size_t)nr, rhs + zcol(s, j, s->off_u, 0), (size_t)nd * sizeof(double));
-  memcpy(x + s->n - nf, rhs + zcol(s, 0, s->off_q, 0), (size_t)nf * sizeof(double));
+  if (k < 0) return ABD_ERR_SIZE;
+  for (int v = 0; v < k; v += ABD_SOLVE_BLOCK)
+    solve_many(s, X + (size_t)v * (size_t)s->n, k - v < ABD_SOLVE_BLOCK ? k - v : ABD_SOLVE_BLOCK);
   return ABD_OK;
 }
 
@@ -667,10 +685,12 @@ static void solve_t_first(void *p, int j)
   const int nd = s->nd, nI = s->nI, r = s->r, nr = s->nr, nO = s->nO;
   if (nI == 0) return;
   const double *L = loc_block(s, j);
-  double *wI = s->w_piv + (size_t)j * (size_t)nI, *wo = s->w_oo + (size_t)j * (size_t)nO;
-  memcpy(wI, c->x + (size_t)j * (size_t)nr + (size_t)nd, (size_t)nI * sizeof(double));
-  cblas_dtrsv(CblasColMajor, CblasUpper, CblasTrans, CblasNonUnit, nI, L, r, wI, 1);
-  cblas_dgemv(CblasColMajor, CblasTrans, nI, nO, 1.0, L + (size_t)nI * (size_t)r, r, wI, 1, 0.0, wo, 1);
+  for (int v = 0; v < c->k; v++) {
+    double *wI = wv_piv(s, v) + (size_t)j * (size_t)nI, *wo = wv_oo(s, v) + (size_t)j * (size_t)nO;
+    memcpy(wI, c->x + (size_t)v * (size_t)s->n + (size_t)j * (size_t)nr + (size_t)nd, (size_t)nI * sizeof(double));
+    cblas_dtrsv(CblasColMajor, CblasUpper, CblasTrans, CblasNonUnit, nI, L, r, wI, 1);
+    cblas_dgemv(CblasColMajor, CblasTrans, nI, nO, 1.0, L + (size_t)nI * (size_t)r, r, wI, 1, 0.0, wo, 1);
+  }
 }
 
 /* J^T y = c, stage 3: undo interval j's row operations, P_j^T L_j^{-T}. */
@@ -679,56 +699,71 @@ static void solve_t_last(void *p, int j)
   const solve_ctx *c = p;
   const abd_solver *s = c->s;
   const int nd = s->nd, nf = s->nf, nI = s->nI, r = s->r, nr = s->nr;
-  double *g = s->w_g + (size_t)j * (size_t)r;
   const double *L = loc_block(s, j);
   const lapack_int *piv = s->loc_piv + (size_t)j * (size_t)nI;
-  if (nI > 0) memcpy(g, s->w_piv + (size_t)j * (size_t)nI, (size_t)nI * sizeof(double));
-  memcpy(g + nI, s->w_rhs + grow_base(s, j) + nd + nf, (size_t)(r - nI) * sizeof(double));
-  if (nI > 0) {
-    cblas_dgemv(CblasColMajor, CblasTrans, r - nI, nI, -1.0, L + nI, r, g + nI, 1, 1.0, g, 1);
-    cblas_dtrsv(CblasColMajor, CblasLower, CblasTrans, CblasUnit, nI, L, r, g, 1);
-    for (int i = nI - 1; i >= 0; i--) {
-      int ip = (int)piv[i] - 1;
-      if (ip != i) {
-        double t = g[i];
-        g[i] = g[ip];
-        g[ip] = t;
+  for (int v = 0; v < c->k; v++) {
+    double *g = wv_g(s, v) + (size_t)j * (size_t)r;
+    if (nI > 0) memcpy(g, wv_piv(s, v) + (size_t)j * (size_t)nI, (size_t)nI * sizeof(double));
+    memcpy(g + nI, wv_rhs(s, v) + grow_base(s, j) + nd + nf, (size_t)(r - nI) * sizeof(double));
+    if (nI > 0) {
+      cblas_dgemv(CblasColMajor, CblasTrans, r - nI, nI, -1.0, L + nI, r, g + nI, 1, 1.0, g, 1);
+      cblas_dtrsv(CblasColMajor, CblasLower, CblasTrans, CblasUnit, nI, L, r, g, 1);
+      for (int i = nI - 1; i >= 0; i--) {
+        int ip = (int)piv[i] - 1;
+        if (ip != i) {
+          double t = g[i];
+          g[i] = g[ip];
+          g[ip] = t;
+        }
       }
     }
+    /* slots nr.. are the running-sum definitions: not equations of J */
+    memcpy(c->x + (size_t)v * (size_t)s->n + (size_t)j * (size_t)nr, g, (size_t)nr * sizeof(double));
   }
-  /* slots nr.. are the running-sum definitions: not equations of J */
-  memcpy(c->x + (size_t)j * (size_t)nr, g, (size_t)nr * sizeof(double));
 }
 
 /* J^T y = c through the augmented matrix M (det M = det J): M^T (y, w) =
  * (c, 0) gives J^T y = c.  With M_final = [[U, X], [0, B]] (interior pivot
  * rows first), solve U^T w_I = c_I, B^T w_B = c_B - X^T w_I, then undo the
  * local row operations: rows of interval j get P_j^T L_j^{-T} (w_I, w_B). */
-int abd_solver_solve_transpose(const abd_solver *s, double *x)
+static int solve_transpose_many(const abd_solver *s, double *X, int k)
+{
+  const int nd = s->nd, nf = s->nf, nq = s->nq, nI = s->nI, nr = s->nr, nO = s->nO, N = s->N;
+  solve_ctx c = {s, X, k};
+  for (int v = 0; v < k; v++) {
+    double *rhs = wv_rhs(s, v);
+    const double *x = X + (size_t)v * (size_t)s->n;
+    memset(rhs, 0, (size_t)s->nband * sizeof(double));
+    for (int j = 0; j <= N; j++)
+      memcpy(rhs + zcol(s, j, s->off_u, 0), x + (size_t)j * (size_t)nr, (size_t)nd * sizeof(double));
+    memcpy(rhs + zcol(s, 0, s->off_q, 0), x + s->n - nf, (size_t)nf * sizeof(double));
+  }
+  cable_team_run(s->team, solve_t_first, &c, N);
+  for (int v = 0; v < k; v++) {
+    double *rhs = wv_rhs(s, v);
+    /* in interval order: neighbouring intervals share a mesh point's entries */
+    for (int j = 0; j < N && nI > 0; j++) {
+      const double *wo = wv_oo(s, v) + (size_t)j * (size_t)nO;
+      for (int o = 0; o < nO; o++) rhs[j * s->m + s->omap[o]] -= wo[o];
+    }
+    abd_band_solve_transpose(&s->band, rhs);
+  }
+  cable_team_run(s->team, solve_t_last, &c, N);
+  for (int v = 0; v < k; v++)
+    memcpy(X + (size_t)v * (size_t)s->n + (size_t)N * (size_t)nr, wv_rhs(s, v) + end_base(s),
+           (size_t)(s->nb + nq) * sizeof(double));
+  return ABD_OK;
+}
+
+int abd_solver_solve_transpose(const abd_solver *s, double *x) { return abd_solver_solve_transpose_many(s, x, 1); }
+
+int abd_solver_solve_transpose_many(const abd_solver *s, double *X, int k)
 {
   int st = solve_state(s);
   if (st != ABD_OK) return st;
-  const int nd = s->nd, nf = s->nf, nq = s->nq, nI = s->nI, nr = s->nr, nO = s->nO, N = s->N;
-  double *rhs = s->w_rhs;
-  solve_ctx c = {s, x};
-
-  memset(rhs, 0, (size_t)s->nband * sizeof(double));
-  for (int j = 0; j <= N; j++)
-    memcpy(rhs + zcol(s, j, s->off_u, 0), x + (size_t)j * (size_t)nr, (size_t)nd * sizeof(double));
-  memcpy(rhs + zcol(s, 0, s->off_q, 0), x + s->n - nf, (size_t)nf * sizeof(double));
-  cable_team_run(s->team, solve_t_first, &c, N);
-  /* in interval order: neighbouring intervals share a mesh point's entries */
-  for (int j = 0; j < N && nI > 0; j++) {
-    const double *wo = s->w_oo + (size_t)j * (size_t)nO;
-    for (int o = 0; o < nO; o++) rhs[j * s->m + s->omap[o]] -= wo[o];
-  }
-
-  if (LAPACKE_dgbtrs_work(LAPACK_COL_MAJOR, 'T', s->nband, s->kl, s->ku, 1, s->ab, s->ldab, s->band_piv, rhs,
-                          s->nband) < 0)
-    return ABD_ERR_LAPACK;
-
-  cable_team_run(s->team, solve_t_last, &c, N);
-  memcpy(x + (size_t)N * (size_t)nr, rhs + end_base(s), (size_t)(s->nb + nq) * sizeof(double));
+  if (k < 0) return ABD_ERR_SIZE;
+  for (int v = 0; v < k; v += ABD_SOLVE_BLOCK)
+    solve_transpose_many(s, X + (size_t)v * (size_t)s->n, k - v < ABD_SOLVE_BLOCK ? k - v : ABD_SOLVE_BLOCK);
   return ABD_OK;
 }
 
@@ -743,7 +778,26 @@ void abd_solver_det(const abd_solver *s, int *sign, double *logabs)
   *logabs = s->det_log;
 }
 
-double abd_solver_growth(const abd_solver *s) { return s->state == STATE_NONE ? (double)NAN : s->growth; }
+/* The local stages' max |U| is taken here, from the factors kept in the
+ * local blocks (the U rows of each stage and the condensed rows it passed
+ * on), not in every factorisation: only tests and diagnostics ask. */
+double abd_solver_growth(const abd_solver *s)
+{
+  if (s->state == STATE_NONE) return (double)NAN;
+  const int nI = s->nI, r = s->r, nO = s->nO;
+  double umax = s->growth_band;
+  for (int j = 0; j < s->N && nI > 0; j++) {
+    const double *L = loc_block(s, j);
+    for (int c = 0; c < nI + nO; c++) {
+      int top = c < nI ? c + 1 : r;
+      for (int i = 0; i < top; i++) {
+        double x = fabs(L[(size_t)c * (size_t)r + (size_t)i]);
+        if (x > umax) umax = x;
+      }
+    }
+  }
+  return umax / s->amax;
+}
 
 /* ---- smallest singular values ----------------------------------------- */
 
@@ -804,9 +858,10 @@ static int sv_reserve(abd_solver *s, int k)
   s->sv_x = malloc(kk * sizeof(double));
   s->sv_yt = malloc(kk * sizeof(double));
   s->sv_s = malloc((size_t)k * sizeof(double));
-  s->sv_vec = malloc((size_t)s->n * sizeof(double));
-  s->sv_res = malloc((size_t)s->n * sizeof(double));
-  if (!s->sv_v || !s->sv_w || !s->sv_b || !s->sv_r || !s->sv_x || !s->sv_yt || !s->sv_s || !s->sv_vec || !s->sv_res) {
+  s->sv_vec = malloc(nk * sizeof(double));
+  s->sv_res = malloc(nk * sizeof(double));
+  s->sv_rn = malloc(2 * (size_t)k * sizeof(double));
+  if (!s->sv_v || !s->sv_w || !s->sv_b || !s->sv_r || !s->sv_x || !s->sv_yt || !s->sv_s || !s->sv_vec || !s->sv_res || !s->sv_rn) {
     sv_free(s);
     return -1;
   }
@@ -851,7 +906,7 @@ int abd_solver_smallest_svd(abd_solver *s, const colloc_jac *J, int k, const dou
   if (sv_reserve(s, k) != 0) return ABD_ERR_MEM;
   const int n = s->n;
   double *V = s->sv_v, *W = s->sv_w, *QL = s->sv_b, *R = s->sv_r, *X = s->sv_x, *YT = s->sv_yt, *S = s->sv_s;
-  double *u = s->sv_vec, *res = s->sv_res;
+  double *U = s->sv_vec, *res = s->sv_res;
   const double normF = jac_frobenius(J);
 
   if (start) memcpy(V, start, (size_t)n * (size_t)k * sizeof(double));
@@ -871,19 +926,18 @@ int abd_solver_smallest_svd(abd_solver *s, const colloc_jac *J, int k, const dou
      * rather than from J W keeps the relative accuracy of tiny sigma, and
      * u_i from J^{-T} rather than J v_i / sigma_i keeps u_i accurate. */
     memcpy(QL, V, (size_t)n * (size_t)k * sizeof(double));
-    for (int i = 0; i < k; i++)
-      if (abd_solver_solve_transpose(s, QL + (size_t)i * (size_t)n) != ABD_OK) return ABD_ERR_LAPACK;
+    if (abd_solver_solve_transpose_many(s, QL, k) != ABD_OK) return ABD_ERR_LAPACK;
     if (orthonormalise(n, k, QL, NULL) != 0) return ABD_ERR_LAPACK;
     memcpy(W, QL, (size_t)n * (size_t)k * sizeof(double));
-    for (int i = 0; i < k; i++)
-      if (abd_solver_solve(s, W + (size_t)i * (size_t)n) != ABD_OK) return ABD_ERR_LAPACK;
+    if (abd_solver_solve_many(s, W, k) != ABD_OK) return ABD_ERR_LAPACK;
     if (orthonormalise(n, k, W, R) != 0) return ABD_ERR_LAPACK;
     if (LAPACKE_dgesvd_work(LAPACK_COL_MAJOR, 'A', 'A', k, k, R, k, S, X, k, YT, k, s->sv_work, s->sv_lwork) != 0)
       return ABD_ERR_LAPACK;
-    /* S is descending, so sigma_i = 1/S_i is ascending. */
+    /* S is descending, so sigma_i = 1/S_i is ascending.  The k Ritz vectors
+       first, then their residuals with one pass over J for all of them. */
     status = ABD_OK;
     for (int i = 0; i < k; i++) {
-      double *vi = V + (size_t)i * (size_t)n;
+      double *vi = V + (size_t)i * (size_t)n, *u = U + (size_t)i * (size_t)n;
       memset(vi, 0, (size_t)n * sizeof(double));
       memset(u, 0, (size_t)n * sizeof(double));
       for (int l = 0; l < k; l++) {
@@ -891,14 +945,21 @@ int abd_solver_smallest_svd(abd_solver *s, const colloc_jac *J, int k, const dou
         cblas_daxpy(n, YT[(size_t)l * (size_t)k + (size_t)i], QL + (size_t)l * (size_t)n, 1, u, 1);
       }
       sv[i] = 1.0 / S[i];
-      colloc_jac_matvec(J, vi, res); /* J v - sigma u */
-      cblas_daxpy(n, -sv[i], u, 1, res, 1);
-      double r1 = cblas_dnrm2(n, res, 1);
-      colloc_jac_matvec_transpose(J, u, res); /* J^T u - sigma v */
-      cblas_daxpy(n, -sv[i], vi, 1, res, 1);
-      double r2 = cblas_dnrm2(n, res, 1);
-      if (!(fmax(r1, r2) <= tol * normF)) status = ABD_NOT_CONVERGED;
-      if (uvecs) memcpy(uvecs + (size_t)i * (size_t)n, u, (size_t)n * sizeof(double));
+    }
+    double *rn[2] = {s->sv_rn, s->sv_rn + k};
+    for (int pass = 0; pass < 2; pass++) {
+      /* pass 0: J v_i - sigma_i u_i; pass 1: J^T u_i - sigma_i v_i */
+      if (pass == 0) colloc_jac_matvec_many(J, k, V, res);
+      else colloc_jac_matvec_transpose_many(J, k, U, res);
+      for (int i = 0; i < k; i++) {
+        double *ri = res + (size_t)i * (size_t)n;
+        cblas_daxpy(n, -sv[i], (pass == 0 ? U : V) + (size_t)i * (size_t)n, 1, ri, 1);
+        rn[pass][i] = cblas_dnrm2(n, ri, 1);
+      }
+    }
+    for (int i = 0; i < k; i++) {
+      if (!(fmax(rn[0][i], rn[1][i]) <= tol * normF)) status = ABD_NOT_CONVERGED;
+      if (uvecs) memcpy(uvecs + (size_t)i * (size_t)n, U + (size_t)i * (size_t)n, (size_t)n * sizeof(double));
     }
   }
   memcpy(vecs, V, (size_t)n * (size_t)k * sizeof(double));

@@ -11,8 +11,8 @@
  *     unknowns are eliminated from the interval's own rows (collocation rows and
  *     its running-sum rows) by LU with partial pivoting on the tall block
  *     (LAPACK dgetrf), leaving ndim+nint+1 rows on the mesh-point unknowns;
- *  3. the reduced, augmented system is banded: LAPACK dgbtrf/dgbtrs (banded LU
- *     with partial pivoting).
+ *  3. the reduced, augmented system is banded: banded LU with partial
+ *     pivoting, LAPACK's dgbtf2 algorithm on the band's nonzeros (abd_band.h).
  * The whole is Gaussian elimination with partial pivoting on the augmented
  * matrix in a fixed column order: no product of interval blocks is formed.
  *
@@ -54,6 +54,15 @@ int abd_solver_solve(const abd_solver *s, double *x);
 
 /* J^T x = b, same conventions (b indexed by unknowns, x by equations). */
 int abd_solver_solve_transpose(const abd_solver *s, double *x);
+
+/* The same for k right-hand sides at once (X: k vectors of length n, one
+ * after the other), in blocks of ABD_SOLVE_BLOCK: each interval's factors
+ * are read from memory once per block (the solves stream all of them, about
+ * 12 MB at NTST 150, NDIM 21, NCOL 4).  Every vector's result is bit for
+ * bit that of abd_solver_solve / abd_solver_solve_transpose. */
+#define ABD_SOLVE_BLOCK 2
+int abd_solver_solve_many(const abd_solver *s, double *X, int k);
+int abd_solver_solve_transpose_many(const abd_solver *s, double *X, int k);
 
 /* Sign (+1, -1; 0 if singular or not factored) and log|det J| of the original
  * matrix J, in the row/column order of colloc_jac.h. */

@@ -66,63 +66,89 @@ static size_t jac_node(const colloc_jac *J, int j) { return (size_t)(j * J->ncol
 static size_t jac_par(const colloc_jac *J) { return (size_t)J->ndim * (size_t)(J->ntst * J->ncol + 1); }
 static size_t jac_bc_row(const colloc_jac *J) { return (size_t)J->ntst * (size_t)(J->ncol * J->ndim); }
 
-void colloc_jac_matvec(const colloc_jac *J, const double *x, double *y)
+/* The interval loops run over the vectors inside each interval, so that a
+ * block is read from memory once for all k vectors; every vector sees the
+ * same operations in the same order as alone. */
+void colloc_jac_matvec_many(const colloc_jac *J, int k, const double *X, double *Y)
 {
   const int nd = J->ndim, nc = J->ncol, nf = J->nfpr, nb = J->nbc, nq = J->ndense;
   const int nr = nc * nd, nn = (nc + 1) * nd;
-  const double *p = x + jac_par(J);
-  const size_t rb = jac_bc_row(J);
+  const size_t n = (size_t)J->n, rb = jac_bc_row(J);
 
   for (int j = 0; j < J->ntst; j++) {
     const double *C = colloc_jac_coll_block(J, j);
-    double *yj = y + (size_t)j * (size_t)nr;
-    /* The ncol+1 nodes of interval j are contiguous in x. */
-    cblas_dgemv(CblasColMajor, CblasNoTrans, nr, nn, 1.0, C, nr, x + jac_node(J, j), 1, 0.0, yj, 1);
-    if (nf > 0) cblas_dgemv(CblasColMajor, CblasNoTrans, nr, nf, 1.0, C + (size_t)nn * (size_t)nr, nr, p, 1, 1.0, yj, 1);
+    for (int v = 0; v < k; v++) {
+      const double *x = X + (size_t)v * n, *p = x + jac_par(J);
+      double *yj = Y + (size_t)v * n + (size_t)j * (size_t)nr;
+      /* The ncol+1 nodes of interval j are contiguous in x. */
+      cblas_dgemv(CblasColMajor, CblasNoTrans, nr, nn, 1.0, C, nr, x + jac_node(J, j), 1, 0.0, yj, 1);
+      if (nf > 0)
+        cblas_dgemv(CblasColMajor, CblasNoTrans, nr, nf, 1.0, C + (size_t)nn * (size_t)nr, nr, p, 1, 1.0, yj, 1);
+    }
   }
-  if (nb > 0) {
-    double *yb = y + rb;
-    cblas_dgemv(CblasColMajor, CblasNoTrans, nb, nd, 1.0, J->bc, nb, x, 1, 0.0, yb, 1);
-    cblas_dgemv(CblasColMajor, CblasNoTrans, nb, nd, 1.0, J->bc + (size_t)nd * (size_t)nb, nb,
-                x + jac_node(J, J->ntst), 1, 1.0, yb, 1);
-    if (nf > 0)
-      cblas_dgemv(CblasColMajor, CblasNoTrans, nb, nf, 1.0, J->bc + (size_t)(2 * nd) * (size_t)nb, nb, p, 1, 1.0, yb, 1);
+  for (int v = 0; v < k; v++) {
+    const double *x = X + (size_t)v * n, *p = x + jac_par(J);
+    double *y = Y + (size_t)v * n;
+    if (nb > 0) {
+      double *yb = y + rb;
+      cblas_dgemv(CblasColMajor, CblasNoTrans, nb, nd, 1.0, J->bc, nb, x, 1, 0.0, yb, 1);
+      cblas_dgemv(CblasColMajor, CblasNoTrans, nb, nd, 1.0, J->bc + (size_t)nd * (size_t)nb, nb,
+                  x + jac_node(J, J->ntst), 1, 1.0, yb, 1);
+      if (nf > 0)
+        cblas_dgemv(CblasColMajor, CblasNoTrans, nb, nf, 1.0, J->bc + (size_t)(2 * nd) * (size_t)nb, nb, p, 1, 1.0,
+                    yb, 1);
+    }
+    double *yd = y + rb + (size_t)nb;
+    for (int d = 0; d < nq; d++) yd[d] = 0.0;
+    for (int j = 0; j < J->ntst; j++)
+      cblas_dgemv(CblasColMajor, CblasNoTrans, nq, nn, 1.0, colloc_jac_dense_block(J, j), nq, x + jac_node(J, j), 1,
+                  1.0, yd, 1);
+    if (nf > 0) cblas_dgemv(CblasColMajor, CblasNoTrans, nq, nf, 1.0, J->dense_par, nq, p, 1, 1.0, yd, 1);
   }
-  double *yd = y + rb + (size_t)nb;
-  for (int d = 0; d < nq; d++) yd[d] = 0.0;
-  for (int j = 0; j < J->ntst; j++)
-    cblas_dgemv(CblasColMajor, CblasNoTrans, nq, nn, 1.0, colloc_jac_dense_block(J, j), nq, x + jac_node(J, j), 1,
-                1.0, yd, 1);
-  if (nf > 0) cblas_dgemv(CblasColMajor, CblasNoTrans, nq, nf, 1.0, J->dense_par, nq, p, 1, 1.0, yd, 1);
+}
+
+void colloc_jac_matvec(const colloc_jac *J, const double *x, double *y) { colloc_jac_matvec_many(J, 1, x, y); }
+
+void colloc_jac_matvec_transpose_many(const colloc_jac *J, int k, const double *X, double *Y)
+{
+  const int nd = J->ndim, nc = J->ncol, nf = J->nfpr, nb = J->nbc, nq = J->ndense;
+  const int nr = nc * nd, nn = (nc + 1) * nd;
+  const size_t n = (size_t)J->n, rb = jac_bc_row(J);
+
+  memset(Y, 0, (size_t)k * n * sizeof(double));
+  for (int j = 0; j < J->ntst; j++) {
+    const double *C = colloc_jac_coll_block(J, j);
+    for (int v = 0; v < k; v++) {
+      const double *x = X + (size_t)v * n, *xd = x + rb + (size_t)nb;
+      double *y = Y + (size_t)v * n, *p = y + jac_par(J);
+      const double *xj = x + (size_t)j * (size_t)nr;
+      /* beta = 1: the mesh point shared with interval j-1 accumulates. */
+      cblas_dgemv(CblasColMajor, CblasTrans, nr, nn, 1.0, C, nr, xj, 1, 1.0, y + jac_node(J, j), 1);
+      if (nf > 0)
+        cblas_dgemv(CblasColMajor, CblasTrans, nr, nf, 1.0, C + (size_t)nn * (size_t)nr, nr, xj, 1, 1.0, p, 1);
+      cblas_dgemv(CblasColMajor, CblasTrans, nq, nn, 1.0, colloc_jac_dense_block(J, j), nq, xd, 1, 1.0,
+                  y + jac_node(J, j), 1);
+    }
+  }
+  for (int v = 0; v < k; v++) {
+    const double *x = X + (size_t)v * n, *xd = x + rb + (size_t)nb;
+    double *y = Y + (size_t)v * n, *p = y + jac_par(J);
+    if (nb > 0) {
+      const double *xb = x + rb;
+      cblas_dgemv(CblasColMajor, CblasTrans, nb, nd, 1.0, J->bc, nb, xb, 1, 1.0, y, 1);
+      cblas_dgemv(CblasColMajor, CblasTrans, nb, nd, 1.0, J->bc + (size_t)nd * (size_t)nb, nb, xb, 1, 1.0,
+                  y + jac_node(J, J->ntst), 1);
+      if (nf > 0)
+        cblas_dgemv(CblasColMajor, CblasTrans, nb, nf, 1.0, J->bc + (size_t)(2 * nd) * (size_t)nb, nb, xb, 1, 1.0, p,
+                    1);
+    }
+    if (nf > 0) cblas_dgemv(CblasColMajor, CblasTrans, nq, nf, 1.0, J->dense_par, nq, xd, 1, 1.0, p, 1);
+  }
 }
 
 void colloc_jac_matvec_transpose(const colloc_jac *J, const double *x, double *y)
 {
-  const int nd = J->ndim, nc = J->ncol, nf = J->nfpr, nb = J->nbc, nq = J->ndense;
-  const int nr = nc * nd, nn = (nc + 1) * nd;
-  double *p = y + jac_par(J);
-  const size_t rb = jac_bc_row(J);
-  const double *xd = x + rb + (size_t)nb;
-
-  memset(y, 0, (size_t)J->n * sizeof(double));
-  for (int j = 0; j < J->ntst; j++) {
-    const double *C = colloc_jac_coll_block(J, j);
-    const double *xj = x + (size_t)j * (size_t)nr;
-    /* beta = 1: the mesh point shared with interval j-1 accumulates. */
-    cblas_dgemv(CblasColMajor, CblasTrans, nr, nn, 1.0, C, nr, xj, 1, 1.0, y + jac_node(J, j), 1);
-    if (nf > 0) cblas_dgemv(CblasColMajor, CblasTrans, nr, nf, 1.0, C + (size_t)nn * (size_t)nr, nr, xj, 1, 1.0, p, 1);
-    cblas_dgemv(CblasColMajor, CblasTrans, nq, nn, 1.0, colloc_jac_dense_block(J, j), nq, xd, 1, 1.0,
-                y + jac_node(J, j), 1);
-  }
-  if (nb > 0) {
-    const double *xb = x + rb;
-    cblas_dgemv(CblasColMajor, CblasTrans, nb, nd, 1.0, J->bc, nb, xb, 1, 1.0, y, 1);
-    cblas_dgemv(CblasColMajor, CblasTrans, nb, nd, 1.0, J->bc + (size_t)nd * (size_t)nb, nb, xb, 1, 1.0,
-                y + jac_node(J, J->ntst), 1);
-    if (nf > 0)
-      cblas_dgemv(CblasColMajor, CblasTrans, nb, nf, 1.0, J->bc + (size_t)(2 * nd) * (size_t)nb, nb, xb, 1, 1.0, p, 1);
-  }
-  if (nf > 0) cblas_dgemv(CblasColMajor, CblasTrans, nq, nf, 1.0, J->dense_par, nq, xd, 1, 1.0, p, 1);
+  colloc_jac_matvec_transpose_many(J, 1, x, y);
 }
 
 void colloc_jac_to_dense(const colloc_jac *J, double *A)

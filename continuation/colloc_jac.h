@@ -48,6 +48,11 @@ static inline double *colloc_jac_dense_block(const colloc_jac *J, int j) { retur
 void colloc_jac_matvec(const colloc_jac *J, const double *x, double *y);
 /* y = J^T x. */
 void colloc_jac_matvec_transpose(const colloc_jac *J, const double *x, double *y);
+/* The same for k vectors at once: X, Y hold k vectors of length n one after
+ * the other; each block of J is read once for all of them, and every vector's
+ * result is bit for bit that of the single-vector call. */
+void colloc_jac_matvec_many(const colloc_jac *J, int k, const double *X, double *Y);
+void colloc_jac_matvec_transpose_many(const colloc_jac *J, int k, const double *X, double *Y);
 /* Dense n x n column-major copy (tests and small problems). */
 void colloc_jac_to_dense(const colloc_jac *J, double *A);
 

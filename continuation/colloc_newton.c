@@ -65,6 +65,9 @@ static int kin_jacfn(N_Vector x, N_Vector fx, SUNMatrix A, void *data, N_Vector 
   nw->last_setup_iter = nw->phase_start + (int)nni;
   int rc = colloc_system_jacobian(nw->sys, N_VGetArrayPointer(x), nw->J);
   if (rc != 0) return rc > 0 ? 1 : -1;
+  /* A wraps nw->J, which the call above overwrote entry by entry: KINSOL's
+     zeroing before this call need not be carried out */
+  if (nw->kind != CABLE_LINSOLVER_KLU) SUNMat_Colloc_Filled(A);
   if (nw->kind == CABLE_LINSOLVER_KLU) return colloc_sparse_fill(nw->J, A) == 0 ? 0 : -1;
   return 0;
 }

@@ -17,7 +17,13 @@
  * a new colloc_jac of the same sizes, owned (and freed) by the clone. */
 SUNMatrix SUNMat_Colloc(colloc_jac *J, SUNContext ctx);
 
-/* The wrapped blocks; NULL if A is not a SUNMat_Colloc matrix. */
+/* The wrapped blocks; NULL if A is not a SUNMat_Colloc matrix.  The zero op
+ * only marks the matrix; this access carries the zeroing out when it is
+ * still pending, so every reader sees a zeroed matrix. */
 colloc_jac *SUNMat_Colloc_Jac(SUNMatrix A);
+
+/* Says that every entry of A's blocks has been overwritten since the last
+ * zero (e.g. by colloc_system_jacobian): a pending zeroing is dropped. */
+void SUNMat_Colloc_Filled(SUNMatrix A);
 
 #endif

@@ -218,7 +218,14 @@ int main(void)
   test_true("SUNMatClone: new blocks of the same sizes", JB && JB != J && JB->n == n && JB->ntst == N);
   if (JB) {
     jac_copy(J, JB);
+    /* the zeroing is deferred: SUNMat_Colloc_Filled after a zero keeps what
+       was written meanwhile, an access without it sees zeros */
     test_int("SUNMatZero on the clone returns 0", SUNMatZero(B), SUNMAT_SUCCESS);
+    SUNMat_Colloc_Filled(B);
+    test_true("SUNMatZero then SUNMat_Colloc_Filled keeps the entries written",
+              SUNMat_Colloc_Jac(B) == JB && JB->coll[0] == J->coll[0] && JB->bc[0] == J->bc[0]);
+    test_int("SUNMatZero on the clone returns 0", SUNMatZero(B), SUNMAT_SUCCESS);
+    test_true("SUNMat_Colloc_Jac after SUNMatZero: the same blocks", SUNMat_Colloc_Jac(B) == JB);
     double mx = 0.0;
     for (size_t i = 0; i < (size_t)N * JB->coll_stride; i++) mx = fmax(mx, fabs(JB->coll[i]));
     for (size_t i = 0; i < (size_t)N * JB->dense_stride; i++) mx = fmax(mx, fabs(JB->dense[i]));

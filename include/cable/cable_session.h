@@ -96,7 +96,8 @@ typedef struct cable_run_args {
 CABLE_API int cable_session_run(cable_session *s, const cable_run_args *a, cable_branch **out, cable_error *err);
 /* AUTO's load: the start a run with the same arguments would use, as a
  * one-solution branch, and the runner state of that run.  A name without IRS
- * gives the file's last solution. */
+ * gives the file's last solution.  When that run would start from STPNT
+ * (AUTO's ld(e='x', c='x')), *out is NULL and only the runner state is set. */
 CABLE_API int cable_session_load(cable_session *s, const cable_run_args *a, cable_branch **out, cable_error *err);
 /* b./s./d.NAME from branches (append: AUTO's ap=).  sol_index >= 0: only that
  * solution of branches[0] (a one-point file). */
@@ -110,6 +111,18 @@ CABLE_API int cable_session_transform(cable_session *s, cable_branch *const *in,
                             int *nout, cable_error *err);
 /* The same on files b./s./d.NAME, rewritten in place. */
 CABLE_API int cable_session_transform_files(cable_session *s, const char *name, int relabel, cable_error *err);
+/* AUTO's runner state (its runner.options["constants"], what AUTO's pr()
+ * prints): the constants, names and problem name the next run without a
+ * start and without c= uses, i.e. those of the last run or load with every
+ * keyword override applied; the one-off IRS, s and sv are cleared (0, "").
+ * Before any run or load: the defaults (cable_constants_init), no names,
+ * problem "".  NDIM, NBC, NINT are 0 unless a constants file or a keyword
+ * set them (a run then uses its problem's).  Each of c, names, e may be NULL
+ * (not wanted); the pointers stay valid until the next call that changes
+ * the session (run, load, loadbd, transform_files) or its free.
+ * 0, or CABLE_ERR_NULL with err when s is NULL (the outputs set to NULL). */
+CABLE_API int cable_session_constants(const cable_session *s, const cable_constants **c, const cable_names **names,
+                                      const char **e, cable_error *err);
 /* The path of TYPE.NAME ("c", "s", "b", "d") or of a plain file (type NULL)
  * in the session's directory. */
 CABLE_API void cable_session_path(const cable_session *s, const char *type, const char *name, char *buf, size_t len);

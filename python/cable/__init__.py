@@ -11,6 +11,7 @@ the commands and where they differ from AUTO's.
 """
 from ._cable import CableError
 from .commands import Runner, constant_text
+from .constants import Constants
 from .results import Parameters, Result, Solution, SolutionList
 from . import scenes
 from .script import run_script
@@ -35,7 +36,7 @@ def _delegate(name):
 
 
 for _n in ('run', 'r', 'load', 'ld', 'loadbd', 'bd', 'save', 'sv', 'merge', 'mb', 'relabel', 'rl', 'clean', 'cl',
-           'delete', 'dl', 'copy', 'cp', 'append', 'ap', 'cd', 'wait', 'analyze', 'plot', 'render', 'compare',
+           'delete', 'dl', 'copy', 'cp', 'append', 'ap', 'cd', 'wait', 'pr', 'printconstant', 'pc', 'analyze', 'plot', 'render', 'compare',
            'overlap_free', 'branch_table'):
     globals()[_n] = _delegate(_n)
 del _n

@@ -5,7 +5,8 @@ run, and numbers new labels and branches after every label it has used or
 read.  Its commands are AUTO's, with AUTO's short aliases:
 
   run/r/rn, load/ld, save/sv, loadbd/bd, merge/mb, relabel/rl, clean/cl,
-  delete/dl, copy/cp, append/ap, cd, auto, wait, plus cable's analyze,
+  delete/dl, copy/cp, append/ap, cd, auto, wait, pr/printconstant/pc,
+  plus cable's analyze,
   compare, overlap_free, branch_table, plot, render.
 """
 import functools
@@ -18,6 +19,7 @@ import numpy as np
 
 from . import _cable, scenes
 from ._cable import CableError
+from .constants import Constants
 from .results import Result, Solution
 
 _NAME_KEYS = ('e', 'c', 's', 'sv', 'ap')
@@ -127,9 +129,11 @@ class Runner:
 
     def load(self, data=None, **kw):
         """load([start], KEY=value, ...): the solution a run with the same
-        arguments would start from; sets the runner's constants."""
+        arguments would start from; sets the runner's constants.  None when
+        that run would start from STPNT (ld(e='x', c='x') only sets the
+        constants, which pr() shows)."""
         b = self.session.load(*_args(data, kw))
-        return Result([b])(None)[0]
+        return None if b is None else Result([b])(None)[0]
 
     def loadbd(self, name):
         """loadbd('NAME'): the labelled solutions of s.NAME (b.NAME's norms) as a result."""
@@ -175,6 +179,18 @@ class Runner:
             return None
         br, _ = _branches(x, 'relabel')
         return Result(self.session.transform(br, True))
+
+    def pr(self, parameter=None):
+        """pr(): print the runner's constants (what the next run without a
+        start and without c= uses) as a constants file; pr('NTST'): return
+        one of them (a number, list or dict; None when not set)."""
+        c = Constants(self.session.constants())
+        if parameter is None:
+            sys.stdout.write(str(c))
+            return None
+        if not isinstance(parameter, str):
+            raise CableError("pr('KEY') takes a constant's name, got a %s" % type(parameter).__name__)
+        return c[parameter]
 
     # --- files and directories ----------------------------------------------------------
     def clean(self):
@@ -277,7 +293,8 @@ class Runner:
         cmds = {
             'run': ('r', 'rn'), 'load': ('ld',), 'loadbd': ('bd',), 'save': ('sv',), 'merge': ('mb',),
             'relabel': ('rl',), 'clean': ('cl',), 'delete': ('dl',), 'copy': ('cp',), 'append': ('ap',),
-            'cd': (), 'auto': (), 'wait': (), 'analyze': (), 'plot': (), 'render': (), 'compare': (),
+            'cd': (), 'auto': (), 'wait': (), 'pr': ('printconstant', 'pc'), 'analyze': (), 'plot': (),
+            'render': (), 'compare': (),
             'overlap_free': (), 'branch_table': (),
         }
         ns = {}

@@ -11,6 +11,7 @@ import re
 import numpy as np
 
 from ._cable import Branch, CableError
+from .constants import Constants
 
 _SPEC = re.compile(r'^([A-Z][A-Z])(\d*)$')
 _TYPES = ('BP', 'LP', 'UZ', 'EP', 'MX', 'RG')
@@ -85,9 +86,16 @@ class Solution:
     def kind(self):
         """A branch point's kind as the detector found it: 'simple' (the
         determinant changed sign), 'double' (two singular values vanished) or
-        'pair' (two simple ones in one step); '' when this is not a BP or the
-        solution was read from an s-file (which does not store it)."""
+        'pair' (two simple ones in one step); '' when this is not a BP.  A
+        solution read back from files (loadbd) has it from the d-file's note
+        on its label (the s-file, AUTO's format, has no place for it); ''
+        when the d-file is missing."""
         return self._kind
+
+    @property
+    def c(self):
+        """The constants the solution's run used (AUTO's s.c; print(s.c) shows them as a constants file)."""
+        return Constants(self._br.constants())
 
     @property
     def note(self):

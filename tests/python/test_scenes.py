@@ -93,6 +93,22 @@ def test_branch_points_by_kind(work):
     assert scenes.branch_points(r, kind='double') == bps and scenes.branch_points(r, kind='simple') == []
     t1 = bps[1]['T']
     assert [b['LAB'] for b in scenes.branch_points(r, T=(t1 - 1e-9, t1 + 1e-9))] == [bps[1]['LAB']]
+    assert r('BP1') == bps[0] and r('BP2') == bps[1] and r(bps[1]['LAB']) == bps[1]
+    # read back from the files: the kinds and notes come from d.flat (the
+    # s-file, AUTO's format, has no place for them), so a script that
+    # restarts from saved files selects the same BPs (a new runner given the
+    # constants and so the parameter names first, as AUTO's ld(e=, c=))
+    rn = cable.Runner()
+    assert rn.load(e='braid_knot', c='knot72') is None
+    back = rn.loadbd('flat')
+    assert [(b['LAB'], b.kind, b.note) for b in back('BP')] == [(b['LAB'], 'double', b.note) for b in bps]
+    assert scenes.branch_point(back, T=(t1 - 1e-9, t1 + 1e-9), kind='double')['LAB'] == bps[1]['LAB']
+    # re-saved, the notes go with them
+    rn.save(back, 'again')
+    assert [b.kind for b in rn.loadbd('again')('BP')] == ['double'] * len(bps)
+    # without the d-file the kind is unknown: ''
+    os.remove('d.flat')
+    assert [b.kind for b in rn.loadbd('flat')('BP')] == [''] * len(bps)
 
 
 SMALL = """r = run(e='braid_knot', c='knot72', NTST=20, NCOL=4, ISP=0, NMX=30, UZSTOP={'T': 4.0})
@@ -130,3 +146,28 @@ def test_compare_small(work):
             eval("compare('bad.txt', [['ok', r, 4.0, 100.0, 3.5], %s])" % row, ns)
         assert want_msg in str(e.value) and 'row 2' in str(e.value)
         assert not os.path.exists('bad.txt')
+
+
+def test_render(flat, monkeypatch, capsys):
+    """render(): a shaded picture of a braid solution (PNG of the asked size,
+    square), with the tube meshes for ParaView (VTK PolyData) and Blender
+    (ASCII PLY); bad arguments write nothing."""
+    import struct
+    runner, r, d = flat
+    monkeypatch.chdir(d)
+    ns = runner.namespace()
+    sol = r('EP1')
+    ns['render'](sol, 'k.png', view=[0, 0, 1], size=160, color='pressure', vtp='k.vtp', ply='k.ply')
+    with open('k.png', 'rb') as f:
+        head = f.read(24)
+    assert head[:8] == b'\x89PNG\r\n\x1a\n' and struct.unpack('>II', head[16:24]) == (160, 160)
+    assert open('k.vtp').read().count('<VTKFile type="PolyData"') == 1
+    assert open('k.ply').read().startswith('ply\nformat ascii 1.0\n')
+    assert 'label %d rendered to k.png' % sol['LAB'] in capsys.readouterr().out
+    with pytest.raises(cable.CableError) as e:
+        ns['render'](sol, 'v.png', view=[0, 1])
+    assert str(e.value) == 'render: view: view=[x, y, z]'
+    with pytest.raises(cable.CableError) as e:
+        ns['render'](r, 'v.png')
+    assert str(e.value) == "render: render(sol, 'fig.png', view=[x, y, z], ...)"
+    assert not os.path.exists('v.png')

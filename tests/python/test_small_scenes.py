@@ -55,6 +55,7 @@ def test_elastica(work):
                        "r = loadbd('elastica')\n"
                        "for b in r[0]('BP'):\n"
                        "    print('bp %.17g' % b['lambda'])\n"
+                       "print('kinds %s' % ' '.join(b.kind for b in r[0]('BP')))\n"
                        "up, down = r[1](), r[2]()\n"
                        "print('halves %d %d' % (len(up), len(down)))\n"
                        "d = max(abs(u['lambda'] - w['lambda']) for u, w in zip(up, down))\n"
@@ -64,6 +65,9 @@ def test_elastica(work):
     for k, lam in enumerate(bps, 1):
         # NTST 50, NCOL 5 and EPSS 1e-10: both far below 1e-8
         assert abs(lam - (k * PI) ** 2) <= 1e-8 * (k * PI) ** 2, 'elastica: BP%d at (%d pi)^2' % (k, k)
+    # read back from s.elastica: the kind comes from d.elastica (a BP with no
+    # dip-test note was found by a sign change of the determinant: simple)
+    assert lines(out, 'kinds ') == ['simple simple simple'], 'elastica: the BPs of the straight rod are simple'
     nu, nd = (int(x) for x in lines(out, 'halves ')[0].split())
     assert nu > 2 and nu == nd, 'elastica: both directions from BP1 have labelled points'
     d, m = (float(x) for x in lines(out, 'mirror ')[0].split())

@@ -1,0 +1,171 @@
+/* Banded LU with partial pivoting for the reduced system of abd_solver.c:
+ * the algorithm, pivot choice and storage of LAPACK's unblocked dgbtf2
+ * (doc/linear-algebra.md, "3. Banded LU of the mesh-point system"); what
+ * differs is the work.
+ *  - LAPACK runs its unblocked code on this system (block size 1 when
+ *    KU <= 64) with one BLAS call (a daxpy inside dger) per column of every
+ *    rank-one update: mostly call overhead on updates of about 45 x 90.
+ *  - The augmented system is sparse inside its band: copy rows with two
+ *    entries, the copies' columns zero in the condensed rows.  On the flat
+ *    (7,2) knot at NTST 150 the factors hold 1.1e5 nonzeros in U and 0.9e5
+ *    in L out of 6.5e5 and 3.2e5 band places.  An elimination step with a
+ *    zero multiplier or a zero pivot-row entry changes nothing, so the
+ *    update loops only over the nonzero multipliers and the nonzero entries
+ *    of the pivot row.
+ *  - The factors are kept compressed as they are made (U by rows: row j is
+ *    final once it has been the pivot row; L by columns), so each solve
+ *    touches only nonzeros.
+ * Skipping an exact zero subtracts nothing: the factors are LAPACK's up to
+ * the rounding of the remaining operations (fused multiply-adds in the BLAS),
+ * the pivots the same unless two candidates tie to the last bit. */
+#include "abd_band.h"
+
+#include <math.h>
+#include <stddef.h>
+#include <stdlib.h>
+
+int abd_band_alloc(abd_band *f, int n, int kl, int ku)
+{
+  size_t nu = (size_t)n * (size_t)(kl + ku) + 1, nl = (size_t)n * (size_t)kl + 1;
+  f->n = n;
+  f->kl = kl;
+  f->ku = ku;
+  f->umax = 0.0;
+  f->ipiv = malloc((size_t)n * sizeof *f->ipiv);
+  f->nzl = malloc(((size_t)kl + 1) * sizeof *f->nzl);
+  f->ud = malloc((size_t)n * sizeof *f->ud);
+  f->up = malloc(((size_t)n + 1) * sizeof *f->up);
+  f->uc = malloc(nu * sizeof *f->uc);
+  f->uv = malloc(nu * sizeof *f->uv);
+  f->lp = malloc(((size_t)n + 1) * sizeof *f->lp);
+  f->li = malloc(nl * sizeof *f->li);
+  f->lv = malloc(nl * sizeof *f->lv);
+  if (!f->ipiv || !f->nzl || !f->ud || !f->up || !f->uc || !f->uv || !f->lp || !f->li || !f->lv) return -1;
+  return 0;
+}
+
+void abd_band_free(abd_band *f)
+{
+  free(f->ipiv);
+  free(f->nzl);
+  free(f->ud);
+  free(f->up);
+  free(f->uc);
+  free(f->uv);
+  free(f->lp);
+  free(f->li);
+  free(f->lv);
+  f->ipiv = f->nzl = f->up = f->uc = f->lp = f->li = NULL;
+  f->ud = f->uv = f->lv = NULL;
+}
+
+/* Element (i, j) (0-based) of the band matrix: ab[j * ldab + kl + ku + i - j]. */
+int abd_band_factor(abd_band *f, double *ab, int ldab)
+{
+  const int n = f->n, kl = f->kl, kv = f->kl + f->ku;
+  int info = 0, nu = 0, nl = 0;
+  double umax = 0.0;
+  int ju = 0; /* last column reached by the updates so far */
+  for (int j = 0; j < n; j++) {
+    double *cj = ab + (size_t)j * (size_t)ldab + kv; /* cj[i] = A(j + i, j) */
+    const int km = kl < n - 1 - j ? kl : n - 1 - j;
+    f->up[j] = nu;
+    f->lp[j] = nl;
+    int jp = 0;
+    double big = fabs(cj[0]);
+    for (int i = 1; i <= km; i++)
+      if (fabs(cj[i]) > big) {
+        big = fabs(cj[i]);
+        jp = i;
+      }
+    f->ipiv[j] = j + jp;
+    f->ud[j] = cj[jp];
+    if (cj[jp] == 0.0) {
+      if (info == 0) info = j + 1;
+      continue;
+    }
+    if (big > umax) umax = big;
+    const int last = j + f->ku + jp < n - 1 ? j + f->ku + jp : n - 1;
+    if (last > ju) ju = last;
+    if (jp != 0)
+      for (int c = j; c <= ju; c++) { /* rows j and j + jp in columns j..ju */
+        double *col = ab + (size_t)c * (size_t)ldab + kv - c; /* col[i] = A(i, c) */
+        double t = col[j];
+        col[j] = col[j + jp];
+        col[j + jp] = t;
+      }
+    const double rp = 1.0 / cj[0];
+    int *nz = f->nzl, nnz = 0;
+    for (int i = 1; i <= km; i++) {
+      cj[i] *= rp;
+      if (cj[i] != 0.0) {
+        nz[nnz++] = i;
+        f->li[nl] = j + i;
+        f->lv[nl++] = cj[i];
+      }
+    }
+    for (int c = j + 1; c <= ju; c++) {
+      double *a = ab + (size_t)c * (size_t)ldab + kv - c + j; /* a[i] = A(j + i, c) */
+      const double u = a[0];
+      if (u == 0.0) continue;
+      f->uc[nu] = c;
+      f->uv[nu++] = u;
+      if (fabs(u) > umax) umax = fabs(u);
+      if (nnz == km)
+        for (int i = 1; i <= km; i++) a[i] -= cj[i] * u;
+      else
+        for (int t = 0; t < nnz; t++) a[nz[t]] -= cj[nz[t]] * u;
+    }
+  }
+  f->up[n] = nu;
+  f->lp[n] = nl;
+  f->umax = umax;
+  return info;
+}
+
+void abd_band_solve(const abd_band *f, double *b)
+{
+  const int n = f->n;
+  /* b <- L^{-1} P b, column by column (LAPACK's dgbtrs order) */
+  for (int j = 0; j < n; j++) {
+    const int p = f->ipiv[j];
+    if (p != j) {
+      double t = b[p];
+      b[p] = b[j];
+      b[j] = t;
+    }
+    const double bj = b[j];
+    if (bj == 0.0) continue;
+    for (int k = f->lp[j]; k < f->lp[j + 1]; k++) b[f->li[k]] -= f->lv[k] * bj;
+  }
+  /* U x = b by rows, from the last */
+  for (int j = n - 1; j >= 0; j--) {
+    double t = b[j];
+    for (int k = f->up[j]; k < f->up[j + 1]; k++) t -= f->uv[k] * b[f->uc[k]];
+    b[j] = t / f->ud[j];
+  }
+}
+
+void abd_band_solve_transpose(const abd_band *f, double *b)
+{
+  const int n = f->n;
+  /* U^T: forward; row j of U is column j of U^T */
+  for (int j = 0; j < n; j++) {
+    const double bj = b[j] / f->ud[j];
+    b[j] = bj;
+    if (bj == 0.0) continue;
+    for (int k = f->up[j]; k < f->up[j + 1]; k++) b[f->uc[k]] -= f->uv[k] * bj;
+  }
+  /* L^T then P^T, backwards */
+  for (int j = n - 1; j >= 0; j--) {
+    double t = b[j];
+    for (int k = f->lp[j]; k < f->lp[j + 1]; k++) t -= f->lv[k] * b[f->li[k]];
+    b[j] = t;
+    const int p = f->ipiv[j];
+    if (p != j) {
+      double s = b[p];
+      b[p] = b[j];
+      b[j] = s;
+    }
+  }
+}
