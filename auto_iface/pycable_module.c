@@ -11,7 +11,8 @@
  *   passages(br, i, j)      self-passages of the braid axis between two solutions
  *   tube_dmin(br, i)        closest approach of the strand tubes / Delta
  *   plot(...), render(...)  pictures (graphics/)
- *   type_name(itp)          AUTO's two-letter point type */
+ *   type_name(itp)          AUTO's two-letter point type
+ *   blas_single_thread()    the application's BLAS setting (cable_blas_single_thread) */
 #include "pycable.h"
 
 #define NPY_NO_DEPRECATED_API NPY_1_7_API_VERSION
@@ -42,6 +43,17 @@ PyObject *pyc_raise(int status, const cable_error *err)
 
 /* ---- module -------------------------------------------------------------------- */
 
+/* A process that runs tasks side by side with others (a Dask worker of
+ * cable.atlas) makes the choice the cable program makes at start: one BLAS
+ * thread (or CABLE_BLAS_THREADS), see cable_blas_single_thread. */
+static PyObject *py_blas_single_thread(PyObject *mod, PyObject *unused)
+{
+  (void)mod;
+  (void)unused;
+  cable_blas_single_thread();
+  Py_RETURN_NONE;
+}
+
 static PyObject *py_type_name(PyObject *mod, PyObject *arg)
 {
   (void)mod;
@@ -52,6 +64,8 @@ static PyObject *py_type_name(PyObject *mod, PyObject *arg)
 
 static PyMethodDef module_methods[] = {
     {"type_name", py_type_name, METH_O, "AUTO's two-letter name of a point type code"},
+    {"blas_single_thread", py_blas_single_thread, METH_NOARGS,
+     "blas_single_thread(): ask OpenBLAS for one thread (CABLE_BLAS_THREADS=n: n), process-wide"},
     {"analyze", (PyCFunction)(void (*)(void))pyc_analyze, METH_VARARGS, "analyze(branch, i) -> dict"},
     {"passages", (PyCFunction)(void (*)(void))pyc_passages, METH_VARARGS,
      "passages(branch, i, j) -> (count, net, tau_first): self-passages of the braid axis"},

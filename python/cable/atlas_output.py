@@ -94,17 +94,23 @@ def _esc(s):
     return s.replace('&', '&amp;').replace('<', '&lt;').replace('>', '&gt;')
 
 
-def summary_svg(results):
+def summary_svg(results, tasks=None):
+    """The picture: a row per family, a group of cells per Delta, a cell per
+    arm and mode, for every task of tasks (default: those of results), so
+    that an empty cell is a task not computed yet."""
     fams, deltas, cols = [], [], []
     cell = {}
-    for t, r in results:
+
+    def where(t):
         i = t.inputs
-        f = '%s(%d,2) %s' % (i['kind'], i['p'], 'R' if i['hand'] > 0 else 'L')
-        c = (i['arm'], i['mode'])
-        for lst, x in ((fams, f), (deltas, i['Delta']), (cols, c)):
+        return '%s(%d,2) %s' % (i['kind'], i['p'], 'R' if i['hand'] > 0 else 'L'), i['Delta'], (i['arm'], i['mode'])
+
+    for t in (tasks if tasks is not None else [t for t, _ in results]):
+        for lst, x in zip((fams, deltas, cols), where(t)):
             if x not in lst:
                 lst.append(x)
-        cell[(f, i['Delta'], c)] = cell_outcome(r['rows'] if r['status'] == 'ok' else [])
+    for t, r in results:
+        cell[where(t)] = cell_outcome(r['rows'] if r['status'] == 'ok' else [])
     deltas.sort()
     cols.sort(key=lambda c: (-c[0], c[1]))
     kinds = []
@@ -121,18 +127,22 @@ def summary_svg(results):
         else:
             colour[v] = _PALETTE[k % len(_PALETTE)]
             k += 1
-    cw, ch, left, top = 18, 18, 130, 60
-    gw = max(len(cols) * cw + 12, 110)
-    width = max(left + len(deltas) * gw + 20, 560)
+    cw, ch, left, top = 18, 18, 130, 78
+    title = ['cable atlas: the companion knot type and Lk each branch reaches',
+             '(its overlap-free stretch with the most axis passages; a cell per arm and mode)']
+    # text widths estimated at 0.62 em per character (sans-serif), so that nothing overlaps
+    labels = ['Delta = %.4g' % d for d in deltas]
+    gw = max([len(cols) * cw + 12, 110] + [int(0.62 * 11 * len(x)) + 14 for x in labels])
+    width = max(left + len(deltas) * gw + 20, int(0.62 * 13 * max(len(x) for x in title)) + 16,
+                int(0.62 * 11 * max([len(v) for v in kinds] + [0])) + 40)
     height = top + len(fams) * ch + 30 + 16 * len(kinds)
     out = ['<svg xmlns="http://www.w3.org/2000/svg" width="%d" height="%d" font-family="sans-serif" '
            'font-size="11">' % (width, height),
-           '<rect width="100%" height="100%" fill="white"/>',
-           '<text x="8" y="16" font-size="13">cable atlas: companion knot type and Lk reached '
-           '(the overlap-free stretch with most axis passages; cells: arm, mode)</text>']
+           '<rect width="100%" height="100%" fill="white"/>']
+    out += ['<text x="8" y="%d" font-size="13">%s</text>' % (18 + 17 * k, _esc(x)) for k, x in enumerate(title)]
     for j, d in enumerate(deltas):
         x = left + j * gw
-        out.append('<text x="%d" y="%d">Delta = %g</text>' % (x, top - 22, d))
+        out.append('<text x="%d" y="%d">%s</text>' % (x, top - 22, labels[j]))
         for m, c in enumerate(cols):
             out.append('<text x="%d" y="%d" font-size="9">%s%d</text>' % (x + m * cw + 3, top - 6,
                                                                           '+' if c[0] > 0 else '-', c[1]))
@@ -189,6 +199,6 @@ def write_outputs(sweep, results=None):
     write_atomic(os.path.join(sweep.output, 'atlas.csv'), csv_text(rows))
     if importlib.util.find_spec('pyarrow') is not None:
         _write_parquet(os.path.join(sweep.output, 'atlas.parquet'), rows)
-    write_atomic(os.path.join(sweep.output, 'summary.svg'), summary_svg(results))
+    write_atomic(os.path.join(sweep.output, 'summary.svg'), summary_svg(results, sweep.tasks))
     write_atomic(os.path.join(sweep.output, 'summary.md'), summary_md(sweep, results, rows))
     return rows

@@ -17,7 +17,7 @@ import sys
 import time
 
 from .atlas_output import write_outputs
-from .atlas_task import run_task
+from .atlas_task import flat_dir, run_flat, run_task
 
 
 # seconds between rewrites of the table and summary while tasks finish
@@ -53,17 +53,26 @@ def remove_stale_partials(sweep):
     """Removes the partial directories this host's dead worker processes
     left (OUT/tasks/.NAME.partial-HOST-PID whose PID is not running)."""
     import socket
-    d = os.path.join(sweep.output, 'tasks')
     tag = '.partial-%s-' % socket.gethostname()
-    for n in os.listdir(d):
-        if n.startswith('.') and tag in n:
-            try:
-                pid = int(n.rsplit('-', 1)[1])
-                os.kill(pid, 0)
-            except ProcessLookupError:
-                shutil.rmtree(os.path.join(d, n), ignore_errors=True)
-            except (ValueError, PermissionError):
-                pass
+    for d in (os.path.join(sweep.output, 'tasks'), os.path.join(sweep.output, 'flat')):
+        for n in os.listdir(d) if os.path.isdir(d) else []:
+            if n.startswith('.') and tag in n:
+                try:
+                    pid = int(n.rsplit('-', 1)[1])
+                    os.kill(pid, 0)
+                except ProcessLookupError:
+                    shutil.rmtree(os.path.join(d, n), ignore_errors=True)
+                except (ValueError, PermissionError):
+                    pass
+
+
+def read_flat(sweep, ft):
+    """The finished result of the shared flat branch ft (None: not finished)."""
+    p = os.path.join(flat_dir(sweep.output, ft.name), 'result.json')
+    if not os.path.exists(p):
+        return None
+    with open(p) as fh:
+        return json.load(fh)
 
 
 def priority(t):
@@ -168,11 +177,22 @@ def run_sweep(sweep, scheduler=None, workers=None, retry_failed=False, stream=No
     try:
         by_key = {}
         futures = []
+        flats = {}   # flat key -> its finished result or the future computing it (once per sweep)
         # submitted in priority order as well: with Dask's default (no queuing on the scheduler) every
         # task goes to a worker at once, and the workers were seen to run them in submission order
         for t in sorted(todo, key=lambda x: -priority(x)):
-            f = client.submit(run_task, t.inputs, t.name, sweep.output, key='atlas-' + t.key, pure=False,
-                              priority=priority(t))
+            ft = t.flat
+            if ft.key not in flats:
+                r = read_flat(sweep, ft)
+                if r is not None and r['status'] != 'ok' and retry_failed:
+                    shutil.rmtree(flat_dir(sweep.output, ft.name))
+                    r = None
+                # a flat branch runs before the mode tasks that wait for it (Dask's dependencies)
+                flats[ft.key] = r if r is not None else client.submit(
+                    run_flat, ft.inputs, ft.name, sweep.output, key='atlas-flat-' + ft.key, pure=False,
+                    priority=priority(t) + 1)
+            f = client.submit(run_task, t.inputs, t.name, sweep.output, flats[ft.key], key='atlas-' + t.key,
+                              pure=False, priority=priority(t))
             by_key[f.key] = t
             futures.append(f)
         pending = set(futures)

@@ -13,8 +13,12 @@ import re
 import tomllib
 
 # Bumped whenever what a task computes from its inputs changes, so that a
-# resumed sweep recomputes the tasks of an older algorithm.
-TASK_VERSION = 1
+# resumed sweep recomputes the tasks of an older algorithm.  2: the branch
+# starts from the shared flat branch's s-file (FlatTask), not from the
+# task's own flat run in memory.
+TASK_VERSION = 2
+# The same for the shared flat branches (FlatTask).
+FLAT_VERSION = 1
 
 # The AUTO constants a sweep may set for the flat branch ([flat]) and the
 # mode branches ([branch]), with their defaults (doc/atlas.md says why).
@@ -49,9 +53,40 @@ class Task:
         self.name = '%s%d%s-D%s-arm%s-m%d-%s' % (i['kind'], i['p'], 'R' if i['hand'] > 0 else 'L',
                                                  _num(i['Delta']), '+' if i['arm'] > 0 else '-', i['mode'],
                                                  self.key)
+        # the flat branch it starts from (load() shares one between a family's modes)
+        self.flat = FlatTask(flat_inputs(inputs, inputs['mode']))
 
     def __repr__(self):
         return '<atlas task %s>' % self.name
+
+
+class FlatTask:
+    """The flat branch of one (family, hand, Delta, arm, mesh, [flat]
+    constants), from T = 0 along the arm to its bps-th branch point, shared
+    by the mode tasks 1..bps of a sweep: a keyed, resumable result of its
+    own (OUT/flat/NAME, doc/atlas.md 2).  A mode task needs only the
+    flat branch's prefix up to its own branch point, which is the same
+    whatever later point the run stops at (the run is deterministic)."""
+
+    def __init__(self, inputs):
+        self.inputs = inputs
+        text = json.dumps(inputs, sort_keys=True, separators=(',', ':'))
+        self.key = hashlib.sha256(text.encode()).hexdigest()[:16]
+        i = inputs
+        self.name = 'flat-%s%d%s-D%s-arm%s-bp%d-%s' % (i['kind'], i['p'], 'R' if i['hand'] > 0 else 'L',
+                                                      _num(i['Delta']), '+' if i['arm'] > 0 else '-', i['bps'],
+                                                      self.key)
+
+    def __repr__(self):
+        return '<atlas flat branch %s>' % self.name
+
+
+def flat_inputs(task_inputs, bps):
+    """The inputs of the flat branch a mode task starts from, run to its
+    bps-th branch point (bps >= the task's mode)."""
+    i = task_inputs
+    return {'version': FLAT_VERSION, 'kind': i['kind'], 'p': i['p'], 'hand': i['hand'], 'Delta': i['Delta'],
+            'length': i['length'], 'arm': i['arm'], 'mesh': i['mesh'], 'flat': i['flat'], 'bps': bps}
 
 
 def _num(x):
@@ -309,6 +344,7 @@ def load(path):
                     for a in arms:
                         sign = knotting_arm(kind, h) if a == 'knotting' else (1 if a == '+' else -1)
                         me = dict(mesh, NTST=auto_ntst(kind, p) if mesh['NTST'] == 'auto' else mesh['NTST'])
+                        group = []
                         for m in modes:
                             t = Task({'version': TASK_VERSION, 'kind': kind, 'p': p, 'hand': h, 'Delta': d,
                                       'length': length, 'arm': sign, 'mode': m, 'mesh': me, 'flat': flat,
@@ -316,4 +352,10 @@ def load(path):
                             if t.key not in seen:
                                 seen.add(t.key)
                                 tasks.append(t)
+                                group.append(t)
+                        # one flat branch for the group's modes, to its highest branch point
+                        if group:
+                            shared = FlatTask(flat_inputs(group[0].inputs, max(modes)))
+                            for t in group:
+                                t.flat = shared
     return Sweep(os.path.abspath(path), output, tasks, record)

@@ -32,6 +32,14 @@ _ICP = {('knot', False): ['T', 'L', 'L2', 'eps21', 'F', 'h', 'Ham'],
         ('link', False): ['T', 'F', 'h', 'Ham', 'Phi'],
         ('link', True): ['T', 'eps13', 'F', 'h', 'Ham', 'Phi']}
 
+# A task is one core's work: a Dask worker runs one task at a time and a
+# machine has a worker per core, so the structured solver runs on one thread
+# (NTHREADS; its results are the same bit for bit for every value, doc/engine.md)
+# and so does the BLAS (run_task: the choice the cable program makes at start;
+# a threaded OpenBLAS spent most of an atlas task spinning, doc/atlas.md 7).
+# Neither is an input of the task's key: neither changes its result.
+TASK_THREADS = 1
+
 ROW_FIELDS = ['family', 'kind', 'p', 'hand', 'Delta', 'arm', 'mode', 'bp_T', 'bp_F', 'bp_multiplicity',
               'formulation', 'segment', 'passages', 'companion', 'crossings', 'Lk', 'Lk_tube', 'overlap_free',
               'LAB_free', 'T_free', 'F_free', 'LAB_free_end', 'T_free_end', 'F_free_end', 'free_end', 'dmin',
@@ -57,8 +65,9 @@ def _flat_constants(inp):
          'PAR': par, 'NTST': inp['mesh']['NTST'], 'NCOL': inp['mesh']['NCOL'], 'JAC': 1, 'ISP': 2, 'ILP': 0,
          'NSV': 2}
     c.update(inp['flat'])
+    c['NTHREADS'] = TASK_THREADS
     c['DS'] = inp['arm'] * abs(c['DS'])
-    c['STOP'] = ['BP%d' % inp['mode']]   # BPs of the other arm never come: the run goes one way from T = 0
+    c['STOP'] = ['BP%d' % inp['bps']]   # BPs of the other arm never come: the run goes one way from T = 0
     return c
 
 
@@ -67,6 +76,7 @@ def _branch_constants(inp, sym):
     c = {'e': e, 'NDIM': 21, 'IPS': 4, 'ICP': _ICP[(inp['kind'], sym)], 'NTST': inp['mesh']['NTST'],
          'NCOL': inp['mesh']['NCOL'], 'JAC': 1, 'ISW': -1, 'ISP': 0, 'ILP': 0}
     c.update(inp['branch'])
+    c['NTHREADS'] = TASK_THREADS
     return c
 
 
@@ -135,33 +145,66 @@ def branch_rows(mode_result, bp, lk_bp, base):
     return rows
 
 
-def compute(inp, log):
-    """The task's continuation and analysis in the current directory;
-    returns its rows (a failed step raises)."""
+def compute_flat(inp):
+    """The flat branch of a FlatTask in the current directory (c.flat,
+    b./s./d.flat); returns what its mode tasks need: its branch points on
+    the arm (label, T, F, the detector's kind, which the s-file does not
+    store) and where it ended."""
     runner = Runner()
     fc = _flat_constants(inp)
-    _constants_file('c.flat', '# flat branch of the atlas task (cable.atlas)', fc)
-    # e= is given to run() as well: from a start solution the runner keeps the start's problem over a
-    # constants file's e (measured: c.branch's e = 'braid_knot_sym' alone left the switch in braid_knot)
+    _constants_file('c.flat', '# flat branch of the atlas (cable.atlas)', fc)
     flat = runner.run(c='flat', e=fc['e'], sv='flat')
-    bps = [b for b in flat('BP') if b['T'] * inp['arm'] > 0]
+    bps = [{'LAB': b.LAB, 'T': b['T'], 'F': b['F'], 'kind': scenes.bp_kind(b)}
+           for b in flat('BP') if b['T'] * inp['arm'] > 0]
+    return {'bps': bps, 'end_T': flat()[-1]['T']}
+
+
+def compute(inp, times, flat, flat_dir):
+    """The task's branch and analysis in the current directory, from the
+    mode-th branch point of the flat branch flat (a run_flat result) whose
+    files are in flat_dir; returns its rows (a failed step raises).  times
+    (a dict) receives the wall seconds of its stages: flat (the shared
+    flat branch's own wall time, spent once for all its mode tasks),
+    branch (the run, its b./s./d. files included) and analysis (the rest:
+    loading the branch point, the rows)."""
+    t0 = time.time()
+    times['flat'] = flat['wall']
+    for f in ('c.flat', 'b.flat', 's.flat', 'd.flat'):
+        if os.path.exists(os.path.join(flat_dir, f)):
+            shutil.copyfile(os.path.join(flat_dir, f), f)
+    if flat['status'] != 'ok':
+        raise _cable.CableError('the flat branch %s failed: %s' % (flat['name'], flat['error']))
+    fi = flat['inputs']
+    bps = flat['bps']
     if len(bps) < inp['mode']:
-        end = flat()[-1]
+        fc = fi['flat']
         raise _cable.CableError('the flat branch has %d branch point(s) on the %s arm up to T = %.6g (NMX = %d, '
                                 'RL0..RL1 = %g..%g): no branch point %d'
-                                % (len(bps), '+' if inp['arm'] > 0 else '-', end['T'], fc['NMX'], fc['RL0'],
+                                % (len(bps), '+' if inp['arm'] > 0 else '-', flat['end_T'], fc['NMX'], fc['RL0'],
                                    fc['RL1'], inp['mode']))
     bp = bps[inp['mode'] - 1]
-    kind = scenes.bp_kind(bp)
-    sym = kind == 'double'   # doc/links.md, 2: double BPs switch in the S0-symmetric formulation
+    runner = Runner()
+    start = [s for s in runner.loadbd('flat')('BP') if s.LAB == bp['LAB']]
+    if len(start) != 1:
+        raise _cable.CableError('s.flat of %s has %d solutions labelled %d (a BP expected)'
+                                % (flat['name'], len(start), bp['LAB']))
+    start = start[0]
+    sym = bp['kind'] == 'double'   # doc/links.md, 2: double BPs switch in the S0-symmetric formulation
     bc = _branch_constants(inp, sym)
     _constants_file('c.branch', '# the branch from branch point %d (cable.atlas)' % inp['mode'], bc)
-    lk_bp = _cable.analyze(*bp.branch)['Lk']
-    mode = runner.run(bp, c='branch', e=bc['e'], sv='branch')
+    lk_bp = _cable.analyze(*start.branch)['Lk']
+    t1 = time.time()
+    # e= is given to run() as well: from a start solution the runner keeps the start's problem over a
+    # constants file's e (measured: c.branch's e = 'braid_knot_sym' alone left the switch in braid_knot)
+    mode = runner.run(start, c='branch', e=bc['e'], sv='branch')
+    t2 = time.time()
+    times['branch'] = t2 - t1
     base = {'family': _family(inp), 'kind': inp['kind'], 'p': inp['p'], 'hand': inp['hand'], 'Delta': inp['Delta'],
             'arm': inp['arm'], 'mode': inp['mode'], 'bp_T': bp['T'], 'bp_F': bp['F'],
             'bp_multiplicity': 2 if sym else 1, 'formulation': bc['e']}
-    return branch_rows(mode, bp, lk_bp, base)
+    rows = branch_rows(mode, bp, lk_bp, base)
+    times['analysis'] = time.time() - t2 + (t1 - t0)
+    return rows
 
 
 def _flush_all():
@@ -189,51 +232,108 @@ def _restore(saved):
     os.close(saved[1])
 
 
-def run_task(inputs, name, out_dir):
-    """Runs one task into OUT/tasks/NAME (see the module's text) unless it
-    is there already; returns its result dict (status 'ok' or 'failed',
-    rows, wall time).  An error of the computation is recorded, not raised."""
-    final = os.path.join(out_dir, 'tasks', name)
+def _in_directory(final, inputs, work, complete=None):
+    """Runs work() (returning the result's fields; raising: the error is
+    recorded) in a partial directory, then complete(part, result) if given,
+    and renames the directory to final when its result.json is written;
+    returns the result (final's, unchanged, when it exists already).  One
+    at a time per process (the current directory and file descriptors 1, 2
+    are the process's)."""
     done = os.path.join(final, 'result.json')
     if os.path.exists(done):
         with open(done) as fh:
             return json.load(fh)
+    parent, name = os.path.split(final)
     with _PROCESS_LOCK:
-        part = os.path.join(out_dir, 'tasks', '.%s.partial-%s-%d' % (name, socket.gethostname(), os.getpid()))
+        part = os.path.join(parent, '.%s.partial-%s-%d' % (name, socket.gethostname(), os.getpid()))
         if os.path.exists(part):
             shutil.rmtree(part)
         os.makedirs(part)
         write_atomic(os.path.join(part, 'task.json'), json.dumps(inputs, indent=1, sort_keys=True) + '\n')
         write_atomic(os.path.join(part, 'pid'), '%d\n' % os.getpid())
         here = os.getcwd()
+        _cable.blas_single_thread()
         t0 = time.time()
         saved = _redirect(os.path.join(part, 'log.txt'))
         try:
             os.chdir(part)
-            rows, status, error = compute(inputs, None), 'ok', ''
+            fields, status, error = work(), 'ok', ''
         except Exception as e:   # recorded in the result: the sweep goes on
             _flush_all()
             with open(os.path.join(part, 'log.txt'), 'a') as fh:
                 fh.write(traceback.format_exc())
-            rows, status, error = [], 'failed', '%s: %s' % (type(e).__name__, e)
+            fields, status, error = {}, 'failed', '%s: %s' % (type(e).__name__, e)
         finally:
             os.chdir(here)
             _restore(saved)
         wall = time.time() - t0
-        for r in rows:
-            r.update(wall=wall, status=status, error='', task=name)
+        result = {'name': name, 'status': status, 'error': error, 'wall': wall}
+        result.update(fields)
+        result.update(host=socket.gethostname(), inputs=inputs)
+        if complete is not None:
+            complete(part, result)
+        return _finish(part, final, result)
+
+
+def _finish(part, final, result):
+    """Writes result.json into part and renames it to final (another worker
+    that finished the same task first wins: its result is kept)."""
+    done = os.path.join(final, 'result.json')
+    write_atomic(os.path.join(part, 'result.json'), json.dumps(result, indent=1) + '\n')
+    os.remove(os.path.join(part, 'pid'))
+    if os.path.exists(final):   # another worker finished it meanwhile (a retried task): keep the first
+        shutil.rmtree(part)
+        with open(done) as fh:
+            return json.load(fh)
+    os.rename(part, final)
+    return result
+
+
+def flat_dir(out_dir, flat_name):
+    return os.path.join(out_dir, 'flat', flat_name)
+
+
+def run_flat(inputs, name, out_dir):
+    """Computes the shared flat branch of a FlatTask into OUT/flat/NAME
+    (c.flat, b./s./d.flat, log.txt, result.json with its branch points)
+    unless it is there already; returns its result.  Its files are kept
+    whatever the sweep records: its mode tasks, run later or elsewhere,
+    start from its s-file."""
+    os.makedirs(os.path.join(out_dir, 'flat'), exist_ok=True)
+    return _in_directory(flat_dir(out_dir, name), inputs, lambda: compute_flat(inputs))
+
+
+def run_task(inputs, name, out_dir, flat=None):
+    """Runs one task into OUT/tasks/NAME (see the module's text) unless it
+    is there already; returns its result dict (status 'ok' or 'failed',
+    rows, wall time, the stages' times).  flat: the result of the flat
+    branch it starts from (run_flat; a sweep shares one between a
+    family's modes); None: its own, run to its mode-th branch point.  An
+    error of the computation is recorded, not raised."""
+    final = os.path.join(out_dir, 'tasks', name)
+    if os.path.exists(os.path.join(final, 'result.json')):
+        with open(os.path.join(final, 'result.json')) as fh:
+            return json.load(fh)
+    os.makedirs(os.path.join(out_dir, 'tasks'), exist_ok=True)
+    if flat is None:
+        from .atlas_sweep import FlatTask, flat_inputs
+        ft = FlatTask(flat_inputs(inputs, inputs['mode']))
+        flat = run_flat(ft.inputs, ft.name, out_dir)
+    times = {}
+
+    def work():
+        return {'rows': compute(inputs, times, flat, os.path.abspath(flat_dir(out_dir, flat['name'])))}
+
+    def complete(part, result):
+        result.setdefault('rows', [])
+        for r in result['rows']:
+            r.update(wall=result['wall'], status=result['status'], error='', task=name)
+        times['total'] = result['wall']
+        result['times'] = times
+        result['flat'] = flat['name']
         if not inputs.get('files', True):
             for f in os.listdir(part):
                 if f[:2] in ('b.', 's.', 'd.'):
                     os.remove(os.path.join(part, f))
-        result = {'name': name, 'status': status, 'error': error, 'wall': wall, 'rows': rows,
-                  'host': socket.gethostname(), 'inputs': inputs}
-        write_atomic(os.path.join(part, 'result.json'), json.dumps(result, indent=1) + '\n')
-        os.remove(os.path.join(part, 'pid'))
-        if os.path.exists(final):   # another worker finished it meanwhile (a retried task): keep the first
-            shutil.rmtree(part)
-            with open(done) as fh:
-                return json.load(fh)
-        os.rename(part, final)
-        return result
 
+    return _in_directory(final, inputs, work, complete)

@@ -301,3 +301,97 @@ def test_failing_task_is_recorded(work):
     assert len(rows) == 1 and rows[0]['status'] == 'failed' and rows[0]['task'] == t.name
     table = atlas.read_csv(os.path.join(sweep.output, 'atlas.csv'))
     assert table[0]['status'] == 'failed' and table[0]['error'] == r['error'] and table[0]['Lk'] == ''
+
+
+def _openblas_threads():
+    """OpenBLAS's thread count in this process (None: no OpenBLAS loaded)."""
+    import ctypes
+    for lib in ('libblas.so.3', 'libopenblas.so.0'):
+        try:
+            h = ctypes.CDLL(lib, mode=os.RTLD_NOLOAD | os.RTLD_LAZY)
+        except OSError:
+            continue
+        f = getattr(h, 'openblas_get_num_threads', None)
+        if f is not None:
+            return f()
+    return None
+
+
+def test_task_runs_on_one_core(work, monkeypatch):
+    """A task is one core's work (doc/atlas.md, 7): its runs have NTHREADS = 1
+    (not an input of its key: the engine's results are the same for every
+    NTHREADS), the process's OpenBLAS is asked for one thread (a threaded one
+    spun on the shared cores), and result.json splits the task's wall time
+    into its stages."""
+    from cable import _cable
+    monkeypatch.delenv('CABLE_BLAS_THREADS', raising=False)
+    before = _openblas_threads()
+    path = _write(work, TINY.replace('p = [4]', 'p = [6]').replace('NMX = 30', 'NMX = 4'))
+    sweep = atlas.load(path)
+    assert all('NTHREADS' not in t.inputs['flat'] and 'NTHREADS' not in t.inputs['branch'] for t in sweep.tasks)
+    t = sweep.tasks[0]
+    r = atlas.run_task(t.inputs, t.name, sweep.output)
+    assert r['status'] == 'ok', r['error']
+    d = os.path.join(sweep.output, 'tasks', t.name)
+    for c in ('c.flat', 'c.branch'):
+        assert 'NTHREADS=1\n' in open(os.path.join(d, c)).read(), c
+    if before is not None:   # OpenBLAS is this machine's BLAS (Debian's default alternative)
+        assert _openblas_threads() == 1
+        monkeypatch.setenv('CABLE_BLAS_THREADS', '2')   # the user's override, as for the cable program
+        _cable.blas_single_thread()
+        assert _openblas_threads() == 2
+        monkeypatch.delenv('CABLE_BLAS_THREADS')
+        _cable.blas_single_thread()
+        assert _openblas_threads() == 1
+    times = r['times']
+    assert set(times) == {'flat', 'branch', 'analysis', 'total'}
+    assert all(v >= 0 for v in times.values()) and times['total'] == r['wall']
+    # the flat branch is the shared one's (its own result.json), computed before the task
+    with open(os.path.join(sweep.output, 'flat', r['flat'], 'result.json')) as f:
+        assert times['flat'] == json.load(f)['wall']
+    assert times['branch'] + times['analysis'] <= times['total']
+
+
+def test_flat_branch_shared_by_modes(work):
+    """A sweep computes a family's flat branch once per (family, Delta, arm),
+    to its highest mode's branch point, as a keyed result of its own
+    (OUT/flat/NAME), and each mode task starts from it.  The branch points
+    are those of a flat run that stops at the task's own branch point (the
+    run is the same up to there: equal bit for bit), and a resumed sweep
+    reuses the flat branch."""
+    path = _write(work, TINY.replace('modes = [1]', 'modes = [1, 2]').replace('p = [4]', 'p = [6]')
+                  .replace('kind = "link"', 'kind = "knot"').replace('p = [6]', 'p = [5]')
+                  .replace('NMX = 30', 'NMX = 6'))
+    sweep = atlas.load(path)
+    assert [(t.inputs['p'], t.inputs['mode']) for t in sweep.tasks] == [(3, 1), (3, 2), (5, 1), (5, 2)]
+    flats = {t.flat.key for t in sweep.tasks}
+    assert len(flats) == 2 and all(t.flat.inputs['bps'] == 2 for t in sweep.tasks)
+    rc, out, err = _finish(_start(path, workers=1))
+    assert rc == 0 and '4 computed (0 failed)' in out, out + err
+    fdir = os.path.join(sweep.output, 'flat')
+    assert sorted(os.listdir(fdir)) == sorted({t.flat.name for t in sweep.tasks})
+    results = {t.name: json.loads(d) for t, d in zip(sweep.tasks, [_results(sweep)[t.name] for t in sweep.tasks])}
+    for t in sweep.tasks:
+        r = results[t.name]
+        assert r['status'] == 'ok' and r['flat'] == t.flat.name
+        with open(os.path.join(fdir, t.flat.name, 'result.json')) as f:
+            flat = json.load(f)
+        assert flat['status'] == 'ok' and len(flat['bps']) == 2
+        bp = flat['bps'][t.inputs['mode'] - 1]
+        assert r['rows'][0]['bp_T'] == bp['T'] and r['rows'][0]['bp_F'] == bp['F']
+        assert r['rows'][0]['bp_multiplicity'] == 2 == (2 if bp['kind'] == 'double' else 1)
+        # the flat run stopped at the task's own branch point (run_task alone) finds it bit for bit
+        if t.inputs['mode'] == 1 and t.inputs['p'] == 3:
+            alone = atlas.run_task(t.inputs, t.name, os.path.join(str(work), 'alone'))
+            assert alone['flat'] != t.flat.name and alone['rows'][0]['bp_T'] == bp['T']
+            assert alone['rows'][0]['bp_F'] == bp['F']
+    # resumed after the flat branches (not the tasks) finished: the flat branches are not recomputed
+    keep = {n: os.stat(os.path.join(fdir, n, 'result.json')).st_mtime_ns for n in os.listdir(fdir)}
+    for t in sweep.tasks:
+        import shutil
+        shutil.rmtree(os.path.join(sweep.output, 'tasks', t.name))
+    rc, out, err = _finish(_start(path, workers=1))
+    assert rc == 0 and '0 finished earlier, 4 computed (0 failed)' in out, out + err
+    assert {n: os.stat(os.path.join(fdir, n, 'result.json')).st_mtime_ns for n in os.listdir(fdir)} == keep
+    for t in sweep.tasks:
+        assert json.loads(_results(sweep)[t.name])['rows'][0]['bp_T'] == results[t.name]['rows'][0]['bp_T']
