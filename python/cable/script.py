@@ -18,7 +18,7 @@ import sys
 import tokenize
 import traceback
 
-from ._cable import CableError
+from ._cable import CableError, blas_single_thread
 from .commands import Runner
 
 _STOPS = ('NEWLINE', 'ENDMARKER')
@@ -235,6 +235,10 @@ def main(argv):
     if len(argv) != 1:
         sys.stderr.write('usage: python3 -m cable SCRIPT   (or: cable replay SCRIPT)\n')
         return 2
+    # the application's setting, as the cable program makes it: the engine's
+    # small blocks run fastest on one BLAS thread, and OpenBLAS's idle
+    # threads spin (CABLE_BLAS_THREADS=n keeps n)
+    blas_single_thread()
     status = run_script(argv[0])
     sys.stdout.flush()
     return status
