@@ -40,6 +40,19 @@ _ICP = {('knot', False): ['T', 'L', 'L2', 'eps21', 'F', 'h', 'Ham'],
 # Neither is an input of the task's key: neither changes its result.
 TASK_THREADS = 1
 
+# A seam for the fault-injection test (tests/python/test_atlas.py): with
+# CABLE_ATLAS_GATE=DIR set, a mode task, once its partial directory and pid
+# are written, waits until the file DIR/NAME exists.  A test can then kill
+# the worker of a task known to be running; without the gate, it races a
+# task that takes well under a second.  Unset, nothing waits.
+GATE_VARIABLE = 'CABLE_ATLAS_GATE'
+
+
+def _wait_at_gate(name):
+    gate = os.environ.get(GATE_VARIABLE)
+    while gate and not os.path.exists(os.path.join(gate, name)):
+        time.sleep(0.05)
+
 ROW_FIELDS = ['family', 'kind', 'p', 'hand', 'Delta', 'arm', 'mode', 'bp_T', 'bp_F', 'bp_multiplicity',
               'formulation', 'segment', 'passages', 'companion', 'crossings', 'Lk', 'Lk_tube', 'overlap_free',
               'LAB_free', 'T_free', 'F_free', 'LAB_free_end', 'T_free_end', 'F_free_end', 'free_end', 'dmin',
@@ -322,6 +335,7 @@ def run_task(inputs, name, out_dir, flat=None):
     times = {}
 
     def work():
+        _wait_at_gate(name)
         return {'rows': compute(inputs, times, flat, os.path.abspath(flat_dir(out_dir, flat['name'])))}
 
     def complete(part, result):

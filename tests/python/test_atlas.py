@@ -13,7 +13,7 @@ import time
 
 import pytest
 
-from cable import atlas
+from cable import atlas, atlas_task
 
 from conftest import BUILD, PYTHON
 
@@ -61,9 +61,9 @@ def _env():
     return dict(os.environ, PYTHONPATH=os.path.join(BUILD, 'python'), PYTHONDONTWRITEBYTECODE='1')
 
 
-def _start(path, workers=2, scheduler=None):
+def _start(path, workers=2, scheduler=None, env=None):
     how = ['--scheduler', scheduler] if scheduler else ['--workers', str(workers)]
-    return subprocess.Popen([PYTHON, '-m', 'cable.atlas', path] + how, env=_env(),
+    return subprocess.Popen([PYTHON, '-m', 'cable.atlas', path] + how, env=dict(_env(), **(env or {})),
                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
 
 
@@ -204,41 +204,54 @@ def test_worker_killed_during_a_task(work):
     path = _write(work, TINY)
     sweep = atlas.load(path)
     tasks_dir = os.path.join(sweep.output, 'tasks')
-    proc = _start(path)
-    # wait for one finished task and one running (a partial directory with its worker's pid)
+    # each task waits at the gate (cable.atlas_task.GATE_VARIABLE) until its
+    # file exists there: one task finishes, the other is killed while running
+    gate = os.path.join(str(work), 'gate')
+    os.makedirs(gate)
+    proc = _start(path, env={atlas_task.GATE_VARIABLE: gate})
     state = {}
 
-    def ready():
-        state['done'] = _results(sweep)
-        if not state['done'] or not os.path.isdir(tasks_dir):
-            return False
-        for n in os.listdir(tasks_dir):
+    def running():
+        """{task name: pid} of the tasks with a partial directory and a pid."""
+        out = {}
+        for n in os.listdir(tasks_dir) if os.path.isdir(tasks_dir) else []:
             p = os.path.join(tasks_dir, n, 'pid')
             if n.startswith('.') and os.path.exists(p):
                 try:
-                    state['pid'] = int(open(p).read())
-                    state['task'] = n
-                    return True
-                except ValueError:   # being written
+                    out[n[1:].split('.partial-')[0]] = int(open(p).read())
+                except (ValueError, OSError):   # being written or just removed
                     pass
-        return False
+        return out
 
-    if not _wait_for(ready, proc, 'a finished and a running task') or len(state['done']) == 2:
-        _finish(proc)
-        pytest.fail('the sweep ended before a worker could be killed during a task')
-    os.kill(state['pid'], signal.SIGKILL)
+    def first_running():
+        state['running'] = running()
+        return bool(state['running'])
+
+    assert _wait_for(first_running, proc, 'a running task'), _finish(proc)
+    first = sorted(state['running'])[0]
+    open(os.path.join(gate, first), 'w').close()
+
+    def first_done_other_running():
+        state['done'] = _results(sweep)
+        state['running'] = running()
+        return first in state['done'] and state['running']
+
+    assert _wait_for(first_done_other_running, proc, 'a finished and a running task'), _finish(proc)
+    assert list(state['done']) == [first]
+    (killed, pid), = state['running'].items()
+    os.kill(pid, signal.SIGKILL)
+    open(os.path.join(gate, killed), 'w').close()
     rc, out, err = _finish(proc)
     assert rc == 0, err
     after = _results(sweep)
-    assert len(after) == 2
-    for name, data in state['done'].items():
-        assert after[name] == data, name
+    assert sorted(after) == sorted([first, killed])
+    assert after[first] == state['done'][first]
     for name, data in after.items():
         assert json.loads(data)['status'] == 'ok', name
     _check_rows(sweep)
-    # the retried task ran in another worker process
-    killed = [n for n in after if state['task'].startswith('.' + n + '.partial')]
-    assert len(killed) == 1 and json.loads(after[killed[0]])['rows']
+    # the retried task ran in another worker process and has its rows
+    assert json.loads(after[killed])['rows']
+    assert not [n for n in os.listdir(tasks_dir) if n.startswith('.')]
 
 
 BAD = [
