@@ -51,12 +51,14 @@ def _record_failure(sweep, t, error):
 
 def remove_stale_partials(sweep):
     """Removes the partial directories this host's dead worker processes
-    left (OUT/tasks/.NAME.partial-HOST-PID whose PID is not running)."""
+    left (OUT/tasks/.NAME.partial-HOST-PID whose PID is not running, and
+    OUT/flat/.NAME.again-HOST-PID, a flat branch computed again for its
+    files)."""
     import socket
-    tag = '.partial-%s-' % socket.gethostname()
+    tags = ['.%s-%s-' % (kind, socket.gethostname()) for kind in ('partial', 'again')]
     for d in (os.path.join(sweep.output, 'tasks'), os.path.join(sweep.output, 'flat')):
         for n in os.listdir(d) if os.path.isdir(d) else []:
-            if n.startswith('.') and tag in n:
+            if n.startswith('.') and any(tag in n for tag in tags):
                 try:
                     pid = int(n.rsplit('-', 1)[1])
                     os.kill(pid, 0)
@@ -67,12 +69,16 @@ def remove_stale_partials(sweep):
 
 
 def read_flat(sweep, ft):
-    """The finished result of the shared flat branch ft (None: not finished)."""
+    """The finished result of the shared flat branch ft (None: not finished,
+    or finished without its solutions, which run_flat computes again)."""
     p = os.path.join(flat_dir(sweep.output, ft.name), 'result.json')
     if not os.path.exists(p):
         return None
     with open(p) as fh:
-        return json.load(fh)
+        r = json.load(fh)
+    if r['status'] == 'ok' and not os.path.exists(os.path.join(flat_dir(sweep.output, ft.name), 's.flat')):
+        return None
+    return r
 
 
 def priority(t):

@@ -313,7 +313,46 @@ def run_flat(inputs, name, out_dir):
     whatever the sweep records: its mode tasks, run later or elsewhere,
     start from its s-file."""
     os.makedirs(os.path.join(out_dir, 'flat'), exist_ok=True)
-    return _in_directory(flat_dir(out_dir, name), inputs, lambda: compute_flat(inputs))
+    final = flat_dir(out_dir, name)
+    result = _in_directory(final, inputs, lambda: compute_flat(inputs))
+    if result['status'] == 'ok' and not os.path.exists(os.path.join(final, 's.flat')):
+        _restore_flat_files(final, inputs, name, result)
+    return result
+
+
+# Two computations of one flat branch agree to rounding (the engine is
+# deterministic on one machine; another machine's BLAS may round
+# differently): their branch points' T agree far better than this, and a
+# different branch point (another label or kind) differs by O(1).
+FLAT_AGAIN_RTOL = 1e-6
+
+
+def _restore_flat_files(final, inputs, name, kept):
+    """A finished flat branch whose b./s./d. files are missing (the
+    repository keeps a sweep's result.json files, not its solutions: a fresh
+    clone resumes from them) is computed again in a directory of its own;
+    its files move into final if its branch points are the kept ones, else
+    CableError.  s.flat moves last: its presence marks final as usable."""
+    again_dir = os.path.join(os.path.dirname(final), '.%s.again-%s-%d' % (name, socket.gethostname(), os.getpid()))
+    if os.path.exists(again_dir):
+        shutil.rmtree(again_dir)
+    try:
+        again = _in_directory(again_dir, inputs, lambda: compute_flat(inputs))
+        if again['status'] != 'ok':
+            raise _cable.CableError('the flat branch %s, computed again for its solutions, failed: %s'
+                                    % (name, again['error']))
+        same = [(a['LAB'], a['kind']) for a in again['bps']] == [(k['LAB'], k['kind']) for k in kept['bps']] and all(
+            abs(a['T'] - k['T']) <= FLAT_AGAIN_RTOL * max(1.0, abs(k['T'])) for a, k in zip(again['bps'], kept['bps']))
+        if not same:
+            raise _cable.CableError('the flat branch %s computed again has other branch points than its result.json '
+                                    '(%s, kept %s): remove %s to recompute its tasks'
+                                    % (name, [(a['LAB'], a['T']) for a in again['bps']],
+                                       [(k['LAB'], k['T']) for k in kept['bps']], final))
+        for f in ('b.flat', 'd.flat', 's.flat'):
+            if os.path.exists(os.path.join(again_dir, f)):
+                os.replace(os.path.join(again_dir, f), os.path.join(final, f))
+    finally:
+        shutil.rmtree(again_dir, ignore_errors=True)
 
 
 def run_task(inputs, name, out_dir, flat=None):

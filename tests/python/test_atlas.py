@@ -408,3 +408,48 @@ def test_flat_branch_shared_by_modes(work):
     assert {n: os.stat(os.path.join(fdir, n, 'result.json')).st_mtime_ns for n in os.listdir(fdir)} == keep
     for t in sweep.tasks:
         assert json.loads(_results(sweep)[t.name])['rows'][0]['bp_T'] == results[t.name]['rows'][0]['bp_T']
+
+
+def test_flat_branch_without_its_files(work):
+    """The repository keeps a sweep's result.json files, not its b./s./d.
+    files: a sweep resumed in a fresh clone computes a finished flat branch
+    again for its solutions, keeps its result.json, and refuses (the task
+    fails, saying why) when the branch points differ from the kept ones."""
+    path = _write(work, TINY)
+    sweep = atlas.load(path)
+    rc, out, err = _finish(_start(path, workers=1))
+    assert rc == 0 and '2 computed (0 failed)' in out, out + err
+    before = _results(sweep)
+    fdir = os.path.join(sweep.output, 'flat')
+    knot, link = sweep.tasks
+    kept = {}
+    for n in os.listdir(fdir):
+        for f in os.listdir(os.path.join(fdir, n)):
+            if f[:2] in ('b.', 's.', 'd.') or f == 'log.txt':
+                os.remove(os.path.join(fdir, n, f))
+        with open(os.path.join(fdir, n, 'result.json'), 'rb') as f:
+            kept[n] = f.read()
+    # a wrong kept branch point (another T) for the link's flat branch
+    with open(os.path.join(fdir, link.flat.name, 'result.json')) as f:
+        bad = json.load(f)
+    bad['bps'][0]['T'] += 0.5
+    with open(os.path.join(fdir, link.flat.name, 'result.json'), 'w') as f:
+        json.dump(bad, f, indent=1)
+    import shutil
+    for t in sweep.tasks:
+        shutil.rmtree(os.path.join(sweep.output, 'tasks', t.name))
+    rc, out, err = _finish(_start(path, workers=1))
+    assert rc == 1 and '2 computed (1 failed)' in out, out + err   # a failed task: exit status 1
+    after = {t.name: json.loads(d) for t, d in zip(sweep.tasks, [_results(sweep)[t.name] for t in sweep.tasks])}
+    assert after[knot.name]['status'] == 'ok'
+    def rows(r):   # the computed fields (not the wall time)
+        return [{k: v for k, v in row.items() if k != 'wall'} for row in r['rows']]
+
+    assert rows(after[knot.name]) == rows(json.loads(before[knot.name]))
+    with open(os.path.join(fdir, knot.flat.name, 'result.json'), 'rb') as f:
+        assert f.read() == kept[knot.flat.name]
+    assert os.path.exists(os.path.join(fdir, knot.flat.name, 's.flat'))
+    assert after[link.name]['status'] == 'failed'
+    assert 'other branch points than its result.json' in after[link.name]['error'], after[link.name]['error']
+    assert not os.path.exists(os.path.join(fdir, link.flat.name, 's.flat'))
+    assert not [n for n in os.listdir(fdir) if n.startswith('.')]
