@@ -101,7 +101,8 @@ int braid_pvls(const cable_solution *sol, double *par, void *params)
   .nint = 0, .npar = BP_NPAR, .parnames = braid_parnames, .unames = braid_unames,       \
   .func = braid_func, .icnd = NULL, .stpnt = braid_start_stpnt, .pvls = braid_pvls,     \
   .func_has_jac = 1, .bcnd_has_jac = 1, .icnd_has_jac = 0, .params = NULL,             \
-  .keys = braid_keys, .nkeys = BRAID_NKEYS, .prepare = braid_prepare, .release = braid_release
+  .keys = braid_keys, .nkeys = BRAID_NKEYS, .prepare = braid_prepare, .release = braid_release, \
+  .concurrent = 1
 
 static const cable_problem knot_template = {
   BRAID_PROBLEM_COMMON,

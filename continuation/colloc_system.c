@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "cable/cable_status.h"
+#include "cable_team.h"
 
 /* Central differences have error O(d^2 f''') + O(eps f / d); balancing gives
  * d ~ eps^(1/3) relative to the variable's size: about 6e-6. */
@@ -54,10 +55,21 @@ colloc_system *colloc_system_alloc(const cable_problem *pb, const cable_constant
   s->thl = xcalloc((size_t)nfpr, sizeof(double), &fail);
   s->w_u = xcalloc((size_t)nd, sizeof(double), &fail);
   s->w_du = xcalloc((size_t)nd, sizeof(double), &fail);
-  s->w_f = xcalloc((size_t)nd, sizeof(double), &fail);
-  s->w_fp = xcalloc((size_t)nd, sizeof(double), &fail);
-  s->w_dfdu = xcalloc((size_t)nd * (size_t)nd, sizeof(double), &fail);
-  s->w_dfdp = xcalloc((size_t)nd * (size_t)np, sizeof(double), &fail);
+  /* one chunk of intervals per thread, and more threads than intervals do nothing */
+  int nt = pb->concurrent ? cable_threads(c) : 1;
+  s->nwork = nt < ntst ? nt : ntst;
+  s->work = xcalloc((size_t)s->nwork, sizeof *s->work, &fail);
+  for (int k = 0; s->work && k < s->nwork; k++) {
+    colloc_work *w = &s->work[k];
+    w->u = xcalloc((size_t)nd, sizeof(double), &fail);
+    w->du = xcalloc((size_t)nd, sizeof(double), &fail);
+    w->f = xcalloc((size_t)nd, sizeof(double), &fail);
+    w->fp = xcalloc((size_t)nd, sizeof(double), &fail);
+    w->dfdu = xcalloc((size_t)nd * (size_t)nd, sizeof(double), &fail);
+    w->dfdp = xcalloc((size_t)nd * (size_t)np, sizeof(double), &fail);
+    w->par = xcalloc((size_t)np, sizeof(double), &fail);
+  }
+  if (!fail && s->nwork > 1 && !(s->team = cable_team_alloc(s->nwork))) fail = 1;
   s->w_fb = xcalloc((size_t)nb, sizeof(double), &fail);
   s->w_fbp = xcalloc((size_t)nb, sizeof(double), &fail);
   s->w_dbc = xcalloc((size_t)nb * (size_t)(2 * nd + np), sizeof(double), &fail);
@@ -87,10 +99,17 @@ colloc_system *colloc_system_alloc(const cable_problem *pb, const cable_constant
 void colloc_system_free(colloc_system *s)
 {
   if (!s) return;
-  double *bufs[] = {s->mesh, s->par, s->x0, s->xdot0, s->thu, s->thl, s->w_u, s->w_du, s->w_f,
-                    s->w_fp, s->w_dfdu, s->w_dfdp, s->w_fb, s->w_fbp, s->w_dbc, s->w_fi,
+  double *bufs[] = {s->mesh, s->par, s->x0, s->xdot0, s->thu, s->thl, s->w_u, s->w_du,
+                    s->w_fb, s->w_fbp, s->w_dbc, s->w_fi,
                     s->w_fip, s->w_dint, s->w_uold, s->w_udot, s->w_upold, s->w_parp};
   for (size_t i = 0; i < sizeof bufs / sizeof bufs[0]; i++) free(bufs[i]);
+  cable_team_free(s->team);
+  for (int k = 0; s->work && k < s->nwork; k++) {
+    colloc_work *w = &s->work[k];
+    double *wb[] = {w->u, w->du, w->f, w->fp, w->dfdu, w->dfdp, w->par};
+    for (size_t i = 0; i < sizeof wb / sizeof wb[0]; i++) free(wb[i]);
+  }
+  free(s->work);
   free(s);
 }
 
@@ -132,32 +151,77 @@ static void colloc_point(const colloc_system *s, const double *x, int j, int m, 
   }
 }
 
-static int call_func(colloc_system *s, const double *u, int ijac, double *f, double *dfdu,
-                     double *dfdp)
+/* FUNC with work w's parameters; counts and failures go to w (a pass
+ * hands them to the system, see run_pass). */
+static int call_func(const colloc_system *s, colloc_work *w, const double *u, int ijac, double *f,
+                     double *dfdu, double *dfdp)
 {
-  s->nfunc++;
-  int rc = s->pb->func(s->ndim, u, s->icp, s->par, ijac, f, dfdu, dfdp, s->pb->params);
+  w->nfunc++;
+  int rc = s->pb->func(s->ndim, u, s->icp, w->par, ijac, f, dfdu, dfdp, s->pb->params);
   if (rc != 0) {
-    s->last_callback = rc;
+    w->last_callback = rc;
     return rc;
   }
   for (int i = 0; i < s->ndim; i++)
-    if (!isfinite(f[i])) return s->last_callback = 1; /* NaN/Inf: reject the point */
+    if (!isfinite(f[i])) return w->last_callback = 1; /* NaN/Inf: reject the point */
   return 0;
+}
+
+/* A per-interval pass: chunk k of the intervals on thread k of the team. */
+typedef struct pass_ctx {
+  colloc_system *s;
+  const double *x;
+  double *F;                  /* residual pass */
+  colloc_jac *J;              /* Jacobian pass */
+} pass_ctx;
+
+static void chunk_range(const colloc_system *s, int k, int *j0, int *j1)
+{
+  *j0 = (int)((long)k * s->ntst / s->nwork);
+  *j1 = (int)((long)(k + 1) * s->ntst / s->nwork);
+}
+
+/* Runs fn on every chunk (the works start from the system's parameters) and
+ * gathers: the FUNC count, and the first failure in interval order (the one a
+ * loop over the intervals would have stopped at). */
+static int run_pass(colloc_system *s, cable_team_fn *fn, pass_ctx *ctx)
+{
+  for (int k = 0; k < s->nwork; k++) {
+    colloc_work *w = &s->work[k];
+    memcpy(w->par, s->par, (size_t)s->npar * sizeof *w->par);
+    w->nfunc = 0;
+    w->rc = 0;
+  }
+  cable_team_run(s->team, fn, ctx, s->nwork);
+  int rc = 0;
+  for (int k = 0; k < s->nwork; k++) {
+    colloc_work *w = &s->work[k];
+    s->nfunc += w->nfunc;
+    if (rc == 0 && w->rc != 0) {
+      rc = w->rc;
+      s->last_callback = w->last_callback;
+    }
+  }
+  return rc;
 }
 
 int colloc_system_check_nodes(colloc_system *s, const double *x, int *node)
 {
   load_params(s, x);
+  colloc_work *w = &s->work[0];
+  memcpy(w->par, s->par, (size_t)s->npar * sizeof *w->par);
+  w->nfunc = 0;
   const int npts = s->ntst * s->ncol + 1;
-  for (int k = 0; k < npts; k++) {
-    int rc = call_func(s, x + (size_t)k * (size_t)s->ndim, 0, s->w_f, NULL, NULL);
+  int rc = 0;
+  for (int k = 0; k < npts && rc == 0; k++) {
+    rc = call_func(s, w, x + (size_t)k * (size_t)s->ndim, 0, w->f, NULL, NULL);
     if (rc != 0) {
+      s->last_callback = w->last_callback;
       if (node) *node = k;
-      return rc;
     }
   }
-  return 0;
+  s->nfunc += w->nfunc;
+  return rc;
 }
 
 /* Values of the integral-condition integrand at collocation point (j, m). */
@@ -195,19 +259,31 @@ double colloc_system_inner(const colloc_system *s, const double *a, const double
   return sum;
 }
 
+/* The collocation rows of the intervals of chunk k. */
+static void residual_chunk(void *p, int k)
+{
+  pass_ctx *ctx = p;
+  colloc_system *s = ctx->s;
+  colloc_work *w = &s->work[k];
+  int nd = s->ndim, nc = s->ncol, j0, j1;
+  chunk_range(s, k, &j0, &j1);
+  for (int j = j0; j < j1; j++) {
+    double h = s->mesh[j + 1] - s->mesh[j];
+    for (int m = 0; m < nc; m++) {
+      colloc_point(s, ctx->x, j, m, w->u, w->du);
+      if ((w->rc = call_func(s, w, w->u, 0, w->f, NULL, NULL)) != 0) return;
+      double *Fr = ctx->F + (size_t)(j * nc + m) * (size_t)nd;
+      for (int i = 0; i < nd; i++) Fr[i] = w->du[i] - h * w->f[i];
+    }
+  }
+}
+
 int colloc_system_residual(colloc_system *s, const double *x, double *F)
 {
   int nd = s->ndim, nc = s->ncol, rc;
   load_params(s, x);
-  for (int j = 0; j < s->ntst; j++) {
-    double h = s->mesh[j + 1] - s->mesh[j];
-    for (int m = 0; m < nc; m++) {
-      colloc_point(s, x, j, m, s->w_u, s->w_du);
-      if ((rc = call_func(s, s->w_u, 0, s->w_f, NULL, NULL)) != 0) return rc;
-      double *Fr = F + (size_t)(j * nc + m) * (size_t)nd;
-      for (int i = 0; i < nd; i++) Fr[i] = s->w_du[i] - h * s->w_f[i];
-    }
-  }
+  pass_ctx ctx = {.s = s, .x = x, .F = F};
+  if ((rc = run_pass(s, residual_chunk, &ctx)) != 0) return rc;
   size_t row = (size_t)s->ntst * (size_t)nc * (size_t)nd;
   if (s->nbc > 0) {
     const double *u0 = x, *u1 = x + (size_t)(s->ntst * nc) * (size_t)nd;
@@ -237,38 +313,40 @@ int colloc_system_residual(colloc_system *s, const double *x, double *F)
   return 0;
 }
 
-/* d f / d u and d f / d par(free) at u, analytically or by central differences. */
-static int func_derivs(colloc_system *s, const double *u, double *dfdu, double *dfdp)
+/* d f / d u and d f / d par(free) at u into w->dfdu, w->dfdp, analytically or
+ * by central differences (which perturb w's copy of the parameters). */
+static int func_derivs(const colloc_system *s, colloc_work *w, const double *u)
 {
   int nd = s->ndim;
-  if (s->use_jac_func && !s->fd_par) return call_func(s, u, 2, s->w_f, dfdu, dfdp);
+  double *dfdu = w->dfdu, *dfdp = w->dfdp;
+  if (s->use_jac_func && !s->fd_par) return call_func(s, w, u, 2, w->f, dfdu, dfdp);
   int rc;
   if (s->use_jac_func) {
     /* JAC=-1 (AUTO): d f / d u from FUNC, parameter derivatives below */
-    if ((rc = call_func(s, u, 1, s->w_f, dfdu, dfdp)) != 0) return rc;
+    if ((rc = call_func(s, w, u, 1, w->f, dfdu, dfdp)) != 0) return rc;
   } else {
-    double *up = s->w_du; /* free during Jacobian assembly */
+    double *up = w->du; /* free during Jacobian assembly */
     memcpy(up, u, (size_t)nd * sizeof *up);
     for (int l = 0; l < nd; l++) {
       double d = COLLOC_FD_REL_STEP * (1.0 + fabs(u[l]));
       up[l] = u[l] + d;
-      if ((rc = call_func(s, up, 0, s->w_fp, NULL, NULL)) != 0) return rc;
+      if ((rc = call_func(s, w, up, 0, w->fp, NULL, NULL)) != 0) return rc;
       up[l] = u[l] - d;
-      if ((rc = call_func(s, up, 0, s->w_f, NULL, NULL)) != 0) return rc;
+      if ((rc = call_func(s, w, up, 0, w->f, NULL, NULL)) != 0) return rc;
       up[l] = u[l];
-      for (int i = 0; i < nd; i++) dfdu[i + nd * l] = (s->w_fp[i] - s->w_f[i]) / (2 * d);
+      for (int i = 0; i < nd; i++) dfdu[i + nd * l] = (w->fp[i] - w->f[i]) / (2 * d);
     }
   }
   for (int p = 0; p < s->nfpr; p++) {
     int k = s->icp[p];
-    double pk = s->par[k], d = COLLOC_FD_REL_STEP * (1.0 + fabs(pk));
-    s->par[k] = pk + d;
-    rc = call_func(s, u, 0, s->w_fp, NULL, NULL);
-    s->par[k] = pk - d;
-    if (rc == 0) rc = call_func(s, u, 0, s->w_f, NULL, NULL);
-    s->par[k] = pk;
+    double pk = w->par[k], d = COLLOC_FD_REL_STEP * (1.0 + fabs(pk));
+    w->par[k] = pk + d;
+    rc = call_func(s, w, u, 0, w->fp, NULL, NULL);
+    w->par[k] = pk - d;
+    if (rc == 0) rc = call_func(s, w, u, 0, w->f, NULL, NULL);
+    w->par[k] = pk;
     if (rc != 0) return rc;
-    for (int i = 0; i < nd; i++) dfdp[i + nd * k] = (s->w_fp[i] - s->w_f[i]) / (2 * d);
+    for (int i = 0; i < nd; i++) dfdp[i + nd * k] = (w->fp[i] - w->f[i]) / (2 * d);
   }
   return 0;
 }
@@ -338,10 +416,41 @@ static int icnd_derivs(colloc_system *s, const double *x, int j, int m)
   return 0;
 }
 
+/* The collocation blocks of the intervals of chunk k. */
+static void jacobian_chunk(void *p, int k)
+{
+  pass_ctx *ctx = p;
+  colloc_system *s = ctx->s;
+  colloc_work *w = &s->work[k];
+  int nd = s->ndim, nc = s->ncol, nf = s->nfpr, ldc = nc * nd, j0, j1;
+  chunk_range(s, k, &j0, &j1);
+  for (int j = j0; j < j1; j++) {
+    double h = s->mesh[j + 1] - s->mesh[j];
+    double *B = colloc_jac_coll_block(ctx->J, j);
+    for (int m = 0; m < nc; m++) {
+      /* w->u holds u here: func_derivs uses w->du, w->f and w->fp as scratch */
+      colloc_point(s, ctx->x, j, m, w->u, NULL);
+      if ((w->rc = func_derivs(s, w, w->u)) != 0) return;
+      for (int kk = 0; kk <= nc; kk++) {
+        double lk = s->basis.l[m][kk], dlk = s->basis.dl[m][kk];
+        for (int l = 0; l < nd; l++) {
+          double *col = B + (size_t)(kk * nd + l) * (size_t)ldc + (size_t)(m * nd);
+          for (int i = 0; i < nd; i++) col[i] = -h * lk * w->dfdu[i + nd * l];
+          col[l] += dlk;
+        }
+      }
+      for (int q = 0; q < nf; q++) {
+        double *col = B + (size_t)((nc + 1) * nd + q) * (size_t)ldc + (size_t)(m * nd);
+        for (int i = 0; i < nd; i++) col[i] = -h * w->dfdp[i + nd * s->icp[q]];
+      }
+    }
+  }
+}
+
 int colloc_system_jacobian(colloc_system *s, const double *x, colloc_jac *J)
 {
   int nd = s->ndim, nc = s->ncol, nf = s->nfpr, rc;
-  int ldc = nc * nd, nde = J->ndense;
+  int nde = J->ndense;
   s->njac++;
   load_params(s, x);
   /* the collocation blocks are overwritten entry by entry below (every row
@@ -349,27 +458,8 @@ int colloc_system_jacobian(colloc_system *s, const double *x, colloc_jac *J)
   memset(J->bc, 0, (size_t)J->nbc * (size_t)(2 * J->ndim + J->nfpr) * sizeof(double));
   memset(J->dense, 0, (size_t)J->ntst * J->dense_stride * sizeof(double));
   memset(J->dense_par, 0, (size_t)J->ndense * (size_t)J->nfpr * sizeof(double));
-  for (int j = 0; j < s->ntst; j++) {
-    double h = s->mesh[j + 1] - s->mesh[j];
-    double *B = colloc_jac_coll_block(J, j);
-    for (int m = 0; m < nc; m++) {
-      /* w_upold holds u here: func_derivs uses w_du, w_f and w_fp as scratch */
-      colloc_point(s, x, j, m, s->w_upold, NULL);
-      if ((rc = func_derivs(s, s->w_upold, s->w_dfdu, s->w_dfdp)) != 0) return rc;
-      for (int k = 0; k <= nc; k++) {
-        double lk = s->basis.l[m][k], dlk = s->basis.dl[m][k];
-        for (int l = 0; l < nd; l++) {
-          double *col = B + (size_t)(k * nd + l) * (size_t)ldc + (size_t)(m * nd);
-          for (int i = 0; i < nd; i++) col[i] = -h * lk * s->w_dfdu[i + nd * l];
-          col[l] += dlk;
-        }
-      }
-      for (int p = 0; p < nf; p++) {
-        double *col = B + (size_t)((nc + 1) * nd + p) * (size_t)ldc + (size_t)(m * nd);
-        for (int i = 0; i < nd; i++) col[i] = -h * s->w_dfdp[i + nd * s->icp[p]];
-      }
-    }
-  }
+  pass_ctx ctx = {.s = s, .x = x, .J = J};
+  if ((rc = run_pass(s, jacobian_chunk, &ctx)) != 0) return rc;
   if (s->nbc > 0) {
     const double *u0 = x, *u1 = x + (size_t)(s->ntst * nc) * (size_t)nd;
     if ((rc = bcnd_derivs(s, u0, u1)) != 0) return rc;

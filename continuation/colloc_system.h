@@ -20,6 +20,21 @@ typedef enum {
   COLLOC_CLOSE_ARCLENGTH = 1 /* <x - x0, xdot0>_theta = ds */
 } colloc_closing;
 
+/* Scratch of one thread's share of the mesh intervals (the per-interval
+ * passes of the residual and the Jacobian run on a team of threads when the
+ * problem is concurrent; colloc_system.c). */
+typedef struct colloc_work {
+  double *u, *du, *f, *fp;    /* [ndim] */
+  double *dfdu;               /* [ndim * ndim] */
+  double *dfdp;               /* [ndim * npar] */
+  double *par;                /* [npar] a copy of the system's parameters (differences perturb it) */
+  long nfunc;                 /* FUNC calls of the current pass */
+  int rc;                     /* first nonzero callback status of the current pass, 0 if none */
+  int last_callback;          /* the system's last_callback value that goes with rc */
+} colloc_work;
+
+struct cable_team;
+
 typedef struct colloc_system {
   const cable_problem *pb;
   int ndim, ntst, ncol, nbc, nint, npar, nfpr;
@@ -42,8 +57,17 @@ typedef struct colloc_system {
   /* counters */
   long nfunc, njac;
   int last_callback;          /* last nonzero callback return, 0 if none */
+  /* threads: the collocation intervals are split into nwork contiguous
+     chunks [k ntst / nwork, (k+1) ntst / nwork), chunk k computed with work[k]
+     on thread k of team (NULL: one thread; then nwork = 1).  nwork > 1 only
+     for a concurrent problem (cable_problem.concurrent) and NTHREADS > 1.
+     Each interval's arithmetic is the same whatever the chunk, so the
+     results do not depend on the number of threads. */
+  int nwork;
+  colloc_work *work;          /* [nwork] (owned) */
+  struct cable_team *team;    /* owned; NULL when nwork = 1 */
   /* workspace (owned) */
-  double *w_u, *w_du, *w_f, *w_fp, *w_dfdu, *w_dfdp, *w_fb, *w_fbp, *w_dbc;
+  double *w_u, *w_du, *w_fb, *w_fbp, *w_dbc;
   double *w_fi, *w_fip, *w_dint, *w_uold, *w_udot, *w_upold;
   double *w_parp;             /* [npar] perturbed parameters */
 } colloc_system;

@@ -71,6 +71,7 @@ static const cable_problem bratu = {
   .ndim = 2, .nbc = 2, .nint = 0, .npar = 1, .parnames = lambda_names, .unames = u_names,
   .func = bratu_func, .bcnd = bratu_bcnd, .stpnt = zero_stpnt,
   .func_has_jac = 1, .bcnd_has_jac = 1,
+  .concurrent = 1, /* FUNC reads only its arguments */
 };
 
 const cable_problem *cable_testproblem_bratu(void) { return &bratu; }
@@ -157,6 +158,7 @@ static const cable_problem bratu_int = {
   .ndim = 2, .nbc = 2, .nint = 1, .npar = 2, .parnames = lambda_mu_names, .unames = u_names,
   .func = bratu_func, .bcnd = bratu_int_bcnd, .icnd = bratu_int_icnd, .stpnt = bratu_int_stpnt,
   .func_has_jac = 1, .bcnd_has_jac = 1, .icnd_has_jac = 1,
+  .concurrent = 1, /* FUNC reads only its arguments */
 };
 
 const cable_problem *cable_testproblem_bratu_int(void) { return &bratu_int; }
@@ -204,6 +206,7 @@ static const cable_problem elastica = {
   .ndim = 2, .nbc = 2, .nint = 0, .npar = 1, .parnames = lambda_names, .unames = theta_names,
   .func = elastica_func, .bcnd = elastica_bcnd, .stpnt = elastica_stpnt,
   .func_has_jac = 1, .bcnd_has_jac = 1,
+  .concurrent = 1, /* FUNC reads only its arguments */
 };
 
 const cable_problem *cable_testproblem_elastica(void) { return &elastica; }
@@ -258,6 +261,7 @@ static const cable_problem layer = {
   .ndim = 2, .nbc = 2, .nint = 0, .npar = 2, .parnames = layer_parnames, .unames = u_names,
   .func = layer_func, .bcnd = layer_bcnd, .stpnt = layer_stpnt,
   .func_has_jac = 1, .bcnd_has_jac = 1,
+  .concurrent = 1, /* FUNC reads only its arguments */
 };
 
 const cable_problem *cable_testproblem_layer(void) { return &layer; }
@@ -311,6 +315,7 @@ static const cable_problem stiff = {
   .ndim = 2, .nbc = 2, .nint = 0, .npar = 1, .parnames = k_names, .unames = u_names,
   .func = stiff_func, .bcnd = stiff_bcnd, .stpnt = stiff_stpnt,
   .func_has_jac = 1, .bcnd_has_jac = 1,
+  .concurrent = 1, /* FUNC reads only its arguments */
 };
 
 const cable_problem *cable_testproblem_stiff(void) { return &stiff; }

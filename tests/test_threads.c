@@ -7,7 +7,16 @@
  * the dip location), on an adaptive mesh (IAD=3): every point's parameters,
  * test functions, type, iterations and the last solution are compared with
  * memcmp.  Also the team itself: every index of a loop is visited exactly
- * once for team sizes 1..4 and loop lengths 0..9. */
+ * once for team sizes 1..4 and loop lengths 0..9.  And the per-interval
+ * passes of the collocation system (residual and Jacobian, FUNC on the
+ * team with per-thread scratch) directly: for 1, 2 and 3 threads on a mesh
+ * that does not split evenly, with finite-difference Jacobians (which
+ * perturb each thread's own copy of the parameters), the residual, every
+ * Jacobian block and the FUNC count are identical; a FUNC that fails in
+ * some intervals gives the same status for every thread count; a problem
+ * that is not concurrent is evaluated on one thread. */
+#include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "braid_problems.h"
@@ -16,6 +25,7 @@
 #include "cable/cable_cont.h"
 #include "cable/cable_status.h"
 #include "cable_team.h"
+#include "colloc_system.h"
 #include "harness.h"
 
 #define MAXPTS 64
@@ -131,9 +141,143 @@ static void test_team(void)
   test_true("cable_team_run(NULL, ...) is the plain loop", seen[0] == 1 && seen[1] == 1 && seen[2] == 1);
 }
 
+/* u0' = u1, u1' = -lambda e^u0 + sin(3 u0 u1); fails (status 3) where u0 > fail_above. */
+typedef struct {
+  double fail_above;
+} probe_params;
+
+static int probe_func(int ndim, const double *u, const int *icp, const double *par, int ijac, double *f,
+                      double *dfdu, double *dfdp, void *params)
+{
+  (void)ndim; (void)icp; (void)ijac; (void)dfdu; (void)dfdp;
+  const probe_params *pp = params;
+  if (u[0] > pp->fail_above) return 3;
+  f[0] = u[1];
+  f[1] = -par[0] * exp(u[0]) + sin(3.0 * u[0] * u[1]);
+  return 0;
+}
+
+static int probe_bcnd(int ndim, const double *par, const int *icp, int nbc, const double *u0, const double *u1,
+                      int ijac, double *fb, double *dbc, void *params)
+{
+  (void)ndim; (void)par; (void)icp; (void)nbc; (void)ijac; (void)dbc; (void)params;
+  fb[0] = u0[0];
+  fb[1] = u1[0];
+  return 0;
+}
+
+typedef struct {
+  int rc_res, rc_jac, last_callback, nwork;
+  long nfunc;
+  double *F, *coll, *bc, *dense, *dense_par;
+  size_t ncoll, nbcv, ndensev, npar;
+} pass_result;
+
+static void pass_result_free(pass_result *r)
+{
+  free(r->F); free(r->coll); free(r->bc); free(r->dense); free(r->dense_par);
+}
+
+static double *dup(const double *a, size_t n)
+{
+  double *b = malloc(n * sizeof *b);
+  if (b) memcpy(b, a, n * sizeof *b);
+  return b;
+}
+
+/* One residual and one Jacobian of the probe problem on NTST 7, NCOL 3, JAC=0. */
+static int probe_pass(int nthreads, int concurrent, double fail_above, pass_result *r)
+{
+  memset(r, 0, sizeof *r);
+  probe_params pp = {fail_above};
+  cable_problem pb = {.abi_version = CABLE_PROBLEM_ABI, .struct_size = sizeof(cable_problem), .name = "probe",
+                      .ndim = 2, .nbc = 2, .nint = 0, .npar = 1, .func = probe_func, .bcnd = probe_bcnd,
+                      .params = &pp, .concurrent = concurrent};
+  cable_constants c;
+  cable_constants_init(&c);
+  c.jac = 0;
+  c.nthreads = nthreads;
+  const int icp[] = {0};
+  int st;
+  colloc_system *s = colloc_system_alloc(&pb, &c, 7, 3, icp, 1, &st);
+  if (!s) return -1;
+  colloc_jac *J = colloc_jac_alloc(2, 7, 3, 1, 2, 0);
+  double *x = calloc((size_t)s->n, sizeof *x), *F = calloc((size_t)s->n, sizeof *F);
+  if (!J || !x || !F) return -1;
+  for (int k = 0; k < 7 * 3 + 1; k++) {
+    double t = (double)k / 21.0, pi = acos(-1.0);
+    x[2 * k] = 0.8 * sin(pi * t) + 0.1 * t * t;
+    x[2 * k + 1] = 0.8 * pi * cos(pi * t) + 0.2 * t;
+  }
+  x[s->n - 1] = 1.3;
+  s->fixval = 1.3;
+  r->nwork = s->nwork;
+  r->rc_res = colloc_system_residual(s, x, F);
+  r->rc_jac = colloc_system_jacobian(s, x, J);
+  r->last_callback = s->last_callback;
+  r->nfunc = s->nfunc;
+  r->ncoll = (size_t)J->ntst * J->coll_stride;
+  r->nbcv = (size_t)J->nbc * (size_t)(2 * J->ndim + J->nfpr);
+  r->ndensev = (size_t)J->ntst * J->dense_stride;
+  r->npar = (size_t)J->ndense * (size_t)J->nfpr;
+  r->F = dup(F, (size_t)s->n);
+  r->coll = dup(J->coll, r->ncoll);
+  r->bc = dup(J->bc, r->nbcv);
+  r->dense = dup(J->dense, r->ndensev);
+  r->dense_par = dup(J->dense_par, r->npar);
+  free(x); free(F);
+  colloc_jac_free(J);
+  colloc_system_free(s);
+  return r->F && r->coll && r->bc && r->dense && r->dense_par ? 0 : -1;
+}
+
+static int same_values(const pass_result *a, const pass_result *b, size_t n)
+{
+  return memcmp(a->F, b->F, n * sizeof(double)) == 0 && memcmp(a->coll, b->coll, a->ncoll * sizeof(double)) == 0 &&
+         memcmp(a->bc, b->bc, a->nbcv * sizeof(double)) == 0 &&
+         memcmp(a->dense, b->dense, a->ndensev * sizeof(double)) == 0 &&
+         memcmp(a->dense_par, b->dense_par, a->npar * sizeof(double)) == 0;
+}
+
+static void test_passes(void)
+{
+  pass_result one, other;
+  size_t n = 2 * (7 * 3 + 1) + 1;
+  test_int("probe problem, one thread: residual and Jacobian evaluate", probe_pass(1, 1, 1e300, &one), 0);
+  test_true("one thread: both passes succeed and FUNC was called", one.rc_res == 0 && one.rc_jac == 0 && one.nfunc > 0);
+  test_int("one thread: one chunk", one.nwork, 1);
+  for (int nt = 2; nt <= 3; nt++) {
+    test_int("probe problem evaluates", probe_pass(nt, 1, 1e300, &other), 0);
+    test_int("a concurrent problem: one chunk of intervals per thread", other.nwork, nt);
+    test_report(other.rc_res == 0 && other.rc_jac == 0 && same_values(&one, &other, n),
+                "NTHREADS=%d: the residual and every Jacobian block (finite differences in u and the parameter) "
+                "equal one thread's bit for bit", nt);
+    test_report(other.nfunc == one.nfunc, "NTHREADS=%d: the same FUNC count (%ld, one thread %ld)", nt, other.nfunc,
+                one.nfunc);
+    pass_result_free(&other);
+  }
+  pass_result_free(&one);
+  /* u0 peaks at 0.8 + 0.1 t^2 near t = 0.5: FUNC fails in the middle intervals only */
+  test_int("failing FUNC, one thread", probe_pass(1, 1, 0.7, &one), 0);
+  test_true("one thread: both passes return FUNC's status 3 and last_callback is 3",
+            one.rc_res == 3 && one.rc_jac == 3 && one.last_callback == 3);
+  for (int nt = 2; nt <= 3; nt++) {
+    test_int("failing FUNC", probe_pass(nt, 1, 0.7, &other), 0);
+    test_report(other.rc_res == 3 && other.rc_jac == 3 && other.last_callback == 3,
+                "NTHREADS=%d: the same failure status from both passes (%d %d %d)", nt, other.rc_res, other.rc_jac,
+                other.last_callback);
+    pass_result_free(&other);
+  }
+  pass_result_free(&one);
+  test_int("a problem that is not concurrent", probe_pass(3, 0, 1e300, &other), 0);
+  test_int("not concurrent: NTHREADS=3 evaluates FUNC on one thread (one chunk)", other.nwork, 1);
+  pass_result_free(&other);
+}
+
 int main(void)
 {
   test_team();
+  test_passes();
   test_branch();
   return test_summary();
 }

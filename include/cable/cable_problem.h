@@ -26,7 +26,8 @@
 
 #include <stddef.h>
 
-#define CABLE_PROBLEM_ABI 2        /* bump when the struct layout changes (2: keys, prepare, release) */
+#define CABLE_PROBLEM_ABI 3        /* bump when the struct layout changes (2: keys, prepare, release;
+                                      3: concurrent) */
 #define CABLE_NPAR_DEFAULT 36      /* AUTO's default NPAR */
 #define CABLE_PROBLEM_ENTRY "cable_problem_entry"
 
@@ -112,6 +113,11 @@ typedef struct cable_problem {
   int nkeys;
   cable_prepare_fn *prepare;    /* optional (NULL: the problem runs as it is) */
   cable_release_fn *release;    /* required with prepare */
+  /* ABI 3 */
+  int concurrent;               /* 1: func may be called from several threads at once (it only
+                                   reads params and its arguments); the engine then evaluates
+                                   the mesh intervals on NTHREADS threads.  0 (the default of a
+                                   zero-initialised struct): func is called from one thread. */
 } cable_problem;
 
 /* A plug-in exports `const cable_problem *cable_problem_entry(void);`. */
