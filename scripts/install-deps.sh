@@ -21,6 +21,8 @@ probes=(
   "/usr/lib/python3/dist-packages/pytest/__init__.py:python3-pytest"
   "/usr/lib/python3/dist-packages/distributed/__init__.py:python3-distributed"
   "/usr/bin/pkg-config:pkgconf"            # make check builds against an installed libcable
+  "/usr/bin/time:time"                     # make bench: CPU and wall time of the knot72 runs
+  "/usr/bin/bc:bc"                         # make bench: arithmetic in scripts/bench.sh
 )
 
 arch_dir=$(dpkg-architecture -qDEB_HOST_MULTIARCH 2>/dev/null || echo x86_64-linux-gnu)
