@@ -48,7 +48,9 @@ path_time() {
   echo "upper bounds of what a quiet machine gives, and two threads gain little when both cores"
   echo "are busy with other work. Compare ratios within one table. The older studies (per-phase"
   echo "costs, work against precision, the stress grid) are in \`doc/benchmarks-full.md\`"
-  echo "(\`BENCH_FULL=1 make bench\`)."
+  echo "(\`BENCH_FULL=1 make bench\`). This run's niceness: $(nice) (every program it times inherits it)."
+  echo "CPU times (user + system of the process) depend far less on the other jobs than wall times:"
+  echo "on this shared machine, read the CPU columns first."
   echo
   echo "# cable against AUTO-07p (\`scripts/bench_compare.py\`)"
   echo
