@@ -71,11 +71,53 @@ def test_pr_after_runs(bratu):
     before = dict(cable.Constants(bratu.session.constants()))
     r2 = ns['run']()
     assert dict(r2()[0].c) == before
-    # a restart from a solution takes the solution's constants, then its keywords; IRS is one-off
+    # a restart from a solution takes the solution's constants, then its keywords; IRS becomes
+    # the solution's label, as AUTO's solution load sets it (IRS=1 given here does not count)
     ns['run'](r('UZ1'), NTST=40, NMX=3, IRS=1)
-    assert pr('NTST') == 40 and pr('NMX') == 3 and pr('IRS') == 0 and pr('UZR') == {'lambda': [0.5, 1.0]}
+    assert pr('NTST') == 40 and pr('NMX') == 3 and pr('IRS') == r('UZ1')['LAB'] != 1
+    assert pr('UZR') == {'lambda': [0.5, 1.0]}
     # s.c: the constants a solution was computed with (AUTO's s.c)
     assert r('UZ1').c['NTST'] == 33 and r('UZ1').c['NMX'] == 5 and r('UZ1').c['STOP'] == ['UZ2']
+
+
+def test_restart_from_the_runners_solutions(bratu):
+    """AUTO's runner keeps the solutions it last loaded or started from, and
+    IRS: ld(s='x', IRS=3); run() restarts from label 3 of s.x, ld('NAME');
+    run(IRS=4) from label 4 of s.NAME, and a run without a start repeats the
+    last restart (auto-07p 0.9.2 on tests/data/autoeq/bratu_f90 does each of
+    these).  The first row of a restart is its start, so its lambda is the
+    label's; a start from STPNT is lambda = 0 (c.bratu)."""
+    ns = bratu.namespace()
+    r0 = ns['run'](e='bratu', c='bratu', NMX=30, UZR={'lambda': [1, 2, 3]}, sv='bratu')
+    lam = {s['LAB']: s['lambda'] for s in r0()}
+    assert [s['TY'] for s in r0()][:4] == ['EP', 'UZ', 'UZ', 'RG'] and lam[3] == pytest.approx(2.0, abs=1e-9)
+
+    def first(**kw):
+        return ns['run'](NMX=2, **kw)['lambda'][0]
+
+    def near(lab):   # s.bratu holds lambda to the 11 digits of AUTO's format
+        return pytest.approx(lam[lab], abs=1e-9)
+
+    ns['ld'](s='bratu', IRS=3)
+    assert ns['pr']('IRS') == 3
+    assert first() == near(3)            # before: 0.0, the run started from STPNT
+    assert first() == near(3)            # and again: the runner keeps s.bratu and IRS
+    ns['ld']('bratu')
+    assert first(IRS=4) == near(4) and abs(lam[4] - lam[3]) > 0.1
+    assert first(s='bratu', IRS='UZ1') == near(2) and lam[2] == pytest.approx(1.0, abs=1e-9)
+    assert first() == near(2) and ns['pr']('IRS') == 2
+    assert first(IRS=0) == 0.0           # IRS=0: STPNT
+    # a run from one solution: the next run without a start restarts from it too
+    assert ns['run'](r0('UZ3'), NMX=2)['lambda'][0] == lam[5]
+    assert first() == lam[5] and ns['pr']('IRS') == 5
+    assert first(c='bratu') == 0.0       # c.bratu's IRS is 0
+    # ld('NAME') without s.NAME forgets the runner's solutions (c.other names e='bratu')
+    with open('c.other', 'w') as f:
+        f.write("e = 'bratu'\nNDIM = 2\nICP = ['lambda']\n")
+    assert ns['ld']('other') is None
+    with pytest.raises(cable.CableError) as e:
+        first(IRS=3)
+    assert 'a restart needs solutions' in str(e.value)
 
 
 def test_pr_reads_back(bratu):
