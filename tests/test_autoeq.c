@@ -563,6 +563,53 @@ static void burgers_layer(void)
   cable_sfile_free(sf);
 }
 
+/* What firstcall_f90/bratu1.auto says: two runs from STPNT in one session.
+ * bratu1.f90's STPNT sets the scale PAR(2) = 1 on its first call only (a
+ * COMMON flag, as AUTO's demos nag and fsh do); AUTO runs each computation in
+ * a new process, so both runs find Bratu's fold at lambda* (the closed form,
+ * located to 1e-8 as above).  Before the module was opened afresh for each
+ * run, the second run kept the flag, started with PAR(2) = 0 and found no
+ * fold (AUTO's nag: its second run did not converge at all). */
+static void static_storage_per_run(void)
+{
+  const char *files[] = {"bratu1.f90", "c.bratu1", "bratu1.auto", NULL};
+  stage("firstcall_f90", files);
+  cable_session_options o;
+  cable_session_options_init(&o);
+  o.dir = TMP "/firstcall_f90";
+  FILE *log = fopen(TMP "/log.txt", "a");
+  o.log = log;
+  cable_session *r = cable_session_alloc(&o);
+  const char *sv[] = {"first", "second"};
+  double lstar = 8 * fold_s() * fold_s() / (cosh(fold_s()) * cosh(fold_s()));
+  for (int k = 0; k < 2 && r; k++) {
+    cable_run_args a;
+    memset(&a, 0, sizeof a);
+    a.e = "bratu1";
+    a.c = "bratu1";
+    a.sv = sv[k];
+    cable_branch *b = NULL;
+    cable_error err;
+    cable_error_clear(&err);
+    char buf[1200];
+    int rc = cable_session_run(r, &a, &b, &err);
+    test_report(rc == 0, "bratu1.f90: run %d from STPNT (%s)", k + 1,
+                rc ? cable_error_format(&err, buf, sizeof buf) : "ok");
+    cable_branch_decref(b);
+    char path[512];
+    snprintf(path, sizeof path, TMP "/firstcall_f90/b.%s", sv[k]);
+    cable_bfile *bf = cable_bfile_read(path, &err);
+    if (!test_true("bratu1.f90: the b-file was written", bf != NULL)) continue;
+    const cable_bfile_branch *br = &bf->branch[0];
+    char what[160];
+    snprintf(what, sizeof what, "bratu1.f90: run %d (STPNT's first call again) has Bratu's fold", k + 1);
+    test_rel(what, col(br, "PAR(1)", row_of(br, 5, 0)), lstar, 1e-8);
+    cable_bfile_free(bf);
+  }
+  cable_session_free(r);
+  if (log) fclose(log);
+}
+
 static void bad_file(const char *name, const char *src, int line, const char *needle)
 {
   bad_run(name, NULL, src, CABLE_ERR_PLUGIN, line, needle);
@@ -584,6 +631,7 @@ int main(void)
   getp_mesh_codes();
   dat_start();
   burgers_layer();
+  static_storage_per_run();
   cache();
   bad_file("syntax", "syntax.f90", 8, "array reference");
   bad_file("nofunc", "nofunc.f90", 0, "does not define SUBROUTINE FUNC");
