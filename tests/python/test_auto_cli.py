@@ -6,6 +6,7 @@ script in the same runner and namespace), plot.
 
 Bratu's problem (runs/bratu/c.bratu): the constants file is the reference
 for every value checked here; NMX = 5 runs keep the tests short."""
+import math
 import os
 import struct
 
@@ -120,6 +121,39 @@ def test_restart_from_the_runners_solutions(bratu):
     assert 'a restart needs solutions' in str(e.value)
 
 
+def test_old_style_commands(work):
+    """AUTO's older script style (AUTO-07p's demo nep): ld(...); run(); sv('NAME')
+    saves the last run's output (AUTO: fort.7/8/9); sl('NAME') lists s.NAME's
+    solutions, which answer to 'Type name' and 'Label' as AUTO's parseS ones do;
+    ch('IRS', label) changes the runner's IRS, so run() restarts from that label
+    of the runner's solutions (ld(c=..., s='NAME')); ap('NAME') appends the last
+    run's output.  The elastica's BPs are at (n pi)^2 exactly."""
+    copy_in(work, 'runs/elastica/c.elastica')
+    ns = cable.Runner().namespace()
+    ns['ld'](e='elastica', c='elastica', RL1=45)
+    r1 = ns['run']()
+    ns['sv']('el')                         # before: save() missing 1 required positional argument
+    bps = [s for s in ns['sl']('el') if s['Type name'] == 'BP']
+    assert [s['Label'] for s in bps] == [s['LAB'] for s in r1('BP')] and len(bps) == 2
+    for s, n in zip(bps, (1, 2)):
+        assert s['lambda'] == pytest.approx((n * math.pi) ** 2, rel=1e-8)
+    ns['ld'](c='elastica', s='el', ISW=-1, DS=0.05, NMX=10, ISP=0)
+    for s in ns['sl']('el'):
+        if s['Type name'] == 'BP':
+            ns['ch']('IRS', s['Label'])
+            r = ns['run']()
+            assert r['lambda'][0] == pytest.approx(s['lambda'], rel=1e-9)   # started at that BP
+            assert max(r['L2-NORM']) > 0.1                                  # and left the straight rod
+            ns['ap']('el')
+    back = cable.Runner().loadbd('el')
+    assert len(back) == 3 and len(back[0]()) == len(r1())
+    labels = [x['LAB'] for x in back()]
+    assert len(labels) == len(set(labels))
+    with pytest.raises(cable.CableError) as e:
+        cable.Runner().namespace()['sv']('x')
+    assert "no run yet" in str(e.value)
+
+
 def test_pr_reads_back(bratu):
     """pr()'s text is a constants file: read back, it gives the same constants."""
     ns = bratu.namespace()
@@ -184,10 +218,9 @@ def test_append_forms_merge_files_clean(bratu, capsys):
     assert isinstance(joined, cable.Result) and len(joined) == 2
     assert [s['LAB'] for s in joined()] == [s['LAB'] for s in lower()] + [s['LAB'] for s in up()]
     assert snapshot('.') == before
-    # append('NAME') appends fort.* files, which cable does not write
-    with pytest.raises(cable.CableError) as e:
-        ns['ap']('a')
-    assert str(e.value).startswith("append: append('NAME') appends AUTO's fort.* files")
+    # append('NAME') appends the last run's output (AUTO's fort.* files): up's branch after a's
+    ns['ap']('a')
+    assert [s['LAB'] for s in ns['bd']('a')()] == [s['LAB'] for s in lower()] + [s['LAB'] for s in up()]
     # merge('NAME'): the two directions from one start (STPNT, labelled in
     # both) joined in the files; the shared start loses its label (doc/scripts.md)
     down = ns['run'](e='bratu', c='bratu', DS='-', NMX=3)
