@@ -125,3 +125,24 @@ def test_link102(work):
     if 'PT     1: switching at a simple branch point' not in out:
         bad.append("link102: the scene's BP is switched as a simple one")
     assert not bad, bad
+
+
+@pytest.mark.parametrize('ntst', [40, 55])
+def test_link102_coarse_meshes(work, ntst):
+    # BP location's last resort (cont_special.c: sv1_vanished, end_of_bracket):
+    # at NTST 55 the regula falsi ran out of ITMX = 9 iterations at the simple
+    # BP near T = 35.75 with sigma_1 = 5.5e-12, 5.8e-12 at its bracket's ends
+    # (6.2e-10 at the step's), at NTST 40 the same at T = 30.77 (1.1e-13 at
+    # both ends, 4.1e-8 at the step's) and at 35.75 (7.2e-11 at the ends,
+    # 8.3e-10 at the step's, sigma_2 = 7.5e-8): the run said "could not
+    # locate the branch point within ITMX=9 iterations" and the BP was not
+    # labelled (4 BPs instead of 5).  Every BP the determinant's sign change
+    # brackets is labelled now; T within 1e-3 of the NTST-100 values as above
+    # (measured: 35.75007 at NTST 40, 35.74964 at NTST 55, against 35.74969)
+    want = [(10.8232, 'double'), (17.7119, 'double'), (24.2749, 'double'), (30.7654, 'simple'), (35.7497, 'simple')]
+    out, bad = check_flat(
+        work, 'link102', ['c.link102'],
+        "flat = run(e='braid_link', c='link102', NTST=%d, %s, UZSTOP={'T': 36.5}, sv='flat')" % (ntst, ICP),
+        "", want, 35.7497)
+    assert 'could not locate' not in out, out
+    assert not bad, bad
