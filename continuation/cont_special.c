@@ -582,11 +582,23 @@ int cont_dip_in_step(cable_cont *cc, double smid)
   double a = cc->tf.sv1, b = cc->tft.sv1;
   if (!cont_bp_detect(cc) || !(a > 0 && b > 0) || !(smid > 0 && smid < cc->ds_used)) return CABLE_TY_NONE;
   dip_ctx ctx = {cc, cc->tf, fmax(a, b)};
-  double m = dip_fn(smid, &ctx);
-  if (!(m < a && m < b)) return CABLE_TY_NONE;
+  double m = dip_fn(smid, &ctx), lo = 0.0;
   /* x itself may be the branch point located at the start of this step
      (cont_engine.c: the pencil test's coincident crossings are looked at
-     after the determinant's sign change is located) */
+     after the determinant's sign change is located), or the one located in
+     the step before: its sigma_1 vanishes by construction, so the dip is
+     bracketed on the left by the point halfway from x to the predicted
+     crossing instead.  link62's flat branch at DSMAX = 5, NTST 100: the
+     step from its simple BP at T = 29.8077 (sigma_1 = 3.3e-13) to
+     T = 30.2039 (7.2e-8) holds the double BP at T = 29.93, which the
+     pencil test predicted (two crossings at 0.3135 of the step) and this
+     test dropped because sigma_1 there was not below x's. */
   int x_located = cc->itp_x == CABLE_TY_BP;
-  return dip_minimise(cc, 0.0, smid, m, cc->ds_used, a, b, x_located ? b : fmin(a, b));
+  if (x_located && !(m < a) && m < b) {
+    lo = 0.5 * smid;
+    a = dip_fn(lo, &ctx);
+    if (!(a > 0)) return CABLE_TY_NONE;
+  }
+  if (!(m < a && m < b)) return CABLE_TY_NONE;
+  return dip_minimise(cc, lo, smid, m, cc->ds_used, a, b, x_located ? b : fmin(a, b));
 }

@@ -146,3 +146,28 @@ def test_link102_coarse_meshes(work, ntst):
         "", want, 35.7497)
     assert 'could not locate' not in out, out
     assert not bad, bad
+
+
+def test_link62_dsmax5_ntst100(work):
+    # The scene's mesh at DSMAX = 5 (c.link62 uses 1): the simple BP at
+    # T = 29.8077 is located, and the next step (to T = 30.2039) holds the
+    # double BP at 29.93, which the pencil test predicts (two crossings at
+    # 0.3135 of the step); the dip test of that step dropped it because
+    # sigma_1 at its start, the located BP, is ~0 (3.3e-13) and the dip's
+    # sigma_1 was not below it (cont_special.c, cont_dip_in_step).  T against
+    # the scene's own flat branch (DSMAX = 1, b.flat of make scenes), within
+    # 1e-5: the simple BP is located to 6.3e-5 (DSMAX 1) and 6.4e-5 (DSMAX 5)
+    # of arclength, where T moves by 0.08 per unit of arclength (measured:
+    # 29.8077368913 here against 29.8077337640; 29.9319598949 against
+    # 29.9319596620; the others within 4e-7).
+    want = [(10.0782602960, 'double'), (17.5496073270, 'simple'), (23.5720279370, 'double'),
+            (29.8077337640, 'simple'), (29.9319596620, 'double')]
+    out, bad = check_flat(
+        work, 'link62', ['c.link62'],
+        "flat = run(e='braid_link', c='link62', DSMAX=5.0, %s, UZSTOP={'T': 30.5}, sv='flat')" % ICP,
+        "", want, 29.8077)
+    got = [float(l.split()[2]) for l in out.splitlines() if l.startswith('bp ')]
+    if len(got) == len(want):
+        bad += ['BP%d at T = %.4f, got %.7f' % (i, t, g) for i, ((t, _), g) in enumerate(zip(want, got), 1)
+                if not abs(g - t) <= 1e-5]
+    assert not bad, bad
