@@ -65,6 +65,7 @@ struct cable_autoeq {
                                     compiler; -1 absent, 0 a dummy without arguments) */
   int def_line[AE_NROUTINES];    /* line of each routine's definition (0 unknown) */
   void *handle;
+  int runs;                      /* problems made for runs from this opening of the module */
   /* the routines, one set used */
   autoeq_f_func *f_func;
   autoeq_f_stpnt *f_stpnt;

@@ -89,6 +89,32 @@ cable_autoeq *cable_autoeq_open(const char *src, cable_error *err)
   return m;
 }
 
+/* AUTO runs every computation in a process of its own, so a routine's static
+ * storage (a COMMON block or SAVE variable that STPNT fills on its first call
+ * only, as AUTO's demos nag and fsh do) starts at zero in every run.  A module
+ * that served a run is therefore opened again before the next: dlclose drops
+ * it (it was opened RTLD_LOCAL and nothing else refers to it), dlopen maps it
+ * with fresh storage, and its routines are bound again. */
+static int reopen_module(cable_autoeq *m, cable_error *err)
+{
+  if (m->handle) dlclose(m->handle);
+  m->c_tab = NULL;
+  m->f_func = NULL;
+  m->f_stpnt = NULL;
+  m->f_bcnd = NULL;
+  m->f_icnd = NULL;
+  m->f_pvls = NULL;
+  dlerror();
+  m->handle = dlopen(m->so, RTLD_NOW | RTLD_LOCAL);
+  if (!m->handle) {
+    const char *why = dlerror();
+    return cable_error_set(err, CABLE_ERR_PLUGIN, m->src, 0, "", "the built module does not load again: %s",
+                           why ? why : "?");
+  }
+  m->runs = 0;
+  return autoeq_bind(m, err);
+}
+
 int cable_autoeq_problem(cable_autoeq *m, const cable_constants *c, const char *dat, const cable_problem **pb,
                          cable_error *err)
 {
@@ -104,6 +130,11 @@ int cable_autoeq_problem(cable_autoeq *m, const cable_constants *c, const char *
     *pb = &m->pb;
     return 0;
   }
+  if (m->runs > 0) {
+    int rc = reopen_module(m, err);
+    if (rc) return rc;
+  }
+  m->runs++;
   free(m->dat);
   m->dat = NULL;
   m->ndat = 0;

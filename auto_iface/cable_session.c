@@ -158,15 +158,20 @@ typedef struct rp_setup {
   cable_names names;
   char e[CABLE_NAME_MAX];
   const cable_solution *start;   /* borrowed from a branch or from sf */
-  cable_sfile *sf;               /* owned: s.NAME of a string start or s= */
+  const rp_branch *start_br;     /* the branch of a start given as a solution or result */
+  int start_isol;                /* and its index there */
+  cable_sfile *sf;               /* s.NAME of a string start or s= (owned), or the runner's */
+  int sf_borrowed;               /* sf is the runner's (cable_session.cur_sf): not freed here */
+  int forget_sf;                 /* run('NAME') without s.NAME: the runner's solutions are dropped */
   char sfpath[1024];             /* its path */
   char sv[CABLE_NAME_MAX], ap[CABLE_NAME_MAX];
 } rp_setup;
 
 static void setup_free(rp_setup *s)
 {
-  cable_sfile_free(s->sf);
+  if (!s->sf_borrowed) cable_sfile_free(s->sf);
   s->sf = NULL;
+  s->sf_borrowed = 0;
 }
 
 /* The problem's parameter names, for constants that name parameters.  A
@@ -250,28 +255,37 @@ static int read_solutions_file(cable_session *r, const char *name, rp_setup *s, 
   char path[1024];
   rp_path(r, "s", name, path, sizeof path);
   snprintf(s->sfpath, sizeof s->sfpath, "%s", path);
-  cable_sfile_free(s->sf);
+  if (!s->sf_borrowed) cable_sfile_free(s->sf);
+  s->sf_borrowed = 0;
   s->sf = cable_sfile_read(path, err);
   return s->sf ? 0 : (err && err->status ? err->status : CABLE_ERR_IO);
 }
 
-/* KEY=VALUE text for the constants parser: Python's repr is its syntax. */
-static const cable_solution *result_last(const rp_result *res)
+/* The last solution of a result (its branch and index in s). */
+static const cable_solution *result_last(const rp_result *res, rp_setup *st)
 {
   for (int k = res->nbr - 1; k >= 0; k--)
-    if (res->br[k]->nsol > 0) return res->br[k]->sol[res->br[k]->nsol - 1];
+    if (res->br[k]->nsol > 0) {
+      st->start_br = res->br[k];
+      st->start_isol = res->br[k]->nsol - 1;
+      return res->br[k]->sol[st->start_isol];
+    }
   return NULL;
 }
 
 /* A solution of a result by IRS (a label, or 'BP1'-style in irs_name). */
-static const cable_solution *result_irs(const rp_result *res, const cable_constants *c)
+static const cable_solution *result_irs(const rp_result *res, const cable_constants *c, rp_setup *st)
 {
   int type = 0, nth = 0;
   if (c->irs_name[0] && cable_label_spec_parse(c->irs_name, &type, &nth) != 0) return NULL;
   for (int k = 0; k < res->nbr; k++)
     for (int i = 0; i < res->br[k]->nsol; i++) {
       const cable_solution *s = res->br[k]->sol[i];
-      if (c->irs_name[0] ? (cable_type_base(s->itp) == type && --nth == 0) : s->lab == c->irs) return s;
+      if (c->irs_name[0] ? (cable_type_base(s->itp) == type && --nth == 0) : s->lab == c->irs) {
+        st->start_br = res->br[k];
+        st->start_isol = i;
+        return s;
+      }
     }
   return NULL;
 }
@@ -305,6 +319,8 @@ static int build_setup(cable_session *r, const cable_run_args *a, rp_setup *s, c
       if (a->sol_index < 0 || a->sol_index >= b->nsol)
         return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, NULL, "no such solution in the branch");
       s->start = b->sol[a->sol_index];
+      s->start_br = b;
+      s->start_isol = a->sol_index;
     } else {
       res = &view;
       b = res->br[res->nbr - 1];
@@ -352,6 +368,8 @@ static int build_setup(cable_session *r, const cable_run_args *a, rp_setup *s, c
     if (!rc && file_exists(spath)) {
       rc = read_solutions_file(r, name, s, err);
       if (!rc) snprintf(s->c.s, sizeof s->c.s, "%s", name);
+    } else {
+      s->forget_sf = 1;   /* AUTO: load('NAME') without s.NAME erases the runner's solutions */
     }
     if (!rc && !s->e[0]) snprintf(s->e, sizeof s->e, "%s", name);
   }
@@ -376,6 +394,15 @@ static int build_setup(cable_session *r, const cable_run_args *a, rp_setup *s, c
   } else if (!rc && !s->sf) {
     s->c.s[0] = '\0';
   }
+  /* no start of its own: AUTO's runner restarts from the solutions of its
+     last load or run (ld(s='x', IRS=3); run() restarts from label 3 of s.x),
+     as the runner's IRS (or this call's) selects */
+  int runner_start = !rc && !has_start && !a->s && !cfile_s[0];
+  if (runner_start && r->cur_sf) {
+    s->sf = r->cur_sf;
+    s->sf_borrowed = 1;
+    snprintf(s->sfpath, sizeof s->sfpath, "%s", r->cur_sfpath);
+  }
   if (!rc && cfile_sv[0] && !s->sv[0] && !s->ap[0]) snprintf(s->sv, sizeof s->sv, "%s", cfile_sv);
   if (!rc) snprintf(s->c.sv, sizeof s->c.sv, "%s", s->sv);   /* the b-file header says where it went */
   if (rc) return rc;
@@ -394,8 +421,14 @@ static int build_setup(cable_session *r, const cable_run_args *a, rp_setup *s, c
   if (rc) return rc;
   snprintf(s->c.e, sizeof s->c.e, "%s", s->e);
   int irs_given = s->c.irs != 0 || s->c.irs_name[0];
+  if (runner_start && !r->cur_sf && r->cur_br && irs_given) {
+    /* one remembered solution: AUTO restarts from it unless IRS=0 */
+    s->start = r->cur_br->sol[r->cur_isol];
+    s->start_br = r->cur_br;
+    s->start_isol = r->cur_isol;
+  }
   if (res) {
-    s->start = irs_given ? result_irs(res, &s->c) : result_last(res);
+    s->start = irs_given ? result_irs(res, &s->c, s) : result_last(res, s);
     if (!s->start)
       return cable_error_set(err, CABLE_ERR_NOTFOUND, NULL, 0, "IRS",
                              irs_given ? "no such label in the result" : "the result has no labelled solution");
@@ -640,16 +673,45 @@ static int engine_run(cable_session *r, rp_setup *s, rp_branch **out, cable_erro
   return 0;
 }
 
-/* AUTO's runner keeps the constants of the last run, except the one-off
- * start and save settings. */
-static void remember(cable_session *r, const rp_setup *s)
+/* AUTO's runner keeps the constants of the last run or load, and the
+ * solutions it started from: the s-file it read (taken over from s), or the
+ * one solution it was given; IRS becomes the label it started from (AUTO's
+ * solution load sets IRS to the solution's LAB).  A run from STPNT keeps the
+ * runner's solutions.  The save settings are one-off. */
+static void remember(cable_session *r, rp_setup *s)
 {
   r->cur = s->c;
-  r->cur.irs = 0;
-  r->cur.irs_name[0] = '\0';
+  if (s->start) {
+    r->cur.irs = s->start->lab;
+    r->cur.irs_name[0] = '\0';
+  }
   r->cur.s[0] = r->cur.sv[0] = '\0';
   r->cur_names = s->names;
   snprintf(r->cur_e, sizeof r->cur_e, "%s", s->e);
+  if (s->forget_sf) {
+    cable_sfile_free(r->cur_sf);
+    r->cur_sf = NULL;
+    rp_branch_decref(r->cur_br);
+    r->cur_br = NULL;
+  }
+  if (s->sf && !s->sf_borrowed) {
+    cable_sfile_free(r->cur_sf);
+    r->cur_sf = s->sf;
+    snprintf(r->cur_sfpath, sizeof r->cur_sfpath, "%s", s->sfpath);
+    s->sf = NULL;
+    rp_branch_decref(r->cur_br);
+    r->cur_br = NULL;
+  } else if (!s->sf && s->start_br && s->start_br != r->cur_br) {
+    rp_branch *b = (rp_branch *)s->start_br;
+    b->refs++;
+    rp_branch_decref(r->cur_br);
+    r->cur_br = b;
+    r->cur_isol = s->start_isol;
+    cable_sfile_free(r->cur_sf);
+    r->cur_sf = NULL;
+  } else if (!s->sf && s->start_br) {
+    r->cur_isol = s->start_isol;
+  }
 }
 
 /* ---- label and branch numbers ------------------------------------------------------- */
@@ -900,5 +962,7 @@ void cable_session_free(cable_session *r)
   if (!r) return;
   for (int i = 0; i < r->nplugins; i++) cable_plugin_close(r->plugin[i]);
   for (int i = 0; i < r->nautoeq; i++) cable_autoeq_close(r->autoeq[i]);
+  cable_sfile_free(r->cur_sf);
+  rp_branch_decref(r->cur_br);
   free(r);
 }

@@ -2,6 +2,7 @@
 #ifndef CABLE_SCRIPT_HOST_IMPL_H
 #define CABLE_SCRIPT_HOST_IMPL_H
 
+#include "cable/cable_aufile.h"
 #include "cable/cable_autoeq.h"
 #include "cable/cable_names.h"
 #include "cable/cable_output.h"
@@ -57,6 +58,14 @@ struct cable_session {
   cable_constants cur;
   cable_names cur_names;
   char cur_e[CABLE_NAME_MAX];
+  /* AUTO's runner solution: what a run without a start of its own restarts
+     from (IRS in cur selects from it): the solutions of the last s=NAME,
+     run('NAME') or ld('NAME') (owned), or the one solution of the last
+     run(sol) or run(result) (a reference); neither: STPNT */
+  cable_sfile *cur_sf;
+  char cur_sfpath[1024];
+  rp_branch *cur_br;
+  int cur_isol;
   int next_branch, last_label;
   int nplugins;
   char plugin_name[RP_MAX_PLUGINS][CABLE_NAME_MAX];

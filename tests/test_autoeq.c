@@ -519,6 +519,97 @@ static void bad_run(const char *name, const char *e_name, const char *src, int s
   test_true("no b./s./d. file written", none);
 }
 
+/* A singularly perturbed problem: the steady viscous Burgers equation
+ * eps u'' + u u' = 0, u(0) = -1, u(1) = 2, continued in eps from 0.05 to the
+ * UZSTOP at 1e-5 (burgers_f90).  Exact solution u = b tanh(b (t - t0) /
+ * (2 eps)) with b tanh(-b t0 / (2 eps)) = -1 and b tanh(b (1 - t0) / (2 eps))
+ * = 2, so b = 2 up to exp(-2/eps) (below 1e-17 here) and u'(0) = (b^2 - 1) /
+ * (2 eps) = 3 / (2 eps).  FUNC's 1/eps makes the residual of a converged point
+ * large (3e-2 at eps = 1.5e-5 where 1e-6 (1 + max|x|) allowed 2e-2): the
+ * corrector called such points stagnated and the run ended MX at eps =
+ * 1.46e-5; now a point whose next Newton correction passes the step test too
+ * is converged (colloc_newton.c), as AUTO's test on the corrections alone
+ * says.  Tolerances: down to eps = 1e-4 the adapted NTST=40 mesh resolves the
+ * layer (smallest interval 3.5e-5) and u'(0) agrees to 1.2e-8 (measured), so
+ * 1e-6; at 1e-5 the smallest interval is 2.9e-5, about 3 eps (the monitor's
+ * floor, doc/auto-users.md, spb), and u'(0) is 2.1e-4 off (measured), so 1e-3. */
+static void burgers_layer(void)
+{
+  const char *files[] = {"burgers.f90", "c.burgers", "burgers.auto", NULL};
+  stage("burgers_f90", files);
+  cable_error err;
+  int rc = replay("burgers_f90", "burgers", "burgers", "burgers", &err);
+  char buf[1200];
+  test_report(rc == 0, "burgers.f90: runs (%s)", rc ? cable_error_format(&err, buf, sizeof buf) : "ok");
+  cable_bfile *bf = cable_bfile_read(TMP "/burgers_f90/b.burgers", &err);
+  cable_sfile *sf = cable_sfile_read(TMP "/burgers_f90/s.burgers", &err);
+  if (test_true("b.burgers and s.burgers were written", bf != NULL && sf != NULL)) {
+    const cable_bfile_branch *br = &bf->branch[bf->nbranch - 1];
+    int last = br->nrow - 1;
+    test_report(br->ty[last] == -4 && row_of(br, -4, 3) == last,
+                "burgers: the run ends at its 4th UZ, the UZSTOP (last row: TY %d, eps = %.6g; before: MX at 1.46e-5)",
+                br->ty[last], col(br, "PAR(1)", last));
+    test_rel("burgers: the UZSTOP at eps = 1e-5", col(br, "PAR(1)", last), 1e-5, 1e-6);
+    for (int k = 0; k < 4; k++) {
+      const cable_solution *sol = cable_sfile_find_label(sf, k + 2);
+      if (!test_true("burgers: the UZ is stored", sol != NULL)) continue;
+      double eps = sol->par[0];
+      char what[160];
+      snprintf(what, sizeof what, "burgers: u'(0) = 3/(2 eps) at the UZ eps = %.3g", eps);
+      test_rel(what, sol->u[1], 1.5 / eps, k < 3 ? 1e-6 : 1e-3);
+    }
+  }
+  cable_bfile_free(bf);
+  cable_sfile_free(sf);
+}
+
+/* What firstcall_f90/bratu1.auto says: two runs from STPNT in one session.
+ * bratu1.f90's STPNT sets the scale PAR(2) = 1 on its first call only (a
+ * COMMON flag, as AUTO's demos nag and fsh do); AUTO runs each computation in
+ * a new process, so both runs find Bratu's fold at lambda* (the closed form,
+ * located to 1e-8 as above).  Before the module was opened afresh for each
+ * run, the second run kept the flag, started with PAR(2) = 0 and found no
+ * fold (AUTO's nag: its second run did not converge at all). */
+static void static_storage_per_run(void)
+{
+  const char *files[] = {"bratu1.f90", "c.bratu1", "bratu1.auto", NULL};
+  stage("firstcall_f90", files);
+  cable_session_options o;
+  cable_session_options_init(&o);
+  o.dir = TMP "/firstcall_f90";
+  FILE *log = fopen(TMP "/log.txt", "a");
+  o.log = log;
+  cable_session *r = cable_session_alloc(&o);
+  const char *sv[] = {"first", "second"};
+  double lstar = 8 * fold_s() * fold_s() / (cosh(fold_s()) * cosh(fold_s()));
+  for (int k = 0; k < 2 && r; k++) {
+    cable_run_args a;
+    memset(&a, 0, sizeof a);
+    a.e = "bratu1";
+    a.c = "bratu1";
+    a.sv = sv[k];
+    cable_branch *b = NULL;
+    cable_error err;
+    cable_error_clear(&err);
+    char buf[1200];
+    int rc = cable_session_run(r, &a, &b, &err);
+    test_report(rc == 0, "bratu1.f90: run %d from STPNT (%s)", k + 1,
+                rc ? cable_error_format(&err, buf, sizeof buf) : "ok");
+    cable_branch_decref(b);
+    char path[512];
+    snprintf(path, sizeof path, TMP "/firstcall_f90/b.%s", sv[k]);
+    cable_bfile *bf = cable_bfile_read(path, &err);
+    if (!test_true("bratu1.f90: the b-file was written", bf != NULL)) continue;
+    const cable_bfile_branch *br = &bf->branch[0];
+    char what[160];
+    snprintf(what, sizeof what, "bratu1.f90: run %d (STPNT's first call again) has Bratu's fold", k + 1);
+    test_rel(what, col(br, "PAR(1)", row_of(br, 5, 0)), lstar, 1e-8);
+    cable_bfile_free(bf);
+  }
+  cable_session_free(r);
+  if (log) fclose(log);
+}
+
 static void bad_file(const char *name, const char *src, int line, const char *needle)
 {
   bad_run(name, NULL, src, CABLE_ERR_PLUGIN, line, needle);
@@ -539,6 +630,8 @@ int main(void)
   fold_bp_functions();
   getp_mesh_codes();
   dat_start();
+  burgers_layer();
+  static_storage_per_run();
   cache();
   bad_file("syntax", "syntax.f90", 8, "array reference");
   bad_file("nofunc", "nofunc.f90", 0, "does not define SUBROUTINE FUNC");

@@ -10,7 +10,10 @@
  *   load/loadbd/save/merge/relabel   as in AUTO (files b./s./d.NAME).
  *
  * Like AUTO's runner, the session remembers the constants and problem of the
- * last run: a run without c= continues with them (IRS and sv= excepted), and
+ * last run: a run without c= continues with them (sv= excepted), and the
+ * solutions it started from (those of the last s=NAME or name, or the one
+ * solution of the last start from a solution or result): a run without a
+ * start of its own restarts from them as IRS selects (IRS=0: STPNT).  It
  * numbers labels and branches after every label it has used or read.
  *
  * Branches (cable_branch) are immutable once built and reference-counted:
@@ -73,7 +76,8 @@ CABLE_API void cable_session_free(cable_session *s);
 /* The arguments of AUTO's run(...) and load(...).  The start is at most one
  * of: a solution (sol_branch, sol_index), a result (branches[0..nbranch-1]:
  * its solution IRS, or its last one), a name (run('NAME'): c.NAME when
- * present and s.NAME), or nothing (STPNT, or s= with IRS).  e, c, s, sv, ap:
+ * present and s.NAME), or nothing (s= with IRS; else the runner's solutions
+ * with IRS, as in AUTO; else STPNT).  e, c, s, sv, ap:
  * the keywords that take names (NULL: not given).  over[0..nover-1] are
  * constants-file statements ("NTST=50", "IRS='BP1'", "DS='-'",
  * "UZR={'T': -2.1}") applied in order after the constants file, each as
@@ -114,7 +118,8 @@ CABLE_API int cable_session_transform_files(cable_session *s, const char *name, 
 /* AUTO's runner state (its runner.options["constants"], what AUTO's pr()
  * prints): the constants, names and problem name the next run without a
  * start and without c= uses, i.e. those of the last run or load with every
- * keyword override applied; the one-off IRS, s and sv are cleared (0, "").
+ * keyword override applied; IRS is the label the last run or load started
+ * from (0: STPNT); the one-off s and sv are cleared ("").
  * Before any run or load: the defaults (cable_constants_init), no names,
  * problem "".  NDIM, NBC, NINT are 0 unless a constants file or a keyword
  * set them (a run then uses its problem's).  Each of c, names, e may be NULL

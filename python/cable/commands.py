@@ -117,6 +117,7 @@ class Runner:
     def __init__(self):
         self.session = _cable.Session()
         self.script_runner = None   # set by cable.script to run auto('other.auto')
+        self.last = None            # the last run's result: AUTO's fort.7/8/9, for sv('NAME'), ap('NAME')
 
     # --- runs -------------------------------------------------------------------------
     def run(self, data=None, **kw):
@@ -125,7 +126,8 @@ class Runner:
         file, sv='NAME' saves b./s./d.NAME, ap='NAME' appends; every other
         keyword overrides a constant (NMX=200, DS='-', UZR={'T': -2.1})."""
         sys.stdout.flush()
-        return Result([self.session.run(*_args(data, kw))])
+        self.last = Result([self.session.run(*_args(data, kw))])
+        return self.last
 
     def load(self, data=None, **kw):
         """load([start], KEY=value, ...): the solution a run with the same
@@ -141,8 +143,17 @@ class Runner:
             raise CableError('loadbd needs a name (files b.NAME, s.NAME)')
         return Result(self.session.loadbd(name))
 
-    def save(self, data, name):
-        """save(x, 'NAME'): b./s./d.NAME from a result or one solution."""
+    def _last_run(self, what):
+        if self.last is None:
+            raise CableError("%s('NAME') saves the last run's output (AUTO's fort.7, fort.8, fort.9), "
+                             "but there was no run yet" % what)
+        return self.last
+
+    def save(self, data, name=None):
+        """save(x, 'NAME'): b./s./d.NAME from a result or one solution;
+        save('NAME'): from the last run's result (AUTO: its fort.7/8/9)."""
+        if name is None and isinstance(data, str):
+            data, name = self._last_run('save'), data
         br, i = _branches(data, 'save')
         if not isinstance(name, str) or not name:
             raise CableError('the second argument must be a non-empty name, got a %s' % type(name).__name__)
@@ -154,9 +165,9 @@ class Runner:
         append('NAME1', 'NAME2'): the files NAME1 appended to NAME2."""
         if isinstance(x, str) and isinstance(name, Result):   # append('xxx', x): x after the files
             return self.loadbd(x) + name
-        if isinstance(x, str):
-            if name is None:
-                raise CableError("append('NAME') appends AUTO's fort.* files, which cable does not write")
+        if isinstance(x, str) and name is None:   # append('NAME'): the last run's output (AUTO: fort.*)
+            x, name = self._last_run('append'), x
+        elif isinstance(x, str):
             x = self.loadbd(x)
         if not isinstance(name, str) or not name:
             raise CableError('the second argument must be a non-empty name')
@@ -171,6 +182,21 @@ class Runner:
             return None
         br, _ = _branches(x, 'merge')
         return Result(self.session.transform(br, False))
+
+    def sl(self, name):
+        """sl('NAME'): the labelled solutions of s.NAME, as a list (AUTO's sl: loadbd('NAME')())."""
+        return self.loadbd(name)()
+
+    def ch(self, entry=None, value=None, **kw):
+        """ch('KEY', value): change one of the runner's constants (AUTO's ch / cc); ch(KEY=value, ...)
+        likewise; the next run without a start uses them (ch('IRS', 4): label 4 of the runner's solutions)."""
+        if entry is not None:
+            if not isinstance(entry, str):
+                raise CableError("ch('KEY', value) takes a constant's name, got a %s" % type(entry).__name__)
+            kw = dict(kw)
+            kw[entry] = value
+        self.load(None, **kw)
+        print('  %s changed' % ', '.join('%s = %r' % kv for kv in kw.items()))
 
     def relabel(self, x):
         """relabel(r): labels 1, 2, ...; relabel('NAME') rewrites the files."""
@@ -294,6 +320,7 @@ class Runner:
             'run': ('r', 'rn'), 'load': ('ld',), 'loadbd': ('bd',), 'save': ('sv',), 'merge': ('mb',),
             'relabel': ('rl',), 'clean': ('cl',), 'delete': ('dl',), 'copy': ('cp',), 'append': ('ap',),
             'cd': (), 'auto': (), 'wait': (), 'pr': ('printconstant', 'pc'), 'analyze': (), 'plot': (),
+            'sl': ('solutionget',), 'ch': ('changeconstant', 'cc'),
             'render': (), 'compare': (),
             'overlap_free': (), 'branch_table': (),
         }

@@ -148,13 +148,14 @@ class Solution:
         return dict(self._full())
 
     def __getitem__(self, key):
-        if key == 'LAB':
+        # AUTO's parseS solutions also answer to 'Label', 'Type name', 'Branch number', 'Point number'
+        if key in ('LAB', 'Label'):
             return self._lab
-        if key in ('TY', 'TY name'):
+        if key in ('TY', 'TY name', 'Type name'):
             return self._ty
-        if key == 'BR':
+        if key in ('BR', 'Branch number'):
             return self._ibr
-        if key == 'PT':
+        if key in ('PT', 'Point number'):
             return self._pt
         if key == 'kind':
             return self._kind

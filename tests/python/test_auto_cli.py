@@ -6,6 +6,7 @@ script in the same runner and namespace), plot.
 
 Bratu's problem (runs/bratu/c.bratu): the constants file is the reference
 for every value checked here; NMX = 5 runs keep the tests short."""
+import math
 import os
 import struct
 
@@ -71,11 +72,86 @@ def test_pr_after_runs(bratu):
     before = dict(cable.Constants(bratu.session.constants()))
     r2 = ns['run']()
     assert dict(r2()[0].c) == before
-    # a restart from a solution takes the solution's constants, then its keywords; IRS is one-off
+    # a restart from a solution takes the solution's constants, then its keywords; IRS becomes
+    # the solution's label, as AUTO's solution load sets it (IRS=1 given here does not count)
     ns['run'](r('UZ1'), NTST=40, NMX=3, IRS=1)
-    assert pr('NTST') == 40 and pr('NMX') == 3 and pr('IRS') == 0 and pr('UZR') == {'lambda': [0.5, 1.0]}
+    assert pr('NTST') == 40 and pr('NMX') == 3 and pr('IRS') == r('UZ1')['LAB'] != 1
+    assert pr('UZR') == {'lambda': [0.5, 1.0]}
     # s.c: the constants a solution was computed with (AUTO's s.c)
     assert r('UZ1').c['NTST'] == 33 and r('UZ1').c['NMX'] == 5 and r('UZ1').c['STOP'] == ['UZ2']
+
+
+def test_restart_from_the_runners_solutions(bratu):
+    """AUTO's runner keeps the solutions it last loaded or started from, and
+    IRS: ld(s='x', IRS=3); run() restarts from label 3 of s.x, ld('NAME');
+    run(IRS=4) from label 4 of s.NAME, and a run without a start repeats the
+    last restart (auto-07p 0.9.2 on tests/data/autoeq/bratu_f90 does each of
+    these).  The first row of a restart is its start, so its lambda is the
+    label's; a start from STPNT is lambda = 0 (c.bratu)."""
+    ns = bratu.namespace()
+    r0 = ns['run'](e='bratu', c='bratu', NMX=30, UZR={'lambda': [1, 2, 3]}, sv='bratu')
+    lam = {s['LAB']: s['lambda'] for s in r0()}
+    assert [s['TY'] for s in r0()][:4] == ['EP', 'UZ', 'UZ', 'RG'] and lam[3] == pytest.approx(2.0, abs=1e-9)
+
+    def first(**kw):
+        return ns['run'](NMX=2, **kw)['lambda'][0]
+
+    def near(lab):   # s.bratu holds lambda to the 11 digits of AUTO's format
+        return pytest.approx(lam[lab], abs=1e-9)
+
+    ns['ld'](s='bratu', IRS=3)
+    assert ns['pr']('IRS') == 3
+    assert first() == near(3)            # before: 0.0, the run started from STPNT
+    assert first() == near(3)            # and again: the runner keeps s.bratu and IRS
+    ns['ld']('bratu')
+    assert first(IRS=4) == near(4) and abs(lam[4] - lam[3]) > 0.1
+    assert first(s='bratu', IRS='UZ1') == near(2) and lam[2] == pytest.approx(1.0, abs=1e-9)
+    assert first() == near(2) and ns['pr']('IRS') == 2
+    assert first(IRS=0) == 0.0           # IRS=0: STPNT
+    # a run from one solution: the next run without a start restarts from it too
+    assert ns['run'](r0('UZ3'), NMX=2)['lambda'][0] == lam[5]
+    assert first() == lam[5] and ns['pr']('IRS') == 5
+    assert first(c='bratu') == 0.0       # c.bratu's IRS is 0
+    # ld('NAME') without s.NAME forgets the runner's solutions (c.other names e='bratu')
+    with open('c.other', 'w') as f:
+        f.write("e = 'bratu'\nNDIM = 2\nICP = ['lambda']\n")
+    assert ns['ld']('other') is None
+    with pytest.raises(cable.CableError) as e:
+        first(IRS=3)
+    assert 'a restart needs solutions' in str(e.value)
+
+
+def test_old_style_commands(work):
+    """AUTO's older script style (AUTO-07p's demo nep): ld(...); run(); sv('NAME')
+    saves the last run's output (AUTO: fort.7/8/9); sl('NAME') lists s.NAME's
+    solutions, which answer to 'Type name' and 'Label' as AUTO's parseS ones do;
+    ch('IRS', label) changes the runner's IRS, so run() restarts from that label
+    of the runner's solutions (ld(c=..., s='NAME')); ap('NAME') appends the last
+    run's output.  The elastica's BPs are at (n pi)^2 exactly."""
+    copy_in(work, 'runs/elastica/c.elastica')
+    ns = cable.Runner().namespace()
+    ns['ld'](e='elastica', c='elastica', RL1=45)
+    r1 = ns['run']()
+    ns['sv']('el')                         # before: save() missing 1 required positional argument
+    bps = [s for s in ns['sl']('el') if s['Type name'] == 'BP']
+    assert [s['Label'] for s in bps] == [s['LAB'] for s in r1('BP')] and len(bps) == 2
+    for s, n in zip(bps, (1, 2)):
+        assert s['lambda'] == pytest.approx((n * math.pi) ** 2, rel=1e-8)
+    ns['ld'](c='elastica', s='el', ISW=-1, DS=0.05, NMX=10, ISP=0)
+    for s in ns['sl']('el'):
+        if s['Type name'] == 'BP':
+            ns['ch']('IRS', s['Label'])
+            r = ns['run']()
+            assert r['lambda'][0] == pytest.approx(s['lambda'], rel=1e-9)   # started at that BP
+            assert max(r['L2-NORM']) > 0.1                                  # and left the straight rod
+            ns['ap']('el')
+    back = cable.Runner().loadbd('el')
+    assert len(back) == 3 and len(back[0]()) == len(r1())
+    labels = [x['LAB'] for x in back()]
+    assert len(labels) == len(set(labels))
+    with pytest.raises(cable.CableError) as e:
+        cable.Runner().namespace()['sv']('x')
+    assert "no run yet" in str(e.value)
 
 
 def test_pr_reads_back(bratu):
@@ -142,10 +218,9 @@ def test_append_forms_merge_files_clean(bratu, capsys):
     assert isinstance(joined, cable.Result) and len(joined) == 2
     assert [s['LAB'] for s in joined()] == [s['LAB'] for s in lower()] + [s['LAB'] for s in up()]
     assert snapshot('.') == before
-    # append('NAME') appends fort.* files, which cable does not write
-    with pytest.raises(cable.CableError) as e:
-        ns['ap']('a')
-    assert str(e.value).startswith("append: append('NAME') appends AUTO's fort.* files")
+    # append('NAME') appends the last run's output (AUTO's fort.* files): up's branch after a's
+    ns['ap']('a')
+    assert [s['LAB'] for s in ns['bd']('a')()] == [s['LAB'] for s in lower()] + [s['LAB'] for s in up()]
     # merge('NAME'): the two directions from one start (STPNT, labelled in
     # both) joined in the files; the shared start loses its label (doc/scripts.md)
     down = ns['run'](e='bratu', c='bratu', DS='-', NMX=3)

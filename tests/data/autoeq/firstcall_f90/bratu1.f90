@@ -1,0 +1,50 @@
+! Bratu's problem u'' + lambda s exp(u) = 0, u(0) = u(1) = 0, with the scale
+! s = PAR(2) = 1 set by STPNT on its first call only (a flag in a COMMON
+! block), as AUTO's demos nag and fsh initialise their parameters.  AUTO runs
+! each computation in a process of its own, so every run from STPNT sees the
+! flag at 0 and sets s = 1; a second run that kept the first run's storage
+! would start with s = 0 (u'' = 0: no fold).
+SUBROUTINE FUNC(NDIM,U,ICP,PAR,IJAC,F,DFDU,DFDP)
+  IMPLICIT NONE
+  INTEGER, INTENT(IN) :: NDIM, ICP(*), IJAC
+  DOUBLE PRECISION, INTENT(IN) :: U(NDIM), PAR(*)
+  DOUBLE PRECISION, INTENT(OUT) :: F(NDIM)
+  DOUBLE PRECISION, INTENT(INOUT) :: DFDU(NDIM,NDIM), DFDP(NDIM,*)
+  F(1) = U(2)
+  F(2) = -PAR(1)*PAR(2)*EXP(U(1))
+END SUBROUTINE FUNC
+
+SUBROUTINE STPNT(NDIM,U,PAR,T)
+  IMPLICIT NONE
+  INTEGER, INTENT(IN) :: NDIM
+  DOUBLE PRECISION, INTENT(INOUT) :: U(NDIM), PAR(*)
+  DOUBLE PRECISION, INTENT(IN) :: T
+  INTEGER IFIRST
+  COMMON /FIRST/ IFIRST
+  IF (IFIRST /= 1) THEN
+    IFIRST = 1
+    PAR(2) = 1.0D0
+  END IF
+  PAR(1) = 0.0D0
+  U(1) = 0.0D0
+  U(2) = 0.0D0
+END SUBROUTINE STPNT
+
+SUBROUTINE BCND(NDIM,PAR,ICP,NBC,U0,U1,FB,IJAC,DBC)
+  IMPLICIT NONE
+  INTEGER, INTENT(IN) :: NDIM, ICP(*), NBC, IJAC
+  DOUBLE PRECISION, INTENT(IN) :: PAR(*), U0(NDIM), U1(NDIM)
+  DOUBLE PRECISION, INTENT(OUT) :: FB(NBC)
+  DOUBLE PRECISION, INTENT(INOUT) :: DBC(NBC,*)
+  FB(1) = U0(1)
+  FB(2) = U1(1)
+END SUBROUTINE BCND
+
+SUBROUTINE ICND
+END SUBROUTINE ICND
+
+SUBROUTINE FOPT
+END SUBROUTINE FOPT
+
+SUBROUTINE PVLS
+END SUBROUTINE PVLS
