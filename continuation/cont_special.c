@@ -302,11 +302,11 @@ static int locate(cable_cont *cc, int type, int which, double seed, int plain)
         nudged = 1; /* done */
       } else if (plain && rc != CABLE_ERR_CALLBACK && rc != CABLE_ERR_ALLOC) {
         /* The last attempt: the corrector does not even converge again
-           from the converged end (sigma_1 ~ 1e-14 there: the Newton step
-           amplifies the residual left at convergence by 1 / sigma_1: so it
-           went in the first attempt at the flat (10,2) link at NTST 40,
-           T = 30.77, sigma_1 = 8.0e-15, 3.4e-14 at the bracket's ends).  The end's stored
-           solution and tests are the branch point. */
+           from the converged end (sigma_1 ~ 1e-14 there, and the Newton
+           step amplifies the residual left at convergence by 1 / sigma_1;
+           so the first attempt failed at the flat (10,2) link at NTST 40,
+           T = 30.77, sigma_1 = 8.0e-15, 3.4e-14 at the bracket's ends).
+           The end's stored solution and tests are the branch point. */
         s = end_of_bracket(cc, s0, s1, g0, g1, &tlo, &thi, xs, &ts);
         snprintf(cc->note, sizeof cc->note,
                  "branch point located to %.3e of arclength (sigma1 = %.3e, %.3e at the ends; the corrector does not "
@@ -358,7 +358,8 @@ static int locate(cable_cont *cc, int type, int which, double seed, int plain)
        (10,2) link at NTST 55, T = 35.75: ITMX = 9 iterations left a bracket
        2.6e-4 wide, sigma_1 = 5.5e-12, 5.8e-12 at its ends, against 6.2e-10
        at the step's; at NTST 40, T = 30.77: 8.0e-6 wide, 1.1e-13 at both
-       ends, 4.1e-8 at the step's).  Label the end where sigma_1 is smaller, as above. */
+       ends, 4.1e-8 at the step's).  Label the end where sigma_1 is
+       smaller, as above. */
     double s = end_of_bracket(cc, s0, s1, g0, g1, &tlo, &thi, xs, &ts);
     snprintf(cc->note, sizeof cc->note,
              "branch point located to %.3e of arclength (sigma1 = %.3e, %.3e, sigma2 = %.3e, %.3e at the ends, "
@@ -583,12 +584,11 @@ int cont_dip_in_step(cable_cont *cc, double smid)
   if (!cont_bp_detect(cc) || !(a > 0 && b > 0) || !(smid > 0 && smid < cc->ds_used)) return CABLE_TY_NONE;
   dip_ctx ctx = {cc, cc->tf, fmax(a, b)};
   double m = dip_fn(smid, &ctx), lo = 0.0;
-  /* x itself may be the branch point located at the start of this step
-     (cont_engine.c: the pencil test's coincident crossings are looked at
-     after the determinant's sign change is located), or the one located in
-     the step before: its sigma_1 vanishes by construction, so the dip is
-     bracketed on the left by the point halfway from x to the predicted
-     crossing instead.  link62's flat branch at DSMAX = 5, NTST 100: the
+  /* x itself may be a located branch point (cont_engine.c: the pencil
+     test's coincident crossings are looked at after the determinant's sign
+     change is located, and in the step after a located BP).  Its sigma_1
+     vanishes by construction, so a dip is then bracketed on the left by the
+     point halfway from x to the predicted crossing instead.  link62's flat branch at DSMAX = 5, NTST 100: the
      step from its simple BP at T = 29.8077 (sigma_1 = 3.3e-13) to
      T = 30.2039 (7.2e-8) holds the double BP at T = 29.93, which the
      pencil test predicted (two crossings at 0.3135 of the step) and this
