@@ -153,6 +153,66 @@ static int correct_in_bracket(cable_cont *cc, double s, double s0, double s1, do
   return cont_correct_from(cc, cc->x, cc->xdot, s, out);
 }
 
+/* The located point: xs (tangent xds, tests ts) at arclength s of the step
+ * becomes the trial point, counted as past the event (far: the test
+ * function's value at the step's far end). */
+static int locate_accept(cable_cont *cc, int type, int which, double s, const double *xs, const double *xds,
+                         cont_tests ts, double far)
+{
+  memcpy(cc->xt, xs, (size_t)cc->n * sizeof *xs);
+  if (type == CABLE_TY_BP)
+    branch_tangent(cc, s / cc->ds_used, cc->xdott); /* the matrix is singular here */
+  else
+    memcpy(cc->xdott, xds, (size_t)cc->n * sizeof *xds);
+  cont_tests_fill(cc, cc->xt, cc->xdott, &ts);
+  /* count the located point as past the event, so that it is not found again */
+  if (type == CABLE_TY_LP) ts.lp = copysign(fabs(ts.lp), far);
+  else if (type == CABLE_TY_BP) ts.det_sign = cc->tft.det_sign;
+  cc->ds_used = s;
+  if (type == CABLE_TY_UZ) {
+    /* every user zero at this parameter value (UZR and UZSTOP may both
+       list it) is passed, and any of them may ask to stop */
+    cc->uz_hit = which;
+    cc->uz_stop = 0;
+    const cable_uzr *z = &cc->c.uzr[which];
+    for (int k = 0; k < cc->c.nuzr; k++) {
+      const cable_uzr *y = &cc->c.uzr[k];
+      if (y->par != z->par || y->value != z->value) continue;
+      ts.uz[k] = copysign(fabs(ts.uz[k]), test_value(&cc->tft, CABLE_TY_UZ, k));
+      cc->uz_stop |= y->stop;
+    }
+  }
+  cc->tft = ts;
+  return CABLE_SUCCESS;
+}
+
+/* Whether sigma_1 has vanished at both ends of a location's bracket (g0, g1:
+ * the BP test there): below CONT_SV_ZERO_REL of its values at the step's
+ * ends (gstep), the dip test's criterion.  A short step next to the BP has
+ * small values at its ends too (the flat (10,2) link at NTST 40, T = 35.75:
+ * 7.2e-11 at the bracket's ends, 8.3e-10 at the step's), so the last
+ * attempt (last) also takes sigma_1 below CONT_SV_ZERO_REL of sigma_2 at
+ * each end (there 7.5e-8): the matrix is that close to one with a
+ * one-dimensional kernel, and the determinant changes sign in between. */
+static int sv1_vanished(double g0, double g1, double gstep, const cont_tests *tlo, const cont_tests *thi, int last)
+{
+  if (fmax(fabs(g0), fabs(g1)) < CONT_SV_ZERO_REL * gstep) return 1;
+  return last && tlo->sv2 > 0 && thi->sv2 > 0 && fabs(g0) < CONT_SV_ZERO_REL * tlo->sv2 &&
+         fabs(g1) < CONT_SV_ZERO_REL * thi->sv2;
+}
+
+/* The end of a location's bracket [s0, s1] where the test function (g0, g1)
+ * is smaller: its converged solution (cc->xlo or cc->xhi) into xs, its tests
+ * (tlo or thi) into ts; returns its arclength. */
+static double end_of_bracket(const cable_cont *cc, double s0, double s1, double g0, double g1, const cont_tests *tlo,
+                             const cont_tests *thi, double *xs, cont_tests *ts)
+{
+  int lo = fabs(g0) <= fabs(g1);
+  memcpy(xs, lo ? cc->xlo : cc->xhi, (size_t)cc->n * sizeof *xs);
+  *ts = lo ? *tlo : *thi;
+  return lo ? s0 : s1;
+}
+
 static int locate(cable_cont *cc, int type, int which, double seed, int plain)
 {
   double s0 = 0.0, f0 = test_value(&cc->tf, type, which);
@@ -165,6 +225,8 @@ static int locate(cable_cont *cc, int type, int which, double seed, int plain)
   double sp = s0, fp = f0, sq = s1, fq = f1;
   int side = 0, corrector_failed = 0;
   cont_tests ts = cc->tft;
+  /* the tests at the bracket's ends, for the last resort below */
+  cont_tests tlo = cc->tf, thi = cc->tft;
   double *xs = cc->w1, *xds = cc->w2;
   /* the solutions at the bracket's ends: the step's start and the trial point */
   memcpy(cc->xlo, cc->x, (size_t)cc->n * sizeof *cc->x);
@@ -223,7 +285,7 @@ static int locate(cable_cont *cc, int type, int which, double seed, int plain)
       nudged = singular && rc == CABLE_SUCCESS && off == off0;
     }
     if (rc != CABLE_SUCCESS && type == CABLE_TY_BP && rc != CABLE_ERR_CALLBACK && rc != CABLE_ERR_ALLOC &&
-        fmax(fabs(g0), fabs(g1)) < CONT_SV_ZERO_REL * gstep) {
+        sv1_vanished(g0, g1, gstep, &tlo, &thi, plain)) {
       /* No point between the bracket's ends converges, and sigma_1 has
          nearly vanished at both (below CONT_SV_ZERO_REL of its values at
          the step's ends, the dip test's criterion for a branch point): the
@@ -238,6 +300,20 @@ static int locate(cable_cont *cc, int type, int which, double seed, int plain)
                  "converge between them)",
                  fabs(s1 - s0), fabs(g0), fabs(g1));
         nudged = 1; /* done */
+      } else if (plain && rc != CABLE_ERR_CALLBACK && rc != CABLE_ERR_ALLOC) {
+        /* The last attempt: the corrector does not even converge again
+           from the converged end (sigma_1 ~ 1e-14 there, and the Newton
+           step amplifies the residual left at convergence by 1 / sigma_1;
+           so the first attempt failed at the flat (10,2) link at NTST 40,
+           T = 30.77, sigma_1 = 8.0e-15, 3.4e-14 at the bracket's ends).
+           The end's stored solution and tests are the branch point. */
+        s = end_of_bracket(cc, s0, s1, g0, g1, &tlo, &thi, xs, &ts);
+        snprintf(cc->note, sizeof cc->note,
+                 "branch point located to %.3e of arclength (sigma1 = %.3e, %.3e at the ends; the corrector does not "
+                 "converge between them, nor again at the end taken)",
+                 fabs(s1 - s0), fabs(g0), fabs(g1));
+        rc = CABLE_SUCCESS;
+        nudged = 1;
       }
     }
     if (rc != CABLE_SUCCESS) {
@@ -261,48 +337,39 @@ static int locate(cable_cont *cc, int type, int which, double seed, int plain)
     sprev = s;
     sp = sq; fp = fq;
     sq = s; fq = f;
-    if (done) {
-      memcpy(cc->xt, xs, (size_t)cc->n * sizeof *xs);
-      if (type == CABLE_TY_BP)
-        branch_tangent(cc, s / cc->ds_used, cc->xdott); /* the matrix is singular here */
-      else
-        memcpy(cc->xdott, xds, (size_t)cc->n * sizeof *xds);
-      cont_tests_fill(cc, cc->xt, cc->xdott, &ts);
-      /* count the located point as past the event, so that it is not found again */
-      if (type == CABLE_TY_LP) ts.lp = copysign(fabs(ts.lp), far);
-      else if (type == CABLE_TY_BP) ts.det_sign = cc->tft.det_sign;
-      cc->ds_used = s;
-      if (type == CABLE_TY_UZ) {
-        /* every user zero at this parameter value (UZR and UZSTOP may both
-           list it) is passed, and any of them may ask to stop */
-        cc->uz_hit = which;
-        cc->uz_stop = 0;
-        const cable_uzr *z = &cc->c.uzr[which];
-        for (int k = 0; k < cc->c.nuzr; k++) {
-          const cable_uzr *y = &cc->c.uzr[k];
-          if (y->par != z->par || y->value != z->value) continue;
-          ts.uz[k] = copysign(fabs(ts.uz[k]), test_value(&cc->tft, CABLE_TY_UZ, k));
-          cc->uz_stop |= y->stop;
-        }
-      }
-      cc->tft = ts;
-      return CABLE_SUCCESS;
-    }
+    if (done) return locate_accept(cc, type, which, s, xs, xds, ts, far);
     if ((f > 0) == (f1 > 0)) {
-      s1 = s; f1 = f; g1 = f;
+      s1 = s; f1 = f; g1 = f; thi = ts;
       memcpy(cc->xhi, xs, (size_t)cc->n * sizeof *xs);
       if (side == 1) f0 *= CONT_ILLINOIS;
       side = 1;
     } else {
-      s0 = s; f0 = f; g0 = f;
+      s0 = s; f0 = f; g0 = f; tlo = ts;
       memcpy(cc->xlo, xs, (size_t)cc->n * sizeof *xs);
       if (side == -1) f1 *= CONT_ILLINOIS;
       side = -1;
     }
   }
+  if (plain && type == CABLE_TY_BP && sv1_vanished(g0, g1, gstep, &tlo, &thi, plain)) {
+    /* The last attempt ran out of iterations, but sigma_1 has vanished at
+       both ends of its bracket (CONT_SV_ZERO_REL, as above): near a zero of
+       sigma_1 of about 1e-12 its computed values are rounding noise, so
+       the secant and regula falsi stop shrinking the bracket (the flat
+       (10,2) link at NTST 55, T = 35.75: ITMX = 9 iterations left a bracket
+       2.6e-4 wide, sigma_1 = 5.5e-12, 5.8e-12 at its ends, against 6.2e-10
+       at the step's; at NTST 40, T = 30.77: 8.0e-6 wide, 1.1e-13 at both
+       ends, 4.1e-8 at the step's).  Label the end where sigma_1 is
+       smaller, as above. */
+    double s = end_of_bracket(cc, s0, s1, g0, g1, &tlo, &thi, xs, &ts);
+    snprintf(cc->note, sizeof cc->note,
+             "branch point located to %.3e of arclength (sigma1 = %.3e, %.3e, sigma2 = %.3e, %.3e at the ends, "
+             "sigma1 = %.3e at the step's; ITMX = %d iterations did not shrink the bracket to the tolerance %.3e)",
+             fabs(s1 - s0), fabs(g0), fabs(g1), tlo.sv2, thi.sv2, gstep, cc->c.itmx, tol);
+    return locate_accept(cc, type, which, s, xs, xds, ts, far);
+  }
   cont_set_error(cc, "could not locate the %s within ITMX=%d iterations: bracket [%.10g, %.10g] of arclength from the "
-                 "last point, test function %.3e, %.3e at its ends", what, cc->c.itmx, fmin(s0, s1), fmax(s0, s1),
-                 s0 < s1 ? g0 : g1, s0 < s1 ? g1 : g0);
+                 "last point, test function %.3e, %.3e at its ends, %.3e at the step's ends", what, cc->c.itmx,
+                 fmin(s0, s1), fmax(s0, s1), s0 < s1 ? g0 : g1, s0 < s1 ? g1 : g0, gstep);
   return CABLE_ERR_NEWTON;
 }
 
@@ -516,11 +583,22 @@ int cont_dip_in_step(cable_cont *cc, double smid)
   double a = cc->tf.sv1, b = cc->tft.sv1;
   if (!cont_bp_detect(cc) || !(a > 0 && b > 0) || !(smid > 0 && smid < cc->ds_used)) return CABLE_TY_NONE;
   dip_ctx ctx = {cc, cc->tf, fmax(a, b)};
-  double m = dip_fn(smid, &ctx);
-  if (!(m < a && m < b)) return CABLE_TY_NONE;
-  /* x itself may be the branch point located at the start of this step
-     (cont_engine.c: the pencil test's coincident crossings are looked at
-     after the determinant's sign change is located) */
+  double m = dip_fn(smid, &ctx), lo = 0.0;
+  /* x itself may be a located branch point (cont_engine.c: the pencil
+     test's coincident crossings are looked at after the determinant's sign
+     change is located, and in the step after a located BP).  Its sigma_1
+     vanishes by construction, so a dip is then bracketed on the left by the
+     point halfway from x to the predicted crossing instead.  link62's flat branch at DSMAX = 5, NTST 100: the
+     step from its simple BP at T = 29.8077 (sigma_1 = 3.3e-13) to
+     T = 30.2039 (7.2e-8) holds the double BP at T = 29.93, which the
+     pencil test predicted (two crossings at 0.3135 of the step) and this
+     test dropped because sigma_1 there was not below x's. */
   int x_located = cc->itp_x == CABLE_TY_BP;
-  return dip_minimise(cc, 0.0, smid, m, cc->ds_used, a, b, x_located ? b : fmin(a, b));
+  if (x_located && !(m < a) && m < b) {
+    lo = 0.5 * smid;
+    a = dip_fn(lo, &ctx);
+    if (!(a > 0)) return CABLE_TY_NONE;
+  }
+  if (!(m < a && m < b)) return CABLE_TY_NONE;
+  return dip_minimise(cc, lo, smid, m, cc->ds_used, a, b, x_located ? b : fmin(a, b));
 }

@@ -125,3 +125,49 @@ def test_link102(work):
     if 'PT     1: switching at a simple branch point' not in out:
         bad.append("link102: the scene's BP is switched as a simple one")
     assert not bad, bad
+
+
+@pytest.mark.parametrize('ntst', [40, 55])
+def test_link102_coarse_meshes(work, ntst):
+    # BP location's last resort (cont_special.c: sv1_vanished, end_of_bracket):
+    # at NTST 55 the regula falsi ran out of ITMX = 9 iterations at the simple
+    # BP near T = 35.75 with sigma_1 = 5.5e-12, 5.8e-12 at its bracket's ends
+    # (6.2e-10 at the step's), at NTST 40 the same at T = 30.77 (1.1e-13 at
+    # both ends, 4.1e-8 at the step's) and at 35.75 (7.2e-11 at the ends,
+    # 8.3e-10 at the step's, sigma_2 = 7.5e-8): the run said "could not
+    # locate the branch point within ITMX=9 iterations" and the BP was not
+    # labelled (4 BPs instead of 5).  Every BP the determinant's sign change
+    # brackets is labelled now; T within 1e-3 of the NTST-100 values as above
+    # (measured: 35.75007 at NTST 40, 35.74964 at NTST 55, against 35.74969)
+    want = [(10.8232, 'double'), (17.7119, 'double'), (24.2749, 'double'), (30.7654, 'simple'), (35.7497, 'simple')]
+    out, bad = check_flat(
+        work, 'link102', ['c.link102'],
+        "flat = run(e='braid_link', c='link102', NTST=%d, %s, UZSTOP={'T': 36.5}, sv='flat')" % (ntst, ICP),
+        "", want, 35.7497)
+    assert 'could not locate' not in out, out
+    assert not bad, bad
+
+
+def test_link62_dsmax5_ntst100(work):
+    # The scene's mesh at DSMAX = 5 (c.link62 uses 1): the simple BP at
+    # T = 29.8077 is located, and the next step (to T = 30.2039) holds the
+    # double BP at 29.93, which the pencil test predicts (two crossings at
+    # 0.3135 of the step); the dip test of that step dropped it because
+    # sigma_1 at its start, the located BP, is ~0 (3.3e-13) and the dip's
+    # sigma_1 was not below it (cont_special.c, cont_dip_in_step).  T against
+    # the scene's own flat branch (DSMAX = 1, b.flat of make scenes), within
+    # 1e-5: the simple BP is located to 6.3e-5 (DSMAX 1) and 6.4e-5 (DSMAX 5)
+    # of arclength, where T moves by 0.08 per unit of arclength (measured:
+    # 29.8077368913 here against 29.8077337640; 29.9319598949 against
+    # 29.9319596620; the others within 4e-7).
+    want = [(10.0782602960, 'double'), (17.5496073270, 'simple'), (23.5720279370, 'double'),
+            (29.8077337640, 'simple'), (29.9319596620, 'double')]
+    out, bad = check_flat(
+        work, 'link62', ['c.link62'],
+        "flat = run(e='braid_link', c='link62', DSMAX=5.0, %s, UZSTOP={'T': 30.5}, sv='flat')" % ICP,
+        "", want, 29.8077)
+    got = [float(l.split()[2]) for l in out.splitlines() if l.startswith('bp ')]
+    if len(got) == len(want):
+        bad += ['BP%d at T = %.4f, got %.7f' % (i, t, g) for i, ((t, _), g) in enumerate(zip(want, got), 1)
+                if not abs(g - t) <= 1e-5]
+    assert not bad, bad
