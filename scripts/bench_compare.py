@@ -33,6 +33,12 @@ NLONG, NSHORT = 60, 2
 NSWEEP = 12  # the NTST sweep: per step = (NMX=12 run - NMX=2 run) / 10
 
 
+
+def load_range(loads):
+    """'min / median / max' of the 1-minute load averages ('1.23 4.56 7.89' strings)."""
+    one = [float(x.split()[0]) for x in loads]
+    return "%.2f / %.2f / %.2f" % (min(one), statistics.median(one), max(one))
+
 def load():
     with open("/proc/loadavg") as fh:
         return " ".join(fh.read().split()[:3])
@@ -266,9 +272,8 @@ def main():
     print("1 and 2 threads: the b-files of the ISP=0 runs are %s; of the ISP=2 runs the points %s."
           % ("identical" if same12 else "DIFFERENT", "agree exactly" if cpb1 == cpb2 else "DIFFER"))
     print()
-    print("Load during these runs (1-minute average, min / median / max over the runs): %s / %s / %s; at the end: %s."
-          % (min(float(x.split()[0]) for x in B.loads), statistics.median(float(x.split()[0]) for x in B.loads),
-             max(float(x.split()[0]) for x in B.loads), load_main))
+    print("Load during these runs (1-minute average, min / median / max over the runs): %s; at the end: %s."
+          % (load_range(B.loads), load_main))
     print()
 
     # ---- the same equation file through cable ---------------------------------
@@ -315,9 +320,7 @@ def main():
             1000 * rr["c1"]["cstep"] / ntst, rr["c1"]["rss"], rr["a"]["rss"]))
         sys.stdout.flush()
     print()
-    print("Load during these runs (1-minute average, min / median / max): %s / %s / %s."
-          % (min(float(x.split()[0]) for x in B.loads), statistics.median(float(x.split()[0]) for x in B.loads),
-             max(float(x.split()[0]) for x in B.loads)))
+    print("Load during these runs (1-minute average, min / median / max): %s." % load_range(B.loads))
     print()
     print("This section took %.0f s." % (time.time() - t_start))
 
