@@ -9,7 +9,7 @@
  * is closed again and the error names the file, the field and the reason:
  *
  *   build/release/plugins/broken_abi.so: abi_version: built for ABI 99, this
- *   cable expects 1 (rebuild the plug-in against this cable's cable_problem.h)
+ *   cable expects 3 (rebuild the plug-in against this cable's cable_problem.h)
  */
 #ifndef CABLE_PLUGIN_LOADER_H
 #define CABLE_PLUGIN_LOADER_H
