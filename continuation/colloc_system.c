@@ -54,7 +54,6 @@ colloc_system *colloc_system_alloc(const cable_problem *pb, const cable_constant
   s->thu = xcalloc((size_t)nd, sizeof(double), &fail);
   s->thl = xcalloc((size_t)nfpr, sizeof(double), &fail);
   s->w_u = xcalloc((size_t)nd, sizeof(double), &fail);
-  s->w_du = xcalloc((size_t)nd, sizeof(double), &fail);
   /* one chunk of intervals per thread, and more threads than intervals do nothing */
   int nt = pb->concurrent ? cable_threads(c) : 1;
   s->nwork = nt < ntst ? nt : ntst;
@@ -99,7 +98,7 @@ colloc_system *colloc_system_alloc(const cable_problem *pb, const cable_constant
 void colloc_system_free(colloc_system *s)
 {
   if (!s) return;
-  double *bufs[] = {s->mesh, s->par, s->x0, s->xdot0, s->thu, s->thl, s->w_u, s->w_du,
+  double *bufs[] = {s->mesh, s->par, s->x0, s->xdot0, s->thu, s->thl, s->w_u,
                     s->w_fb, s->w_fbp, s->w_dbc, s->w_fi,
                     s->w_fip, s->w_dint, s->w_uold, s->w_udot, s->w_upold, s->w_parp};
   for (size_t i = 0; i < sizeof bufs / sizeof bufs[0]; i++) free(bufs[i]);

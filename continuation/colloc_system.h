@@ -67,7 +67,7 @@ typedef struct colloc_system {
   colloc_work *work;          /* [nwork] (owned) */
   struct cable_team *team;    /* owned; NULL when nwork = 1 */
   /* workspace (owned) */
-  double *w_u, *w_du, *w_fb, *w_fbp, *w_dbc;
+  double *w_u, *w_fb, *w_fbp, *w_dbc;
   double *w_fi, *w_fip, *w_dint, *w_uold, *w_udot, *w_upold;
   double *w_parp;             /* [npar] perturbed parameters */
 } colloc_system;

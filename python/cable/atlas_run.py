@@ -17,7 +17,7 @@ import sys
 import time
 
 from .atlas_output import write_outputs
-from .atlas_task import flat_dir, run_flat, run_task
+from .atlas_task import flat_dir, flat_has_solutions, run_flat, run_task
 
 
 # seconds between rewrites of the table and summary while tasks finish
@@ -71,14 +71,13 @@ def remove_stale_partials(sweep):
 def read_flat(sweep, ft):
     """The finished result of the shared flat branch ft (None: not finished,
     or finished without its solutions, which run_flat computes again)."""
-    p = os.path.join(flat_dir(sweep.output, ft.name), 'result.json')
+    final = flat_dir(sweep.output, ft.name)
+    p = os.path.join(final, 'result.json')
     if not os.path.exists(p):
         return None
     with open(p) as fh:
         r = json.load(fh)
-    if r['status'] == 'ok' and not os.path.exists(os.path.join(flat_dir(sweep.output, ft.name), 's.flat')):
-        return None
-    return r
+    return None if r['status'] == 'ok' and not flat_has_solutions(final) else r
 
 
 def priority(t):

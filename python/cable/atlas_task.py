@@ -306,6 +306,12 @@ def flat_dir(out_dir, flat_name):
     return os.path.join(out_dir, 'flat', flat_name)
 
 
+def flat_has_solutions(final):
+    """Whether the flat branch in directory final has its solutions (s.flat),
+    which its mode tasks start from (a fresh clone has only its result)."""
+    return os.path.exists(os.path.join(final, 's.flat'))
+
+
 def run_flat(inputs, name, out_dir):
     """Computes the shared flat branch of a FlatTask into OUT/flat/NAME
     (c.flat, b./s./d.flat, log.txt, result.json with its branch points)
@@ -315,7 +321,7 @@ def run_flat(inputs, name, out_dir):
     os.makedirs(os.path.join(out_dir, 'flat'), exist_ok=True)
     final = flat_dir(out_dir, name)
     result = _in_directory(final, inputs, lambda: compute_flat(inputs))
-    if result['status'] == 'ok' and not os.path.exists(os.path.join(final, 's.flat')):
+    if result['status'] == 'ok' and not flat_has_solutions(final):
         _restore_flat_files(final, inputs, name, result)
     return result
 
