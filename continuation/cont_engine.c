@@ -536,6 +536,7 @@ int cable_cont_step(cable_cont *cc)
   }
   cc->ds_prev = cc->ds_used;
   cc->ds_used = ds_step;
+  int step_iters = cc->newton_iters;
   cc->itp = CABLE_TY_NONE;
   cc->uz_hit = -1;
   int which = -1, type = first_step ? CABLE_TY_NONE : cont_find_event(cc, &cc->tf, &cc->tft, &which);
@@ -562,7 +563,23 @@ int cable_cont_step(cable_cont *cc)
   pencil_note(cc, &pr);
   accept_trial(cc);
   cc->itp_x = cc->itp;
-  control_step(cc);
+  if (cc->queued) {
+    /* a located dip: the next step starts from the trial point queued
+       behind it, which the whole step reached with the step's own
+       corrector.  The minimisation's last corrector (many iterations, or a
+       failure, next to the singular point) says nothing about the step, and
+       before this the step after every double branch point of the flat
+       (7,2) knot was halved and grew back over four steps. */
+    int it_located = cc->newton_iters;
+    double ds_located = cc->ds_used;
+    cc->newton_iters = step_iters;
+    cc->ds_used = ds_step;
+    control_step(cc);
+    cc->newton_iters = it_located;
+    cc->ds_used = ds_located;
+  } else {
+    control_step(cc);
+  }
   /* output first: the stored solution is the converged one on its own mesh;
      the new mesh's interpolant is only the next corrector's start (AUTO
      writes its point before ADAPT too) */
