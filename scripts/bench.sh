@@ -62,7 +62,7 @@ path_time() {
   echo "which is what \`tests/python/test_knot72_scene.py\` replays: the flat branch (both arms) with"
   echo "the double-branch-point detection, its branch points, the switches and the mode 1-4"
   echo "branches through (a)-(d), with the scene's constants (NTST = 30, NCOL = 7; the mode branches"
-  echo "DS = DSMAX = 5, ISP = 0) in a scratch directory; medians of $reps alternated runs. \`make demo\`"
+  echo "$(sed -n 's/^DS = .*DSMAX = \([0-9.]*\).*/DSMAX = \1/p' runs/knot72/c.knot72sym), ISP = 0) in a scratch directory; medians of $reps alternated runs. \`make demo\`"
   echo "= the whole scene (\`cable replay runs/knot72/knot72.auto\` on a copy), one run. CPU = user +"
   echo "system time of the replay (/usr/bin/time). Issue 17's targets: <= 10 s and <= 30 s (wall)."
   echo
