@@ -40,7 +40,6 @@ struct cable_aufile {
   /* label bookkeeping: labels with a b-row / with an s-block */
   int *blab, nblab, blabcap;
   int *slab, nslab, slabcap;
-  int *seclab, nseclab, seclabcap;   /* labels of the current section (one run) */
   int last_label, last_branch;
   double *parbuf;
   int parcap;
@@ -135,13 +134,6 @@ static int int_push(int **a, int *n, int *cap, int v)
     *cap = nc;
   }
   (*a)[(*n)++] = v;
-  return 0;
-}
-
-static int int_find(const int *a, int n, int v)
-{
-  for (int i = 0; i < n; i++)
-    if (a[i] == v) return 1;
   return 0;
 }
 
@@ -495,7 +487,6 @@ static int start_section(cable_aufile *w, const cable_point *pt)
   w->sec_nicp = pt->nicp;
   memcpy(w->sec_icp, pt->icp, (size_t)pt->nicp * sizeof pt->icp[0]);
   w->sec_n2 = n_umax(pt->nicp, pt->ndim);
-  w->nseclab = 0;
   w->nsections++;
   write_b_header(w, pt);
   FILE *d = cable_atomic_stream(w->d);
@@ -546,14 +537,10 @@ static int point_cb(void *ctx, const cable_point *pt)
   for (int j = 0; j < n; j++) fputs(cable_aufile_format_es(buf, val[j], BCOL, BDIG, BEXP), f);
   fputc('\n', f);
   if (pt->lab != 0) {
-    /* AUTO's labels repeat across runs (each run numbers on from its own
-       restart data) and appending keeps them, as AUTO's ap does; within one
-       run they cannot */
-    if (int_find(w->seclab, w->nseclab, pt->lab))
-      return w_fail(w, CABLE_ERR_INPUT, w->spath, "label %d appears twice in one branch (b-file section %d)", pt->lab,
-                    w->nsections);
-    if (int_push(&w->seclab, &w->nseclab, &w->seclabcap, pt->lab) != 0 ||
-        int_push(&w->blab, &w->nblab, &w->blabcap, pt->lab) != 0)
+    /* labels may repeat, as in AUTO's files: each run numbers its labels from
+       its own restart data (NEWLAB), ap appends as it is, merge joins two
+       runs from one start without relabelling */
+    if (int_push(&w->blab, &w->nblab, &w->blabcap, pt->lab) != 0)
       return w_fail(w, CABLE_ERR_ALLOC, w->bpath, "out of memory");
     if (pt->lab > w->last_label) w->last_label = pt->lab;
   }
@@ -704,7 +691,6 @@ static void free_writer(cable_aufile *w)
   free(w->csv);
   free(w->blab);
   free(w->slab);
-  free(w->seclab);
   free(w->parbuf);
   free(w);
 }

@@ -62,8 +62,9 @@ def test_restart_sum_and_numbering(bratu):
     fine = bratu.run(r('LP1'), NTST=40, NMX=10)
     both = r + fine
     assert len(both) == 2 and len(both()) == len(r()) + len(fine())
-    # AUTO's NEWLAB: the restart's labels and branch number follow the session's
-    assert fine()[0]['LAB'] == 9 and fine()[0]['BR'] == 2
+    # AUTO's NEWLAB: a plain restart (ISW=1) keeps its start's branch number;
+    # its labels follow the largest label of r, the result the start was taken from
+    assert [s['BR'] for s in r()] == [1] * 8 and fine()[0]['LAB'] == 9 and fine()[0]['BR'] == 1
     # the restart starts at the fold (its first point; the start is not labelled again)
     assert fine['lambda'][0] == pytest.approx(LAMBDA_FOLD, abs=1e-8) and fine['PT'][0] == 1
     # run(result, IRS=...) restarts from the label; without IRS from the last one
