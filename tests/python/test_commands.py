@@ -374,6 +374,13 @@ def test_fold_run_through_python(work):
     assert len(dg) == 3 and dg[0] == df[-1]
     step = df[-1] - df[-2]
     assert all((dg[i + 1] - dg[i]) * step > 0 for i in range(2))
+    # AUTO's NEWLAB for ISW=2: the fold run from an LP is branch IRS (the LP's
+    # label), its labels after the largest of s.link62lp; a restart from a
+    # point of the fold curve keeps that branch number
+    src = rn.sl('link62lp')
+    lp0 = [x for x in src if x.TY == 'LP'][0]
+    assert {x.BR for x in f()} == {lp0.LAB} and f()[0].LAB == max(x.LAB for x in src) + 1
+    assert {x.BR for x in g()} == {lp0.LAB} and g()[0].LAB == f()[-1].LAB + 1
 
 
 def test_problem_keys_and_prepare(work):
