@@ -353,6 +353,20 @@ static void restart_maxima(const cable_session *r, const cable_run_args *a, cons
   max_into(&s->mlab, s->start->lab);
 }
 
+/* IRS among the call's overrides ("IRS=3", "IRS = 'UZ1'"). */
+static int irs_in_call(const cable_run_args *a)
+{
+  for (int i = 0; i < a->nover; i++) {
+    const char *p = a->over[i];
+    while (*p == ' ' || *p == '\t') p++;
+    if (strncmp(p, "IRS", 3) != 0) continue;
+    p += 3;
+    while (*p == ' ' || *p == '\t') p++;
+    if (*p == '=') return 1;
+  }
+  return 0;
+}
+
 /* AUTO's load/run argument handling: the base constants from the start (or
  * the runner), then c=, e=, s=, sv=, ap=, then every override, then the
  * start. */
@@ -483,11 +497,22 @@ static int build_setup(cable_session *r, const cable_run_args *a, rp_setup *s, c
       return cable_error_set(err, CABLE_ERR_NOTFOUND, NULL, 0, "IRS",
                              irs_given ? "no such label in the result" : "the result has no labelled solution");
   } else if (!s->start && s->sf && irs_given) {
-    if ((rc = cable_sfile_resolve_irs(s->sf, &s->c, err))) {
+    /* the solution itself: a label repeats in a file of several runs (NEWLAB),
+       so 'UZ2' or -n is not looked up again by the label it resolves to, and
+       the runner's own solution (its last load or run) is kept while IRS is
+       its label */
+    const cable_solution *kept =
+        s->sf_borrowed && !a->c && !irs_in_call(a) && !s->c.irs_name[0] ? cable_sfile_get(s->sf, r->cur_pick) : NULL;
+    char spec[CABLE_NAME_MAX + 16];
+    if (s->c.irs_name[0]) snprintf(spec, sizeof spec, "%s", s->c.irs_name);
+    else snprintf(spec, sizeof spec, "%d", s->c.irs);
+    s->start = kept && kept->lab == s->c.irs ? kept : cable_sfile_find(s->sf, spec, err);
+    if (!s->start) {
       if (err && !err->file[0]) snprintf(err->file, sizeof err->file, "%.500s", s->sfpath);
-      return rc;
+      return err && err->status ? err->status : CABLE_ERR_NOTFOUND;
     }
-    s->start = cable_sfile_find_label(s->sf, s->c.irs);
+    s->c.irs = s->start->lab;   /* as cable_sfile_resolve_irs: the label it picked */
+    s->c.irs_name[0] = '\0';
   } else if (!s->start && irs_given) {
     return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, "IRS",
                            "a restart needs solutions: give a result, a solution, a name or s='NAME'");
@@ -734,6 +759,12 @@ static int engine_run(cable_session *r, rp_setup *s, rp_branch **out, cable_erro
  * runner's solutions.  The save settings are one-off. */
 static void remember(cable_session *r, rp_setup *s)
 {
+  /* the runner's solution in its s-file (labels may repeat in it): run()
+     without a new IRS restarts from this one, as AUTO's selected solution */
+  int pick = -1;
+  for (int i = 0; s->sf && s->start && i < cable_sfile_count(s->sf); i++)
+    if (cable_sfile_get(s->sf, i) == s->start) pick = i;
+  if (s->sf) r->cur_pick = pick;
   r->cur = s->c;
   if (s->start) {
     r->cur.irs = s->start->lab;
@@ -962,6 +993,7 @@ cable_session *cable_session_alloc(const cable_session_options *opt)
   if (opt) r->opt = *opt;
   cable_constants_init(&r->cur);
   cable_names_init(&r->cur_names);
+  r->cur_pick = -1;
   return r;
 }
 

@@ -68,6 +68,7 @@ struct cable_session {
      run(sol) or run(result) (a reference); neither: STPNT */
   cable_sfile *cur_sf;
   char cur_sfpath[1024];
+  int cur_pick;   /* the index in cur_sf of the solution the last load or run started from, -1: none */
   rp_branch *cur_br;
   int cur_isol;
   int cur_mbr, cur_mlab;   /* cur_br's solution: its bundle's largest branch number and label */

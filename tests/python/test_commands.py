@@ -92,8 +92,17 @@ def test_newlab_numbering(bratu):
     assert len(back) == 2 and [s.LAB for s in back()] == [1, 2, 1, 2]
     assert back[1]('EP2')['lambda'] == pytest.approx(down('EP2')['lambda'], abs=1e-9)
     assert down('EP2')['lambda'] < 0 < up('EP2')['lambda']
-    # IRS picks the first solution with the label, as AUTO's FINDLB
+    # IRS picks the first solution with the label, as AUTO's FINDLB; a type
+    # and count picks that solution, whatever its label ('EP4' is down's label 2),
+    # and the runner keeps it for run() without a new IRS (AUTO's selected solution;
+    # auto-07p 0.9.2 does each of these on the same two runs of its own bratu.f90:
+    # ld(s='two', IRS='EP4'); run() starts at down's EP2, run(IRS=2) at up's)
     assert bratu.run(s='two', IRS=2, NMX=2)['lambda'][0] == pytest.approx(up('EP2')['lambda'], abs=1e-9)
+    assert bratu.run(s='two', IRS='EP4', NMX=2)['lambda'][0] == pytest.approx(down('EP2')['lambda'], abs=1e-9)
+    assert bratu.run(NMX=2)['lambda'][0] == pytest.approx(down('EP2')['lambda'], abs=1e-9)
+    bratu.load(s='two', IRS='EP4')
+    assert bratu.run(NMX=2)['lambda'][0] == pytest.approx(down('EP2')['lambda'], abs=1e-9)
+    assert bratu.run(NMX=2, IRS=2)['lambda'][0] == pytest.approx(up('EP2')['lambda'], abs=1e-9)
     # without b.two the runs are told apart by their point numbers (each starts at PT 1)
     os.remove('b.two')
     assert [len(b()) for b in bratu.loadbd('two')] == [2, 2]
