@@ -40,7 +40,6 @@ struct cable_aufile {
   /* label bookkeeping: labels with a b-row / with an s-block */
   int *blab, nblab, blabcap;
   int *slab, nslab, slabcap;
-  int *oldlab, noldlab, oldlabcap;   /* labels already in the files appended to */
   int last_label, last_branch;
   double *parbuf;
   int parcap;
@@ -135,13 +134,6 @@ static int int_push(int **a, int *n, int *cap, int v)
     *cap = nc;
   }
   (*a)[(*n)++] = v;
-  return 0;
-}
-
-static int int_find(const int *a, int n, int v)
-{
-  for (int i = 0; i < n; i++)
-    if (a[i] == v) return 1;
   return 0;
 }
 
@@ -545,9 +537,9 @@ static int point_cb(void *ctx, const cable_point *pt)
   for (int j = 0; j < n; j++) fputs(cable_aufile_format_es(buf, val[j], BCOL, BDIG, BEXP), f);
   fputc('\n', f);
   if (pt->lab != 0) {
-    if (int_find(w->oldlab, w->noldlab, pt->lab) || int_find(w->blab, w->nblab, pt->lab))
-      return w_fail(w, CABLE_ERR_INPUT, w->spath, "label %d is already in the file: labels in one s-file must be unique",
-                    pt->lab);
+    /* labels may repeat, as in AUTO's files: each run numbers its labels from
+       its own restart data (NEWLAB), ap appends as it is, merge joins two
+       runs from one start without relabelling */
     if (int_push(&w->blab, &w->nblab, &w->blabcap, pt->lab) != 0)
       return w_fail(w, CABLE_ERR_ALLOC, w->bpath, "out of memory");
     if (pt->lab > w->last_label) w->last_label = pt->lab;
@@ -699,7 +691,6 @@ static void free_writer(cable_aufile *w)
   free(w->csv);
   free(w->blab);
   free(w->slab);
-  free(w->oldlab);
   free(w->parbuf);
   free(w);
 }
@@ -722,10 +713,6 @@ static int scan_existing(cable_aufile *w, cable_error *err)
     if (!s) return err ? err->status : CABLE_ERR_IO;
     for (int i = 0; i < cable_sfile_count(s); i++) {
       const cable_solution *sol = cable_sfile_get(s, i);
-      if (int_push(&w->oldlab, &w->noldlab, &w->oldlabcap, sol->lab) != 0) {
-        cable_sfile_free(s);
-        return cable_error_set(err, CABLE_ERR_ALLOC, w->spath, 0, "", "out of memory");
-      }
       if (sol->lab > w->last_label) w->last_label = sol->lab;
       if (sol->ibr > w->last_branch) w->last_branch = sol->ibr;
     }
@@ -738,11 +725,6 @@ static int scan_existing(cable_aufile *w, cable_error *err)
     for (int i = 0; i < b->nbranch; i++)
       for (int r = 0; r < b->branch[i].nrow; r++) {
         int lab = b->branch[i].lab[r];
-        if (lab != 0 && !int_find(w->oldlab, w->noldlab, lab) &&
-            int_push(&w->oldlab, &w->noldlab, &w->oldlabcap, lab) != 0) {
-          cable_bfile_free(b);
-          return cable_error_set(err, CABLE_ERR_ALLOC, w->bpath, 0, "", "out of memory");
-        }
         if (lab > w->last_label) w->last_label = lab;
         if (b->branch[i].br[r] > w->last_branch) w->last_branch = b->branch[i].br[r];
       }

@@ -135,8 +135,10 @@ static int sibling(const char *sfile, char type, char *path, size_t len)
   return 1;
 }
 
-/* Error estimates that the d-file records for stored labels. */
-static double dfile_error_estimate(const char *sfile, int lab)
+/* The error estimate that the d-file records for the nth (0, 1, ...) stored
+ * solution with label lab (a label repeats in a file of several runs; the
+ * d-file has them in the s-file's order). */
+static double dfile_error_estimate(const char *sfile, int lab, int nth)
 {
   char path[1024];
   if (!sibling(sfile, 'd', path, sizeof path)) return -1;
@@ -147,7 +149,10 @@ static double dfile_error_estimate(const char *sfile, int lab)
   while (fgets(line, sizeof line, f)) {
     int l;
     const char *e = strstr(line, "error estimate ");
-    if (sscanf(line, " Solution label %d", &l) == 1 && l == lab && e) est = strtod(e + 15, NULL);
+    if (sscanf(line, " Solution label %d", &l) == 1 && l == lab && e && nth-- == 0) {
+      est = strtod(e + 15, NULL);
+      break;
+    }
   }
   fclose(f);
   return est;
@@ -182,7 +187,9 @@ int cable_cmd_list(const char *sfile, FILE *out, cable_error *err)
   fprintf(out, "  LAB  TY    BR    PT  NTST NCOL  error-est   free parameters\n");
   for (int i = 0; i < cable_sfile_count(s); i++) {
     const cable_solution *x = cable_sfile_get(s, i);
-    double e = x->err_est >= 0 ? x->err_est : dfile_error_estimate(sfile, x->lab);
+    int nth = 0;
+    for (int q = 0; q < i; q++) nth += cable_sfile_get(s, q)->lab == x->lab;
+    double e = x->err_est >= 0 ? x->err_est : dfile_error_estimate(sfile, x->lab, nth);
     fprintf(out, "%5d  %-2s %5d %5d %5d %4d  ", x->lab, cable_type_name(x->itp), x->ibr, x->ntot, x->ntst, x->ncol);
     if (e >= 0) fprintf(out, "%9.2e  ", e);
     else fprintf(out, "%9s  ", "-");

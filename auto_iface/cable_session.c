@@ -165,6 +165,7 @@ typedef struct rp_setup {
   int forget_sf;                 /* run('NAME') without s.NAME: the runner's solutions are dropped */
   char sfpath[1024];             /* its path */
   char sv[CABLE_NAME_MAX], ap[CABLE_NAME_MAX];
+  int mbr, mlab;                 /* AUTO's MBR, MLAB: the restart data's largest branch number and label */
 } rp_setup;
 
 static void setup_free(rp_setup *s)
@@ -303,6 +304,69 @@ static int name_arg(const char *key, const char *v, char *dst, size_t len, cable
   return 0;
 }
 
+/* ---- AUTO's NEWLAB: the restart data's largest branch number and label ---------------- */
+
+static void max_into(int *m, int v)
+{
+  if (v > *m) *m = v;
+}
+
+/* A branch's branch number and labels, and those of the data it was loaded from. */
+static void branch_maxima(const rp_branch *b, int *mbr, int *mlab)
+{
+  max_into(mbr, b->ibr);
+  max_into(mbr, b->src_mbr);
+  max_into(mlab, b->src_mlab);
+  for (int i = 0; i < b->nsol; i++) max_into(mlab, b->sol[i]->lab);
+}
+
+static void sfile_maxima(const cable_sfile *sf, int *mbr, int *mlab)
+{
+  for (int i = 0; i < cable_sfile_count(sf); i++) {
+    max_into(mbr, cable_sfile_get(sf, i)->ibr);
+    max_into(mlab, cable_sfile_get(sf, i)->lab);
+  }
+}
+
+/* MBR and MLAB (AUTO's NEWLAB reads them from the restart data it is given):
+ * for a solution, the bundle it was taken from (AUTO's _mbr, _mlab, written
+ * as the dummy header after it), for a result all its branches, for an
+ * s-file the whole file; 0 and 0 for a start from STPNT. */
+static void restart_maxima(const cable_session *r, const cable_run_args *a, const rp_result *res, rp_setup *s)
+{
+  s->mbr = s->mlab = 0;
+  if (!s->start) return;
+  if (a->sol_branch) {
+    max_into(&s->mbr, a->sol_mbr);
+    max_into(&s->mlab, a->sol_mlab);
+    branch_maxima(a->sol_branch, &s->mbr, &s->mlab);
+  } else if (res) {
+    for (int k = 0; k < res->nbr; k++) branch_maxima(res->br[k], &s->mbr, &s->mlab);
+  } else if (s->sf) {
+    sfile_maxima(s->sf, &s->mbr, &s->mlab);
+  } else if (s->start_br && s->start_br == r->cur_br) {
+    max_into(&s->mbr, r->cur_mbr);
+    max_into(&s->mlab, r->cur_mlab);
+    branch_maxima(s->start_br, &s->mbr, &s->mlab);
+  }
+  max_into(&s->mbr, s->start->ibr);
+  max_into(&s->mlab, s->start->lab);
+}
+
+/* IRS among the call's overrides ("IRS=3", "IRS = 'UZ1'"). */
+static int irs_in_call(const cable_run_args *a)
+{
+  for (int i = 0; i < a->nover; i++) {
+    const char *p = a->over[i];
+    while (*p == ' ' || *p == '\t') p++;
+    if (strncmp(p, "IRS", 3) != 0) continue;
+    p += 3;
+    while (*p == ' ' || *p == '\t') p++;
+    if (*p == '=') return 1;
+  }
+  return 0;
+}
+
 /* AUTO's load/run argument handling: the base constants from the start (or
  * the runner), then c=, e=, s=, sv=, ap=, then every override, then the
  * start. */
@@ -433,15 +497,27 @@ static int build_setup(cable_session *r, const cable_run_args *a, rp_setup *s, c
       return cable_error_set(err, CABLE_ERR_NOTFOUND, NULL, 0, "IRS",
                              irs_given ? "no such label in the result" : "the result has no labelled solution");
   } else if (!s->start && s->sf && irs_given) {
-    if ((rc = cable_sfile_resolve_irs(s->sf, &s->c, err))) {
+    /* the solution itself: a label repeats in a file of several runs (NEWLAB),
+       so 'UZ2' or -n is not looked up again by the label it resolves to, and
+       the runner's own solution (its last load or run) is kept while IRS is
+       its label */
+    const cable_solution *kept =
+        s->sf_borrowed && !a->c && !irs_in_call(a) && !s->c.irs_name[0] ? cable_sfile_get(s->sf, r->cur_pick) : NULL;
+    char spec[CABLE_NAME_MAX + 16];
+    if (s->c.irs_name[0]) snprintf(spec, sizeof spec, "%s", s->c.irs_name);
+    else snprintf(spec, sizeof spec, "%d", s->c.irs);
+    s->start = kept && kept->lab == s->c.irs ? kept : cable_sfile_find(s->sf, spec, err);
+    if (!s->start) {
       if (err && !err->file[0]) snprintf(err->file, sizeof err->file, "%.500s", s->sfpath);
-      return rc;
+      return err && err->status ? err->status : CABLE_ERR_NOTFOUND;
     }
-    s->start = cable_sfile_find_label(s->sf, s->c.irs);
+    s->c.irs = s->start->lab;   /* as cable_sfile_resolve_irs: the label it picked */
+    s->c.irs_name[0] = '\0';
   } else if (!s->start && irs_given) {
     return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, "IRS",
                            "a restart needs solutions: give a result, a solution, a name or s='NAME'");
   }
+  restart_maxima(r, a, res, s);
   return 0;
 }
 
@@ -627,7 +703,11 @@ static int engine_run(cable_session *r, rp_setup *s, rp_branch **out, cable_erro
     problem_release(r, &prob);
     return st;
   }
-  int ibr = ++r->next_branch;
+  /* AUTO's NEWLAB: a new branch number after a start from STPNT or a switch;
+     for ISW = 2 from a point that is not on a fold curve, the start's label
+     (AUTO's IBR = IRS); a plain restart keeps the start's branch number */
+  int ibr = s->mbr + 1;
+  if (s->start && s->c.isw >= 0) ibr = fold && start == NULL ? s->start->lab : s->start->ibr;
   double t_start = now_seconds();
   collector col = {rp_branch_alloc(ibr, crun, &s->names, s->e), r->opt.diag, 0, isatty(fileno(stderr)),
                    r->opt.interrupt, r->opt.interrupt_ctx, 0};
@@ -642,9 +722,8 @@ static int engine_run(cable_session *r, rp_setup *s, rp_branch **out, cable_erro
     return cable_error_set(err, CABLE_ERR_ALLOC, NULL, 0, NULL, "out of memory");
   }
   cable_sink sink = {&col, collect_point, collect_solution, collect_diag};
-  int next = r->last_label + 1;
-  st = cable_cont_run(cc, &sink, ibr, r->last_label + 1, &next);
-  if (next - 1 > r->last_label) r->last_label = next - 1;
+  int next = s->mlab + 1;
+  st = cable_cont_run(cc, &sink, ibr, s->mlab + 1, &next);
   char why[512], end_note[600];
   snprintf(why, sizeof why, "%s", st < 0 ? cable_cont_error(cc) : "");
   snprintf(end_note, sizeof end_note, "branch %d ended: %s: %s", ibr, cable_status_message(st), why);
@@ -680,6 +759,12 @@ static int engine_run(cable_session *r, rp_setup *s, rp_branch **out, cable_erro
  * runner's solutions.  The save settings are one-off. */
 static void remember(cable_session *r, rp_setup *s)
 {
+  /* the runner's solution in its s-file (labels may repeat in it): run()
+     without a new IRS restarts from this one, as AUTO's selected solution */
+  int pick = -1;
+  for (int i = 0; s->sf && s->start && i < cable_sfile_count(s->sf); i++)
+    if (cable_sfile_get(s->sf, i) == s->start) pick = i;
+  if (s->sf) r->cur_pick = pick;
   r->cur = s->c;
   if (s->start) {
     r->cur.irs = s->start->lab;
@@ -707,57 +792,15 @@ static void remember(cable_session *r, rp_setup *s)
     rp_branch_decref(r->cur_br);
     r->cur_br = b;
     r->cur_isol = s->start_isol;
+    r->cur_mbr = s->mbr;
+    r->cur_mlab = s->mlab;
     cable_sfile_free(r->cur_sf);
     r->cur_sf = NULL;
   } else if (!s->sf && s->start_br) {
     r->cur_isol = s->start_isol;
+    r->cur_mbr = s->mbr;
+    r->cur_mlab = s->mlab;
   }
-}
-
-/* ---- label and branch numbers ------------------------------------------------------- */
-
-static void note_label(cable_session *r, int lab, int ibr)
-{
-  if (lab > r->last_label) r->last_label = lab;
-  if (ibr > r->next_branch) r->next_branch = ibr;
-}
-
-static void note_sfile(cable_session *r, const cable_sfile *sf)
-{
-  for (int i = 0; sf && i < cable_sfile_count(sf); i++) note_label(r, cable_sfile_get(sf, i)->lab, cable_sfile_get(sf, i)->ibr);
-}
-
-/* Labels and branch numbers already in b./s.NAME (when they exist). */
-static int note_files(cable_session *r, const char *name, cable_error *err)
-{
-  char path[1024];
-  rp_path(r, "s", name, path, sizeof path);
-  if (file_exists(path)) {
-    cable_sfile *sf = cable_sfile_read(path, err);
-    if (!sf) return err && err->status ? err->status : CABLE_ERR_IO;
-    note_sfile(r, sf);
-    cable_sfile_free(sf);
-  }
-  rp_path(r, "b", name, path, sizeof path);
-  if (file_exists(path)) {
-    cable_bfile *bf = cable_bfile_read(path, err);
-    if (!bf) return err && err->status ? err->status : CABLE_ERR_IO;
-    for (int k = 0; k < bf->nbranch; k++)
-      for (int i = 0; i < bf->branch[k].nrow; i++) note_label(r, bf->branch[k].lab[i], bf->branch[k].br[i]);
-    cable_bfile_free(bf);
-  }
-  return 0;
-}
-
-/* AUTO's NEWLAB: the new labels follow the largest label of the solutions
- * file the run restarts from, and a new branch number follows its largest
- * branch number.  cable also continues after the labels of the files an
- * ap= run appends to (AUTO can repeat a label there), and after every label
- * of the session, so that no s-file receives a label twice. */
-static int continue_numbering(cable_session *r, const rp_setup *s, cable_error *err)
-{
-  note_sfile(r, s->sf);
-  return s->ap[0] ? note_files(r, s->ap, err) : 0;
 }
 
 int cable_session_run(cable_session *r, const cable_run_args *a, cable_branch **out, cable_error *err)
@@ -766,7 +809,6 @@ int cable_session_run(cable_session *r, const cable_run_args *a, cable_branch **
   rp_branch *b = NULL;
   *out = NULL;
   int rc = build_setup(r, a, &s, err);
-  if (!rc) rc = continue_numbering(r, &s, err);
   if (!rc) rc = engine_run(r, &s, &b, err);
   if (!rc) remember(r, &s);
   rp_result res = {1, &b};
@@ -809,15 +851,6 @@ int cable_session_save(cable_session *r, cable_branch *const *branches, int n, i
   return rc;
 }
 
-/* Branch numbers and labels of files read in: new runs continue after them. */
-static void note_result(cable_session *r, const rp_result *res)
-{
-  for (int k = 0; k < res->nbr; k++) {
-    note_label(r, 0, res->br[k]->ibr);
-    for (int i = 0; i < res->br[k]->nsol; i++) note_label(r, res->br[k]->sol[i]->lab, 0);
-  }
-}
-
 static int read_named(cable_session *r, const char *name, rp_result **res, cable_error *err)
 {
   rp_setup s;
@@ -829,7 +862,6 @@ static int read_named(cable_session *r, const char *name, rp_result **res, cable
   int rc = name_arg("loadbd", name, nm, sizeof nm, err);
   if (!rc) rc = read_constants_file(r, nm, &s, 0, err);
   if (!rc) rc = rp_result_read(r, nm, &s.c, &s.names, s.e, res, err);
-  if (!rc) note_result(r, *res);
   return rc;
 }
 
@@ -867,10 +899,17 @@ int cable_session_load(cable_session *r, const cable_run_args *a, cable_branch *
   int rc = build_setup(r, a, &s, err);
   /* AUTO's load('name') / load(s='name') without IRS: the file's last solution */
   int n = s.sf ? cable_sfile_count(s.sf) : 0;
-  if (!rc && !s.start && n > 0 && s.c.irs == 0 && !s.c.irs_name[0]) s.start = cable_sfile_get(s.sf, n - 1);
+  if (!rc && !s.start && n > 0 && s.c.irs == 0 && !s.c.irs_name[0]) {
+    s.start = cable_sfile_get(s.sf, n - 1);
+    restart_maxima(r, a, NULL, &s);
+  }
   /* no solution (a run from STPNT): AUTO's ld(e=..., c=...) sets the runner's constants only */
   if (!rc && s.start) {
     rp_branch *b = rp_branch_alloc(s.start->ibr, &s.c, &s.names, s.e);
+    if (b) {
+      b->src_mbr = s.mbr;   /* a run from it numbers on after its restart data, as AUTO's */
+      b->src_mlab = s.mlab;
+    }
     cable_point pt;
     memset(&pt, 0, sizeof pt);
     pt.ibr = s.start->ibr;
@@ -954,6 +993,7 @@ cable_session *cable_session_alloc(const cable_session_options *opt)
   if (opt) r->opt = *opt;
   cable_constants_init(&r->cur);
   cable_names_init(&r->cur_names);
+  r->cur_pick = -1;
   return r;
 }
 

@@ -7,7 +7,10 @@
  * "  BR    PT  IT ...", the point's line, an optional " NOTE: text" line,
  * and for a labelled point AUTO's screen heading "  BR    PT  TY  LAB ..."
  * and the screen line "%4d%6d %3s%5d ..." (label in columns 15-19).  The
- * note of the last point line before a screen line belongs to its label. */
+ * note of the last point line before a screen line belongs to its label.
+ * Every labelled point is kept, in file order, with or without a note: a
+ * label can appear more than once (runs appended with AUTO's numbering), and
+ * its n-th screen line belongs to its n-th solution in the s-file. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -77,7 +80,7 @@ int rp_dnotes_read(const char *path, rp_dnotes *d)
       if (strlen(line) >= 19) memcpy(field, line + 14, 5);
       char *end;
       long lab = strtol(field, &end, 10);
-      if (end != field && lab > 0 && note[0]) rc = dnotes_add(d, (int)lab, note, &cap);
+      if (end != field && lab > 0) rc = dnotes_add(d, (int)lab, note, &cap);
     }
   }
   fclose(f);
@@ -85,10 +88,10 @@ int rp_dnotes_read(const char *path, rp_dnotes *d)
   return rc;
 }
 
-const char *rp_dnotes_find(const rp_dnotes *d, int lab)
+const char *rp_dnotes_find(const rp_dnotes *d, int lab, int nth)
 {
   for (int i = 0; d && i < d->n; i++)
-    if (d->lab[i] == lab) return d->note[i];
+    if (d->lab[i] == lab && nth-- == 0) return d->note[i][0] ? d->note[i] : NULL;
   return NULL;
 }
 

@@ -36,6 +36,10 @@ typedef struct cable_branch {
      which a restart from the branch takes, as AUTO's run(r2) does */
   int has_c_user;
   cable_constants c_user;
+  /* a branch made by load from restart data (a file, a result): that data's
+     largest branch number and label (AUTO's _mbr, _mlab), which a run from
+     its solution continues after; 0 for a computed branch */
+  int src_mbr, src_mlab;
 } rp_branch;
 
 /* A result: branches in order. */
@@ -64,9 +68,10 @@ struct cable_session {
      run(sol) or run(result) (a reference); neither: STPNT */
   cable_sfile *cur_sf;
   char cur_sfpath[1024];
+  int cur_pick;   /* the index in cur_sf of the solution the last load or run started from, -1: none */
   rp_branch *cur_br;
   int cur_isol;
-  int next_branch, last_label;
+  int cur_mbr, cur_mlab;   /* cur_br's solution: its bundle's largest branch number and label */
   int nplugins;
   char plugin_name[RP_MAX_PLUGINS][CABLE_NAME_MAX];
   cable_plugin *plugin[RP_MAX_PLUGINS];
@@ -99,7 +104,8 @@ void rp_path(const cable_session *r, const char *type, const char *name, char *b
 int rp_result_write(const cable_session *r, const rp_result *res, const char *name, int append,
                     cable_error *err);
 /* A result from s.NAME (and b.NAME when present, for the norms of the
- * labelled rows): one branch per branch number, labelled points only.
+ * labelled rows): one branch per run (b.NAME's sections, split at its header
+ * lines as AUTO's parseB does), labelled points only.
  * c/names: the constants the branches get. */
 int rp_result_read(const cable_session *r, const char *name, const cable_constants *c,
                    const cable_names *names, const char *e, rp_result **out, cable_error *err);
@@ -117,8 +123,8 @@ typedef struct rp_dnotes {
 /* Reads path (a missing file gives no notes); 0 or CABLE_ERR_ALLOC. */
 int rp_dnotes_read(const char *path, rp_dnotes *d);
 void rp_dnotes_free(rp_dnotes *d);
-/* The note of label lab, NULL: none. */
-const char *rp_dnotes_find(const rp_dnotes *d, int lab);
+/* The note of the nth (0, 1, ...) labelled point with label lab, NULL: none. */
+const char *rp_dnotes_find(const rp_dnotes *d, int lab, int nth);
 /* A BP's kind (enum cable_bp_kind) from its d-file note; CABLE_BP_UNKNOWN
  * when itp is no BP. */
 int rp_bp_kind_from_note(int itp, const char *note);

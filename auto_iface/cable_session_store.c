@@ -215,6 +215,44 @@ static double l2norm_estimate(const cable_solution *s)
   return sqrt(sum);
 }
 
+/* The run each solution of sf belongs to, run[i], and its b-file row's
+ * norm, l2[i] (NAN: none).  AUTO's parseB splits a b-file into branches at
+ * its header lines (a run's start), and its bifDiag gives the labelled rows
+ * of each branch the s-file's solutions in order; so do these, when the
+ * b-file's labelled rows are the s-file's labels in order.  Without such a
+ * b-file a run starts where the branch number changes or the point number
+ * does not increase (every run starts at PT 1).  Branch numbers alone do not
+ * split runs: AUTO numbers two runs from STPNT both branch 1. */
+static void assign_runs(const cable_sfile *sf, const cable_bfile *bf, int *run, double *l2)
+{
+  int n = cable_sfile_count(sf), i = 0, ok = bf != NULL;
+  for (int j = 0; ok && j < bf->nbranch; j++) {
+    const cable_bfile_branch *bb = &bf->branch[j];
+    const double *col = cable_bfile_column(bb, "L2-NORM");
+    for (int q = 0; ok && q < bb->nrow; q++) {
+      if (bb->lab[q] == 0) continue;
+      if (i >= n || cable_sfile_get(sf, i)->lab != bb->lab[q]) ok = 0;
+      else {
+        run[i] = j;
+        l2[i++] = col ? col[q] : (double)NAN;
+      }
+    }
+  }
+  if (ok && i == n) return;
+  for (i = 0; i < n; i++) {
+    const cable_solution *s = cable_sfile_get(sf, i), *p = i > 0 ? cable_sfile_get(sf, i - 1) : NULL;
+    run[i] = !p ? 0 : run[i - 1] + (s->ibr != p->ibr || abs(s->ntot) <= abs(p->ntot));
+    l2[i] = (double)NAN;
+    /* a b-file that does not pair with the s-file row by row: the norm of a row with the label */
+    for (int j = 0; bf && j < bf->nbranch; j++) {
+      const cable_bfile_branch *bb = &bf->branch[j];
+      const double *col = cable_bfile_column(bb, "L2-NORM");
+      for (int q = 0; col && q < bb->nrow && isnan(l2[i]); q++)
+        if (bb->lab[q] == s->lab && bb->br[q] == s->ibr) l2[i] = col[q];
+    }
+  }
+}
+
 int rp_result_read(const cable_session *r, const char *name, const cable_constants *c,
                    const cable_names *names, const char *e, rp_result **out, cable_error *err)
 {
@@ -225,20 +263,24 @@ int rp_result_read(const cable_session *r, const char *name, const cable_constan
   if (!sf) return err && err->status ? err->status : CABLE_ERR_IO;
   rp_path(r, "b", name, path, sizeof path);
   cable_error berr;
-  cable_bfile *bf = cable_bfile_read(path, &berr);   /* optional: only for the norms */
+  cable_bfile *bf = cable_bfile_read(path, &berr);   /* optional: runs and norms */
   /* the engine's notes (d.NAME) give the labelled points their notes and the BPs their kinds */
   rp_dnotes dn;
   rp_path(r, "d", name, path, sizeof path);
   int rc = rp_dnotes_read(path, &dn);
   int n = cable_sfile_count(sf), nbr = 0;
-  for (int i = 0; i < n; i++)
-    if (i == 0 || cable_sfile_get(sf, i)->ibr != cable_sfile_get(sf, i - 1)->ibr) nbr++;
-  rp_result *res = rp_result_alloc(nbr);
+  int *run = malloc((size_t)(n > 0 ? n : 1) * sizeof *run);
+  double *l2 = malloc((size_t)(n > 0 ? n : 1) * sizeof *l2);
+  if (!run || !l2) rc = CABLE_ERR_ALLOC;
+  if (!rc) assign_runs(sf, bf, run, l2);
+  for (int i = 0; i < n && !rc; i++)
+    if (i == 0 || run[i] != run[i - 1]) nbr++;
+  rp_result *res = rc ? NULL : rp_result_alloc(nbr);
   if (!res) rc = CABLE_ERR_ALLOC;
   int k = -1;
   for (int i = 0; i < n && !rc; i++) {
     const cable_solution *s = cable_sfile_get(sf, i);
-    if (i == 0 || s->ibr != cable_sfile_get(sf, i - 1)->ibr) {
+    if (i == 0 || run[i] != run[i - 1]) {
       res->br[++k] = rp_branch_alloc(s->ibr, c, names, e);
       if (!res->br[k]) {
         rc = CABLE_ERR_ALLOC;
@@ -263,21 +305,20 @@ int rp_result_read(const cable_session *r, const char *name, const cable_constan
     pt.icp = c->nicp > 0 ? c->icp : s->icp;
     pt.nicp = c->nicp > 0 ? c->nicp : s->nfpr;
     pt.par = s->par;
-    pt.l2norm = l2norm_estimate(s);
+    /* the b-file's row, when there is one, has the exact norm */
+    pt.l2norm = isnan(l2[i]) ? l2norm_estimate(s) : l2[i];
     pt.umax = umax;
     pt.err_est = s->err_est;
-    /* the b-file's row of this label, when there is one, has the exact norm */
-    for (int j = 0; bf && j < bf->nbranch; j++) {
-      const cable_bfile_branch *bb = &bf->branch[j];
-      const double *l2 = cable_bfile_column(bb, "L2-NORM");
-      for (int q = 0; l2 && q < bb->nrow; q++)
-        if (bb->lab[q] == s->lab) pt.l2norm = l2[q];
-    }
     pt.measure = cable_solution_measure(s, c->iplt, pt.l2norm);
-    pt.note = rp_dnotes_find(&dn, s->lab);
+    /* the d-file's screen lines are in the s-file's order: a repeated label's nth one is its nth solution */
+    int nth = 0;
+    for (int q = 0; q < i; q++) nth += cable_sfile_get(sf, q)->lab == s->lab;
+    pt.note = rp_dnotes_find(&dn, s->lab, nth);
     rc = rp_branch_add(res->br[k], &pt, s);
     if (!rc && dn.found) res->br[k]->sol[res->br[k]->nsol - 1]->bp_kind = rp_bp_kind_from_note(s->itp, pt.note);
   }
+  free(run);
+  free(l2);
   rp_dnotes_free(&dn);
   cable_bfile_free(bf);
   cable_sfile_free(sf);

@@ -71,18 +71,22 @@ static void inputs_free(run_inputs *in)
   Py_XDECREF(in->over_fast);
 }
 
-/* (start, sol, name, e, c, s, sv, ap, over): start a Branch with sol >= 0 (a
- * solution), a list of branches (a result), or None; name, e, c, s, sv, ap
- * str or None; over a list of "KEY=VALUE" statements. */
+/* (start, sol, mbr, mlab, name, e, c, s, sv, ap, over): start a Branch with
+ * sol >= 0 (a solution, mbr and mlab the largest branch number and label of
+ * the result it was taken from), a list of branches (a result), or None;
+ * name, e, c, s, sv, ap str or None; over a list of "KEY=VALUE" statements. */
 static int inputs_parse(PyObject *args, run_inputs *in)
 {
   memset(in, 0, sizeof *in);
   PyObject *start, *name, *e, *c, *s, *sv, *ap, *over;
-  int sol;
-  if (!PyArg_ParseTuple(args, "OiOOOOOOO", &start, &sol, &name, &e, &c, &s, &sv, &ap, &over)) return -1;
+  int sol, mbr, mlab;
+  if (!PyArg_ParseTuple(args, "OiiiOOOOOOO", &start, &sol, &mbr, &mlab, &name, &e, &c, &s, &sv, &ap, &over))
+    return -1;
   if (PyObject_TypeCheck(start, &pyc_branch_type) && sol >= 0) {
     in->a.sol_branch = ((pyc_branch *)start)->b;
     in->a.sol_index = sol;
+    in->a.sol_mbr = mbr;
+    in->a.sol_mlab = mlab;
   } else if (start != Py_None) {
     if (pyc_branches_from(start, &in->branches, &in->a.nbranch) < 0) return -1;
     in->a.branches = in->branches;
@@ -105,7 +109,7 @@ static int inputs_parse(PyObject *args, run_inputs *in)
   return 0;
 }
 
-/* run(start, sol, name, e, c, s, sv, ap, over) -> Branch */
+/* run(start, sol, mbr, mlab, name, e, c, s, sv, ap, over) -> Branch */
 static PyObject *session_run(PyObject *obj, PyObject *args)
 {
   pyc_session *self = (pyc_session *)obj;
@@ -127,7 +131,7 @@ static PyObject *session_run(PyObject *obj, PyObject *args)
   return rc ? pyc_raise(rc, &err) : pyc_branch_wrap(b);
 }
 
-/* load(start, sol, name, e, c, s, sv, ap, over) -> Branch with one solution */
+/* load(start, sol, mbr, mlab, name, e, c, s, sv, ap, over) -> Branch with one solution */
 static PyObject *session_load(PyObject *obj, PyObject *args)
 {
   pyc_session *self = (pyc_session *)obj;

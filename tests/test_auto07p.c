@@ -4,8 +4,14 @@
  * two b-files are compared label by label.
  *
  * What must agree:
- *  - the labelled points: the same labels with the same types, in order;
- *  - the first point (the start) exactly;
+ *  - the runs: the same number of b-file sections (a script with several
+ *    runs, sv and ap writes one per run);
+ *  - the labelled points: the same labels with the same types and branch
+ *    numbers, in order (AUTO's NEWLAB numbering: the folder numbering runs
+ *    from STPNT twice, switches twice from one branch, restarts plainly, and
+ *    restarts from a constants file's IRS that counts on it);
+ *  - the first point (the start) exactly, and the first row of every later
+ *    run (its restart point) to PAR_TOL;
  *  - the principal parameter PAR(1) of every LP, BP and UZ to 1e-6 relative:
  *    AUTO stops its location secant early (measured: its UZ at lambda = 1 is
  *    at 1.0000001859, its BP at (2 pi)^2 is off by 1e-7 relative), while
@@ -38,7 +44,7 @@
 
 typedef struct {
   const char *folder, *script, *name;
-  const char *files[5];
+  const char *files[6];
 } case_t;
 
 static const case_t cases[] = {
@@ -49,6 +55,7 @@ static const case_t cases[] = {
   {"bratuint_c", "bratuint.auto", "bratuint", {"bratuint.c", "c.bratuint", "bratuint.auto", NULL}},
   {"bratu_iplt", "bratu.auto", "bratu", {"bratu.f90", "c.bratu", "bratu.auto", NULL}},
   {"bratu_dat", "dat.auto", "bratudat", {"bratu.f90", "bratu.dat", "c.bratudat", "dat.auto"}},
+  {"numbering", "numbering.auto", "numbering", {"elastica.f", "c.elastica", "c.numb6", "numbering.auto", NULL}},
 };
 
 static char cable_bin[3 * PATH_MAX], root[PATH_MAX];
@@ -70,22 +77,28 @@ static int stage(const case_t *c, const char *who, char *dir, size_t len)
 
 static int special(int ty) { return ty == 5 || ty == 6 || ty == -4; }
 
-static void compare(const case_t *c, const cable_bfile_branch *a, const cable_bfile_branch *b)
+/* Section sec (one run) of AUTO's b-file (a) and cable's (b). */
+static void compare(const case_t *c, int sec, const cable_bfile_branch *a, const cable_bfile_branch *b)
 {
   char what[256];
   int na = 0, nb = 0;
   for (int i = 0; i < a->nrow; i++) na += a->lab[i] > 0;
   for (int i = 0; i < b->nrow; i++) nb += b->lab[i] > 0;
-  snprintf(what, sizeof what, "%s: the same number of labelled points", c->folder);
+  snprintf(what, sizeof what, "%s: run %d: the same number of labelled points", c->folder, sec + 1);
   test_int(what, nb, na);
   int ia = 0, ib = 0, k = 0;
   const double *pa = cable_bfile_column(a, "PAR(1)"), *pb = cable_bfile_column(b, "PAR(1)");
+  if (sec > 0 && pa && pb && a->nrow > 0 && b->nrow > 0) {
+    snprintf(what, sizeof what, "%s: run %d: its restart point, PAR(1)", c->folder, sec + 1);
+    test_rel(what, pb[0], pa[0], PAR_TOL);
+  }
   while (pa && pb && ia < a->nrow && ib < b->nrow) {
     if (a->lab[ia] <= 0) { ia++; continue; }
     if (b->lab[ib] <= 0) { ib++; continue; }
-    snprintf(what, sizeof what, "%s: label %d: AUTO's type %d, cable's %d", c->folder, a->lab[ia], a->ty[ia], b->ty[ib]);
-    test_true(what, a->lab[ia] == b->lab[ib] && a->ty[ia] == b->ty[ib]);
-    if (k == 0) {
+    snprintf(what, sizeof what, "%s: run %d: label %d, branch %d, type %d: cable's label %d, branch %d, type %d",
+             c->folder, sec + 1, a->lab[ia], a->br[ia], a->ty[ia], b->lab[ib], b->br[ib], b->ty[ib]);
+    test_true(what, a->lab[ia] == b->lab[ib] && a->br[ia] == b->br[ib] && a->ty[ia] == b->ty[ib]);
+    if (k == 0 && sec == 0) {
       snprintf(what, sizeof what, "%s: the start, PAR(1)", c->folder);
       test_abs(what, pb[ib], pa[ia], 0.0);
     }
@@ -128,8 +141,10 @@ static void run_case(const case_t *c)
   snprintf(bc, sizeof bc, "%s/b.%s", dc, c->name);
   cable_error err;
   cable_bfile *a = cable_bfile_read(ba, &err), *b = cable_bfile_read(bc, &err);
-  snprintf(what, sizeof what, "%s: both b-files read", c->folder);
-  if (test_true(what, a && b && a->nbranch == 1 && b->nbranch == 1)) compare(c, &a->branch[0], &b->branch[0]);
+  snprintf(what, sizeof what, "%s: both b-files read, with the same number of runs (AUTO %d, cable %d)", c->folder,
+           a ? a->nbranch : -1, b ? b->nbranch : -1);
+  if (test_true(what, a && b && a->nbranch == b->nbranch && a->nbranch > 0))
+    for (int k = 0; k < a->nbranch; k++) compare(c, k, &a->branch[k], &b->branch[k]);
   /* bratuint: the fold's u'(0) is 4 exactly (s tanh s = 1): cable's is the
      closer one, deliberately (its fold is located to 1e-8, AUTO's less) */
   if (a && b && strcmp(c->name, "bratuint") == 0) {

@@ -272,28 +272,53 @@ static void test_bad_input(void)
   remove(wpath("s.trunc"));
 }
 
+/* AUTO's NEWLAB through the command line: a plain restart from s.lab (ISW=1)
+ * keeps its branch number and numbers its labels after the file's largest;
+ * a run from STPNT appended to the same files is branch 1 with labels from 1
+ * again (AUTO's ap appends as it is, a label then repeats in the s-file);
+ * IRS picks the first solution with the label, as AUTO's FINDLB does. */
 static void test_append_labels(void)
 {
   char out[8192];
   int rc = cli(out, sizeof out, "run c=good sv=lab");
   test_int("labels: first run exit 0", rc, 0);
-  rc = cli(out, sizeof out, "run c=good s=lab IRS=2 ap=lab");
-  test_int("labels: restart from s.lab appended to it: exit 0", rc, 0);
   cable_error err;
   cable_sfile *sf = cable_sfile_read(wpath("s.lab"), &err);
-  int n = sf ? cable_sfile_count(sf) : 0, uniq = sf != NULL, maxold = 0, newlab = 0, newbr = 0;
-  for (int i = 0; i < n; i++) {
-    const cable_solution *a = cable_sfile_get(sf, i);
-    for (int j = i + 1; j < n; j++) uniq &= a->lab != cable_sfile_get(sf, j)->lab;
-    if (a->ibr == 1 && a->lab > maxold) maxold = a->lab;
-    if (a->ibr != 1) newlab = a->lab, newbr = a->ibr;
-  }
-  test_true("labels: s.lab has no label twice", uniq && n >= 3);
-  test_int("labels: the appended run's label is the file's largest + 1", newlab, maxold + 1);
-  test_int("labels: the appended run is branch 2", newbr, 2);
+  int nold = sf ? cable_sfile_count(sf) : 0, maxold = 0;
+  for (int i = 0; i < nold; i++)
+    if (cable_sfile_get(sf, i)->lab > maxold) maxold = cable_sfile_get(sf, i)->lab;
+  cable_sfile_free(sf);
+  rc = cli(out, sizeof out, "run c=good s=lab IRS=2 ap=lab");
+  test_int("labels: restart from s.lab appended to it: exit 0", rc, 0);
+  sf = cable_sfile_read(wpath("s.lab"), &err);
+  int n = sf ? cable_sfile_count(sf) : 0, uniq = sf != NULL;
+  for (int i = 0; i < n; i++)
+    for (int j = i + 1; j < n; j++) uniq &= cable_sfile_get(sf, i)->lab != cable_sfile_get(sf, j)->lab;
+  test_true("labels: s.lab has no label twice (the restart numbers on after its restart data)", uniq && n > nold && nold >= 2);
+  const cable_solution *first_new = sf && n > nold ? cable_sfile_get(sf, nold) : NULL;
+  test_int("labels: the appended run's first label is the file's largest + 1", first_new ? first_new->lab : 0, maxold + 1);
+  int allbr1 = sf != NULL;
+  for (int i = 0; i < n; i++) allbr1 &= cable_sfile_get(sf, i)->ibr == 1;
+  test_true("labels: the plain restart keeps branch 1 (AUTO's NEWLAB)", allbr1);
   cable_sfile_free(sf);
   cable_bfile *bf = cable_bfile_read(wpath("b.lab"), &err);
-  test_true("labels: b.lab's second section is branch 2", bf && bf->nbranch == 2 && bf->branch[1].br[0] == 2);
+  test_true("labels: b.lab has two sections (two runs), both branch 1",
+            bf && bf->nbranch == 2 && bf->branch[0].br[0] == 1 && bf->branch[1].br[0] == 1);
+  cable_bfile_free(bf);
+  /* a second run from STPNT appended: branch 1, labels 1, 2, ... again */
+  rc = cli(out, sizeof out, "run c=good ap=lab");
+  test_int("labels: a run from STPNT appended: exit 0", rc, 0);
+  sf = cable_sfile_read(wpath("s.lab"), &err);
+  int m = sf ? cable_sfile_count(sf) : 0;
+  const cable_solution *third = sf && m > n ? cable_sfile_get(sf, n) : NULL;
+  test_true("labels: the run from STPNT starts again at label 1 on branch 1 (label 1 now twice in s.lab)",
+            third && third->lab == 1 && third->ibr == 1 && cable_sfile_get(sf, 0)->lab == 1);
+  test_true("labels: IRS=1 finds the first solution with label 1 (AUTO's FINDLB)",
+            sf && cable_sfile_find_label(sf, 1) == cable_sfile_get(sf, 0));
+  cable_sfile_free(sf);
+  bf = cable_bfile_read(wpath("b.lab"), &err);
+  test_true("labels: b.lab has three sections, all branch 1",
+            bf && bf->nbranch == 3 && bf->branch[2].br[0] == 1 && bf->branch[2].lab[0] == 1);
   cable_bfile_free(bf);
   remove_outputs("lab");
 }

@@ -81,7 +81,16 @@ CABLE_API void cable_session_free(cable_session *s);
  * the keywords that take names (NULL: not given).  over[0..nover-1] are
  * constants-file statements ("NTST=50", "IRS='BP1'", "DS='-'",
  * "UZR={'T': -2.1}") applied in order after the constants file, each as
- * cable_constants_parse_override reads it (an error names its key). */
+ * cable_constants_parse_override reads it (an error names its key).
+ *
+ * Numbering (AUTO-07p's NEWLAB): MBR and MLAB are the largest branch number
+ * and label of the restart data: the s-file the start is read from, the
+ * result given, or for a solution the bundle it was taken from
+ * (sol_mbr, sol_mlab, AUTO's _mbr and _mlab; 0: the solution's own
+ * branch); 0 for a start from STPNT.  The run is branch MBR + 1 when it
+ * starts from STPNT or switches (ISW < 0), the start's label for ISW = 2
+ * from a point that is not on a fold curve, else the start's own branch
+ * number; its labels are MLAB + 1, MLAB + 2, ... */
 typedef struct cable_run_args {
   const cable_branch *sol_branch;
   int sol_index;
@@ -92,6 +101,7 @@ typedef struct cable_run_args {
   int nover;
   const char *const *over;
   const char *over_file;   /* the file name errors in over[] report ("<command line>"); NULL: none */
+  int sol_mbr, sol_mlab;   /* a solution start: its bundle's largest branch number and label (0: none) */
 } cable_run_args;
 
 /* One continuation run; *out: the new branch (also when it ended abnormally,

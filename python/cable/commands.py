@@ -1,8 +1,10 @@
 """AUTO-07p's script commands on cable's engine (doc/scripts.md).
 
 A Runner is AUTO's runner: it remembers the constants and problem of the last
-run, and numbers new labels and branches after every label it has used or
-read.  Its commands are AUTO's, with AUTO's short aliases:
+run, and numbers a run's branch and labels as AUTO's NEWLAB does, after the
+largest branch number and label of the run's restart data (the result or file
+its start comes from; branch 1 and labels from 1 for a start from STPNT).
+Its commands are AUTO's, with AUTO's short aliases:
 
   run/r/rn, load/ld, save/sv, loadbd/bd, merge/mb, relabel/rl, clean/cl,
   delete/dl, copy/cp, append/ap, cd, auto, wait, pr/printconstant/pc,
@@ -72,23 +74,24 @@ def _command(name):
 
 
 def _start(data):
-    """(start, sol, name) for the session from run()'s first argument."""
+    """(start, sol, mbr, mlab, name) for the session from run()'s first
+    argument; mbr, mlab: a solution's bundle maxima (AUTO's _mbr, _mlab)."""
     if data is None:
-        return None, -1, None
+        return None, -1, 0, 0, None
     if isinstance(data, Solution):
         br, i = data.branch
-        return br, i, None
+        return br, i, data._mbr, data._mlab, None
     if isinstance(data, Result):
         if len(data) == 0:
             raise CableError('the result is empty')
-        return data.branches, -1, None
+        return data.branches, -1, 0, 0, None
     if isinstance(data, str):
-        return None, -1, data
+        return None, -1, 0, 0, data
     raise CableError('the start must be a solution, a result or a name, got a %s' % type(data).__name__)
 
 
 def _args(data, kw):
-    start, sol, name = _start(data)
+    start, sol, mbr, mlab, name = _start(data)
     names = {}
     over = []
     for k, v in kw.items():
@@ -98,8 +101,8 @@ def _args(data, kw):
             names[k] = v
         else:
             over.append(constant_text(k, v))
-    return (start, sol, name, names.get('e'), names.get('c'), names.get('s'), names.get('sv'), names.get('ap'),
-            over)
+    return (start, sol, mbr, mlab, name, names.get('e'), names.get('c'), names.get('s'), names.get('sv'),
+            names.get('ap'), over)
 
 
 def _branches(x, what):

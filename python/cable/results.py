@@ -74,13 +74,17 @@ class Parameters:
 class Solution:
     """One labelled solution of a branch (AUTO's parseS.AUTOSolution)."""
 
-    __slots__ = ('_br', '_i', '_lab', '_ty', '_ibr', '_pt', '_par', '_note', '_kind', '_data')
+    __slots__ = ('_br', '_i', '_lab', '_ty', '_ibr', '_pt', '_par', '_note', '_kind', '_data', '_mbr', '_mlab')
 
-    def __init__(self, branch, index, info):
+    def __init__(self, branch, index, info, mbr=0, mlab=0):
         self._br = branch
         self._i = index
         self._lab, self._ty, self._ibr, self._pt, self._par, self._note, self._kind = info
         self._data = None
+        # AUTO's _mbr, _mlab: the largest branch number and label of the
+        # result this solution was taken from; a run from it numbers on after
+        # them (AUTO's NEWLAB), as AUTO's r1('UZ2') does
+        self._mbr, self._mlab = mbr, mlab
 
     @property
     def kind(self):
@@ -216,8 +220,11 @@ class SolutionList(list):
 
 def _solutions(branches):
     out = SolutionList()
-    for b in branches:
-        out.extend(Solution(b, i, info) for i, info in enumerate(b.labels()))
+    labels = [b.labels() for b in branches]
+    mbr = max((b.ibr for b in branches), default=0)
+    mlab = max((info[0] for ls in labels for info in ls), default=0)
+    for b, ls in zip(branches, labels):
+        out.extend(Solution(b, i, info, mbr, mlab) for i, info in enumerate(ls))
     return out
 
 

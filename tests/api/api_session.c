@@ -118,6 +118,35 @@ int main(void)
   st = cable_session_constants(s, &c, NULL, NULL, &err);
   api_check("  then: IRS = 2, NMX = 3, s cleared (outputs not wanted may be NULL)",
             st == 0 && c->irs == 2 && c->irs_name[0] == '\0' && c->nmx == 3 && c->s[0] == '\0');
+  /* AUTO's NEWLAB through the library: the restart from s.one (labels 1, 2) keeps branch 1 and
+     labels after s.one's largest; a run from a solution given with its bundle's maxima
+     (sol_mbr, sol_mlab: AUTO's _mbr, _mlab) numbers after those */
+  const cable_solution *l3 = b2 ? cable_branch_solution(b2, 0) : NULL;
+  api_check("  the restart is branch 1, its first label 3", l3 && l3->ibr == 1 && l3->lab == 3 &&
+            cable_branch_number(b2) == 1);
+  const char *over4[] = {"NMX=2"};
+  memset(&a, 0, sizeof a);
+  a.sol_branch = b;
+  a.sol_index = 0;
+  a.sol_mbr = 4;
+  a.sol_mlab = 7;
+  a.nover = 1;
+  a.over = over4;
+  cable_branch *b3 = NULL;
+  st = cable_session_run(s, &a, &b3, &err);
+  const cable_solution *l8 = st == 0 && b3 ? cable_branch_solution(b3, 0) : NULL;
+  api_check("run(label 1 of the first run, from a bundle with labels up to 7): branch 1, first label 8",
+            l8 && l8->ibr == 1 && l8->lab == 8);
+  cable_branch_decref(b3);
+  const char *over5[] = {"NMX=2", "IRS=0"};
+  memset(&a, 0, sizeof a);
+  a.sol_index = -1;
+  a.nover = 2;
+  a.over = over5;
+  st = cable_session_run(s, &a, &b3, &err);
+  l3 = st == 0 && b3 ? cable_branch_solution(b3, 0) : NULL;
+  api_check("run(IRS=0) from STPNT: branch 1, label 1", l3 && l3->ibr == 1 && l3->lab == 1);
+  cable_branch_decref(b3);
   cable_branch_decref(b2);
   cable_branch_decref(b);
 

@@ -147,8 +147,14 @@ def test_old_style_commands(work):
             ns['ap']('el')
     back = cable.Runner().loadbd('el')
     assert len(back) == 3 and len(back[0]()) == len(r1())
-    labels = [x['LAB'] for x in back()]
-    assert len(labels) == len(set(labels))
+    # AUTO's NEWLAB, measured with auto-07p 0.9.2 on this script and
+    # tests/data/autoeq/elastica_f: the runner's solutions are s.el as ld read
+    # it (labels 1-4 on branch 1), so both switched runs are branch 2 and
+    # their end points both label 5; read back, they are still two runs
+    assert [(x['BR'], x['LAB'], x['TY']) for x in back()] == [
+        (1, 1, 'EP'), (1, 2, 'BP'), (1, 3, 'BP'), (1, 4, 'EP'), (2, 5, 'EP'), (2, 5, 'EP')]
+    # (AUTO's two end points: lambda = 10.0512 and 39.6706, after 10 steps from pi^2 and 4 pi^2)
+    assert math.pi ** 2 < back[1]()[0]['PAR(1)'] < 4 * math.pi ** 2 < back[2]()[0]['PAR(1)']
     with pytest.raises(cable.CableError) as e:
         cable.Runner().namespace()['sv']('x')
     assert "no run yet" in str(e.value)

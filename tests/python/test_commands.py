@@ -62,8 +62,9 @@ def test_restart_sum_and_numbering(bratu):
     fine = bratu.run(r('LP1'), NTST=40, NMX=10)
     both = r + fine
     assert len(both) == 2 and len(both()) == len(r()) + len(fine())
-    # AUTO's NEWLAB: the restart's labels and branch number follow the session's
-    assert fine()[0]['LAB'] == 9 and fine()[0]['BR'] == 2
+    # AUTO's NEWLAB: a plain restart (ISW=1) keeps its start's branch number;
+    # its labels follow the largest label of r, the result the start was taken from
+    assert [s['BR'] for s in r()] == [1] * 8 and fine()[0]['LAB'] == 9 and fine()[0]['BR'] == 1
     # the restart starts at the fold (its first point; the start is not labelled again)
     assert fine['lambda'][0] == pytest.approx(LAMBDA_FOLD, abs=1e-8) and fine['PT'][0] == 1
     # run(result, IRS=...) restarts from the label; without IRS from the last one
@@ -72,6 +73,69 @@ def test_restart_sum_and_numbering(bratu):
     # the runner keeps the last run's constants (NTST=40 from the restart)
     s = bratu.load(r('LP1'))
     assert s['LAB'] == 3
+
+
+def test_newlab_numbering(bratu):
+    """AUTO-07p's NEWLAB (doc/auto-users.md, "Branch numbers"; each rule
+    measured with auto-07p 0.9.2, tests/data/autoeq/numbering): a run's branch
+    number and labels follow the largest branch number MBR and label MLAB of
+    its restart data, the result or file its start comes from; none for a
+    start from STPNT."""
+    # two runs from STPNT (AUTO's demo nag): both branch 1, labels from 1
+    up = bratu.run(e='bratu', c='bratu', NMX=5, sv='two')
+    down = bratu.run(e='bratu', c='bratu', NMX=3, DS='-', ap='two')
+    assert [(s.BR, s.LAB) for s in up()] == [(1, 1), (1, 2)]
+    assert [(s.BR, s.LAB) for s in down()] == [(1, 1), (1, 2)]
+    # read back, they are still two runs (split at the b-file's run headers,
+    # as AUTO's parseB does, not where the branch number changes)
+    back = bratu.loadbd('two')
+    assert len(back) == 2 and [s.LAB for s in back()] == [1, 2, 1, 2]
+    assert back[1]('EP2')['lambda'] == pytest.approx(down('EP2')['lambda'], abs=1e-9)
+    assert down('EP2')['lambda'] < 0 < up('EP2')['lambda']
+    # IRS picks the first solution with the label, as AUTO's FINDLB; a type
+    # and count picks that solution, whatever its label ('EP4' is down's label 2),
+    # and the runner keeps it for run() without a new IRS (AUTO's selected solution;
+    # auto-07p 0.9.2 does each of these on the same two runs of its own bratu.f90:
+    # ld(s='two', IRS='EP4'); run() starts at down's EP2, run(IRS=2) at up's)
+    assert bratu.run(s='two', IRS=2, NMX=2)['lambda'][0] == pytest.approx(up('EP2')['lambda'], abs=1e-9)
+    assert bratu.run(s='two', IRS='EP4', NMX=2)['lambda'][0] == pytest.approx(down('EP2')['lambda'], abs=1e-9)
+    assert bratu.run(NMX=2)['lambda'][0] == pytest.approx(down('EP2')['lambda'], abs=1e-9)
+    bratu.load(s='two', IRS='EP4')
+    assert bratu.run(NMX=2)['lambda'][0] == pytest.approx(down('EP2')['lambda'], abs=1e-9)
+    assert bratu.run(NMX=2, IRS=2)['lambda'][0] == pytest.approx(up('EP2')['lambda'], abs=1e-9)
+    # without b.two the runs are told apart by their point numbers (each starts at PT 1)
+    os.remove('b.two')
+    assert [len(b()) for b in bratu.loadbd('two')] == [2, 2]
+    # a plain restart from a solution of up (AUTO's demo exp): up's branch, labels after up's largest
+    more = bratu.run(up('EP2'), NMX=3)
+    assert [(s.BR, s.LAB) for s in more()] == [(1, 3)]
+    # the bundle counts, not the solution (AUTO's _mbr, _mlab; demo spb's r1('UZ2')):
+    # a run from up's first label numbers on after up's largest, 2
+    assert [(s.BR, s.LAB) for s in bratu.run(up('EP1'), NMX=2)()] == [(1, 3)]
+    both = up + more
+    assert [(s.BR, s.LAB) for s in bratu.run(both('EP1'), NMX=2)()] == [(1, 4)]
+    # a solution from a file's bundle: loadbd('NAME')'s largest, and ld's (its file's)
+    bratu.save(up + more, 'three')
+    assert [s.LAB for s in bratu.run(bratu.loadbd('three')(1), NMX=2)()] == [4]
+    assert [s.LAB for s in bratu.run(bratu.load('three', e='bratu', IRS=1), NMX=2)()] == [4]
+    # s= and IRS: the file's largest label and branch number
+    assert [(s.BR, s.LAB) for s in bratu.run(s='three', IRS=1, NMX=2)()] == [(1, 4)]
+
+
+def test_newlab_switch(work):
+    """Switched runs (ISW=-1) are branch MBR + 1: both runs from the
+    elastica's two BPs of branch 1 are branch 2 (AUTO's demo bvp), with the
+    same labels; a switch from a BP taken from a bundle that also holds a
+    branch 2 is branch 3."""
+    copy_in(work, 'runs/elastica/c.elastica')
+    r = cable.Runner()
+    r1 = r.run(e='elastica', c='elastica', RL1=45)
+    assert [(s.BR, s.LAB, s.TY) for s in r1()] == [(1, 1, 'EP'), (1, 2, 'BP'), (1, 3, 'BP'), (1, 4, 'EP')]
+    a = r.run(r1('BP1'), ISW=-1, DS=0.05, NMX=5, ISP=0)
+    b = r.run(r1('BP2'), ISW=-1, DS=0.05, NMX=5, ISP=0)
+    assert [(s.BR, s.LAB) for s in a()] == [(s.BR, s.LAB) for s in b()] == [(2, 5)]
+    c = r.run((r1 + a)('BP1'), ISW=-1, DS=0.05, NMX=2, ISP=0)
+    assert [(s.BR, s.LAB) for s in c()] == [(3, 6)]
 
 
 def test_files_commands(bratu):
@@ -319,6 +383,13 @@ def test_fold_run_through_python(work):
     assert len(dg) == 3 and dg[0] == df[-1]
     step = df[-1] - df[-2]
     assert all((dg[i + 1] - dg[i]) * step > 0 for i in range(2))
+    # AUTO's NEWLAB for ISW=2: the fold run from an LP is branch IRS (the LP's
+    # label), its labels after the largest of s.link62lp; a restart from a
+    # point of the fold curve keeps that branch number
+    src = rn.sl('link62lp')
+    lp0 = [x for x in src if x.TY == 'LP'][0]
+    assert {x.BR for x in f()} == {lp0.LAB} and f()[0].LAB == max(x.LAB for x in src) + 1
+    assert {x.BR for x in g()} == {lp0.LAB} and g()[0].LAB == f()[-1].LAB + 1
 
 
 def test_problem_keys_and_prepare(work):
