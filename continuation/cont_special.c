@@ -104,8 +104,9 @@ static double test_value(const cont_tests *t, int type, int which)
 
 static int sign_change(double a, double b) { return (a < 0 && b > 0) || (a > 0 && b < 0) || (a != 0 && b == 0); }
 
-/* The event closest to the first point (by linear interpolation), or NONE. */
-int cont_find_event(const cable_cont *cc, const cont_tests *a, const cont_tests *b, int *which)
+/* The event closest to the first point (by linear interpolation), or NONE;
+ * uz_only: user zeros only. */
+static int find_event(const cable_cont *cc, const cont_tests *a, const cont_tests *b, int uz_only, int *which)
 {
   int best = CABLE_TY_NONE;
   double bestf = 2.0;
@@ -118,11 +119,16 @@ int cont_find_event(const cable_cont *cc, const cont_tests *a, const cont_tests 
       if (f < bestf) { bestf = f; best = TYPE; *which = W; }                \
     }                                                                       \
   } while (0)
-  if (cc->c.ilp > 0) CONSIDER(CABLE_TY_LP, -1);
-  if (cont_bp_detect(cc) && a->det_sign != b->det_sign) CONSIDER(CABLE_TY_BP, -1);
+  if (cc->c.ilp > 0 && !uz_only) CONSIDER(CABLE_TY_LP, -1);
+  if (cont_bp_detect(cc) && a->det_sign != b->det_sign && !uz_only) CONSIDER(CABLE_TY_BP, -1);
   for (int k = 0; k < cc->c.nuzr; k++) CONSIDER(CABLE_TY_UZ, k);
 #undef CONSIDER
   return best;
+}
+
+int cont_find_event(const cable_cont *cc, const cont_tests *a, const cont_tests *b, int *which)
+{
+  return find_event(cc, a, b, 0, which);
 }
 
 /* At a branch point the extended matrix is singular, so the tangent computed
@@ -233,6 +239,18 @@ static int locate(cable_cont *cc, int type, int which, double seed, int plain)
   memcpy(cc->xhi, cc->xt, (size_t)cc->n * sizeof *cc->xt);
   const char *what = type == CABLE_TY_LP ? "fold" : type == CABLE_TY_BP ? "branch point" : "user zero";
   double tol = cc->c.epss * fabs(cc->ds_used);
+  if (f1 == 0.0) {
+    /* The trial point lies exactly on the zero (a UZR value on the step
+       grid: the elastica's straight branch from P = 20 with DS = 0.5 lands
+       on P = 21, 22, ... to the last bit).  It is the special point: no
+       bracket has a sign change to shrink (the rule below counted f = 0 as
+       the far side and moved the bracket to the step's start, and the
+       point was lost).  AUTO takes a trial point whose secant correction is
+       below its tolerance as the point itself, without a further step. */
+    memcpy(xs, cc->xt, (size_t)cc->n * sizeof *xs);
+    memcpy(xds, cc->xdott, (size_t)cc->n * sizeof *xds);
+    return locate_accept(cc, type, which, s1, xs, xds, cc->tft, far);
+  }
   for (int it = 0; it < cc->c.itmx; it++) {
     double lo = fmin(s0, s1), hi = fmax(s0, s1);
     /* Dekker's rule: the secant through the last two iterates, kept inside
@@ -404,7 +422,11 @@ int cont_locate(cable_cont *cc, int type, int which, double seed)
  * bracket and emitted first, and the first located point is queued behind it
  * (before, its sign change was consumed: the next step started beyond it).
  * A second zero beyond the located point needs nothing: the next step starts
- * there and finds it.  At most CONT_EVENTS_MAX points come out of one step. */
+ * there and finds it.  With three or more zeros in one step (UZR values
+ * closer than the step) the search goes on from the point located last until
+ * no zero lies before it; the farthest points are dropped and found again by
+ * the following steps.  At most CONT_EVENTS_MAX points come out of one step,
+ * the earliest ones, in order along the branch. */
 #define CONT_EVENTS_MAX 2
 /* the fold test at a located BP is taken this fraction of its arclength back */
 #define CONT_BP_LP_BACK 1.0e-3
@@ -430,52 +452,77 @@ int cont_locate_events(cable_cont *cc, int type, int which, double seed, int *it
         cont_tangent(cc, cc->w1, cc->xdot, cc->w2, &tb) == CABLE_SUCCESS)
       cc->tft.lp = cc->w2[cc->n - cc->nfpr];
   }
-  /* the zero just located counts as passed at the located point: mask it */
-  cont_tests seen = cc->tft;
-  if (type == CABLE_TY_LP) seen.lp = cc->tf.lp;
-  else if (type == CABLE_TY_BP) seen.det_sign = cc->tf.det_sign;
-  else
+  /* Each round: is there another zero between x and the point located
+     last?  Then that point is queued (it goes after) and the earlier zero
+     is located.  A point queued before is dropped: it lies beyond, and the
+     next step, which starts before it, finds it again.  Each round moves
+     to a strictly earlier zero, so there are at most as many rounds as test
+     functions; the points come out in order along the branch. */
+  int max_rounds = cc->c.nuzr + 2;
+  for (int round = 0; round < max_rounds; round++) {
+    /* the zero just located counts as passed at the located point: mask
+       it, and any user zero that vanishes there too (it is at the point,
+       not before it: one point, AUTO's "first come, first served") */
+    cont_tests seen = cc->tft;
+    if (type == CABLE_TY_LP) seen.lp = cc->tf.lp;
+    else if (type == CABLE_TY_BP) seen.det_sign = cc->tf.det_sign;
     for (int k = 0; k < cc->c.nuzr; k++)
-      if (cc->c.uzr[k].par == cc->c.uzr[which].par && cc->c.uzr[k].value == cc->c.uzr[which].value)
+      if (seen.uz[k] == 0.0 ||
+          (type == CABLE_TY_UZ && cc->c.uzr[k].par == cc->c.uzr[which].par &&
+           cc->c.uzr[k].value == cc->c.uzr[which].value))
         seen.uz[k] = cc->tf.uz[k];
-  int which2 = -1, type2 = cont_find_event(cc, &cc->tf, &seen, &which2);
-  if (type2 == CABLE_TY_NONE) return rc;
-  /* keep the located point: it goes second */
-  const size_t nb = (size_t)cc->n * sizeof *cc->xt;
-  memcpy(cc->xq, cc->xt, nb);
-  memcpy(cc->xdotq, cc->xdott, nb);
-  cc->tfq = cc->tft;
-  cc->itp_q = type;
-  cc->bp_kind_q = cc->bp_kind;
-  cc->uz_hit_q = cc->uz_hit;
-  cc->uz_stop_q = cc->uz_stop;
-  double s_first = cc->ds_used;
-  cc->uz_hit = -1;
-  cc->uz_stop = 0;
-  char note[200];
-  snprintf(note, sizeof note, "%.199s", cc->note);
-  int rc2 = cont_locate(cc, type2, which2, (double)NAN);
-  if (rc2 == CABLE_ERR_CALLBACK) return rc2;
-  if (rc2 != CABLE_SUCCESS) {
-    /* the located first point stands alone, as before; say what was missed */
-    char err[300];
-    snprintf(err, sizeof err, "%.299s", cc->err);
-    memcpy(cc->xt, cc->xq, nb);
-    memcpy(cc->xdott, cc->xdotq, nb);
-    cc->tft = cc->tfq;
-    cc->ds_used = s_first;
-    cc->bp_kind = cc->bp_kind_q;
-    cc->uz_hit = cc->uz_hit_q;
-    cc->uz_stop = cc->uz_stop_q;
-    cc->itp_q = CABLE_TY_NONE;
-    snprintf(cc->note, sizeof cc->note, "%.199s%.2sa second special point in this step was not located: %.299s", note,
-             note[0] ? "; " : "", err);
-    return CABLE_SUCCESS;
+    int which2 = -1, type2 = find_event(cc, &cc->tf, &seen, round > 0, &which2);
+    if (type2 == CABLE_TY_NONE) return CABLE_SUCCESS;
+    cont_tests seen_q = seen;
+    /* keep the located point: it goes second */
+    const size_t nb = (size_t)cc->n * sizeof *cc->xt;
+    memcpy(cc->xq, cc->xt, nb);
+    memcpy(cc->xdotq, cc->xdott, nb);
+    cc->tfq = cc->tft;
+    cc->itp_q = type;
+    cc->bp_kind_q = cc->bp_kind;
+    cc->uz_hit_q = cc->uz_hit;
+    cc->uz_stop_q = cc->uz_stop;
+    cc->queued = 0;
+    double s_first = cc->ds_used;
+    cc->uz_hit = -1;
+    cc->uz_stop = 0;
+    char note[200];
+    snprintf(note, sizeof note, "%.199s", cc->note);
+    int rc2 = cont_locate(cc, type2, which2, (double)NAN);
+    if (rc2 == CABLE_ERR_CALLBACK) return rc2;
+    if (rc2 != CABLE_SUCCESS) {
+      /* the located point stands alone (what was queued before is found
+         again by the next step); say what was missed */
+      char err[300];
+      snprintf(err, sizeof err, "%.299s", cc->err);
+      memcpy(cc->xt, cc->xq, nb);
+      memcpy(cc->xdott, cc->xdotq, nb);
+      cc->tft = cc->tfq;
+      cc->ds_used = s_first;
+      cc->bp_kind = cc->bp_kind_q;
+      cc->uz_hit = cc->uz_hit_q;
+      cc->uz_stop = cc->uz_stop_q;
+      cc->itp_q = CABLE_TY_NONE;
+      *itp = type;
+      snprintf(cc->note, sizeof cc->note, "%.199s%.2sa second special point in this step was not located: %.299s",
+               note, note[0] ? "; " : "", err);
+      return CABLE_SUCCESS;
+    }
+    type = type2;
+    which = which2;
+    *itp = type2;
+    if (type2 == CABLE_TY_BP) cc->bp_kind = CABLE_BP_SIMPLE;
+    cc->ds_q = s_first - cc->ds_used;
+    cc->queued = 1;
+    /* a user zero between the point just located and the queued one: the
+       queued point is dropped (the next step finds both again, in order) */
+    int wq = -1;
+    if (find_event(cc, &cc->tft, &seen_q, 1, &wq) != CABLE_TY_NONE) {
+      cc->queued = 0;
+      cc->itp_q = CABLE_TY_NONE;
+    }
   }
-  *itp = type2;
-  if (type2 == CABLE_TY_BP) cc->bp_kind = CABLE_BP_SIMPLE;
-  cc->ds_q = s_first - cc->ds_used;
-  cc->queued = 1;
   return CABLE_SUCCESS;
 }
 

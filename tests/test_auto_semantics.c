@@ -10,7 +10,9 @@
  *   5. branch points of BVPs are looked for with ISP = 2 or 3 only, and a
  *      switched run's first point has no label;
  *   6. an LP and a BP inside one step are both reported, in arclength order;
- *   7. a switch at a simple BP is oriented by AUTO's rule for AUTO's equations.
+ *   7. a switch at a simple BP is oriented by AUTO's rule for AUTO's equations;
+ *   8. every UZR value once, in order, where a step lands on it or one step
+ *      crosses several.
  * (run('NAME') = e='NAME', c='NAME': tests/test_cli.c and tests/python/test_commands.py.) */
 #include <math.h>
 #include <string.h>
@@ -367,6 +369,113 @@ static void test_switch_orientation(memrun *r)
   for (int k = 0; k < 3; k++) cable_solution_free(bp[k]);
 }
 
+/* 8. Every UZR value is reported once, in order along the branch, at its
+ * value: when a step lands exactly on it, and when one step crosses several.
+ * The elastica's straight branch (theta = 0, P = PAR(1)) has P linear in the
+ * arclength, so its steps land exactly on a grid of P: from P = 1 with
+ * DS = 0.5 on P = 1.5, 2, 2.5, ... (auto-07p on the same problem reports each,
+ * tests/data/autoeq/numbering). */
+typedef struct {
+  int n;
+  double p[16];
+  int lab[16], bad_lab;
+} uzlist;
+
+static void uz_points(const memrun *r, int par, uzlist *u)
+{
+  memset(u, 0, sizeof *u);
+  int prev = -1;
+  for (int i = 0; i < r->n; i++) {
+    if (r->itp[i] % 10 != CABLE_TY_UZ) continue;
+    if (u->n < 16) {
+      u->p[u->n] = r->par[i][par];
+      u->lab[u->n] = r->lab[i];
+    }
+    if (prev >= 0 && r->lab[i] != prev + 1) u->bad_lab = 1;
+    prev = r->lab[i];
+    u->n++;
+  }
+}
+
+/* want[k] for k < n: the values in order; tol: absolute, in PAR(par) */
+static void check_uz(const char *what, const memrun *r, int par, const double *want, int n, double tol)
+{
+  uzlist u;
+  uz_points(r, par, &u);
+  char buf[300];
+  snprintf(buf, sizeof buf, "%s: %d UZ points", what, n);
+  test_int(buf, u.n, n);
+  for (int k = 0; k < n && k < u.n; k++) {
+    snprintf(buf, sizeof buf, "%s: UZ %d at PAR(%d) = %g", what, k + 1, par + 1, want[k]);
+    test_abs(buf, u.p[k], want[k], tol);
+  }
+  snprintf(buf, sizeof buf, "%s: the UZ labels are consecutive", what);
+  test_true(buf, !u.bad_lab);
+}
+
+/* (P - 3)^4 / 16 into PAR(2): a value PVLS computes, convex in P, so that
+ * linear interpolation in one step puts its crossing far too early */
+static int elastica_pvls_quartic(const struct cable_solution *sol, double *par, void *params)
+{
+  (void)sol; (void)params;
+  double d = par[0] - 3.0;
+  par[1] = d * d * d * d / 16.0;
+  return 0;
+}
+
+static void test_uz_grid(memrun *r)
+{
+  cable_constants c;
+  elastica_trivial_constants(&c, 20, 4);
+  c.isp = 0; c.rl1 = 9.0; /* below the first branch point, P = pi^2 */
+  c.epss = 1e-7;
+  /* DS = DSMAX = 0.5 from P = 1: the steps land on P = 3, 4, 5 */
+  c.ds = c.dsmax = 0.5;
+  c.nuzr = 3;
+  for (int k = 0; k < 3; k++) {
+    c.uzr[k].par = 0;
+    c.uzr[k].value = 3.0 + k;
+    c.uzr[k].stop = 0;
+  }
+  static const double on_grid[] = {3.0, 4.0, 5.0};
+  memrun_run(cable_testproblem_elastica(), &c, NULL, r);
+  check_uz("elastica, DS = DSMAX = 0.5, UZR on the step grid", r, 0, on_grid, 3, 1e-12);
+  memrun_free(r);
+  /* DSMAX = 2: steps 1 -> 1.5 -> 2.5 -> 4.5 (3 and 4 in one step), then
+     from the located UZ on; several values in a step and values hit exactly */
+  c.dsmax = 2.0;
+  c.nuzr = 5;
+  for (int k = 0; k < 5; k++) {
+    c.uzr[k].par = 0;
+    c.uzr[k].value = 3.0 + k;
+    c.uzr[k].stop = 0;
+  }
+  static const double grid5[] = {3.0, 4.0, 5.0, 6.0, 7.0};
+  memrun_run(cable_testproblem_elastica(), &c, NULL, r);
+  check_uz("elastica, DSMAX = 2, UZR 3, 4, 5, 6, 7", r, 0, grid5, 5, 1e-6);
+  memrun_free(r);
+  /* three zeros in one step, of two parameters: DS = DSMAX = 2 from P = 1
+     (P = 3, 5, 7: the step 3 -> 5 holds all three), UZR on P at 3.9 and
+     4.2 and on PVLS's (P - 3)^4 / 16 at 0.4096, i.e. P = 4.6, whose
+     linear interpolation (0.20 of the step) comes first; in order along
+     the branch: 3.9, 4.2, 4.6 */
+  static const char *const names[] = {"P", "q"};
+  cable_problem pb = *cable_testproblem_elastica();
+  pb.npar = 2;
+  pb.parnames = names;
+  pb.pvls = elastica_pvls_quartic;
+  c.ds = c.dsmax = 2.0;
+  c.iads = 0;
+  c.nuzr = 3;
+  c.uzr[0].par = 0; c.uzr[0].value = 3.9;
+  c.uzr[1].par = 1; c.uzr[1].value = 0.4096;
+  c.uzr[2].par = 0; c.uzr[2].value = 4.2;
+  static const double mixed[] = {3.9, 4.2, 4.6};
+  memrun_run(&pb, &c, NULL, r);
+  check_uz("elastica, one step over UZR P = 3.9, 4.2 and PVLS (P - 3)^4 / 16 = 0.4096", r, 0, mixed, 3, 1e-6);
+  memrun_free(r);
+}
+
 int main(void)
 {
   static memrun r;
@@ -377,5 +486,6 @@ int main(void)
   test_isp(&r);
   test_lp_bp_one_step(&r);
   test_switch_orientation(&r);
+  test_uz_grid(&r);
   return test_summary();
 }
