@@ -786,17 +786,15 @@ static void remember(cable_session *r, rp_setup *s)
     s->sf = NULL;
     rp_branch_decref(r->cur_br);
     r->cur_br = NULL;
-  } else if (!s->sf && s->start_br && s->start_br != r->cur_br) {
-    rp_branch *b = (rp_branch *)s->start_br;
-    b->refs++;
-    rp_branch_decref(r->cur_br);
-    r->cur_br = b;
-    r->cur_isol = s->start_isol;
-    r->cur_mbr = s->mbr;
-    r->cur_mlab = s->mlab;
-    cable_sfile_free(r->cur_sf);
-    r->cur_sf = NULL;
   } else if (!s->sf && s->start_br) {
+    if (s->start_br != r->cur_br) {
+      rp_branch *b = (rp_branch *)s->start_br;
+      b->refs++;
+      rp_branch_decref(r->cur_br);
+      r->cur_br = b;
+      cable_sfile_free(r->cur_sf);
+      r->cur_sf = NULL;
+    }
     r->cur_isol = s->start_isol;
     r->cur_mbr = s->mbr;
     r->cur_mlab = s->mlab;

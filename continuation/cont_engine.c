@@ -388,11 +388,13 @@ static void swap_ptr(double **a, double **b)
   *b = t;
 }
 
-static void control_step(cable_cont *cc)
+/* The next step from a step of length ds_taken whose corrector took it
+ * iterations. */
+static void control_step(cable_cont *cc, int it, double ds_taken)
 {
   if (cc->c.iads <= 0 || cc->npt % cc->c.iads != 0) return;
-  int it = cc->newton_iters, itnw = cc->c.itnw;
-  double a = fabs(cc->ds_used) > 0 ? fabs(cc->ds_used) : fabs(cc->ds);
+  int itnw = cc->c.itnw;
+  double a = fabs(ds_taken) > 0 ? fabs(ds_taken) : fabs(cc->ds);
   if (it <= CONT_FAST_ITERS) a *= CONT_GROW_FAST;
   else if (it <= itnw / 2) a *= CONT_GROW;
   else if (it >= itnw - 1) a *= CONT_SHRINK;
@@ -563,23 +565,14 @@ int cable_cont_step(cable_cont *cc)
   pencil_note(cc, &pr);
   accept_trial(cc);
   cc->itp_x = cc->itp;
-  if (cc->queued) {
-    /* a located dip: the next step starts from the trial point queued
-       behind it, which the whole step reached with the step's own
-       corrector.  The minimisation's last corrector (many iterations, or a
-       failure, next to the singular point) says nothing about the step, and
-       before this the step after every double branch point of the flat
-       (7,2) knot was halved and grew back over four steps. */
-    int it_located = cc->newton_iters;
-    double ds_located = cc->ds_used;
-    cc->newton_iters = step_iters;
-    cc->ds_used = ds_step;
-    control_step(cc);
-    cc->newton_iters = it_located;
-    cc->ds_used = ds_located;
-  } else {
-    control_step(cc);
-  }
+  /* After a located dip the next step starts from the trial point queued
+     behind it, which the whole step reached with the step's own corrector.
+     The minimisation's last corrector (many iterations, or a failure, next
+     to the singular point) says nothing about the step: judged by it, the
+     step after every double branch point of the flat (7,2) knot was halved
+     and grew back over four steps. */
+  if (cc->queued) control_step(cc, step_iters, ds_step);
+  else control_step(cc, cc->newton_iters, cc->ds_used);
   /* output first: the stored solution is the converged one on its own mesh;
      the new mesh's interpolant is only the next corrector's start (AUTO
      writes its point before ADAPT too) */

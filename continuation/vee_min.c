@@ -71,10 +71,8 @@ int vee_min(vee_min_fn g, void *ctx, double lo, double ga, double mid, double gm
   while (b - a > 2.0 * tol) {
     int i1, i2;
     next_best(gs, n, best, &i1, &i2);
-    double p0 = ss[i1] < ss[i2] ? ss[i1] : ss[i2], p2 = ss[i1] < ss[i2] ? ss[i2] : ss[i1];
-    double g0 = ss[i1] < ss[i2] ? gs[i1] : gs[i2], g2 = ss[i1] < ss[i2] ? gs[i2] : gs[i1];
-    /* the vertex through three points in any order: sort them */
-    double t[3] = {p0, x, p2}, h[3] = {g0, gx, g2};
+    /* the three points in ascending order (parabola_vertex's argument order) */
+    double t[3] = {ss[i1], x, ss[i2]}, h[3] = {gs[i1], gx, gs[i2]};
     for (int i = 0; i < 2; i++)
       for (int j = 0; j < 2 - i; j++)
         if (t[j] > t[j + 1]) {
@@ -112,26 +110,18 @@ int vee_min(vee_min_fn g, void *ctx, double lo, double ga, double mid, double gm
     n++;
     len2 = len1;
     len1 = b - a;
+    /* the bracket around the best point (the parabola takes its points
+       from ss, gs) */
     if (gu < gx) {
-      if (u < x) {
-        b = x;
-        gb = gx;
-      } else {
-        a = x;
-        ga = gx;
-      }
+      if (u < x) b = x;
+      else a = x;
       x = u;
       gx = gu;
       best = n - 1;
       res->last_is_best = 1;
     } else {
-      if (u < x) {
-        a = u;
-        ga = gu;
-      } else {
-        b = u;
-        gb = gu;
-      }
+      if (u < x) a = u;
+      else b = u;
       res->last_is_best = 0;
     }
     res->s = x;
