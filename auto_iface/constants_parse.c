@@ -943,6 +943,7 @@ static const key_desc key_table[] = {
   {"NTHREADS", apply_int, OFF(nthreads), 0, CABLE_THREADS_MAX, 2, KI_NONE},
   {"BPDIR", apply_int, OFF(bpsym), 0, 1, 2, KI_NONE},
   {"BPANGLE", apply_real, OFF(bpangle), 0, 0, 2, KI_NONE},
+  {"PREDICTOR", apply_int, OFF(predictor), 1, 2, 2, KI_NONE},
   {"PAR", apply_par, 0, 0, 0, 2, KI_NONE},
 };
 #define KEY_TABLE_N ((int)(sizeof key_table / sizeof key_table[0]))

@@ -224,6 +224,7 @@ PyObject *pyc_constants_dict(const cable_constants *c, const cable_names *n, con
   if (!rc) rc = put_int(d, "NSV", c->nsv);
   if (!rc) rc = put_int(d, "NTHREADS", c->nthreads);
   if (!rc) rc = put_int(d, "BPDIR", c->bpsym);
+  if (!rc) rc = put_int(d, "PREDICTOR", c->predictor);
   if (!rc && isnan(c->bpangle)) {
     Py_INCREF(Py_None);
     rc = put(d, "BPANGLE", Py_None);

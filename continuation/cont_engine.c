@@ -22,6 +22,12 @@
  * spite of round-off in fmax/copysign. */
 #define CONT_FAIL_SHRINK 0.5
 #define CONT_DSMIN_SLACK 1.0e-12
+/* PREDICTOR = 2 extrapolates the curvature of the last step over the next
+ * (step_predict) only for a step at most this many times as long: the
+ * curvature estimate (xdot - xdotp) / ds_used carries the tangents' errors
+ * divided by ds_used, which a short last step (a located special point, a
+ * rejected step) magnifies. */
+#define CONT_PRED2_MAXRATIO 2.0
 
 /* The pencil test (cont_pencil.c) may shorten one step up to
  * CONT_PAIR_MAXSPLIT times, each time to the middle of its first two
@@ -414,6 +420,28 @@ static void accept_trial(cable_cont *cc)
   cc->npt++;
 }
 
+/* The predictor of a step of length ds from x into xt.  PREDICTOR = 1 is
+ * AUTO's tangent predictor x + ds xdot, with an error of order ds^2 along the
+ * branch's curvature.  PREDICTOR = 2 adds the second-order Taylor term with
+ * the curvature estimated from the last step, x'' ~ (xdot - xdotp) / ds_used
+ * (both unit tangents along the signed arclength), leaving an error of order
+ * ds^3 (doc/engine.md, "The second-order predictor"): where the tangent
+ * predictor's first correction is large, Newton needs one iteration less,
+ * and the step control (IADS) lets the steps grow.  The first step of a
+ * branch, a step after a reversal of direction, and a step more than
+ * CONT_PRED2_MAXRATIO times the last use the tangent predictor. */
+static void step_predict(cable_cont *cc, double ds, double *xt)
+{
+  const int n = cc->n;
+  double c2 = 0.0;
+  if (cc->c.predictor == 2 && cc->npt >= 2 && cc->ds_used * ds > 0.0 &&
+      fabs(ds) <= CONT_PRED2_MAXRATIO * fabs(cc->ds_used))
+    c2 = 0.5 * ds * ds / cc->ds_used;
+  for (int i = 0; i < n; i++) xt[i] = cc->x[i] + ds * cc->xdot[i];
+  if (c2 != 0.0)
+    for (int i = 0; i < n; i++) xt[i] += c2 * (cc->xdot[i] - cc->xdotp[i]);
+}
+
 /* The pencil test at a converged trial point (ISP > 0).  Returns 1 when the
  * step is to be repeated with the shorter *ds_step, to separate the first
  * group of predicted branch points from the next. */
@@ -514,7 +542,8 @@ int cable_cont_step(cable_cont *cc)
      at the end of the first step are the reference for the second. */
   int first_step = cc->npt == 1;
   for (;;) {
-    rc = cont_correct(cc, cc->x, cc->xdot, ds_step, cc->xt);
+    step_predict(cc, ds_step, cc->xt);
+    rc = cont_correct_from(cc, cc->x, cc->xdot, ds_step, cc->xt);
     if (rc == CABLE_SUCCESS) rc = cont_tangent_after_newton(cc, cc->xt, cc->xdot, cc->xdott, &cc->tft);
     if (rc == CABLE_SUCCESS && !first_step && pencil_step(cc, &pr, &ds_step))
       continue; /* a shorter step separates a pair */

@@ -88,6 +88,7 @@ static void test_every_key(void)
   test_true("LINSOLVER = 'klu'", c.linsolver == CABLE_LINSOLVER_KLU);
   test_int("NSV", c.nsv, 3);
   test_int("BPDIR", c.bpsym, 1);
+  test_int("PREDICTOR", c.predictor, 2);
 
   /* defaults of keys a file leaves out */
   cable_constants d, ref;
@@ -96,6 +97,7 @@ static void test_every_key(void)
   test_int("a one-key file parses (names NULL, no problem names)", st, 0);
   test_true("  other keys keep AUTO's defaults (DS 0.01, NCOL 4, EPSL 1e-7, NMX 0, ICP empty)",
             d.ds == ref.ds && d.ncol == 4 && d.epsl == 1e-7 && d.nmx == ref.nmx && d.nicp == 0 && d.ntst == 7);
+  test_int("  PREDICTOR defaults to 1 (AUTO's tangent predictor)", d.predictor, 1);
 
   /* overrides on top of the file */
   cable_constants before = c;
@@ -215,6 +217,7 @@ static const bad_case bad_cases[] = {
   {"c.bad_char", "NTST = 5 @\n", CABLE_ERR_PARSE, 1, "NTST", "unexpected character '@'"},
   {"c.iis", "IIS = 4\n", CABLE_ERR_INPUT, 1, "IIS", "0..3"},
   {"c.jac", "JAC = 2\n", CABLE_ERR_INPUT, 1, "JAC", "-1..1"},
+  {"c.predictor", "NTST = 5\nPREDICTOR = 3\n", CABLE_ERR_INPUT, 2, "PREDICTOR", "1..2"},
   {"c.eps_negative", "EPSL = -1e-7\n", CABLE_ERR_INPUT, 1, "EPSL", "positive"},
   {"c.npar_big", "NPAR = 100000\n", CABLE_ERR_INPUT, 1, "NPAR", "1..256"},
   {"c.empty_icp", "ICP = []\n", CABLE_ERR_INPUT, 1, "ICP", "at least one"},

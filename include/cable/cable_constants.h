@@ -89,6 +89,7 @@ typedef struct cable_constants {
   int nthreads;                           /* NTHREADS: threads of the structured solver's
                                              per-interval stages (0: the default, cable_threads) */
   int bpsym;                              /* BPDIR: kernel vector index for 2-d kernels */
+  int predictor;                          /* PREDICTOR: 1 tangent (AUTO's), 2 second order */
   double bpangle;                         /* BPANGLE: direction in a 2-d kernel, degrees from
                                              the canonical e1 towards e2 (NAN: use BPDIR) */
   /* problem-specific keys (the problem's cable_problem_key list), as set */
