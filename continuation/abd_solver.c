@@ -351,6 +351,8 @@ int abd_solver_set_threads(abd_solver *s, int nthreads)
 
 int abd_solver_threads(const abd_solver *s) { return s ? cable_team_size(s->team) : 0; }
 
+cable_team *abd_solver_team(const abd_solver *s) { return s ? s->team : NULL; }
+
 void abd_solver_bandwidths(const abd_solver *s, int *kl, int *ku)
 {
   *kl = s->kl;
@@ -949,7 +951,7 @@ int abd_solver_smallest_svd(abd_solver *s, const colloc_jac *J, int k, const dou
     double *rn[2] = {s->sv_rn, s->sv_rn + k};
     for (int pass = 0; pass < 2; pass++) {
       /* pass 0: J v_i - sigma_i u_i; pass 1: J^T u_i - sigma_i v_i */
-      if (pass == 0) colloc_jac_matvec_many(J, k, V, res);
+      if (pass == 0) colloc_jac_matvec_many_team(J, s->team, k, V, res);
       else colloc_jac_matvec_transpose_many(J, k, U, res);
       for (int i = 0; i < k; i++) {
         double *ri = res + (size_t)i * (size_t)n;

@@ -84,6 +84,10 @@ double abd_solver_growth(const abd_solver *s);
  * one thread). */
 int abd_solver_set_threads(abd_solver *s, int nthreads);
 int abd_solver_threads(const abd_solver *s);
+/* The solver's thread team (NULL: one thread), for per-interval work that
+ * goes with its solves (colloc_jac_matvec_team); used by one thread at a time
+ * like the solver. */
+struct cable_team *abd_solver_team(const abd_solver *s);
 
 /* Unknowns n of the original system. */
 int abd_solver_size(const abd_solver *s);

@@ -69,23 +69,48 @@ static size_t jac_bc_row(const colloc_jac *J) { return (size_t)J->ntst * (size_t
 /* The interval loops run over the vectors inside each interval, so that a
  * block is read from memory once for all k vectors; every vector sees the
  * same operations in the same order as alone. */
+typedef struct {
+  const colloc_jac *J;
+  int k;
+  const double *X;
+  double *Y;
+} matvec_ctx;
+
+/* The collocation rows of interval j for the k vectors: they read only the
+ * interval's nodes and the parameters and write only the interval's rows. */
+static void matvec_interval(void *p, int j)
+{
+  const matvec_ctx *c = p;
+  const colloc_jac *J = c->J;
+  const int nd = J->ndim, nc = J->ncol, nf = J->nfpr;
+  const int nr = nc * nd, nn = (nc + 1) * nd;
+  const size_t n = (size_t)J->n;
+  const double *C = colloc_jac_coll_block(J, j);
+  for (int v = 0; v < c->k; v++) {
+    const double *x = c->X + (size_t)v * n, *pv = x + jac_par(J);
+    double *yj = c->Y + (size_t)v * n + (size_t)j * (size_t)nr;
+    /* The ncol+1 nodes of interval j are contiguous in x. */
+    cblas_dgemv(CblasColMajor, CblasNoTrans, nr, nn, 1.0, C, nr, x + jac_node(J, j), 1, 0.0, yj, 1);
+    if (nf > 0)
+      cblas_dgemv(CblasColMajor, CblasNoTrans, nr, nf, 1.0, C + (size_t)nn * (size_t)nr, nr, pv, 1, 1.0, yj, 1);
+  }
+}
+
 void colloc_jac_matvec_many(const colloc_jac *J, int k, const double *X, double *Y)
 {
+  colloc_jac_matvec_many_team(J, NULL, k, X, Y);
+}
+
+void colloc_jac_matvec_many_team(const colloc_jac *J, cable_team *team, int k, const double *X, double *Y)
+{
   const int nd = J->ndim, nc = J->ncol, nf = J->nfpr, nb = J->nbc, nq = J->ndense;
-  const int nr = nc * nd, nn = (nc + 1) * nd;
+  const int nn = (nc + 1) * nd;
   const size_t n = (size_t)J->n, rb = jac_bc_row(J);
 
-  for (int j = 0; j < J->ntst; j++) {
-    const double *C = colloc_jac_coll_block(J, j);
-    for (int v = 0; v < k; v++) {
-      const double *x = X + (size_t)v * n, *p = x + jac_par(J);
-      double *yj = Y + (size_t)v * n + (size_t)j * (size_t)nr;
-      /* The ncol+1 nodes of interval j are contiguous in x. */
-      cblas_dgemv(CblasColMajor, CblasNoTrans, nr, nn, 1.0, C, nr, x + jac_node(J, j), 1, 0.0, yj, 1);
-      if (nf > 0)
-        cblas_dgemv(CblasColMajor, CblasNoTrans, nr, nf, 1.0, C + (size_t)nn * (size_t)nr, nr, p, 1, 1.0, yj, 1);
-    }
-  }
+  matvec_ctx ctx = {J, k, X, Y};
+  cable_team_run(team, matvec_interval, &ctx, J->ntst);
+  /* the boundary and dense rows: the dense rows sum over the intervals in
+     interval order, on the calling thread */
   for (int v = 0; v < k; v++) {
     const double *x = X + (size_t)v * n, *p = x + jac_par(J);
     double *y = Y + (size_t)v * n;
@@ -108,6 +133,11 @@ void colloc_jac_matvec_many(const colloc_jac *J, int k, const double *X, double 
 }
 
 void colloc_jac_matvec(const colloc_jac *J, const double *x, double *y) { colloc_jac_matvec_many(J, 1, x, y); }
+
+void colloc_jac_matvec_team(const colloc_jac *J, cable_team *team, const double *x, double *y)
+{
+  colloc_jac_matvec_many_team(J, team, 1, x, y);
+}
 
 void colloc_jac_matvec_transpose_many(const colloc_jac *J, int k, const double *X, double *Y)
 {

@@ -25,6 +25,8 @@
 
 #include <stddef.h>
 
+#include "cable_team.h"
+
 typedef struct colloc_jac {
   int ndim, ntst, ncol, nfpr, nbc, nint;
   int n;                 /* unknowns = equations */
@@ -53,6 +55,11 @@ void colloc_jac_matvec_transpose(const colloc_jac *J, const double *x, double *y
  * result is bit for bit that of the single-vector call. */
 void colloc_jac_matvec_many(const colloc_jac *J, int k, const double *X, double *Y);
 void colloc_jac_matvec_transpose_many(const colloc_jac *J, int k, const double *X, double *Y);
+/* J x and J X with the collocation rows of the intervals shared out over a
+ * thread team (cable_team.h; NULL: the calling thread): the same results, bit
+ * for bit, for every team size, and the same as the calls above. */
+void colloc_jac_matvec_team(const colloc_jac *J, cable_team *team, const double *x, double *y);
+void colloc_jac_matvec_many_team(const colloc_jac *J, cable_team *team, int k, const double *X, double *Y);
 /* Dense n x n column-major copy (tests and small problems). */
 void colloc_jac_to_dense(const colloc_jac *J, double *A);
 

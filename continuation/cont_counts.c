@@ -12,7 +12,7 @@ void cont_counts_report(const cable_cont *cc)
   const cont_counts *k = &cc->cnt;
   fprintf(stderr,
           "cable counts: steps %ld correct %ld newton_iters %ld newton_fact %ld tan_fact %ld sv_calls %ld "
-          "sv_iters %ld dips %ld dip_evals %ld locates %ld locate_evals %ld\n",
+          "sv_iters %ld dips %ld dip_evals %ld locates %ld locate_evals %ld pencil_run %ld pencil_skipped %ld\n",
           k->steps, k->correct, k->newton_iters, k->newton_fact, k->tan_fact, k->sv_calls, k->sv_iters, k->dips,
-          k->dip_evals, k->locates, k->locate_evals);
+          k->dip_evals, k->locates, k->locate_evals, cc->gate_run, cc->gate_skipped);
 }

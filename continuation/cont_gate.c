@@ -89,7 +89,7 @@ static int needed(cable_cont *cc)
   const int n = cc->n;
   double *W = cc->gate_w;
   const double *V = cc->gate_v, *U = cc->gate_u;
-  for (int l = 0; l < 2; l++) colloc_jac_matvec(cc->tan_J, V + (size_t)l * (size_t)n, W + (size_t)l * (size_t)n);
+  colloc_jac_matvec_many_team(cc->tan_J, abd_solver_team(cc->tan_abd), 2, V, W);
   double B[2][2];
   for (int i = 0; i < 2; i++)
     for (int l = 0; l < 2; l++) B[i][l] = cblas_ddot(n, U + (size_t)i * (size_t)n, 1, W + (size_t)l * (size_t)n, 1);

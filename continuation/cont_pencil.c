@@ -95,7 +95,7 @@ int cont_pencil_crossings(cable_cont *cc, const abd_solver *fb, double *t, int t
   int k = m;
   for (int j = 0; j < m; j++) {
     double *vj = V + (size_t)j * (size_t)n, *w = V + (size_t)(j + 1) * (size_t)n;
-    colloc_jac_matvec(cc->Ja, vj, w);
+    colloc_jac_matvec_team(cc->Ja, abd_solver_team(fb), vj, w);
     if (abd_solver_solve(fb, w) != ABD_OK) return CABLE_ERR_LINSOLVE;
     cblas_daxpy(n, -1.0, vj, 1, w, 1);
     double w0 = cblas_dnrm2(n, w, 1);

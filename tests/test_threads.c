@@ -16,6 +16,7 @@
  * some intervals gives the same status for every thread count; a problem
  * that is not concurrent is evaluated on one thread. */
 #include <math.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -274,9 +275,63 @@ static void test_passes(void)
   pass_result_free(&other);
 }
 
+/* J X by a team of 1, 2, 3 threads: the same bits as colloc_jac_matvec_many,
+ * and the dense product to round-off (an independent check). */
+static void test_matvec(void)
+{
+  colloc_jac *J = colloc_jac_alloc(3, 9, 3, 2, 3, 1);
+  if (!J) {
+    test_true("matvec: allocation", 0);
+    return;
+  }
+  const size_t n = (size_t)J->n, k = 2;
+  double *X = malloc(k * n * sizeof *X), *Y0 = malloc(k * n * sizeof *Y0), *Y = malloc(k * n * sizeof *Y);
+  double *A = malloc(n * n * sizeof *A);
+  if (!X || !Y0 || !Y || !A) {
+    test_true("matvec: allocation", 0);
+    free(X); free(Y0); free(Y); free(A);
+    colloc_jac_free(J);
+    return;
+  }
+  uint64_t st = 12345;
+  double *blocks[] = {J->coll, J->bc, J->dense, J->dense_par, X};
+  size_t sizes[] = {(size_t)J->ntst * J->coll_stride, (size_t)J->nbc * (size_t)(2 * J->ndim + J->nfpr),
+                    (size_t)J->ntst * J->dense_stride, (size_t)J->ndense * (size_t)J->nfpr, k * n};
+  for (int b = 0; b < 5; b++)
+    for (size_t i = 0; i < sizes[b]; i++) {
+      st = st * UINT64_C(6364136223846793005) + UINT64_C(1442695040888963407);
+      blocks[b][i] = (double)(st >> 11) * 0x1.0p-53 - 0.5;
+    }
+  colloc_jac_matvec_many(J, (int)k, X, Y0);
+  colloc_jac_to_dense(J, A);
+  double err = 0, scale = 0;
+  for (size_t v = 0; v < k; v++)
+    for (size_t r = 0; r < n; r++) {
+      double y = 0;
+      for (size_t c = 0; c < n; c++) y += A[c * n + r] * X[v * n + c];
+      err = fmax(err, fabs(y - Y0[v * n + r]));
+      scale = fmax(scale, fabs(y));
+    }
+  /* sums of at most (NCOL+1) NDIM + NFPR products of numbers below 1/2:
+     round-off a few units of 1e-16 times the number of terms */
+  test_le("matvec: J X equals the dense product (max abs error / max |J X|)", err / scale, 1e-14);
+  for (int size = 1; size <= 3; size++) {
+    cable_team *t = cable_team_alloc(size);
+    colloc_jac_matvec_many_team(J, t, (int)k, X, Y);
+    int same = memcmp(Y, Y0, k * n * sizeof *Y) == 0;
+    colloc_jac_matvec_team(J, t, X + n, Y);
+    same = same && memcmp(Y, Y0 + n, n * sizeof *Y) == 0;
+    test_report(t != NULL && same, "matvec: a team of %d thread(s) gives colloc_jac_matvec_many's bits", size);
+    cable_team_free(t);
+  }
+  free(X); free(Y0); free(Y); free(A);
+  colloc_jac_free(J);
+}
+
 int main(void)
 {
   test_team();
+  test_matvec();
   test_passes();
   test_branch();
   return test_summary();
