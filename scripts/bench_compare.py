@@ -30,7 +30,11 @@ AUTO_DIR = "/usr/lib/auto-07p"
 
 SETTINGS = dict(NTST=150, NCOL=4, IAD=3, EPSL=1e-7, EPSU=1e-7, EPSS=1e-5, DS=-5.0, DSMAX=5.0, DSMIN=1e-6)
 NLONG, NSHORT = 60, 2
-NSWEEP = 12  # the NTST sweep: per step = (NMX=12 run - NMX=2 run) / 10
+# the NTST sweep: per step = (NMX=22 run - NMX=2 run) / 20, medians of at least SWEEP_REPEATS runs.
+# With 10 steps and 3 runs the differences of a few tenths of a second were at the mercy of the
+# machine's other jobs (2026-11-25: 0.029 to 0.19 ms per step and NTST in one run)
+NSWEEP = 22
+SWEEP_REPEATS = 5
 
 
 
@@ -148,11 +152,11 @@ class Bench:
                     its += int(m.group(1))
         return pts, its
 
-    def alternate(self, cases, nlong=NLONG):
-        """cases: list of (key, fn(nmx) -> timed tuple).  Alternates them, REPEATS times each at NMX 60 and 2.
-        Returns {key: dict(long=median wall, short=..., cpu_long, cpu_short, rss)}."""
+    def alternate(self, cases, nlong=NLONG, repeats=None):
+        """cases: list of (key, fn(nmx) -> timed tuple).  Alternates them, REPEATS (or repeats) times each
+        at NMX nlong and 2.  Returns {key: dict(long=median wall, short=..., cpu_long, cpu_short, rss)}."""
         res = {k: {"long": [], "short": [], "cl": [], "cs": [], "rss": []} for k, _ in cases}
-        for _ in range(self.repeats):
+        for _ in range(repeats or self.repeats):
             for nmx, lk, ck in ((nlong, "long", "cl"), (NSHORT, "short", "cs")):
                 for k, fn in cases:
                     self.loads.append(load())
@@ -303,7 +307,7 @@ def main():
     print()
     print("The same settings with NTST changed (each program from the start file at that NTST); per step")
     print("= (NMX=%d run - NMX=2 run) / %d, medians of %d alternated runs; peak memory = the largest"
-          % (NSWEEP, NSWEEP - 2, repeats))
+          % (NSWEEP, NSWEEP - 2, max(repeats, SWEEP_REPEATS)))
     print("resident set of the runs.")
     print()
     print("| NTST | AUTO s/step | cable s/step, 1 thread | cable s/step, 2 threads | AUTO / cable (1 thread) | CPU s/step AUTO | CPU s/step cable (1 thread) | AUTO / cable (CPU) | cable CPU per step and NTST (ms) | cable peak memory (MB) | AUTO peak memory (MB) |")
@@ -313,7 +317,7 @@ def main():
         cs = [("a", lambda nmx, nt=ntst: B.run_auto("ntst%d_%d" % (nt, nmx), nt, nmx, 0, 1)),
               ("c1", lambda nmx, nt=ntst: B.run_cable("c_ntst%d_t1_%d" % (nt, nmx), nt, nmx, 0, 1, 1)),
               ("c2", lambda nmx, nt=ntst: B.run_cable("c_ntst%d_t2_%d" % (nt, nmx), nt, nmx, 0, 1, 2))]
-        rr = B.alternate(cs, NSWEEP)
+        rr = B.alternate(cs, NSWEEP, max(repeats, SWEEP_REPEATS))
         print("| %d | %.4f | %.4f | %.4f | %.1f | %.4f | %.4f | %.1f | %.3f | %.0f | %.0f |" % (
             ntst, rr["a"]["step"], rr["c1"]["step"], rr["c2"]["step"], rr["a"]["step"] / rr["c1"]["step"],
             rr["a"]["cstep"], rr["c1"]["cstep"], rr["a"]["cstep"] / rr["c1"]["cstep"],
