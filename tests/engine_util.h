@@ -3,6 +3,7 @@
 #ifndef CABLE_TEST_ENGINE_UTIL_H
 #define CABLE_TEST_ENGINE_UTIL_H
 
+#include <math.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -95,6 +96,20 @@ static inline int memrun_run(const cable_problem *pb, const cable_constants *c, 
   }
   cable_cont_free(cc);
   return st;
+}
+
+/* The largest relative distance between the points of two runs (principal
+ * parameter and L2 norm), INFINITY when they have different numbers of
+ * points. */
+static inline double memrun_compare(const memrun *a, const memrun *b)
+{
+  if (a->n != b->n) return INFINITY;
+  double d = 0;
+  for (int i = 0; i < a->n; i++) {
+    d = fmax(d, fabs(a->par[i][0] - b->par[i][0]) / (1 + fabs(a->par[i][0])));
+    d = fmax(d, fabs(a->l2[i] - b->l2[i]) / (1 + fabs(a->l2[i])));
+  }
+  return d;
 }
 
 static inline const cable_solution *memrun_find(const memrun *r, int itp, int skip)

@@ -211,16 +211,6 @@ static void test_stiff(void)
 }
 
 /* the points of two runs agree to tol (relative to 1 + |value|) */
-static double compare_runs(const memrun *a, const memrun *b)
-{
-  if (a->n != b->n) return INFINITY;
-  double d = 0;
-  for (int i = 0; i < a->n; i++) {
-    d = fmax(d, fabs(a->par[i][0] - b->par[i][0]) / (1 + fabs(a->par[i][0])));
-    d = fmax(d, fabs(a->l2[i] - b->l2[i]) / (1 + fabs(a->l2[i])));
-  }
-  return d;
-}
 
 /* The same Newton iterates with both linear solvers: Bratu at lambda = 2 from
  * u = 0, closing row lambda = 2, full Newton. */
@@ -420,7 +410,7 @@ static void test_variants(void)
      factorisation (at the last iterate but one), the KLU run factors again at
      the converged point: predictors differ by the Newton tolerance, and so do
      the converged points (EPSU = 1e-7, quadratic convergence leaves less) */
-  test_le("condensation vs KLU runs: same points to the Newton tolerance", compare_runs(a, b), 1e-7);
+  test_le("condensation vs KLU runs: same points to the Newton tolerance", memrun_compare(a, b), 1e-7);
   memrun_free(b);
   test_newton_solvers();
   c.linsolver = CABLE_LINSOLVER_CONDENSE;
@@ -429,7 +419,7 @@ static void test_variants(void)
   /* FD Jacobians change only the Newton path, not the converged points: the
      points agree to the Newton tolerance EPSU = 1e-7 (quadratic convergence
      leaves far less) */
-  test_le("analytic vs finite-difference Jacobian: same points", compare_runs(a, b), 1e-7);
+  test_le("analytic vs finite-difference Jacobian: same points", memrun_compare(a, b), 1e-7);
   test_int("both runs converge", a->status > 0 && b->status > 0, 1);
   memrun_free(b);
 

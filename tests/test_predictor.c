@@ -33,18 +33,6 @@ static void bratu_constants(cable_constants *c, int predictor, int iads)
   c->predictor = predictor;
 }
 
-/* max relative distance between the points of two runs, INFINITY when they
- * have different numbers of points */
-static double compare_points(const memrun *a, const memrun *b)
-{
-  if (a->n != b->n) return INFINITY;
-  double d = 0;
-  for (int i = 0; i < a->n; i++) {
-    d = fmax(d, fabs(a->par[i][0] - b->par[i][0]) / (1 + fabs(a->par[i][0])));
-    d = fmax(d, fabs(a->l2[i] - b->l2[i]) / (1 + fabs(a->l2[i])));
-  }
-  return d;
-}
 
 static int total_newton(const memrun *r)
 {
@@ -71,7 +59,7 @@ static void test_fixed_steps(memrun *a, memrun *b)
   test_int("fixed steps: the same number of points", b->n, a->n);
   /* the same arclength equations from points that agree to the Newton
      tolerance EPSU = 1e-7 (quadratic convergence leaves far less) */
-  test_le("fixed steps: PREDICTOR=2 points = PREDICTOR=1 points (relative)", compare_points(a, b), 1e-7);
+  test_le("fixed steps: PREDICTOR=2 points = PREDICTOR=1 points (relative)", memrun_compare(a, b), 1e-7);
   test_true("fixed steps: the first step's point is the same to the last bit",
             a->n > 1 && b->n > 1 && a->par[1][0] == b->par[1][0] && a->l2[1] == b->l2[1]);
   double la = fold_lambda(a), lb = fold_lambda(b);
@@ -139,7 +127,7 @@ static void test_reversed(memrun *a, memrun *b)
   bratu_constants(&c, 2, 0);
   c.ds = -0.25;
   memrun_run(cable_testproblem_bratu(), &c, start, b);
-  test_le("reversed: the same points", compare_points(a, b), 1e-7);
+  test_le("reversed: the same points", memrun_compare(a, b), 1e-7);
   test_le("reversed: the same fold", fabs(fold_lambda(a) - fold_lambda(b)), 1e-9);
   test_true("reversed: fewer Newton iterations", total_newton(b) < total_newton(a));
   cable_solution_free(start);
