@@ -23,6 +23,7 @@
 #include <math.h>
 #include <stddef.h>
 #include <stdlib.h>
+#include <string.h>
 
 int abd_band_alloc(abd_band *f, int n, int kl, int ku)
 {
@@ -59,14 +60,25 @@ void abd_band_free(abd_band *f)
   f->ud = f->uv = f->lv = NULL;
 }
 
+void abd_band_factor_begin(abd_band *f)
+{
+  f->fj = 0;
+  f->fnu = 0;
+  f->fnl = 0;
+  f->fju = 0;
+  f->finfo = 0;
+  f->umax = 0.0;
+}
+
 /* Element (i, j) (0-based) of the band matrix: ab[j * ldab + kl + ku + i - j]. */
-int abd_band_factor(abd_band *f, double *ab, int ldab)
+void abd_band_factor_upto(abd_band *f, double *ab, int ldab, int jend)
 {
   const int n = f->n, kl = f->kl, kv = f->kl + f->ku;
-  int info = 0, nu = 0, nl = 0;
-  double umax = 0.0;
-  int ju = 0; /* last column reached by the updates so far */
-  for (int j = 0; j < n; j++) {
+  int info = f->finfo, nu = f->fnu, nl = f->fnl;
+  double umax = f->umax;
+  int ju = f->fju; /* last column reached by the updates so far */
+  if (jend > n) jend = n;
+  for (int j = f->fj; j < jend; j++) {
     double *cj = ab + (size_t)j * (size_t)ldab + kv; /* cj[i] = A(j + i, j) */
     const int km = kl < n - 1 - j ? kl : n - 1 - j;
     f->up[j] = nu;
@@ -82,6 +94,11 @@ int abd_band_factor(abd_band *f, double *ab, int ldab)
     f->ud[j] = cj[jp];
     if (cj[jp] == 0.0) {
       if (info == 0) info = j + 1;
+      /* row j is not a pivot row: clear what it holds right of j (its
+         entries reach column j + ku, or ju after fill) */
+      const int lastc = j + f->ku < n - 1 ? j + f->ku : n - 1;
+      for (int c = j + 1; c <= (ju > lastc ? ju : lastc); c++) ab[(size_t)c * (size_t)ldab + (size_t)(kv - c + j)] = 0.0;
+      memset(cj, 0, ((size_t)km + 1) * sizeof *cj);
       continue;
     }
     if (big > umax) umax = big;
@@ -107,20 +124,41 @@ int abd_band_factor(abd_band *f, double *ab, int ldab)
     for (int c = j + 1; c <= ju; c++) {
       double *a = ab + (size_t)c * (size_t)ldab + kv - c + j; /* a[i] = A(j + i, c) */
       const double u = a[0];
+      a[0] = 0.0; /* row j of U is taken out (the zero invariant, abd_band.h) */
       if (u == 0.0) continue;
       f->uc[nu] = c;
       f->uv[nu++] = u;
       if (fabs(u) > umax) umax = fabs(u);
+      /* only the rows with a nonzero multiplier are written (the dense
+         loop runs when every row of the window has one): abd_band.h's
+         promise to concurrent writers of the other rows */
       if (nnz == km)
         for (int i = 1; i <= km; i++) a[i] -= cj[i] * u;
       else
         for (int t = 0; t < nnz; t++) a[nz[t]] -= cj[nz[t]] * u;
     }
+    memset(cj, 0, ((size_t)km + 1) * sizeof *cj); /* the pivot and L's column j are taken out */
   }
-  f->up[n] = nu;
-  f->lp[n] = nl;
+  if (jend > f->fj) f->fj = jend;
+  f->up[f->fj] = nu;
+  f->lp[f->fj] = nl;
+  f->fnu = nu;
+  f->fnl = nl;
+  f->fju = ju;
+  f->finfo = info;
   f->umax = umax;
-  return info;
+}
+
+int abd_band_factor_end(abd_band *f, double *ab, int ldab)
+{
+  abd_band_factor_upto(f, ab, ldab, f->n);
+  return f->finfo;
+}
+
+int abd_band_factor(abd_band *f, double *ab, int ldab)
+{
+  abd_band_factor_begin(f);
+  return abd_band_factor_end(f, ab, ldab);
 }
 
 void abd_band_solve(const abd_band *f, double *b)
