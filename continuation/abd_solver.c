@@ -70,6 +70,8 @@ struct abd_solver {
   int *iv_sign;                    /* [N] sign of the interval's pivots and interchanges */
   double *iv_logabs;               /* [N] sum of log |pivot| */
   double *iv_amax;                 /* [N] max |entry| of the local block */
+  double *iv_sumsq;                /* [N] sum of squares of J's collocation block */
+  double coll_sumsq;               /* their sum in interval order, for ||J||_F */
   double *w_g;                     /* [N*r] per-interval local right-hand sides, per vector */
   double *w_oo;                    /* [N*nO] per-interval outer values, per vector */
   /* smallest_sv workspace, grown on demand */
@@ -270,7 +272,7 @@ abd_solver *abd_solver_alloc(int ndim, int ntst, int ncol, int nfpr, int nbc, in
   size_t nIt = (size_t)ntst * (size_t)s->nI;
   s->loc = malloc((size_t)ntst * s->loc_size * sizeof(double));
   s->loc_piv = malloc((nIt ? nIt : 1) * sizeof(lapack_int));
-  s->ab = malloc((size_t)s->ldab * (size_t)s->nband * sizeof(double));
+  s->ab = calloc((size_t)s->ldab * (size_t)s->nband, sizeof(double));
   s->w_rhs = malloc(ABD_SOLVE_BLOCK * (size_t)s->nband * sizeof(double));
   s->w_piv = malloc(ABD_SOLVE_BLOCK * (nIt ? nIt : 1) * sizeof(double));
   s->w_loc = malloc((size_t)s->r * sizeof(double));
@@ -279,11 +281,12 @@ abd_solver *abd_solver_alloc(int ndim, int ntst, int ncol, int nfpr, int nbc, in
   s->iv_sign = malloc((size_t)ntst * sizeof(int));
   s->iv_logabs = malloc((size_t)ntst * sizeof(double));
   s->iv_amax = malloc((size_t)ntst * sizeof(double));
+  s->iv_sumsq = malloc((size_t)ntst * sizeof(double));
   s->w_g = malloc(ABD_SOLVE_BLOCK * (size_t)ntst * (size_t)s->r * sizeof(double));
   s->w_oo = malloc(ABD_SOLVE_BLOCK * (size_t)ntst * (size_t)s->nO * sizeof(double));
   if (abd_band_alloc(&s->band, s->nband, s->kl, s->ku) != 0) goto fail;
   if (!s->loc || !s->loc_piv || !s->ab || !s->w_rhs || !s->w_piv || !s->w_loc || !s->w_o ||
-      !s->iv_status || !s->iv_sign || !s->iv_logabs || !s->iv_amax || !s->w_g || !s->w_oo)
+      !s->iv_status || !s->iv_sign || !s->iv_logabs || !s->iv_amax || !s->iv_sumsq || !s->w_g || !s->w_oo)
     goto fail;
   s->perm_sign = structural_sign(s);
   if (s->perm_sign == 0) goto fail;
@@ -328,6 +331,7 @@ void abd_solver_free(abd_solver *s)
   free(s->iv_sign);
   free(s->iv_logabs);
   free(s->iv_amax);
+  free(s->iv_sumsq);
   free(s->w_g);
   free(s->w_oo);
   cable_team_free(s->team);
@@ -423,14 +427,6 @@ typedef struct {
   const colloc_jac *J;
 } factor_ctx;
 
-/* Zero mesh point j's m band columns. */
-static void band_zero(void *p, int j)
-{
-  const factor_ctx *c = p;
-  const abd_solver *s = c->s;
-  memset(s->ab + (size_t)j * (size_t)s->m * (size_t)s->ldab, 0, (size_t)s->m * (size_t)s->ldab * sizeof(double));
-}
-
 static void factor_interval(void *ctx, int j)
 {
   const factor_ctx *fc = ctx;
@@ -443,10 +439,17 @@ static void factor_interval(void *ctx, int j)
   int sign = 1, status = 0;
   double logabs = 0.0, amax = 0.0;
   local_fill(s, J, j, L);
-  for (size_t i = 0; i < s->loc_size; i++) {
-    double x = fabs(L[i]);
-    if (!(x <= DBL_MAX)) status = -2; /* NaN or infinity */
-    if (x > amax) amax = x;
+  /* max |entry|, and the sum of squares of J's collocation block (the first
+     nr rows of every local column hold it, each entry once) */
+  double sumsq = 0.0;
+  for (int c = 0; c < s->nI + nO; c++) {
+    const double *Lc = L + (size_t)c * (size_t)r;
+    for (int i = 0; i < r; i++) {
+      double x = fabs(Lc[i]);
+      if (!(x <= DBL_MAX)) status = -2; /* NaN or infinity */
+      if (x > amax) amax = x;
+      if (i < s->nr) sumsq += x * x;
+    }
   }
   if (status == 0 && nI > 0) {
     lapack_int info = LAPACKE_dgetrf_work(LAPACK_COL_MAJOR, r, nI, L, r, piv);
@@ -464,8 +467,6 @@ static void factor_interval(void *ctx, int j)
   }
   if (status >= 0) {
     int over = 0, g = grow_base(s, j);
-    /* this interval's band columns are zeroed by the interval that writes
-       their first rows: columns of z_{j+1} (and z_0 by interval 0) */
     for (int k = 0; k < r - nI; k++)
       for (int o = 0; o < nO; o++)
         over |= band_set(s, g + nd + nf + k, j * s->m + s->omap[o], O[(size_t)o * (size_t)r + (size_t)(nI + k)]);
@@ -483,6 +484,15 @@ static void factor_interval(void *ctx, int j)
   s->iv_sign[j] = sign;
   s->iv_logabs[j] = logabs;
   s->iv_amax[j] = amax;
+  s->iv_sumsq[j] = sumsq;
+}
+
+/* The band columns of z_j, once intervals 0..j are condensed. */
+static void band_eliminate(void *ctx, int j)
+{
+  const factor_ctx *fc = ctx;
+  abd_solver *s = fc->s;
+  abd_band_factor_upto(&s->band, s->ab, s->ldab, (j + 1) * s->m);
 }
 
 /* Largest |entry| of the boundary and dense-parameter blocks, or NaN when an
@@ -513,29 +523,20 @@ int abd_solver_factor(abd_solver *s, const colloc_jac *J)
 
   const int nd = s->nd, nf = s->nf, nq = s->nq, N = s->N;
   int sign = s->perm_sign, singular = 0;
-  double logabs = 0.0;
+  double logabs = 0.0, coll_sumsq = 0.0;
 
   s->band_overflow = 0;
   factor_ctx fc = {s, J};
-  cable_team_run(s->team, band_zero, &fc, N + 1);
+  /* ab is all zero here: calloc, then every factorisation clears it
+     (abd_band.h) */
   for (int i = 0; i < nd; i++) {
     band_put(s, i, zcol(s, 0, s->off_c, i), 1.0);
     band_put(s, i, zcol(s, 0, s->off_u, i), -1.0);
   }
   for (int d = 0; d < nq; d++) band_put(s, nd + d, zcol(s, 0, s->off_s, d), 1.0);
 
-  cable_team_run(s->team, factor_interval, &fc, N);
-  /* reduce in interval order */
-  for (int j = 0; j < N; j++) {
-    if (s->iv_status[j] == -2) return ABD_ERR_NONFINITE;
-    if (s->iv_status[j] == -1 || s->iv_status[j] == -3) return ABD_ERR_LAPACK;
-    if (s->iv_status[j] == 1) singular = 1;
-    sign *= s->iv_sign[j];
-    logabs += s->iv_logabs[j];
-    if (s->iv_amax[j] > amax) amax = s->iv_amax[j];
-  }
-  if (amax < 1.0) amax = 1.0; /* the identity copy entries */
-
+  /* the end rows touch only z_N's columns, which the interval stages below
+     write only in other rows */
   const int e = end_base(s), nb = s->nb;
   for (int b = 0; b < nb; b++) {
     for (int i = 0; i < nd; i++) {
@@ -550,9 +551,29 @@ int abd_solver_factor(abd_solver *s, const colloc_jac *J)
       band_put(s, e + nb + d, zcol(s, N, s->off_q, p), J->dense_par[(size_t)p * (size_t)nq + (size_t)d]);
     band_put(s, e + nb + d, zcol(s, N, s->off_s, d), 1.0);
   }
-  if (s->band_overflow) return ABD_ERR_LAPACK;
 
-  if (abd_band_factor(&s->band, s->ab, s->ldab) > 0) singular = 1;
+  /* The band LU runs behind the interval stages (the pipeline of
+     cable_team.h): once intervals 0..j are condensed, the columns of
+     z_0..z_j are final and the rows of intervals > j are still zero in
+     them, so band_eliminate may factor them while later intervals are
+     condensed (abd_band.h, abd_band_factor_upto). */
+  abd_band_factor_begin(&s->band);
+  cable_team_run_ordered(s->team, factor_interval, &fc, N, band_eliminate, &fc);
+  if (abd_band_factor_end(&s->band, s->ab, s->ldab) > 0) singular = 1;
+  if (s->band_overflow) return ABD_ERR_LAPACK;
+  /* reduce in interval order */
+  for (int j = 0; j < N; j++) {
+    if (s->iv_status[j] == -2) return ABD_ERR_NONFINITE;
+    if (s->iv_status[j] == -1 || s->iv_status[j] == -3) return ABD_ERR_LAPACK;
+    if (s->iv_status[j] == 1) singular = 1;
+    sign *= s->iv_sign[j];
+    logabs += s->iv_logabs[j];
+    if (s->iv_amax[j] > amax) amax = s->iv_amax[j];
+    coll_sumsq += s->iv_sumsq[j];
+  }
+  s->coll_sumsq = coll_sumsq;
+  if (amax < 1.0) amax = 1.0; /* the identity copy entries */
+
   for (int i = 0; i < s->nband; i++) {
     if (s->band.ipiv[i] != i) sign = -sign;
     det_accumulate(s->band.ud[i], &sign, &logabs);
@@ -805,12 +826,14 @@ double abd_solver_growth(const abd_solver *s)
 
 /* Frobenius norm of J (contributions of two intervals to a mesh point in a
  * dense row add before squaring). */
-static double jac_frobenius(const colloc_jac *J)
+/* ||J||_F of the factored J: the collocation blocks' part was summed by the
+ * factorisation's interval stages (in parallel; a sequential pass over the
+ * 11 MB of blocks was 5 % of an ISP=2 step), the rest is summed here. */
+static double jac_frobenius(const abd_solver *s, const colloc_jac *J)
 {
   const int nd = J->ndim, nc = J->ncol, nq = J->ndense;
-  double sum = 0.0;
-  size_t ncoll = (size_t)J->ntst * J->coll_stride, nbcv = (size_t)J->nbc * (size_t)(2 * nd + J->nfpr);
-  for (size_t i = 0; i < ncoll; i++) sum += J->coll[i] * J->coll[i];
+  double sum = s->coll_sumsq;
+  size_t nbcv = (size_t)J->nbc * (size_t)(2 * nd + J->nfpr);
   for (size_t i = 0; i < nbcv; i++) sum += J->bc[i] * J->bc[i];
   for (size_t i = 0; i < (size_t)nq * (size_t)J->nfpr; i++) sum += J->dense_par[i] * J->dense_par[i];
   for (int j = 0; j <= J->ntst; j++)
@@ -909,7 +932,7 @@ int abd_solver_smallest_svd(abd_solver *s, const colloc_jac *J, int k, const dou
   const int n = s->n;
   double *V = s->sv_v, *W = s->sv_w, *QL = s->sv_b, *R = s->sv_r, *X = s->sv_x, *YT = s->sv_yt, *S = s->sv_s;
   double *U = s->sv_vec, *res = s->sv_res;
-  const double normF = jac_frobenius(J);
+  const double normF = jac_frobenius(s, J);
 
   if (start) memcpy(V, start, (size_t)n * (size_t)k * sizeof(double));
   else sv_start(n, k, V);

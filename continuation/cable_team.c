@@ -15,6 +15,14 @@ struct cable_team {
   cable_team_fn *fn;
   void *ctx;
   int n;
+  /* cable_team_run_ordered's job: items front..back-1 are unclaimed;
+     stamp[i] == generation once item i is done */
+  int ordered;
+  int front, back;
+  unsigned long *stamp;
+  int stamp_cap;
+  int lead_waiting;            /* the calling thread sleeps on `progress` */
+  pthread_cond_t progress;
 };
 
 typedef struct {
@@ -26,6 +34,21 @@ static void run_block(cable_team *t, cable_team_fn *fn, void *ctx, int n, int k)
 {
   long lo = (long)k * n / t->size, hi = (long)(k + 1) * n / t->size;
   for (long i = lo; i < hi; i++) fn(ctx, (int)i);
+}
+
+/* Ordered job, a worker's part: items from the front until none is left.
+ * Called and returns with t->mu held. */
+static void claim_front(cable_team *t, cable_team_fn *fn, void *ctx)
+{
+  const unsigned long gen = t->generation;
+  while (t->front < t->back) {
+    int i = t->front++;
+    pthread_mutex_unlock(&t->mu);
+    fn(ctx, i);
+    pthread_mutex_lock(&t->mu);
+    t->stamp[i] = gen;
+    if (t->lead_waiting) pthread_cond_signal(&t->progress);
+  }
 }
 
 static void *worker(void *p)
@@ -43,9 +66,13 @@ static void *worker(void *p)
     cable_team_fn *fn = t->fn;
     void *ctx = t->ctx;
     int n = t->n;
-    pthread_mutex_unlock(&t->mu);
-    run_block(t, fn, ctx, n, k);
-    pthread_mutex_lock(&t->mu);
+    if (t->ordered) {
+      claim_front(t, fn, ctx);
+    } else {
+      pthread_mutex_unlock(&t->mu);
+      run_block(t, fn, ctx, n, k);
+      pthread_mutex_lock(&t->mu);
+    }
     if (--t->pending == 0) pthread_cond_signal(&t->done);
   }
   pthread_mutex_unlock(&t->mu);
@@ -67,6 +94,7 @@ cable_team *cable_team_alloc(int size)
   pthread_mutex_init(&t->mu, NULL);
   pthread_cond_init(&t->go, NULL);
   pthread_cond_init(&t->done, NULL);
+  pthread_cond_init(&t->progress, NULL);
   for (int k = 1; k < size; k++) {
     worker_arg *a = malloc(sizeof *a);
     if (!a) break;
@@ -96,9 +124,11 @@ void cable_team_free(cable_team *t)
     for (int k = 0; k < t->nstarted; k++) pthread_join(t->threads[k], NULL);
     pthread_cond_destroy(&t->go);
     pthread_cond_destroy(&t->done);
+    pthread_cond_destroy(&t->progress);
     pthread_mutex_destroy(&t->mu);
   }
   free(t->threads);
+  free(t->stamp);
   free(t);
 }
 
@@ -114,12 +144,74 @@ void cable_team_run(cable_team *t, cable_team_fn *fn, void *ctx, int n)
   t->fn = fn;
   t->ctx = ctx;
   t->n = n;
+  t->ordered = 0;
   t->pending = t->size - 1;
   t->generation++;
   pthread_cond_broadcast(&t->go);
   pthread_mutex_unlock(&t->mu);
   run_block(t, fn, ctx, n, 0);
   pthread_mutex_lock(&t->mu);
+  while (t->pending > 0) pthread_cond_wait(&t->done, &t->mu);
+  pthread_mutex_unlock(&t->mu);
+}
+
+static void ordered_loop(cable_team_fn *fn, void *ctx, int n, cable_team_fn *consume, void *cctx)
+{
+  for (int i = 0; i < n; i++) {
+    fn(ctx, i);
+    consume(cctx, i);
+  }
+}
+
+void cable_team_run_ordered(cable_team *t, cable_team_fn *fn, void *ctx, int n, cable_team_fn *consume, void *cctx)
+{
+  if (!t || t->size == 1 || n < 2) {
+    ordered_loop(fn, ctx, n, consume, cctx);
+    return;
+  }
+  if (t->stamp_cap < n) {
+    unsigned long *st = calloc((size_t)n, sizeof *st);
+    if (!st) { /* no room for the bookkeeping: the calling thread alone */
+      ordered_loop(fn, ctx, n, consume, cctx);
+      return;
+    }
+    free(t->stamp);
+    t->stamp = st;
+    t->stamp_cap = n;
+  }
+  pthread_mutex_lock(&t->mu);
+  t->fn = fn;
+  t->ctx = ctx;
+  t->n = n;
+  t->ordered = 1;
+  t->front = 0;
+  t->back = n;
+  t->pending = t->size - 1;
+  const unsigned long gen = ++t->generation;
+  pthread_cond_broadcast(&t->go);
+  /* consume in order; while the next item is not done, take the next
+     unclaimed one (the one needed soonest: taking from the back instead
+     left the lead a tail of band work after the workers had finished, 5.5
+     against 5.0 ms of the ideal on the NTST 150 knot factorisation), or
+     sleep when none is left */
+  for (int i = 0; i < n; i++) {
+    while (t->stamp[i] != gen) {
+      if (t->front < t->back) {
+        int k = t->front++;
+        pthread_mutex_unlock(&t->mu);
+        fn(ctx, k);
+        pthread_mutex_lock(&t->mu);
+        t->stamp[k] = gen;
+      } else {
+        t->lead_waiting = 1;
+        pthread_cond_wait(&t->progress, &t->mu);
+        t->lead_waiting = 0;
+      }
+    }
+    pthread_mutex_unlock(&t->mu);
+    consume(cctx, i);
+    pthread_mutex_lock(&t->mu);
+  }
   while (t->pending > 0) pthread_cond_wait(&t->done, &t->mu);
   pthread_mutex_unlock(&t->mu);
 }

@@ -10,6 +10,16 @@
  * thread).  The team is a run constant: its size does not change, and
  * nothing process-wide (BLAS or OpenMP settings) is touched.
  *
+ * cable_team_run_ordered(t, fn, ctx, n, consume, cctx) also calls
+ * fn(ctx, i) for i = 0..n-1, each once, and on the calling thread
+ * consume(cctx, i) for i = 0..n-1 in order, each once fn(ctx, 0..i) have
+ * returned: a producer-consumer pipeline.  The workers take items in
+ * increasing order; the calling thread consumes, and takes the next item
+ * itself while the one it needs is not ready.  Which thread runs which item depends on
+ * timing, so fn(ctx, i) must give the same result on every thread, and it
+ * may run concurrently with consume(cctx, k) for k < i.  Without workers
+ * it is the loop fn(ctx, i); consume(cctx, i).
+ *
  * A team is used by one thread at a time (the solver that owns it). */
 #ifndef CABLE_TEAM_H
 #define CABLE_TEAM_H
@@ -24,5 +34,6 @@ void cable_team_free(cable_team *t); /* NULL: nothing */
 int cable_team_size(const cable_team *t);
 /* t NULL runs the loop on the calling thread. */
 void cable_team_run(cable_team *t, cable_team_fn *fn, void *ctx, int n);
+void cable_team_run_ordered(cable_team *t, cable_team_fn *fn, void *ctx, int n, cable_team_fn *consume, void *cctx);
 
 #endif

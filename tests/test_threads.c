@@ -142,6 +142,54 @@ static void test_team(void)
   test_true("cable_team_run(NULL, ...) is the plain loop", seen[0] == 1 && seen[1] == 1 && seen[2] == 1);
 }
 
+/* cable_team_run_ordered: the producer marks item i done (after a little
+ * work, so that the consumer does wait sometimes); the consumer checks that
+ * items 0..i are done and that it is called in order. */
+typedef struct {
+  int n;
+  int produced[64];
+  double work[64];
+  int consumed, bad;
+} ordered_probe;
+
+static void ordered_produce(void *ctx, int i)
+{
+  ordered_probe *p = ctx;
+  double x = 0.0;
+  for (int k = 0; k < 2000 * (1 + i % 3); k++) x += sin(k * 1e-3 + i);
+  p->work[i] = x;
+  p->produced[i]++;
+}
+
+static void ordered_consume(void *ctx, int i)
+{
+  ordered_probe *p = ctx;
+  if (i != p->consumed) p->bad = 1;
+  for (int k = 0; k <= i; k++)
+    if (p->produced[k] != 1) p->bad = 1;
+  p->consumed++;
+}
+
+static void test_team_ordered(void)
+{
+  int ok = 1;
+  for (int size = 1; size <= 3; size++) {
+    cable_team *t = size == 1 ? NULL : cable_team_alloc(size);
+    static const int ns[] = {0, 1, 2, 5, 64};
+    for (int rep = 0; rep < 20; rep++)
+      for (size_t q = 0; q < sizeof ns / sizeof ns[0]; q++) {
+        ordered_probe p = {.n = ns[q]};
+        cable_team_run_ordered(t, ordered_produce, &p, p.n, ordered_consume, &p);
+        int once = 1;
+        for (int i = 0; i < p.n; i++) once &= p.produced[i] == 1;
+        if (p.bad || p.consumed != p.n || !once) ok = 0;
+      }
+    cable_team_free(t);
+  }
+  test_true("cable_team_run_ordered: every item made once and consumed once, in order, after items 0..i were made "
+            "(teams of 1..3 threads, 0..64 items, 20 repeats)", ok);
+}
+
 /* u0' = u1, u1' = -lambda e^u0 + sin(3 u0 u1); fails (status 3) where u0 > fail_above. */
 typedef struct {
   double fail_above;
@@ -331,6 +379,7 @@ static void test_matvec(void)
 int main(void)
 {
   test_team();
+  test_team_ordered();
   test_matvec();
   test_passes();
   test_branch();
