@@ -70,10 +70,16 @@ struct abd_solver {
   int *iv_sign;                    /* [N] sign of the interval's pivots and interchanges */
   double *iv_logabs;               /* [N] sum of log |pivot| */
   double *iv_amax;                 /* [N] max |entry| of the local block */
-  double *iv_sumsq;                /* [N] sum of squares of J's collocation block */
-  double coll_sumsq;               /* their sum in interval order, for ||J||_F */
+  double *iv_sumsq;                /* [N] sum of squares of J's collocation blocks (smallest_sv) */
   double *w_g;                     /* [N*r] per-interval local right-hand sides, per vector */
   double *w_oo;                    /* [N*nO] per-interval outer values, per vector */
+  /* right-hand sides whose forward stage was done by the factorisation
+     (abd_solver_factor_prepared): their copy, and whether the w_ buffers
+     still hold that stage (a solve of anything uses them up); behind a
+     pointer because the solves take a const solver */
+  int prep_k;
+  double *prep;                    /* [ABD_SOLVE_BLOCK*n] */
+  int *prep_live;
   /* smallest_sv workspace, grown on demand */
   int sv_k;
   double *sv_v, *sv_w, *sv_b, *sv_r, *sv_x, *sv_yt, *sv_s, *sv_work, *sv_vec, *sv_res, *sv_rn;
@@ -284,9 +290,12 @@ abd_solver *abd_solver_alloc(int ndim, int ntst, int ncol, int nfpr, int nbc, in
   s->iv_sumsq = malloc((size_t)ntst * sizeof(double));
   s->w_g = malloc(ABD_SOLVE_BLOCK * (size_t)ntst * (size_t)s->r * sizeof(double));
   s->w_oo = malloc(ABD_SOLVE_BLOCK * (size_t)ntst * (size_t)s->nO * sizeof(double));
+  s->prep = malloc(ABD_SOLVE_BLOCK * (size_t)s->n * sizeof(double));
+  s->prep_live = calloc(1, sizeof *s->prep_live);
   if (abd_band_alloc(&s->band, s->nband, s->kl, s->ku) != 0) goto fail;
   if (!s->loc || !s->loc_piv || !s->ab || !s->w_rhs || !s->w_piv || !s->w_loc || !s->w_o ||
-      !s->iv_status || !s->iv_sign || !s->iv_logabs || !s->iv_amax || !s->iv_sumsq || !s->w_g || !s->w_oo)
+      !s->iv_status || !s->iv_sign || !s->iv_logabs || !s->iv_amax || !s->iv_sumsq || !s->w_g || !s->w_oo ||
+      !s->prep || !s->prep_live)
     goto fail;
   s->perm_sign = structural_sign(s);
   if (s->perm_sign == 0) goto fail;
@@ -334,6 +343,8 @@ void abd_solver_free(abd_solver *s)
   free(s->iv_sumsq);
   free(s->w_g);
   free(s->w_oo);
+  free(s->prep);
+  free(s->prep_live);
   cable_team_free(s->team);
   sv_free(s);
   free(s);
@@ -370,8 +381,8 @@ void abd_solver_space(const abd_solver *s, long *ndoubles, long *nints)
               s->nO + 2L * s->N + ABD_SOLVE_BLOCK * (long)s->N * (s->r + s->nO) +
               (s->sv_k ? (long)s->sv_k * (5L * s->n + 3L * s->sv_k + 3) : 0L) + (long)s->sv_lwork;
   long nu = (long)s->nband * (s->kl + s->ku) + 1, nl = (long)s->nband * s->kl + 1; /* compressed factors */
-  *ndoubles += s->nband + nu + nl;
-  *nints = s->nO + nIt + s->nband + s->kl + 1 + 2L * (s->nband + 1) + nu + nl + 2L * s->N;
+  *ndoubles += s->nband + nu + nl + ABD_SOLVE_BLOCK * (long)s->n; /* + the prepared right-hand sides */
+  *nints = s->nO + nIt + s->nband + s->kl + 1 + 2L * (s->nband + 1) + nu + nl + 2L * s->N + 1;
 }
 
 static int jac_matches(const abd_solver *s, const colloc_jac *J)
@@ -419,12 +430,47 @@ static void det_accumulate(double pivot, int *sign, double *logabs)
   *logabs += log(fabs(pivot));
 }
 
+static double *wv_rhs(const abd_solver *s, int v) { return s->w_rhs + (size_t)v * (size_t)s->nband; }
+static double *wv_piv(const abd_solver *s, int v) { return s->w_piv + (size_t)v * (size_t)s->N * (size_t)s->nI; }
+static double *wv_g(const abd_solver *s, int v) { return s->w_g + (size_t)v * (size_t)s->N * (size_t)s->r; }
+static double *wv_oo(const abd_solver *s, int v) { return s->w_oo + (size_t)v * (size_t)s->N * (size_t)s->nO; }
+
+/* Solve stage 1 for one vector x (length n) and interval j, in the workspace
+ * of block slot v: g_j = L_j^{-1} P_j b_j; its pivot rows to w_piv, the rest
+ * to the band right-hand side.  Called by the solves, and by the
+ * factorisation for prepared right-hand sides (the same code: the same bits). */
+static void forward_interval(const abd_solver *s, int j, const double *x, int v)
+{
+  const int nd = s->nd, nf = s->nf, nq = s->nq, nI = s->nI, r = s->r, nr = s->nr;
+  const double *L = loc_block(s, j);
+  const lapack_int *piv = s->loc_piv + (size_t)j * (size_t)nI;
+  double *g = wv_g(s, v) + (size_t)j * (size_t)r;
+  memcpy(g, x + (size_t)j * (size_t)nr, (size_t)nr * sizeof(double));
+  for (int d = 0; d < nq; d++) g[nr + d] = 0.0;
+  if (nI > 0) {
+    for (int i = 0; i < nI; i++) {
+      int ip = (int)piv[i] - 1;
+      if (ip != i) {
+        double t = g[i];
+        g[i] = g[ip];
+        g[ip] = t;
+      }
+    }
+    cblas_dtrsv(CblasColMajor, CblasLower, CblasNoTrans, CblasUnit, nI, L, r, g, 1);
+    cblas_dgemv(CblasColMajor, CblasNoTrans, r - nI, nI, -1.0, L + nI, r, g, 1, 1.0, g + nI, 1);
+    memcpy(wv_piv(s, v) + (size_t)j * (size_t)nI, g, (size_t)nI * sizeof(double));
+  }
+  memcpy(wv_rhs(s, v) + grow_base(s, j) + nd + nf, g + nI, (size_t)(r - nI) * sizeof(double));
+}
+
 /* Interval j's stage of the factorisation: local fill, condensation, growth
  * and its band rows.  Touches only interval j's storage and band rows, so
  * intervals run in parallel; the results go to the iv_ arrays. */
 typedef struct {
   abd_solver *s;
   const colloc_jac *J;
+  const double *B; /* k prepared right-hand sides (abd_solver_factor_prepared) */
+  int k;
 } factor_ctx;
 
 static void factor_interval(void *ctx, int j)
@@ -439,17 +485,10 @@ static void factor_interval(void *ctx, int j)
   int sign = 1, status = 0;
   double logabs = 0.0, amax = 0.0;
   local_fill(s, J, j, L);
-  /* max |entry|, and the sum of squares of J's collocation block (the first
-     nr rows of every local column hold it, each entry once) */
-  double sumsq = 0.0;
-  for (int c = 0; c < s->nI + nO; c++) {
-    const double *Lc = L + (size_t)c * (size_t)r;
-    for (int i = 0; i < r; i++) {
-      double x = fabs(Lc[i]);
-      if (!(x <= DBL_MAX)) status = -2; /* NaN or infinity */
-      if (x > amax) amax = x;
-      if (i < s->nr) sumsq += x * x;
-    }
+  for (size_t i = 0; i < s->loc_size; i++) {
+    double x = fabs(L[i]);
+    if (!(x <= DBL_MAX)) status = -2; /* NaN or infinity */
+    if (x > amax) amax = x;
   }
   if (status == 0 && nI > 0) {
     lapack_int info = LAPACKE_dgetrf_work(LAPACK_COL_MAJOR, r, nI, L, r, piv);
@@ -480,11 +519,14 @@ static void factor_interval(void *ctx, int j)
     }
     if (over) status = -3;
   }
+  /* the prepared right-hand sides' stage 1 while the block is in cache
+     (abd_solver_factor_prepared) */
+  if (status == 0)
+    for (int v = 0; v < fc->k; v++) forward_interval(s, j, fc->B + (size_t)v * (size_t)s->n, v);
   s->iv_status[j] = status;
   s->iv_sign[j] = sign;
   s->iv_logabs[j] = logabs;
   s->iv_amax[j] = amax;
-  s->iv_sumsq[j] = sumsq;
 }
 
 /* The band columns of z_j, once intervals 0..j are condensed. */
@@ -511,9 +553,26 @@ static double end_maxabs(const colloc_jac *J)
   return mx;
 }
 
-int abd_solver_factor(abd_solver *s, const colloc_jac *J)
+static int factor(abd_solver *s, const colloc_jac *J, const double *B, int k);
+
+int abd_solver_factor(abd_solver *s, const colloc_jac *J) { return factor(s, J, NULL, 0); }
+
+int abd_solver_factor_prepared(abd_solver *s, const colloc_jac *J, const double *B, int k)
 {
   if (!s) return ABD_ERR_SIZE;
+  if (k < 0 || k > ABD_SOLVE_BLOCK || (k > 0 && !B)) {
+    *s->prep_live = 0;
+    s->state = STATE_NONE;
+    return ABD_ERR_SIZE;
+  }
+  return factor(s, J, B, k);
+}
+
+static int factor(abd_solver *s, const colloc_jac *J, const double *B, int k)
+{
+  if (!s) return ABD_ERR_SIZE;
+  *s->prep_live = 0;
+  s->prep_k = 0;
   s->state = STATE_NONE;
   s->det_sign = 0;
   s->det_log = -INFINITY;
@@ -523,10 +582,14 @@ int abd_solver_factor(abd_solver *s, const colloc_jac *J)
 
   const int nd = s->nd, nf = s->nf, nq = s->nq, N = s->N;
   int sign = s->perm_sign, singular = 0;
-  double logabs = 0.0, coll_sumsq = 0.0;
+  double logabs = 0.0;
 
   s->band_overflow = 0;
-  factor_ctx fc = {s, J};
+  factor_ctx fc = {s, J, B, k};
+  for (int v = 0; v < k; v++) {
+    memset(wv_rhs(s, v), 0, (size_t)s->nband * sizeof(double));
+    memcpy(s->prep + (size_t)v * (size_t)s->n, B + (size_t)v * (size_t)s->n, (size_t)s->n * sizeof(double));
+  }
   /* ab is all zero here: calloc, then every factorisation clears it
      (abd_band.h) */
   for (int i = 0; i < nd; i++) {
@@ -569,9 +632,7 @@ int abd_solver_factor(abd_solver *s, const colloc_jac *J)
     sign *= s->iv_sign[j];
     logabs += s->iv_logabs[j];
     if (s->iv_amax[j] > amax) amax = s->iv_amax[j];
-    coll_sumsq += s->iv_sumsq[j];
   }
-  s->coll_sumsq = coll_sumsq;
   if (amax < 1.0) amax = 1.0; /* the identity copy entries */
 
   for (int i = 0; i < s->nband; i++) {
@@ -590,6 +651,8 @@ int abd_solver_factor(abd_solver *s, const colloc_jac *J)
   s->state = STATE_OK;
   s->det_sign = sign;
   s->det_log = logabs;
+  s->prep_k = k;
+  *s->prep_live = k > 0;
   return ABD_OK;
 }
 
@@ -612,39 +675,12 @@ typedef struct {
   int k;
 } solve_ctx;
 
-static double *wv_rhs(const abd_solver *s, int v) { return s->w_rhs + (size_t)v * (size_t)s->nband; }
-static double *wv_piv(const abd_solver *s, int v) { return s->w_piv + (size_t)v * (size_t)s->N * (size_t)s->nI; }
-static double *wv_g(const abd_solver *s, int v) { return s->w_g + (size_t)v * (size_t)s->N * (size_t)s->r; }
-static double *wv_oo(const abd_solver *s, int v) { return s->w_oo + (size_t)v * (size_t)s->N * (size_t)s->nO; }
 
 /* J x = b, stage 1: apply interval j's L^{-1} P to its rows' right-hand side. */
 static void solve_forward(void *p, int j)
 {
   const solve_ctx *c = p;
-  const abd_solver *s = c->s;
-  const int nd = s->nd, nf = s->nf, nq = s->nq, nI = s->nI, r = s->r, nr = s->nr;
-  const double *L = loc_block(s, j);
-  const lapack_int *piv = s->loc_piv + (size_t)j * (size_t)nI;
-  for (int v = 0; v < c->k; v++) {
-    const double *x = c->x + (size_t)v * (size_t)s->n;
-    double *g = wv_g(s, v) + (size_t)j * (size_t)r;
-    memcpy(g, x + (size_t)j * (size_t)nr, (size_t)nr * sizeof(double));
-    for (int d = 0; d < nq; d++) g[nr + d] = 0.0;
-    if (nI > 0) {
-      for (int i = 0; i < nI; i++) {
-        int ip = (int)piv[i] - 1;
-        if (ip != i) {
-          double t = g[i];
-          g[i] = g[ip];
-          g[ip] = t;
-        }
-      }
-      cblas_dtrsv(CblasColMajor, CblasLower, CblasNoTrans, CblasUnit, nI, L, r, g, 1);
-      cblas_dgemv(CblasColMajor, CblasNoTrans, r - nI, nI, -1.0, L + nI, r, g, 1, 1.0, g + nI, 1);
-      memcpy(wv_piv(s, v) + (size_t)j * (size_t)nI, g, (size_t)nI * sizeof(double));
-    }
-    memcpy(wv_rhs(s, v) + grow_base(s, j) + nd + nf, g + nI, (size_t)(r - nI) * sizeof(double));
-  }
+  for (int v = 0; v < c->k; v++) forward_interval(c->s, j, c->x + (size_t)v * (size_t)c->s->n, v);
 }
 
 /* J x = b, stage 3: interior unknowns, U_j x_I = g_j - X_j x_O. */
@@ -669,8 +705,14 @@ static int solve_many(const abd_solver *s, double *X, int k)
 {
   const int nd = s->nd, nf = s->nf, nq = s->nq, nr = s->nr, N = s->N;
   solve_ctx c = {s, X, k};
-  for (int v = 0; v < k; v++) memset(wv_rhs(s, v), 0, (size_t)s->nband * sizeof(double));
-  cable_team_run(s->team, solve_forward, &c, N);
+  /* stage 1 was done by the factorisation when X is what it prepared */
+  int prepared = *s->prep_live && k == s->prep_k &&
+                 memcmp(X, s->prep, (size_t)k * (size_t)s->n * sizeof(double)) == 0;
+  *s->prep_live = 0; /* this solve uses the workspace up */
+  if (!prepared) {
+    for (int v = 0; v < k; v++) memset(wv_rhs(s, v), 0, (size_t)s->nband * sizeof(double));
+    cable_team_run(s->team, solve_forward, &c, N);
+  }
   const int e = end_base(s);
   for (int v = 0; v < k; v++) {
     double *rhs = wv_rhs(s, v);
@@ -753,6 +795,7 @@ static int solve_transpose_many(const abd_solver *s, double *X, int k)
 {
   const int nd = s->nd, nf = s->nf, nq = s->nq, nI = s->nI, nr = s->nr, nO = s->nO, N = s->N;
   solve_ctx c = {s, X, k};
+  *s->prep_live = 0; /* the workspace is used up */
   for (int v = 0; v < k; v++) {
     double *rhs = wv_rhs(s, v);
     const double *x = X + (size_t)v * (size_t)s->n;
@@ -826,13 +869,36 @@ double abd_solver_growth(const abd_solver *s)
 
 /* Frobenius norm of J (contributions of two intervals to a mesh point in a
  * dense row add before squaring). */
-/* ||J||_F of the factored J: the collocation blocks' part was summed by the
- * factorisation's interval stages (in parallel; a sequential pass over the
- * 11 MB of blocks was 5 % of an ISP=2 step), the rest is summed here. */
+/* Sum of squares of J's collocation block j, into iv_sumsq[j] (run by the
+ * team): four independent chains in a fixed order, the same for every thread
+ * count (one chain of dependent additions was the limit, a sequential pass of
+ * it over the 11 MB of blocks 5 % of an ISP=2 step). */
+typedef struct {
+  const abd_solver *s;
+  const colloc_jac *J;
+} fro_ctx;
+
+static void coll_sumsq(void *p, int j)
+{
+  const fro_ctx *c = p;
+  const double *a = colloc_jac_coll_block(c->J, j);
+  const size_t n = c->J->coll_stride;
+  double q[4] = {0, 0, 0, 0};
+  size_t i = 0;
+  for (; i + 4 <= n; i += 4)
+    for (int t = 0; t < 4; t++) q[t] += a[i + t] * a[i + t];
+  for (; i < n; i++) q[0] += a[i] * a[i];
+  c->s->iv_sumsq[j] = (q[0] + q[1]) + (q[2] + q[3]);
+}
+
+/* ||J||_F: the collocation blocks on the team, summed in interval order. */
 static double jac_frobenius(const abd_solver *s, const colloc_jac *J)
 {
   const int nd = J->ndim, nc = J->ncol, nq = J->ndense;
-  double sum = s->coll_sumsq;
+  fro_ctx fc = {s, J};
+  cable_team_run(s->team, coll_sumsq, &fc, J->ntst);
+  double sum = 0.0;
+  for (int j = 0; j < J->ntst; j++) sum += s->iv_sumsq[j];
   size_t nbcv = (size_t)J->nbc * (size_t)(2 * nd + J->nfpr);
   for (size_t i = 0; i < nbcv; i++) sum += J->bc[i] * J->bc[i];
   for (size_t i = 0; i < (size_t)nq * (size_t)J->nfpr; i++) sum += J->dense_par[i] * J->dense_par[i];

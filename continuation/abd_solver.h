@@ -47,6 +47,16 @@ void abd_solver_free(abd_solver *s);                 /* NULL is a no-op */
  * < 0 error. */
 int abd_solver_factor(abd_solver *s, const colloc_jac *J);
 
+/* The same, and the first stage of the solves J x = b for the k <= 
+ * ABD_SOLVE_BLOCK right-hand sides B (k vectors of length n, one after the
+ * other) while each interval's factors are in cache: the next
+ * abd_solver_solve / _solve_many with exactly those k vectors (compared bit
+ * for bit) skips that stage and gives bit for bit the result it gives
+ * otherwise.  Any solve uses the preparation up (doc/engine.md: the solve
+ * after it a third faster on the NTST 150 knot, tests/bench_factor_solve).
+ * k = 0 is abd_solver_factor; k out of range: ABD_ERR_SIZE. */
+int abd_solver_factor_prepared(abd_solver *s, const colloc_jac *J, const double *B, int k);
+
 /* J x = b: x holds b (length n, equation order of colloc_jac.h) on entry and
  * the solution (unknown order) on return.  0 ok; ABD_SINGULAR when the last
  * factorisation found J singular (x untouched); < 0 when not factored. */

@@ -60,7 +60,7 @@ static int kin_sysfn(N_Vector x, N_Vector F, void *data)
 
 static int kin_jacfn(N_Vector x, N_Vector fx, SUNMatrix A, void *data, N_Vector t1, N_Vector t2)
 {
-  (void)fx; (void)t1; (void)t2;
+  (void)t2;
   colloc_newton *nw = data;
   long nni = 0;
   KINGetNumNonlinSolvIters(nw->kin, &nni); /* the iteration this setup serves */
@@ -71,6 +71,11 @@ static int kin_jacfn(N_Vector x, N_Vector fx, SUNMatrix A, void *data, N_Vector 
   /* A wraps nw->J, which the call above overwrote entry by entry: KINSOL's
      zeroing before this call need not be carried out */
   if (nw->kind != CABLE_LINSOLVER_KLU) SUNMat_Colloc_Filled(A);
+  if (nw->kind != CABLE_LINSOLVER_KLU) {
+    /* KINSOL's next solve is J p = -F(x) (a hint only: the solve checks) */
+    N_VScale(-1.0, fx, t1);
+    SUNLinSol_Colloc_ExpectRhs(nw->LS, N_VGetArrayPointer(t1));
+  }
   if (nw->kind == CABLE_LINSOLVER_KLU) return colloc_sparse_fill(nw->J, A) == 0 ? 0 : -1;
   return 0;
 }
@@ -128,6 +133,9 @@ colloc_newton *colloc_newton_alloc(colloc_system *sys, const cable_constants *c,
     nw->A = SUNMat_Colloc(nw->J, nw->ctx);
     if (nw->A) nw->LS = SUNLinSol_Colloc(nw->x, nw->A, nw->ctx);
     if (nw->LS) abd_solver_set_threads(SUNLinSol_Colloc_Solver(nw->LS), cable_threads(c));
+    /* the continuation's tangent comes with every Newton solve
+       (colloc_newton_tangent_unit); off when there is no room for it */
+    if (nw->LS) SUNLinSol_Colloc_SolveLastUnit(nw->LS, 1);
   }
   if (!nw->A || !nw->LS) goto fail;
   nw->kin = KINCreate(nw->ctx);
@@ -259,4 +267,12 @@ int colloc_newton_factorization(colloc_newton *nw, struct abd_solver **abd, coll
   *abd = SUNLinSol_Colloc_Solver(nw->LS);
   *J = nw->J;
   return *abd ? 0 : -1;
+}
+
+const double *colloc_newton_tangent_unit(colloc_newton *nw)
+{
+  struct abd_solver *abd;
+  colloc_jac *J;
+  if (colloc_newton_factorization(nw, &abd, &J) != 0) return NULL;
+  return SUNLinSol_Colloc_LastUnitSolution(nw->LS);
 }

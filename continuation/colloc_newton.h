@@ -43,4 +43,10 @@ struct abd_solver;
  * otherwise. */
 int colloc_newton_factorization(colloc_newton *nw, struct abd_solver **abd, colloc_jac **J);
 
+/* The solution y of M y = e_last with that factorisation's matrix M, solved
+ * along with the last Newton correction (SUNLinSol_Colloc_SolveLastUnit), bit
+ * for bit what abd_solver_solve gives; NULL when colloc_newton_factorization
+ * has none or the last solve did not use it.  Valid until the next solve. */
+const double *colloc_newton_tangent_unit(colloc_newton *nw);
+
 #endif

@@ -36,17 +36,22 @@ int cont_smallest_sv(cable_cont *cc, int k, double *sv, double *vecs)
 }
 
 /* Tangent and test functions from a factorisation of the extended matrix
- * [F_x; theta xdot_old^T] (abd, with its matrix J). */
-static int tangent_from(cable_cont *cc, abd_solver *abd, colloc_jac *J, const double *x, double *xdot_new,
-                        cont_tests *tf)
+ * [F_x; theta xdot_old^T] (abd, with its matrix J); unit (NULL: solve here)
+ * the solution of that system for e_last, when already solved. */
+static int tangent_from(cable_cont *cc, abd_solver *abd, colloc_jac *J, const double *unit, const double *x,
+                        double *xdot_new, cont_tests *tf)
 {
   int sign = 0;
   double logdet = 0;
   abd_solver_det(abd, &sign, &logdet);
   /* [F_x; theta xdot_old^T] xdot_new = e_last keeps the orientation: <xdot_new, xdot_old> > 0 */
-  memset(xdot_new, 0, (size_t)cc->n * sizeof *xdot_new);
-  xdot_new[cc->n - 1] = 1.0;
-  if (abd_solver_solve(abd, xdot_new) != 0) return CABLE_ERR_LINSOLVE;
+  if (unit) {
+    memcpy(xdot_new, unit, (size_t)cc->n * sizeof *xdot_new);
+  } else {
+    memset(xdot_new, 0, (size_t)cc->n * sizeof *xdot_new);
+    xdot_new[cc->n - 1] = 1.0;
+    if (abd_solver_solve(abd, xdot_new) != 0) return CABLE_ERR_LINSOLVE;
+  }
   cont_normalize(cc, xdot_new);
   cc->tan_abd = abd;
   cc->tan_J = J;
@@ -81,7 +86,7 @@ int cont_tangent(cable_cont *cc, const double *x, const double *xdot_old, double
   int rc = cont_factor_at(cc, x, NULL, NULL);
   cc->cnt.tan_fact++;
   if (rc != CABLE_SUCCESS) return rc;
-  return tangent_from(cc, cc->abd, cc->J, x, xdot_new, tf);
+  return tangent_from(cc, cc->abd, cc->J, NULL, x, xdot_new, tf);
 }
 
 int cont_tangent_after_newton(cable_cont *cc, const double *x, const double *xdot_old, double *xdot_new,
@@ -91,6 +96,7 @@ int cont_tangent_after_newton(cable_cont *cc, const double *x, const double *xdo
   colloc_jac *J;
   /* the corrector's last matrix is [F_x; theta xdot_old^T] at the last iterate
      but one, which differs from x by less than the convergence tolerance */
-  if (colloc_newton_factorization(cc->nw, &abd, &J) == 0) return tangent_from(cc, abd, J, x, xdot_new, tf);
+  if (colloc_newton_factorization(cc->nw, &abd, &J) == 0)
+    return tangent_from(cc, abd, J, colloc_newton_tangent_unit(cc->nw), x, xdot_new, tf);
   return cont_tangent(cc, x, xdot_old, xdot_new, tf);
 }

@@ -28,4 +28,22 @@ int SUNLinSol_Colloc_Det(SUNLinearSolver S, int *sign, double *logabs);
  * transpose solves); NULL if S is not a SUNLinSol_Colloc solver. */
 abd_solver *SUNLinSol_Colloc_Solver(SUNLinearSolver S);
 
+/* With on != 0, every solve J x = b also solves J y = e_last (the unit
+ * vector of the last equation) in the same pass over the factors
+ * (abd_solver_solve_many; x is bit for bit what the plain solve gives): the
+ * continuation tangent of the corrector's last matrix without another
+ * solve.  0, SUNLS_MEM_FAIL (then off) or SUNLS_ILL_INPUT. */
+int SUNLinSol_Colloc_SolveLastUnit(SUNLinearSolver S, int on);
+
+/* y of the last solve when it was made with the current factorisation (the
+ * last setup, successful), else NULL.  Valid until the next setup or solve. */
+const double *SUNLinSol_Colloc_LastUnitSolution(SUNLinearSolver S);
+
+/* The right-hand side b (length n) the solve after the next setup will
+ * probably get: that setup factors with abd_solver_factor_prepared for b
+ * (and e_last when SolveLastUnit is on), and the solve, if its b is b bit for
+ * bit, skips its first stage (the same result).  0, SUNLS_MEM_FAIL or
+ * SUNLS_ILL_INPUT. */
+int SUNLinSol_Colloc_ExpectRhs(SUNLinearSolver S, const double *b);
+
 #endif

@@ -606,6 +606,70 @@ static void check_sv_case(const char *tag, double d1, double d2, int k, int chec
   abd_solver_free(s);
 }
 
+/* abd_solver_factor_prepared: the solve of a prepared right-hand side skips
+ * its first stage and must give the plain solve's result bit for bit; a
+ * different right-hand side, or one after another solve has used the
+ * preparation up, goes the plain way (also bit for bit); bad k is refused. */
+static void check_prepared(void)
+{
+  rng g = {UINT64_C(4242)};
+  const int ndim = 3, ntst = 7, ncol = 3, nfpr = 2, nint = 1, nbc = ndim + nfpr - nint - 1;
+  colloc_jac *J = colloc_jac_alloc(ndim, ntst, ncol, nfpr, nbc, nint);
+  abd_solver *a = abd_solver_alloc(ndim, ntst, ncol, nfpr, nbc, nint);
+  abd_solver *p = abd_solver_alloc(ndim, ntst, ncol, nfpr, nbc, nint);
+  if (!J || !a || !p) {
+    test_true("prepared: allocation", 0);
+    return;
+  }
+  const int n = abd_solver_size(a);
+  double *B = malloc(2 * (size_t)n * sizeof *B), *X = malloc(2 * (size_t)n * sizeof *X);
+  double *Y = malloc(2 * (size_t)n * sizeof *Y);
+  int ok = 1;
+  for (int nt = 1; nt <= 2; nt++) {
+    abd_solver_set_threads(a, nt);
+    abd_solver_set_threads(p, nt);
+    for (int k = 1; k <= 2; k++) {
+      jac_random(J, &g);
+      fill_random(B, 2 * (size_t)n, &g);
+      ok &= abd_solver_factor(a, J) == ABD_OK;
+      memcpy(Y, B, 2 * (size_t)n * sizeof *Y);
+      ok &= abd_solver_solve_many(a, Y, k) == ABD_OK;
+      ok &= abd_solver_factor_prepared(p, J, B, k) == ABD_OK;
+      memcpy(X, B, 2 * (size_t)n * sizeof *X);
+      ok &= abd_solver_solve_many(p, X, k) == ABD_OK; /* prepared */
+      ok &= memcmp(X, Y, (size_t)k * (size_t)n * sizeof *X) == 0;
+      memcpy(X, B, 2 * (size_t)n * sizeof *X);
+      ok &= abd_solver_solve_many(p, X, k) == ABD_OK; /* used up: the plain way */
+      ok &= memcmp(X, Y, (size_t)k * (size_t)n * sizeof *X) == 0;
+      /* prepared for B, asked for another vector first, then for B */
+      ok &= abd_solver_factor_prepared(p, J, B, k) == ABD_OK;
+      memcpy(X, B + n, (size_t)n * sizeof *X);
+      ok &= abd_solver_solve(p, X) == ABD_OK;
+      memcpy(Y, B + n, (size_t)n * sizeof *Y);
+      ok &= abd_solver_solve(a, Y) == ABD_OK;
+      ok &= memcmp(X, Y, (size_t)n * sizeof *X) == 0;
+      memcpy(X, B, 2 * (size_t)n * sizeof *X);
+      memcpy(Y, B, 2 * (size_t)n * sizeof *Y);
+      ok &= abd_solver_solve_many(p, X, k) == ABD_OK && abd_solver_solve_many(a, Y, k) == ABD_OK;
+      ok &= memcmp(X, Y, (size_t)k * (size_t)n * sizeof *X) == 0;
+    }
+  }
+  test_true("factor_prepared: the prepared solve, a solve after it and a solve after another vector's equal the "
+            "plain solve bit for bit (k = 1, 2; 1 and 2 threads)", ok);
+  test_int("factor_prepared with k = 3 > ABD_SOLVE_BLOCK: ABD_ERR_SIZE", abd_solver_factor_prepared(p, J, B, 3),
+           ABD_ERR_SIZE);
+  test_int("factor_prepared with B NULL and k = 1: ABD_ERR_SIZE", abd_solver_factor_prepared(p, J, NULL, 1),
+           ABD_ERR_SIZE);
+  test_int("solve after a refused factor_prepared: ABD_ERR_NOT_FACTORED", abd_solver_solve(p, X),
+           ABD_ERR_NOT_FACTORED);
+  free(B);
+  free(X);
+  free(Y);
+  abd_solver_free(a);
+  abd_solver_free(p);
+  colloc_jac_free(J);
+}
+
 int main(void)
 {
   const config cfgs[] = {
@@ -623,6 +687,7 @@ int main(void)
   }
   check_stiff();
   check_singular();
+  check_prepared();
   check_sv_case("sv planted 1e-9, 1e-7 (k=2)", 1e-9, 1e-7, 2, 1);
   check_sv_case("sv planted 1e-9, 1e-7 (k=1)", 1e-9, 1e-7, 1, 1);
   check_sv_case("sv double zero 3e-9, 3e-9 (k=2)", 3e-9, 3e-9, 2, 0);

@@ -295,6 +295,38 @@ int main(void)
   test_le("SUNLinSol_Colloc vs direct, new values", diff_inf(N_VGetArrayPointer(vx), xd, n) / norm_inf(xd, n),
           SOLVE_C * n * DBL_EPSILON * kappa);
 
+  /* ---- the tangent along with the solve, and the expected right-hand side ---- */
+  {
+    double *x_plain = malloc((size_t)n * sizeof(double)), *e = calloc((size_t)n, sizeof(double));
+    memcpy(x_plain, N_VGetArrayPointer(vx), (size_t)n * sizeof(double)); /* the plain LS solve of b above */
+    e[n - 1] = 1.0;
+    abd_solver_solve(s, e); /* s holds the factors of the same J: e_last's solution */
+    test_true("LastUnitSolution is NULL while SolveLastUnit is off", SUNLinSol_Colloc_LastUnitSolution(LS) == NULL);
+    test_int("SolveLastUnit on", SUNLinSol_Colloc_SolveLastUnit(LS, 1), SUNLS_SUCCESS);
+    test_true("LastUnitSolution is NULL before a solve", SUNLinSol_Colloc_LastUnitSolution(LS) == NULL);
+    for (int expect = 0; expect <= 2; expect++) {
+      /* 0: no hint; 1: the hint is b; 2: the hint is not b (the solve checks) */
+      if (expect == 1) test_int("ExpectRhs(b)", SUNLinSol_Colloc_ExpectRhs(LS, b), SUNLS_SUCCESS);
+      if (expect == 2) test_int("ExpectRhs(other)", SUNLinSol_Colloc_ExpectRhs(LS, t), SUNLS_SUCCESS);
+      SUNLinSolSetup(LS, A);
+      test_int("solve with the tangent along", SUNLinSolSolve(LS, A, vx, vb, 0.0), SUNLS_SUCCESS);
+      const double *u = SUNLinSol_Colloc_LastUnitSolution(LS);
+      test_true(expect == 0   ? "no hint: x and the e_last solution equal the plain solves bit for bit"
+                : expect == 1 ? "hint b: x and the e_last solution equal the plain solves bit for bit"
+                              : "wrong hint: x and the e_last solution equal the plain solves bit for bit",
+                u && memcmp(N_VGetArrayPointer(vx), x_plain, (size_t)n * sizeof(double)) == 0 &&
+                    memcmp(u, e, (size_t)n * sizeof(double)) == 0);
+    }
+    SUNLinSolSetup(LS, A);
+    test_true("LastUnitSolution is NULL after a new setup without a solve",
+              SUNLinSol_Colloc_LastUnitSolution(LS) == NULL);
+    test_int("SolveLastUnit off", SUNLinSol_Colloc_SolveLastUnit(LS, 0), SUNLS_SUCCESS);
+    SUNLinSolSolve(LS, A, vx, vb, 0.0);
+    test_true("off: no e_last solution", SUNLinSol_Colloc_LastUnitSolution(LS) == NULL);
+    free(x_plain);
+    free(e);
+  }
+
   /* ---- error paths ---- */
   colloc_jac *J2 = colloc_jac_alloc(nd, N + 1, nc, nf, nb, nint);
   test_int("colloc_sparse_fill with J of other sizes: -1", colloc_sparse_fill(J2, C), -1);
@@ -302,6 +334,9 @@ int main(void)
   test_true("SUNMat_Colloc_Jac of a CSC matrix is NULL", SUNMat_Colloc_Jac(C) == NULL);
   test_int("SUNLinSol_Colloc_Det of a KLU solver: SUNLS_ILL_INPUT", SUNLinSol_Colloc_Det(LK, &sg, &la), SUNLS_ILL_INPUT);
   test_true("SUNLinSol_Colloc_Solver of a KLU solver is NULL", SUNLinSol_Colloc_Solver(LK) == NULL);
+  test_int("SolveLastUnit on a KLU solver: SUNLS_ILL_INPUT", SUNLinSol_Colloc_SolveLastUnit(LK, 1), SUNLS_ILL_INPUT);
+  test_int("ExpectRhs on a KLU solver: SUNLS_ILL_INPUT", SUNLinSol_Colloc_ExpectRhs(LK, b), SUNLS_ILL_INPUT);
+  test_true("LastUnitSolution of a KLU solver is NULL", SUNLinSol_Colloc_LastUnitSolution(LK) == NULL);
   test_int("SUNLinSol_Colloc setup with a CSC matrix: SUNLS_ILL_INPUT", SUNLinSolSetup(LS, C), SUNLS_ILL_INPUT);
   N_Vector vshort = N_VNew_Serial(n - 1, ctx);
   test_true("SUNLinSol_Colloc with a template of wrong length is NULL", SUNLinSol_Colloc(vshort, A, ctx) == NULL);
