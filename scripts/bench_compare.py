@@ -30,10 +30,12 @@ AUTO_DIR = "/usr/lib/auto-07p"
 
 SETTINGS = dict(NTST=150, NCOL=4, IAD=3, EPSL=1e-7, EPSU=1e-7, EPSS=1e-5, DS=-5.0, DSMAX=5.0, DSMIN=1e-6)
 NLONG, NSHORT = 60, 2
-# the NTST sweep: per step = (NMX=22 run - NMX=2 run) / 20, medians of at least SWEEP_REPEATS runs.
-# With 10 steps and 3 runs the differences of a few tenths of a second were at the mercy of the
-# machine's other jobs (2026-11-25: 0.029 to 0.19 ms per step and NTST in one run)
-NSWEEP = 22
+# the NTST sweep: per step = (NMX=NSWEEP run - NMX=2 run) / (NSWEEP - 2), medians of at least SWEEP_REPEATS
+# runs.  With 10 steps and 3 runs the differences of a few tenths of a second were at the mercy of the
+# machine's other jobs (2026-11-25: 0.029 to 0.19 ms per step and NTST in one run); with 20 steps and 5
+# runs still 0.063 to 0.149 (make bench at 9a6c2cc; the NMX=22 run's CPU time at NTST 200 alone
+# spread 0.73-0.97 s over three runs): 60 steps, as in the main table
+NSWEEP = 62
 SWEEP_REPEATS = 5
 
 
