@@ -9,6 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "bench_util.h"
+#include "bench_knot72.h"
 #include "abd_solver.h"
 #include "braid_problems.h"
 #include "braid_start.h"
@@ -21,10 +22,8 @@
 int main(void)
 {
   braid_start_params sp;
-  braid_start_params_init(&sp, BRAID_START_TORUS, 7, +1, 0.0051364907419, 1.98889, 0.0);
-  if (braid_start_prepare(&sp) != 0) return 1;
   cable_problem pb;
-  braid_problem_instance("braid_knot", &sp, &pb);
+  if (bench_knot72(&sp, &pb) != 0) return 1;
   cable_blas_single_thread();
   int ntst = 150;
   cable_constants c;

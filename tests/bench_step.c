@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include "bench_util.h"
+#include "bench_knot72.h"
 #include "abd_solver.h"
 #include "cable/cable_aufile.h"
 #include "braid_problems.h"
@@ -189,10 +190,8 @@ static phase_costs phase_times(const cable_problem *pb, int ntst)
 int main(void)
 {
   braid_start_params sp;
-  braid_start_params_init(&sp, BRAID_START_TORUS, 7, +1, 0.0051364907419, 1.98889, 0.0);
-  if (braid_start_prepare(&sp) != 0) return 1;
   cable_problem pb;
-  braid_problem_instance("braid_knot", &sp, &pb);
+  if (bench_knot72(&sp, &pb) != 0) return 1;
   static const int ntsts[] = {25, 50, 100, 150, 200, 400, 800};
   enum { NN = sizeof ntsts / sizeof ntsts[0] };
 
