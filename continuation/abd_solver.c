@@ -74,12 +74,11 @@ struct abd_solver {
   double *w_g;                     /* [N*r] per-interval local right-hand sides, per vector */
   double *w_oo;                    /* [N*nO] per-interval outer values, per vector */
   /* right-hand sides whose forward stage was done by the factorisation
-     (abd_solver_factor_prepared): their copy, and whether the w_ buffers
-     still hold that stage (a solve of anything uses them up); behind a
-     pointer because the solves take a const solver */
-  int prep_k;
+     (abd_solver_factor_prepared): their copy, and how many of them the w_
+     buffers still hold that stage for (0: none; a solve of anything uses
+     them up); behind a pointer because the solves take a const solver */
   double *prep;                    /* [ABD_SOLVE_BLOCK*n] */
-  int *prep_live;
+  int *prep_k;
   /* smallest_sv workspace, grown on demand */
   int sv_k;
   double *sv_v, *sv_w, *sv_b, *sv_r, *sv_x, *sv_yt, *sv_s, *sv_work, *sv_vec, *sv_res, *sv_rn;
@@ -291,11 +290,11 @@ abd_solver *abd_solver_alloc(int ndim, int ntst, int ncol, int nfpr, int nbc, in
   s->w_g = malloc(ABD_SOLVE_BLOCK * (size_t)ntst * (size_t)s->r * sizeof(double));
   s->w_oo = malloc(ABD_SOLVE_BLOCK * (size_t)ntst * (size_t)s->nO * sizeof(double));
   s->prep = malloc(ABD_SOLVE_BLOCK * (size_t)s->n * sizeof(double));
-  s->prep_live = calloc(1, sizeof *s->prep_live);
+  s->prep_k = calloc(1, sizeof *s->prep_k);
   if (abd_band_alloc(&s->band, s->nband, s->kl, s->ku) != 0) goto fail;
   if (!s->loc || !s->loc_piv || !s->ab || !s->w_rhs || !s->w_piv || !s->w_loc || !s->w_o ||
       !s->iv_status || !s->iv_sign || !s->iv_logabs || !s->iv_amax || !s->iv_sumsq || !s->w_g || !s->w_oo ||
-      !s->prep || !s->prep_live)
+      !s->prep || !s->prep_k)
     goto fail;
   s->perm_sign = structural_sign(s);
   if (s->perm_sign == 0) goto fail;
@@ -344,7 +343,7 @@ void abd_solver_free(abd_solver *s)
   free(s->w_g);
   free(s->w_oo);
   free(s->prep);
-  free(s->prep_live);
+  free(s->prep_k);
   cable_team_free(s->team);
   sv_free(s);
   free(s);
@@ -559,24 +558,17 @@ int abd_solver_factor(abd_solver *s, const colloc_jac *J) { return factor(s, J, 
 
 int abd_solver_factor_prepared(abd_solver *s, const colloc_jac *J, const double *B, int k)
 {
-  if (!s) return ABD_ERR_SIZE;
-  if (k < 0 || k > ABD_SOLVE_BLOCK || (k > 0 && !B)) {
-    *s->prep_live = 0;
-    s->state = STATE_NONE;
-    return ABD_ERR_SIZE;
-  }
   return factor(s, J, B, k);
 }
 
 static int factor(abd_solver *s, const colloc_jac *J, const double *B, int k)
 {
   if (!s) return ABD_ERR_SIZE;
-  *s->prep_live = 0;
-  s->prep_k = 0;
+  *s->prep_k = 0;
   s->state = STATE_NONE;
   s->det_sign = 0;
   s->det_log = -INFINITY;
-  if (!J || !jac_matches(s, J)) return ABD_ERR_SIZE;
+  if (!J || !jac_matches(s, J) || k < 0 || k > ABD_SOLVE_BLOCK || (k > 0 && !B)) return ABD_ERR_SIZE;
   double amax = end_maxabs(J);
   if (isnan(amax)) return ABD_ERR_NONFINITE;
 
@@ -651,8 +643,7 @@ static int factor(abd_solver *s, const colloc_jac *J, const double *B, int k)
   s->state = STATE_OK;
   s->det_sign = sign;
   s->det_log = logabs;
-  s->prep_k = k;
-  *s->prep_live = k > 0;
+  *s->prep_k = k;
   return ABD_OK;
 }
 
@@ -674,7 +665,6 @@ typedef struct {
   double *x; /* k vectors of length n, one after the other */
   int k;
 } solve_ctx;
-
 
 /* J x = b, stage 1: apply interval j's L^{-1} P to its rows' right-hand side. */
 static void solve_forward(void *p, int j)
@@ -706,9 +696,8 @@ static int solve_many(const abd_solver *s, double *X, int k)
   const int nd = s->nd, nf = s->nf, nq = s->nq, nr = s->nr, N = s->N;
   solve_ctx c = {s, X, k};
   /* stage 1 was done by the factorisation when X is what it prepared */
-  int prepared = *s->prep_live && k == s->prep_k &&
-                 memcmp(X, s->prep, (size_t)k * (size_t)s->n * sizeof(double)) == 0;
-  *s->prep_live = 0; /* this solve uses the workspace up */
+  int prepared = k == *s->prep_k && memcmp(X, s->prep, (size_t)k * (size_t)s->n * sizeof(double)) == 0;
+  *s->prep_k = 0; /* this solve uses the workspace up */
   if (!prepared) {
     for (int v = 0; v < k; v++) memset(wv_rhs(s, v), 0, (size_t)s->nband * sizeof(double));
     cable_team_run(s->team, solve_forward, &c, N);
@@ -795,7 +784,7 @@ static int solve_transpose_many(const abd_solver *s, double *X, int k)
 {
   const int nd = s->nd, nf = s->nf, nq = s->nq, nI = s->nI, nr = s->nr, nO = s->nO, N = s->N;
   solve_ctx c = {s, X, k};
-  *s->prep_live = 0; /* the workspace is used up */
+  *s->prep_k = 0; /* the workspace is used up */
   for (int v = 0; v < k; v++) {
     double *rhs = wv_rhs(s, v);
     const double *x = X + (size_t)v * (size_t)s->n;
@@ -867,8 +856,6 @@ double abd_solver_growth(const abd_solver *s)
 
 /* ---- smallest singular values ----------------------------------------- */
 
-/* Frobenius norm of J (contributions of two intervals to a mesh point in a
- * dense row add before squaring). */
 /* Sum of squares of J's collocation block j, into iv_sumsq[j] (run by the
  * team): four independent chains in a fixed order, the same for every thread
  * count (one chain of dependent additions was the limit, a sequential pass of
@@ -891,7 +878,9 @@ static void coll_sumsq(void *p, int j)
   c->s->iv_sumsq[j] = (q[0] + q[1]) + (q[2] + q[3]);
 }
 
-/* ||J||_F: the collocation blocks on the team, summed in interval order. */
+/* ||J||_F: the collocation blocks on the team, summed in interval order
+ * (contributions of two intervals to a mesh point in a dense row add before
+ * squaring). */
 static double jac_frobenius(const abd_solver *s, const colloc_jac *J)
 {
   const int nd = J->ndim, nc = J->ncol, nq = J->ndense;

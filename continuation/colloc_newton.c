@@ -68,15 +68,13 @@ static int kin_jacfn(N_Vector x, N_Vector fx, SUNMatrix A, void *data, N_Vector 
   nw->last_setup_iter = nw->phase_start + (int)nni;
   int rc = colloc_system_jacobian(nw->sys, N_VGetArrayPointer(x), nw->J);
   if (rc != 0) return rc > 0 ? 1 : -1;
+  if (nw->kind == CABLE_LINSOLVER_KLU) return colloc_sparse_fill(nw->J, A) == 0 ? 0 : -1;
   /* A wraps nw->J, which the call above overwrote entry by entry: KINSOL's
      zeroing before this call need not be carried out */
-  if (nw->kind != CABLE_LINSOLVER_KLU) SUNMat_Colloc_Filled(A);
-  if (nw->kind != CABLE_LINSOLVER_KLU) {
-    /* KINSOL's next solve is J p = -F(x) (a hint only: the solve checks) */
-    N_VScale(-1.0, fx, t1);
-    SUNLinSol_Colloc_ExpectRhs(nw->LS, N_VGetArrayPointer(t1));
-  }
-  if (nw->kind == CABLE_LINSOLVER_KLU) return colloc_sparse_fill(nw->J, A) == 0 ? 0 : -1;
+  SUNMat_Colloc_Filled(A);
+  /* KINSOL's next solve is J p = -F(x) (a hint only: the solve checks) */
+  N_VScale(-1.0, fx, t1);
+  SUNLinSol_Colloc_ExpectRhs(nw->LS, N_VGetArrayPointer(t1));
   return 0;
 }
 

@@ -10,13 +10,23 @@ typedef struct {
   abd_solver *solver;
   sunindextype last_flag; /* abd_solver code of the last setup/solve */
   int last_unit;          /* SUNLinSol_Colloc_SolveLastUnit: on */
-  double *pair;           /* [2n] the right-hand side and e_last of one solve_many */
-  double *unit_x;         /* [n] the solution for e_last */
-  unsigned long setups;   /* successful factorisations so far */
-  unsigned long unit_of;  /* the factorisation unit_x was solved with (0: none) */
-  double *hint;           /* [2n] SUNLinSol_Colloc_ExpectRhs's b (and e_last) */
-  int hint_set;           /* for the next setup */
+  double *pair;           /* [2n] (b, e_last): the expected right-hand sides until the setup,
+                             then the last solve's two vectors, solved in place */
+  int expected;           /* pair holds SUNLinSol_Colloc_ExpectRhs's b for the next setup */
+  unsigned long setups;   /* setups so far */
+  unsigned long unit_of;  /* the setup whose factorisation solved pair's e_last (0: none) */
 } colloc_ls_content;
+
+/* pair (allocated on first use) = (b, e_last); -1 when out of memory. */
+static int pair_fill(colloc_ls_content *c, const double *b)
+{
+  const size_t n = (size_t)abd_solver_size(c->solver);
+  if (!c->pair && !(c->pair = malloc(2 * n * sizeof(double)))) return -1;
+  memcpy(c->pair, b, n * sizeof(double));
+  memset(c->pair + n, 0, n * sizeof(double));
+  c->pair[2 * n - 1] = 1.0;
+  return 0;
+}
 
 static colloc_ls_content *colloc_ls_content_of(SUNLinearSolver S);
 
@@ -49,16 +59,12 @@ static int colloc_ls_setup(SUNLinearSolver S, SUNMatrix A)
     c->last_flag = ABD_ERR_SIZE;
     return SUNLS_ILL_INPUT;
   }
-  int rc;
-  if (c->hint_set) {
-    /* the expected right-hand sides' first solve stage with the factorisation */
-    rc = abd_solver_factor_prepared(c->solver, J, c->hint, c->last_unit && c->pair ? 2 : 1);
-    c->hint_set = 0;
-  } else {
-    rc = abd_solver_factor(c->solver, J);
-  }
+  /* the expected right-hand sides' first solve stage with the factorisation */
+  int rc = c->expected ? abd_solver_factor_prepared(c->solver, J, c->pair, c->last_unit ? 2 : 1)
+                       : abd_solver_factor(c->solver, J);
+  c->expected = 0;
   c->last_flag = rc;
-  c->setups++; /* a new matrix: the last unit solution is stale, whatever rc */
+  c->setups++; /* a new matrix: the last e_last solution is stale, whatever rc */
   if (rc == ABD_OK) return SUNLS_SUCCESS;
   return rc > 0 ? SUNLS_LUFACT_FAIL : SUNLS_PACKAGE_FAIL_UNREC;
 }
@@ -75,17 +81,13 @@ static int colloc_ls_solve(SUNLinearSolver S, SUNMatrix A, N_Vector x, N_Vector 
   double *xd = N_VGetArrayPointer(x);
   if (!xd) return SUNLS_MEM_FAIL;
   int rc;
-  if (c->last_unit && c->pair) {
+  c->unit_of = 0;
+  if (c->last_unit && pair_fill(c, xd) == 0) {
     /* b and e_last in one pass over the factors: each vector's result is
        bit for bit that of its own solve (abd_solver_solve_many) */
-    const size_t n = (size_t)abd_solver_size(c->solver);
-    memcpy(c->pair, xd, n * sizeof(double));
-    memset(c->pair + n, 0, n * sizeof(double));
-    c->pair[2 * n - 1] = 1.0;
     rc = abd_solver_solve_many(c->solver, c->pair, 2);
     if (rc == ABD_OK) {
-      memcpy(xd, c->pair, n * sizeof(double));
-      memcpy(c->unit_x, c->pair + n, n * sizeof(double));
+      memcpy(xd, c->pair, (size_t)abd_solver_size(c->solver) * sizeof(double));
       c->unit_of = c->setups;
     }
   } else {
@@ -117,8 +119,6 @@ static int colloc_ls_free(SUNLinearSolver S)
   if (c) {
     abd_solver_free(c->solver);
     free(c->pair);
-    free(c->unit_x);
-    free(c->hint);
     free(c);
     S->content = NULL;
   }
@@ -180,19 +180,11 @@ int SUNLinSol_Colloc_SolveLastUnit(SUNLinearSolver S, int on)
 {
   colloc_ls_content *c = colloc_ls_content_of(S);
   if (!c) return SUNLS_ILL_INPUT;
-  if (on && !c->pair) {
-    const size_t n = (size_t)abd_solver_size(c->solver);
-    c->pair = malloc(2 * n * sizeof(double));
-    c->unit_x = malloc(n * sizeof(double));
-    if (!c->pair || !c->unit_x) {
-      free(c->pair);
-      free(c->unit_x);
-      c->pair = c->unit_x = NULL;
-      return SUNLS_MEM_FAIL;
-    }
-  }
-  c->last_unit = on != 0;
+  const size_t n = (size_t)abd_solver_size(c->solver);
   c->unit_of = 0;
+  c->last_unit = 0;
+  if (on && !c->pair && !(c->pair = calloc(2 * n, sizeof(double)))) return SUNLS_MEM_FAIL;
+  c->last_unit = on != 0;
   return SUNLS_SUCCESS;
 }
 
@@ -200,18 +192,14 @@ const double *SUNLinSol_Colloc_LastUnitSolution(SUNLinearSolver S)
 {
   colloc_ls_content *c = colloc_ls_content_of(S);
   if (!c || c->unit_of == 0 || c->unit_of != c->setups || c->last_flag != ABD_OK) return NULL;
-  return c->unit_x;
+  return c->pair + abd_solver_size(c->solver);
 }
 
 int SUNLinSol_Colloc_ExpectRhs(SUNLinearSolver S, const double *b)
 {
   colloc_ls_content *c = colloc_ls_content_of(S);
   if (!c) return SUNLS_ILL_INPUT;
-  const size_t n = (size_t)abd_solver_size(c->solver);
-  if (!c->hint && !(c->hint = malloc(2 * n * sizeof(double)))) return SUNLS_MEM_FAIL;
-  memcpy(c->hint, b, n * sizeof(double));
-  memset(c->hint + n, 0, n * sizeof(double));
-  c->hint[2 * n - 1] = 1.0;
-  c->hint_set = 1;
-  return SUNLS_SUCCESS;
+  c->unit_of = 0; /* pair is overwritten */
+  c->expected = pair_fill(c, b) == 0;
+  return c->expected ? SUNLS_SUCCESS : SUNLS_MEM_FAIL;
 }

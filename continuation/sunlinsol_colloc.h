@@ -36,7 +36,8 @@ abd_solver *SUNLinSol_Colloc_Solver(SUNLinearSolver S);
 int SUNLinSol_Colloc_SolveLastUnit(SUNLinearSolver S, int on);
 
 /* y of the last solve when it was made with the current factorisation (the
- * last setup, successful), else NULL.  Valid until the next setup or solve. */
+ * last setup, successful), else NULL.  Valid until the next setup, solve or
+ * SUNLinSol_Colloc_ExpectRhs. */
 const double *SUNLinSol_Colloc_LastUnitSolution(SUNLinearSolver S);
 
 /* The right-hand side b (length n) the solve after the next setup will
