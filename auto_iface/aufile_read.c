@@ -458,7 +458,7 @@ cable_bfile *cable_bfile_read(const char *path, cable_error *err)
   cable_bfile *out = calloc(1, sizeof *out);
   bbuild bb;
   memset(&bb, 0, sizeof bb);
-  int active = 0, header_seen = 0, prev_pt = 0, st = 0;
+  int active = 0, header_seen = 0, prev_pt = 0, st = 0, stab = 0;
   char *head = NULL;        /* the last header line with column headings */
   double *vals = malloc(BFILE_MAX_COLS * sizeof *vals);
   if (!out || !vals) st = cable_error_set(err, CABLE_ERR_ALLOC, r.path, 0, "", "out of memory");
@@ -486,8 +486,10 @@ cable_bfile *cable_bfile_read(const char *path, cable_error *err)
       if (!header_seen) {
         free(head);
         head = NULL;
+        stab = 0;
       }
       header_seen = 1;
+      if (strstr(r.line, " STAB = 1")) stab = 1;   /* cable's header line (aufile_write.c) */
       if (strstr(r.line, " PT ")) {
         free(head);
         head = strdup(r.line);
@@ -524,6 +526,7 @@ cable_bfile *cable_bfile_read(const char *path, cable_error *err)
       prev = out->nbranch > 0 ? &out->branch[out->nbranch - 1] : NULL;
       bb.b.ncol = n;
       bb.b.first_line = r.lineno;
+      bb.b.stab = stab;
       long len = (long)r.len + (r.line[r.len - 1] == '\n' ? 0 : 1);
       if (branch_names(&bb.b, header_seen ? head : NULL, len, prev) != 0) {
         st = cable_error_set(err, CABLE_ERR_ALLOC, r.path, r.lineno, "", "out of memory");

@@ -369,6 +369,7 @@ static void write_b_header(cable_aufile *w, const cable_point *pt)
    * does not know in b-file headers) */
   fprintf(f, "   0   LINSOLVER = '%s'   NSV = %d   BPDIR = %d   IIS = %d\n",
           c->linsolver == CABLE_LINSOLVER_KLU ? "klu" : "condense", c->nsv, c->bpsym, c->iis);
+  if (c->stab) fputs("   0   STAB = 1\n", f);   /* PT's sign is stability (doc/stability.md) */
   int nicp = pt->nicp;
   fprintf(f, "   0   User-specified parameter%s", nicp == 1 ? ":       " : "s:      ");
   for (int k = 0; k < nicp; k++) {
@@ -531,6 +532,7 @@ static int point_cb(void *ctx, const cable_point *pt)
   for (int k = 1; k < pt->nicp; k++) val[n++] = pt->par[pt->icp[k]];
   int mtot = (pt->pt - 1) % 9999 + 1;   /* AUTO wraps point numbers at 9999 */
   if (pt->pt < 1) mtot = pt->pt;
+  if (pt->stab == 1) mtot = -mtot;      /* STAB=1: AUTO's sign for a stable point */
   FILE *f = cable_atomic_stream(w->b);
   char buf[64];
   fprintf(f, "%4d%6d%4d%5d", pt->ibr, mtot, pt->itp, pt->lab);

@@ -92,21 +92,23 @@ int cable_plot_files(const char *dir, const char *const *bfiles, int nfiles, con
                              "no such column in branch %d of this b-file", abs(b->br[0]));
         break;
       }
-      labels[nb] = malloc(2 * (size_t)b->nrow * sizeof(int));
+      labels[nb] = malloc(3 * (size_t)b->nrow * sizeof(int));
       if (!labels[nb]) {
         rc = cable_error_set(err, CABLE_ERR_ALLOC, NULL, 0, "", "out of memory");
         break;
       }
       types[nb] = labels[nb] + b->nrow;
+      int *unstable = b->stab ? labels[nb] + 2 * b->nrow : NULL;   /* STAB=1: PT > 0 is unstable */
       for (int i = 0; i < b->nrow; i++) {
         labels[nb][i] = cable_type_base(b->ty[i]) == 4 ? 0 : b->lab[i];
         types[nb][i] = b->ty[i];
+        if (unstable) unstable[i] = b->pt[i] > 0;
       }
       xl = xc;
       yl = yc;
       if (files[f]->nbranch > 1) snprintf(names[nb], sizeof names[nb], "%s (%d)", base, s + 1);
       else snprintf(names[nb], sizeof names[nb], "%s", base);
-      br[nb] = (plot_branch){names[nb], b->nrow, x, y, types[nb], labels[nb]};
+      br[nb] = (plot_branch){names[nb], b->nrow, x, y, types[nb], labels[nb], unstable};
       nb++;
     }
   }

@@ -506,6 +506,18 @@ static int apply_int(pctx *x, const key_desc *d, const stmt *s)
   return 0;
 }
 
+/* STAB=1 needs a problem that declares its variational structure
+ * (doc/stability.md); without a problem the engine checks it at the run. */
+static int apply_stab(pctx *x, const key_desc *d, const stmt *s)
+{
+  int st = apply_int(x, d, s);
+  if (st == 0 && x->c.stab && x->pb && !x->pb->variational)
+    return perr(x, CABLE_ERR_INPUT, s->line, s->key,
+                "problem '%s' does not declare its variational structure: its stability cannot be computed",
+                x->pb->name ? x->pb->name : "?");
+  return st;
+}
+
 static int apply_real(pctx *x, const key_desc *d, const stmt *s)
 {
   double val = 0;
@@ -944,6 +956,7 @@ static const key_desc key_table[] = {
   {"BPDIR", apply_int, OFF(bpsym), 0, 1, 2, KI_NONE},
   {"BPANGLE", apply_real, OFF(bpangle), 0, 0, 2, KI_NONE},
   {"PREDICTOR", apply_int, OFF(predictor), 1, 2, 2, KI_NONE},
+  {"STAB", apply_stab, OFF(stab), 0, 1, 2, KI_NONE},
   {"PAR", apply_par, 0, 0, 0, 2, KI_NONE},
 };
 #define KEY_TABLE_N ((int)(sizeof key_table / sizeof key_table[0]))

@@ -97,6 +97,13 @@ static int check_keys(const cable_problem *pb, const char *origin, cable_error *
       return reject(err, origin, key, "'%s': need min <= def <= max, got %g <= %g <= %g", k->name, k->min, k->def,
                     k->max);
   }
+  /* ABI 4: the variational structure (doc/stability.md S4) */
+  const cable_variational *v = pb->variational;
+  if (v && (v->nvar < 1 || v->ncon < 0 || v->nvbc < 0 || !v->hessian || (v->ncon > 0 && !v->constraints) ||
+            (v->nvbc > 0 && !v->vbc)))
+    return reject(err, origin, "variational",
+                  "needs nvar >= 1, ncon >= 0, nvbc >= 0, a hessian callback, constraints when ncon > 0 and vbc "
+                  "when nvbc > 0");
   return 0;
 }
 

@@ -13,6 +13,7 @@ static const struct {
 } tests[] = {{"bratu", cable_testproblem_bratu},
              {"bratu_int", cable_testproblem_bratu_int},
              {"elastica", cable_testproblem_elastica},
+             {"elastica_int", cable_testproblem_elastica_int},
              {"layer", cable_testproblem_layer},
              {"stiff", cable_testproblem_stiff}};
 static const char *const braids[] = {"braid_knot", "braid_knot_sym", "braid_link", "braid_link_sym"};

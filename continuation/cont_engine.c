@@ -111,6 +111,9 @@ static int check_input(const cable_problem *pb, const cable_constants *c, char *
   if (!(c->dsmin > 0) || !(c->dsmax >= c->dsmin) || !(fabs(c->ds) > 0))
     return snprintf(msg, len, "need 0 < DSMIN <= DSMAX and DS != 0"), CABLE_ERR_INPUT;
   if (c->epsl <= 0 || c->epsu <= 0 || c->epss <= 0) return snprintf(msg, len, "EPSL, EPSU, EPSS must be positive"), CABLE_ERR_INPUT;
+  if (c->stab && !pb->variational)
+    return snprintf(msg, len, "STAB=1 but problem '%s' does not declare its variational structure", pb->name),
+           CABLE_ERR_INPUT;
   return CABLE_SUCCESS;
 }
 

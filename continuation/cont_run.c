@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "cable/cable_fold.h"
+#include "cable/cable_stability.h"
 #include "cont_impl.h"
 
 int cable_cont_set_mesh(cable_cont *cc, const double *mesh)
@@ -84,6 +85,29 @@ static const char *type_name(int itp)
   }
 }
 
+/* STAB=1: the Morse index of the point's solution (doc/stability.md S6), at
+ * the run's NCOL on its own mesh.  A failure leaves the point unmarked and is
+ * said in the d-file; it does not stop the run. */
+static void stab_point(cable_cont *cc, const cable_sink *sink)
+{
+  cable_point *pt = &cc->pt;
+  cable_stab_result r;
+  cable_error e;
+  pt->stab = 0;
+  if (cable_stability_index(cc->pb, cc->sol, 1, cc->ncol, &r, &e) != CABLE_SUCCESS) {
+    if (sink && sink->diag) {
+      char line[640];
+      snprintf(line, sizeof line, "STAB: no index at PT %d: %s", pt->pt, e.msg);
+      sink->diag(sink->ctx, line);
+    }
+    return;
+  }
+  pt->stab = r.index == 0 && r.nzero == 0 ? 1 : -1;
+  pt->stab_index = r.index;
+  pt->stab_nzero = r.nzero;
+  pt->stab_sigma1 = r.neig > 0 ? r.eig[0] : 0.0;
+}
+
 /* Hands the point to the sink; 1 when the sink asks to stop (returns > 0). */
 static int emit(cable_cont *cc, const cable_sink *sink, int ibr, int *lab)
 {
@@ -102,6 +126,7 @@ static int emit(cable_cont *cc, const cable_sink *sink, int ibr, int *lab)
   cc->sol->ibr = ibr;
   cc->sol->lab = pt->lab;
   cc->sol->itp = pt->itp;
+  if (cc->c.stab) stab_point(cc, sink);
   int stop = sink && sink->point ? sink->point(sink->ctx, pt) : 0;
   if (labelled && sink && sink->solution) sink->solution(sink->ctx, pt, cc->sol);
   if (sink && sink->diag) {
@@ -111,6 +136,11 @@ static int emit(cable_cont *cc, const cable_sink *sink, int ibr, int *lab)
              pt->pt, type_name(pt->itp), pt->lab, cc->c.icp[0] + 1, pt->par[cc->c.icp[0]], pt->ds,
              pt->newton_iters, pt->err_est, pt->det_sign, pt->sv1, pt->sv2);
     sink->diag(sink->ctx, line);
+    if (pt->stab) {
+      snprintf(line, sizeof line, "BR %d PT %d STAB index=%d zero=%d sigma1=%.6e", ibr, pt->pt, pt->stab_index,
+               pt->stab_nzero, pt->stab_sigma1);
+      sink->diag(sink->ctx, line);
+    }
   }
   return stop > 0;
 }

@@ -65,6 +65,36 @@ static int zero_stpnt(int ndim, double t, double *u, double *par, void *params)
 static const char *const lambda_names[] = {"lambda"};
 static const char *const u_names[] = {"u", "u'"};
 
+/* Variational structures (doc/stability.md S4): y = u[0], the second
+ * variation's densities P = L_{y'y'}, C = L_{y'y}, R = L_{yy}. */
+static int dirichlet_vbc(int ndim, const double *u0, const double *u1, const double *par, int nvar, int nvbc,
+                         double *B, double *Hb, void *params)
+{
+  (void)ndim; (void)u0; (void)u1; (void)par; (void)Hb; (void)params;
+  /* v(0) = 0, v(1) = 0 (Hb stays zero: the conditions are linear) */
+  for (int j = 0; j < 2 * nvar * nvbc; j++) B[j] = 0.0;
+  B[0 + nvbc * 0] = 1.0;
+  B[1 + nvbc * nvar] = 1.0;
+  return 0;
+}
+
+/* Bratu: A = int u'^2/2 - lambda e^u dt, so P = 1, C = 0, R = -lambda e^u. */
+static int bratu_hessian(int ndim, const double *u, const double *par, int nvar, double *P, double *C, double *R,
+                         void *params)
+{
+  (void)ndim; (void)nvar; (void)params;
+  P[0] = 1.0;
+  C[0] = 0.0;
+  R[0] = -par[0] * exp(u[0]);
+  return 0;
+}
+
+/* bratu_int's integral condition int u dt = mu with mu free constrains no
+ * variation (mu follows it): the structure is Bratu's. */
+static const cable_variational bratu_var = {
+  .nvar = 1, .ncon = 0, .nvbc = 2, .hessian = bratu_hessian, .vbc = dirichlet_vbc,
+};
+
 static const cable_problem bratu = {
   .abi_version = CABLE_PROBLEM_ABI, .struct_size = sizeof(cable_problem),
   .name = "bratu", .description = "Bratu: u'' + lambda e^u = 0, u(0) = u(1) = 0",
@@ -72,6 +102,7 @@ static const cable_problem bratu = {
   .func = bratu_func, .bcnd = bratu_bcnd, .stpnt = zero_stpnt,
   .func_has_jac = 1, .bcnd_has_jac = 1,
   .concurrent = 1, /* FUNC reads only its arguments */
+  .variational = &bratu_var,
 };
 
 const cable_problem *cable_testproblem_bratu(void) { return &bratu; }
@@ -159,6 +190,7 @@ static const cable_problem bratu_int = {
   .func = bratu_func, .bcnd = bratu_int_bcnd, .icnd = bratu_int_icnd, .stpnt = bratu_int_stpnt,
   .func_has_jac = 1, .bcnd_has_jac = 1, .icnd_has_jac = 1,
   .concurrent = 1, /* FUNC reads only its arguments */
+  .variational = &bratu_var,
 };
 
 const cable_problem *cable_testproblem_bratu_int(void) { return &bratu_int; }
@@ -200,6 +232,21 @@ static int elastica_stpnt(int ndim, double t, double *u, double *par, void *para
 
 static const char *const theta_names[] = {"theta", "theta'"};
 
+/* The elastica: A = int theta'^2/2 + lambda cos theta dt (bending energy
+ * minus the load's work), free ends: P = 1, C = 0, R = -lambda cos theta and
+ * no constraint on the variations (the rigid rotation v = 1 is admissible). */
+static int elastica_hessian(int ndim, const double *u, const double *par, int nvar, double *P, double *C, double *R,
+                            void *params)
+{
+  (void)ndim; (void)nvar; (void)params;
+  P[0] = 1.0;
+  C[0] = 0.0;
+  R[0] = -par[0] * cos(u[0]);
+  return 0;
+}
+
+static const cable_variational elastica_var = {.nvar = 1, .ncon = 0, .nvbc = 0, .hessian = elastica_hessian};
+
 static const cable_problem elastica = {
   .abi_version = CABLE_PROBLEM_ABI, .struct_size = sizeof(cable_problem),
   .name = "elastica", .description = "Euler elastica: theta'' + lambda sin theta = 0, theta'(0) = theta'(1) = 0",
@@ -207,9 +254,105 @@ static const cable_problem elastica = {
   .func = elastica_func, .bcnd = elastica_bcnd, .stpnt = elastica_stpnt,
   .func_has_jac = 1, .bcnd_has_jac = 1,
   .concurrent = 1, /* FUNC reads only its arguments */
+  .variational = &elastica_var,
 };
 
 const cable_problem *cable_testproblem_elastica(void) { return &elastica; }
+
+/* ---- the Euler column with its ends on one line ----
+ * theta'' + lambda sin theta + nu cos theta = 0, theta'(0) = theta'(1) = 0,
+ * int_0^1 sin theta dt = 0 (zero end displacement across the load line, NINT
+ * = 1); nu = PAR(2), the transverse end force, is the constraint's multiplier
+ * and free with lambda (NFPR = 2).  A = int theta'^2/2 + lambda cos theta -
+ * nu sin theta dt. */
+static int elastica_int_func(int ndim, const double *u, const int *icp, const double *par, int ijac, double *f,
+                             double *dfdu, double *dfdp, void *params)
+{
+  (void)icp; (void)params;
+  double s = sin(u[0]), c = cos(u[0]);
+  f[0] = u[1];
+  f[1] = -par[0] * s - par[1] * c;
+  if (ijac >= 1) {
+    dfdu[0 + ndim * 0] = 0.0; dfdu[0 + ndim * 1] = 1.0;
+    dfdu[1 + ndim * 0] = -par[0] * c + par[1] * s; dfdu[1 + ndim * 1] = 0.0;
+  }
+  if (ijac >= 2) {
+    dfdp[0 + ndim * 0] = 0.0; dfdp[1 + ndim * 0] = -s;
+    dfdp[0 + ndim * 1] = 0.0; dfdp[1 + ndim * 1] = -c;
+  }
+  return 0;
+}
+
+static int elastica_int_bcnd(int ndim, const double *par, const int *icp, int nbc, const double *u0,
+                             const double *u1, int ijac, double *fb, double *dbc, void *params)
+{
+  (void)par; (void)icp; (void)params;
+  dirichlet(ndim, nbc, 1, u0, u1, 0.0, 0.0, ijac, fb, dbc);
+  zero_par_columns(nbc, ndim, 2, ijac, dbc);
+  return 0;
+}
+
+static int elastica_int_icnd(int ndim, const double *par, const int *icp, int nint, const double *u,
+                             const double *uold, const double *udot, const double *upold, int ijac, double *fi,
+                             double *dint, void *params)
+{
+  (void)par; (void)icp; (void)uold; (void)udot; (void)upold; (void)params;
+  fi[0] = sin(u[0]);
+  if (ijac >= 1) {
+    dint[0 + nint * 0] = cos(u[0]);
+    for (int j = 1; j < ndim; j++) dint[0 + nint * j] = 0.0;
+  }
+  if (ijac >= 2) dint[0 + nint * (ndim + 0)] = dint[0 + nint * (ndim + 1)] = 0.0;
+  return 0;
+}
+
+static int elastica_int_stpnt(int ndim, double t, double *u, double *par, void *params)
+{
+  (void)t; (void)params;
+  for (int i = 0; i < ndim; i++) u[i] = 0.0;
+  par[0] = 1.0;
+  par[1] = 0.0;
+  return 0;
+}
+
+static int elastica_int_hessian(int ndim, const double *u, const double *par, int nvar, double *P, double *C,
+                                double *R, void *params)
+{
+  (void)ndim; (void)nvar; (void)params;
+  P[0] = 1.0;
+  C[0] = 0.0;
+  R[0] = -par[0] * cos(u[0]) + par[1] * sin(u[0]);
+  return 0;
+}
+
+/* the linearised constraint: int cos(theta) v dt = 0 */
+static int elastica_int_constraints(int ndim, const double *u, const double *par, int nvar, int ncon, double *a,
+                                    double *b, void *params)
+{
+  (void)ndim; (void)par; (void)nvar; (void)ncon; (void)params;
+  a[0] = cos(u[0]);
+  b[0] = 0.0;
+  return 0;
+}
+
+static const cable_variational elastica_int_var = {
+  .nvar = 1, .ncon = 1, .nvbc = 0, .hessian = elastica_int_hessian, .constraints = elastica_int_constraints,
+};
+
+static const char *const lambda_nu_names[] = {"lambda", "nu"};
+
+static const cable_problem elastica_int = {
+  .abi_version = CABLE_PROBLEM_ABI, .struct_size = sizeof(cable_problem),
+  .name = "elastica_int",
+  .description = "Euler column, ends on one line: theta'' + lambda sin theta + nu cos theta = 0, int sin theta = 0",
+  .ndim = 2, .nbc = 2, .nint = 1, .npar = 2, .parnames = lambda_nu_names, .unames = theta_names,
+  .func = elastica_int_func, .bcnd = elastica_int_bcnd, .icnd = elastica_int_icnd, .stpnt = elastica_int_stpnt,
+  .func_has_jac = 1, .bcnd_has_jac = 1, .icnd_has_jac = 1,
+  .concurrent = 1, /* FUNC reads only its arguments */
+  .variational = &elastica_int_var,
+};
+
+const cable_problem *cable_testproblem_elastica_int(void) { return &elastica_int; }
 
 /* ---- boundary layer: eps u'' + u' = 0 ---- */
 static int layer_func(int ndim, const double *u, const int *icp, const double *par, int ijac,

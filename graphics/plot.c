@@ -26,6 +26,8 @@
 #define PLOT_PAD 0.5           /* gap between ticks, labels and the edge */
 #define PLOT_MARKER_R 0.32     /* marker radius */
 #define PLOT_LINE_W 0.16       /* branch line width */
+#define PLOT_DASH_ON 0.6       /* an unstable stretch's dashes and gaps */
+#define PLOT_DASH_OFF 0.45
 #define PLOT_LEGEND_ROW 1.4    /* legend row height */
 #define PLOT_LEGEND_SAMPLE 2.0 /* legend line sample length */
 /* About one tick interval per 90 pixels, between 3 and 10 intervals: fewer
@@ -198,18 +200,29 @@ static void plot_lines(cairo_t *cr, const plot_branch *b, int nb, const plot_fra
     double rgb[3];
     plot_branch_color(i, rgb);
     cairo_set_source_rgb(cr, rgb[0], rgb[1], rgb[2]);
-    int pen = 0;
+    int pen = 0, dash = 0;
+    /* an unstable stretch (both ends unstable, plot_branch.unstable) is
+       stroked dashed: the path is stroked whenever the style changes */
+    double dl[2] = {PLOT_DASH_ON * f->fs, PLOT_DASH_OFF * f->fs};
     for (int k = 0; k < b[i].n; k++) {
       double x = b[i].x[k], y = b[i].y[k];
       if (!isfinite(x) || !isfinite(y)) {
         pen = 0;
         continue;
       }
+      int d = b[i].unstable && k > 0 && b[i].unstable[k] && b[i].unstable[k - 1];
+      if (d != dash) {
+        if (pen) cairo_stroke(cr);
+        cairo_set_dash(cr, dl, d ? 2 : 0, 0.0);
+        if (pen) cairo_move_to(cr, plot_px(f, b[i].x[k - 1]), plot_py(f, b[i].y[k - 1]));
+        dash = d;
+      }
       if (pen) cairo_line_to(cr, plot_px(f, x), plot_py(f, y));
       else cairo_move_to(cr, plot_px(f, x), plot_py(f, y));
       pen = 1;
     }
     cairo_stroke(cr);
+    cairo_set_dash(cr, dl, 0, 0.0);
   }
   cairo_restore(cr);
 }

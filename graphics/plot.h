@@ -16,6 +16,9 @@ typedef struct {
   const int *label;   /* [n] AUTO labels or NULL: label != 0 and type != BP ->
                          open circle with the label number; a BP with a label
                          gets the number beside its filled circle */
+  const int *unstable;/* [n] or NULL: 1 at an unstable point (a b-file written with
+                         STAB=1, positive PT); a segment with both ends unstable is
+                         drawn dashed (doc/stability.md) */
 } plot_branch;
 
 enum { PLOT_FORMAT_PNG = 0, PLOT_FORMAT_SVG = 1 };

@@ -234,10 +234,10 @@ static void plot_errors(const char *imgdir, const double err[NNCOL][NNTST], cons
       }
     }
     snprintf(names[c], sizeof names[c], "NCOL = %d", ncols[c]);
-    br[c] = (plot_branch){names[c], NNTST, x[c], y[c], NULL, lab[c]};
+    br[c] = (plot_branch){names[c], NNTST, x[c], y[c], NULL, lab[c], NULL};
   }
   double tx[2] = {tmin, tmax}, ty[2] = {log10(TARGET_REL_ERR), log10(TARGET_REL_ERR)};
-  br[NNCOL] = (plot_branch){"1e-8 target", 2, tx, ty, NULL, NULL};
+  br[NNCOL] = (plot_branch){"1e-8 target", 2, tx, ty, NULL, NULL, NULL};
   plot_options opt = {"log10 time of the scene (s)", "log10 relative error of F at (a)",
                       "knot72 to point (a): error against time (labels: NTST)",
                       800, 600, PLOT_FORMAT_PNG};

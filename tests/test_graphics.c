@@ -606,7 +606,7 @@ static void test_plot(void)
   double x0[41], y0[41], x1[30], y1[30];
   int ty0[41], ty1[30], lab1[30];
   plot_data(x0, y0, ty0, x1, y1, ty1, lab1);
-  plot_branch b[2] = {{"trivial", 41, x0, y0, ty0, NULL}, {"mode 1", 30, x1, y1, ty1, lab1}};
+  plot_branch b[2] = {{"trivial", 41, x0, y0, ty0, NULL, NULL}, {"mode 1", 30, x1, y1, ty1, lab1, NULL}};
   plot_options o = {"T", "F", "(7,2) torus knot", 400, 300, PLOT_FORMAT_PNG};
   const char *png = OUTDIR "/bif.png", *svg = OUTDIR "/bif.svg";
   test_int("plot: PNG written", plot_bifurcation(b, 2, &o, png), CABLE_SUCCESS);
@@ -626,7 +626,7 @@ static void test_plot(void)
   /* the same without types: the four filled branch-point circles go away;
    * each covers at least pi (2.5 px)^2 = 20 px (radius 0.32 x the smallest
    * font size, 8 px) */
-  plot_branch bn[2] = {{"trivial", 41, x0, y0, NULL, NULL}, {"mode 1", 30, x1, y1, NULL, lab1}};
+  plot_branch bn[2] = {{"trivial", 41, x0, y0, NULL, NULL, NULL}, {"mode 1", 30, x1, y1, NULL, lab1, NULL}};
   const char *png2 = OUTDIR "/bif_notype.png";
   plot_bifurcation(bn, 2, &o, png2);
   s = cairo_image_surface_create_from_png(png2);
@@ -664,14 +664,14 @@ static void test_plot(void)
   fclose(f);
   o.format = PLOT_FORMAT_PNG;
   double nan2[2] = {NAN, NAN};
-  plot_branch allnan = {"nan", 2, nan2, nan2, NULL, NULL};
+  plot_branch allnan = {"nan", 2, nan2, nan2, NULL, NULL, NULL};
   test_int("plot error: no finite point", plot_bifurcation(&allnan, 1, &o, OUTDIR "/keep.png"), CABLE_ERR_INPUT);
   char *kept = slurp(OUTDIR "/keep.png", NULL);
   test_true("plot error: existing file untouched", kept && strcmp(kept, "old") == 0);
   free(kept);
   test_int("plot error: NULL branches", plot_bifurcation(NULL, 1, &o, png), CABLE_ERR_INPUT);
   test_int("plot error: no branch", plot_bifurcation(b, 0, &o, png), CABLE_ERR_INPUT);
-  plot_branch empty = {"e", 0, x0, y0, NULL, NULL}, nox = {"x", 3, NULL, y0, NULL, NULL};
+  plot_branch empty = {"e", 0, x0, y0, NULL, NULL, NULL}, nox = {"x", 3, NULL, y0, NULL, NULL, NULL};
   test_int("plot error: n < 1", plot_bifurcation(&empty, 1, &o, png), CABLE_ERR_INPUT);
   test_int("plot error: NULL x", plot_bifurcation(&nox, 1, &o, png), CABLE_ERR_INPUT);
   test_int("plot error: NULL options", plot_bifurcation(b, 2, NULL, png), CABLE_ERR_INPUT);
@@ -726,7 +726,7 @@ static void test_plot_labels(void)
 {
   double x[11], y[11];
   for (int i = 0; i < 11; i++) x[i] = i, y[i] = 100 + 10 * i;
-  plot_branch b = {"line", 11, x, y, NULL, NULL};
+  plot_branch b = {"line", 11, x, y, NULL, NULL, NULL};
   plot_annotation bare = {10, 200, NULL, 0}, text = {10, 200, "(a) mirrored", 0};
   cairo_surface_t *s0 = plot_to_surface(&b, 1, NULL, 0, OUTDIR "/lab0.png");
   cairo_surface_t *s1 = plot_to_surface(&b, 1, &bare, 1, OUTDIR "/lab1.png");
@@ -746,9 +746,9 @@ static void test_plot_labels(void)
 
   /* two branches starting at (0, 100), labelled 1 and 7 there */
   int lab1[11] = {1}, lab7[11] = {7}, lab0[11] = {0};
-  plot_branch two[2] = {{"a", 11, x, y, NULL, lab1}, {"b", 11, x, y, NULL, lab7}};
-  plot_branch one[2] = {{"a", 11, x, y, NULL, lab1}, {"b", 11, x, y, NULL, lab0}};
-  plot_branch none[2] = {{"a", 11, x, y, NULL, lab0}, {"b", 11, x, y, NULL, lab0}};
+  plot_branch two[2] = {{"a", 11, x, y, NULL, lab1, NULL}, {"b", 11, x, y, NULL, lab7, NULL}};
+  plot_branch one[2] = {{"a", 11, x, y, NULL, lab1, NULL}, {"b", 11, x, y, NULL, lab0, NULL}};
+  plot_branch none[2] = {{"a", 11, x, y, NULL, lab0, NULL}, {"b", 11, x, y, NULL, lab0, NULL}};
   cairo_surface_t *n0 = plot_to_surface(none, 2, NULL, 0, OUTDIR "/lab3.png");
   cairo_surface_t *n1 = plot_to_surface(one, 2, NULL, 0, OUTDIR "/lab4.png");
   cairo_surface_t *n2 = plot_to_surface(two, 2, NULL, 0, OUTDIR "/lab5.png");

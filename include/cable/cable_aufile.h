@@ -120,6 +120,8 @@ typedef struct cable_bfile_branch {
   int *br, *pt, *ty, *lab;   /* [nrow] */
   double *data;        /* column-major: column j is data + j*nrow */
   int first_line;      /* line of the section's first row in the file */
+  int stab;            /* 1: its header says STAB = 1, so PT < 0 marks a stable point and
+                          PT > 0 an unstable one (doc/stability.md) */
 } cable_bfile_branch;
 
 typedef struct cable_bfile {

@@ -111,6 +111,9 @@ typedef struct cable_constants {
      largest component positive).  No key: the session sets it for equations
      from AUTO files (doc/auto-users.md). */
   int bp_orient_auto;
+  /* STAB: 1 computes the Morse index at every point (doc/stability.md; the
+     problem must declare its variational structure), 0 (default) does not */
+  int stab;
 } cable_constants;
 
 /* AUTO-07p defaults (no problem key set). */

@@ -42,6 +42,11 @@ typedef struct cable_point {
   double sv1, sv2;      /* its two smallest singular values */
   const char *note;     /* the engine's remark on this point (special-point location,
                            rejected steps) for the d-file; NULL: none */
+  /* STAB=1 (doc/stability.md): the Morse index at this point */
+  int stab;             /* 0: not computed; 1: stable (index 0, no zero eigenvalue);
+                           -1: unstable or critical (index > 0 or a zero eigenvalue) */
+  int stab_index, stab_nzero;
+  double stab_sigma1;   /* the smallest eigenvalue of the second variation */
 } cable_point;
 
 typedef struct cable_sink {

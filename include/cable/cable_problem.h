@@ -26,8 +26,8 @@
 
 #include <stddef.h>
 
-#define CABLE_PROBLEM_ABI 3        /* bump when the struct layout changes (2: keys, prepare, release;
-                                      3: concurrent) */
+#define CABLE_PROBLEM_ABI 4        /* bump when the struct layout changes (2: keys, prepare, release;
+                                      3: concurrent; 4: variational) */
 #define CABLE_NPAR_DEFAULT 36      /* AUTO's default NPAR */
 #define CABLE_PROBLEM_ENTRY "cable_problem_entry"
 
@@ -88,6 +88,32 @@ typedef int cable_prepare_fn(const struct cable_problem *pb, const struct cable_
                              const struct cable_problem **instance, struct cable_error *err);
 typedef void cable_release_fn(const struct cable_problem *pb, const struct cable_problem *instance);
 
+/* The variational structure of a problem (doc/stability.md, S1 and S4): its
+ * solutions are critical points of A[y] = int_0^1 L(y, y', p) dt over
+ * y: [0,1] -> R^nvar under boundary and integral constraints, L holding the
+ * constraints' multipliers.  The Morse index (STAB=1) needs only L's second
+ * derivatives at a solution and the linearised constraints on variations v.
+ * The callbacks return 0, or non-zero on failure (the index is then unknown). */
+typedef struct cable_variational {
+  int nvar;    /* configuration variables y (>= 1) */
+  int ncon;    /* integral rows: int (a.v + b.v') dt = 0 (linearised integral constraints,
+                  L2-orthogonality to symmetry generators: a = w, b = 0) */
+  int nvbc;    /* boundary rows: B [v(0); v(1)] = 0 */
+  /* At a state u of the ODE system: P = L_{y'y'}, C = L_{y'y}
+   * (C[i + nvar*j] = d2L / dy'_i dy_j), R = L_{yy}, each nvar x nvar column-major. */
+  int (*hessian)(int ndim, const double *u, const double *par, int nvar, double *P, double *C,
+                 double *R, void *params);
+  /* At u: a[k + ncon*i], b[k + ncon*i], the coefficients of v_i and v_i' in row k
+   * (may be NULL when ncon = 0). */
+  int (*constraints)(int ndim, const double *u, const double *par, int nvar, int ncon, double *a,
+                     double *b, void *params);
+  /* B[r + nvbc*j]: j < nvar the coefficient of v_j(0), else of v_(j-nvar)(1); Hb (NULL when
+   * not wanted) the boundary Hessian, 2 nvar x 2 nvar, zero for linear conditions (may be
+   * NULL when nvbc = 0). */
+  int (*vbc)(int ndim, const double *u0, const double *u1, const double *par, int nvar, int nvbc,
+             double *B, double *Hb, void *params);
+} cable_variational;
+
 typedef struct cable_problem {
   int abi_version;              /* CABLE_PROBLEM_ABI */
   size_t struct_size;           /* sizeof(cable_problem) when compiled */
@@ -118,6 +144,8 @@ typedef struct cable_problem {
                                    reads params and its arguments); the engine then evaluates
                                    the mesh intervals on NTHREADS threads.  0 (the default of a
                                    zero-initialised struct): func is called from one thread. */
+  /* ABI 4 */
+  const cable_variational *variational;  /* NULL: not variational (STAB=1 is refused) */
 } cable_problem;
 
 /* A plug-in exports `const cable_problem *cable_problem_entry(void);`. */
