@@ -717,6 +717,33 @@ static cairo_surface_t *plot_to_surface(const plot_branch *b, int nb, const plot
   return cairo_image_surface_create_from_png(path);
 }
 
+/* STAB=1 diagrams (doc/stability.md S6): a stretch between two unstable
+ * points is dashed, the rest solid.  Dashing the right half of a line changes
+ * pixels only right of those that dashing its left half changes (but for the
+ * point where both switch). */
+static void test_plot_dashed(void)
+{
+  double x[11], y[11];
+  int right[11], left[11];
+  for (int i = 0; i < 11; i++) x[i] = i, y[i] = 100 + 10 * i, right[i] = i >= 5, left[i] = i <= 5;
+  plot_branch solid = {"line", 11, x, y, NULL, NULL, NULL};
+  plot_branch dr = {"line", 11, x, y, NULL, NULL, right}, dl = {"line", 11, x, y, NULL, NULL, left};
+  cairo_surface_t *s0 = plot_to_surface(&solid, 1, NULL, 0, OUTDIR "/dash0.png");
+  cairo_surface_t *s1 = plot_to_surface(&dr, 1, NULL, 0, OUTDIR "/dash1.png");
+  cairo_surface_t *s2 = plot_to_surface(&dl, 1, NULL, 0, OUTDIR "/dash2.png");
+  int br[4] = {0}, bl[4] = {0};
+  long nr = s0 && s1 ? diff_bbox(s0, s1, br) : 0, nl = s0 && s2 ? diff_bbox(s0, s2, bl) : 0;
+  char buf[200];
+  snprintf(buf, sizeof buf, "plot: unstable stretches are dashed (%ld and %ld pixels change; right half x %d..%d, "
+           "left half x %d..%d)", nr, nl, br[0], br[2], bl[0], bl[2]);
+  /* the two meet at point 5, where each restarts its stroke with round caps: they may
+     share a few pixels there (8: about the line width and its antialiasing) */
+  test_true(buf, nr > 0 && nl > 0 && br[0] >= bl[2] - 8 && br[2] > bl[2] + 100 && bl[0] < br[0] - 100);
+  if (s0) cairo_surface_destroy(s0);
+  if (s1) cairo_surface_destroy(s1);
+  if (s2) cairo_surface_destroy(s2);
+}
+
 /* Mark labels stay inside the plot area: a mark in the top right corner of
  * the data (knot72_mirror.png's "(a) mirrored" was cut at the right edge) has
  * its text to the left of and below the marker.  Two branches labelled at one
@@ -1255,6 +1282,7 @@ int main(void)
   test_mesh();
   test_plot();
   test_plot_labels();
+  test_plot_dashed();
   test_render_knot();
   test_render_depth();
   test_render_errors();

@@ -11,13 +11,19 @@
  *    lambda, the first buckled branch stable (index 0), the second index 1;
  *    without the constraint (elastica) sigma_1 = -lambda, unstable;
  *  - the convergence table of doc/stability.md S5 (printed);
- *  - STAB=1 is refused for a problem that is not variational (file:line:key). */
+ *  - STAB=1 is refused for a problem that is not variational (file:line:key);
+ *  - the b-file of a STAB=1 run: header line STAB = 1, PT < 0 exactly at the
+ *    stable points (AUTO's convention), read back by cable_bfile_read; without
+ *    STAB nothing of it. */
 #include <lapacke.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include <sys/stat.h>
+
+#include "cable/cable_aufile.h"
 #include "cable/cable_constants.h"
 #include "cable/cable_stability.h"
 #include "engine_util.h"
@@ -380,6 +386,69 @@ static void test_refusal(void)
   cable_solution_free(s);
 }
 
+/* ---------------------------------------------------------------- the b-file */
+
+#define OUTDIR "tests/tmp/stability"
+
+/* Bratu through its fold with the b-file writer; returns the file read back. */
+static cable_bfile *bratu_bfile(int stab, const char *name)
+{
+  const cable_problem *pb = cable_testproblem_bratu();
+  cable_constants c;
+  engine_constants(&c, 20, 4);
+  c.ds = 0.1; c.dsmin = 1e-6; c.dsmax = 0.5; c.nmx = 30;
+  c.rl1 = 10.0; c.ilp = 1; c.isp = 0; c.epss = 1e-7; c.iad = 3;
+  c.stab = stab;
+  cable_constants_take_problem_dims(&c, pb->ndim, pb->nbc, pb->nint);
+  cable_names names;
+  memset(&names, 0, sizeof names);
+  cable_names_fill(&names, pb->parnames, pb->npar, pb->unames, pb->ndim);
+  cable_error err;
+  int st;
+  cable_cont *cc = cable_cont_alloc(pb, &c, &st);
+  cable_aufile *w = cc ? cable_aufile_open(OUTDIR, name, &c, &names, NULL, &err) : NULL;
+  if (!cc || !w || cable_cont_set_start(cc, NULL) != CABLE_SUCCESS) {
+    cable_cont_free(cc);
+    if (w) cable_aufile_close(w, &err);
+    return NULL;
+  }
+  cable_sink sink = cable_aufile_sink(w);
+  cable_cont_run(cc, &sink, 1, 1, NULL);
+  cable_cont_free(cc);
+  if (cable_aufile_close(w, &err) != CABLE_SUCCESS) return NULL;
+  char path[256];
+  snprintf(path, sizeof path, OUTDIR "/b.%s", name);
+  return cable_bfile_read(path, &err);
+}
+
+static void test_bfile(void)
+{
+  mkdir("tests/tmp", 0755);
+  mkdir(OUTDIR, 0755);
+  cable_bfile *b1 = bratu_bfile(1, "stab"), *b0 = bratu_bfile(0, "nostab");
+  test_true("b-files written and read back", b1 && b0 && b1->nbranch == 1 && b0->nbranch == 1);
+  if (b1 && b0 && b1->nbranch == 1 && b0->nbranch == 1) {
+    const cable_bfile_branch *r1 = &b1->branch[0], *r0 = &b0->branch[0];
+    test_true("STAB=1: the section says so (STAB = 1 in its header)", r1->stab == 1);
+    test_true("without STAB: it does not", r0->stab == 0);
+    int lp = -1, signs = 1, same = r1->nrow == r0->nrow, plain = 1;
+    for (int i = 0; i < r1->nrow; i++)
+      if (r1->ty[i] == CABLE_TY_LP) lp = i;
+    for (int i = 0; i < r1->nrow && i < r0->nrow; i++) {
+      /* stable (PT < 0) before the fold; the fold itself (a zero eigenvalue)
+         and the upper branch unstable (PT > 0) */
+      signs &= i < lp ? r1->pt[i] == -(i + 1) : r1->pt[i] == i + 1;
+      plain &= r0->pt[i] == i + 1;
+      same &= r1->data[i] == r0->data[i];
+    }
+    test_true("STAB=1: PT < 0 exactly on the lower branch (before the LP)", lp > 0 && signs);
+    test_true("without STAB: every PT positive", plain);
+    test_true("the same points with and without STAB", same);
+  }
+  cable_bfile_free(b1);
+  cable_bfile_free(b0);
+}
+
 int main(void)
 {
   test_bratu_exact();
@@ -387,5 +456,6 @@ int main(void)
   test_elastica_run();
   test_convergence();
   test_refusal();
+  test_bfile();
   return test_summary();
 }
