@@ -2,7 +2,6 @@
  * the second variation Q[v] = int v'.P v' + 2 v'.C v + v.R v dt on continuous
  * piecewise polynomials, restricted to the null space of the linearised
  * constraints, against the L2 mass form; LAPACK's dsygv gives the spectrum. */
-#include <cblas.h>
 #include <float.h>
 #include <gsl/gsl_integration.h>
 #include <lapacke.h>
@@ -178,7 +177,7 @@ int cable_stability_index(const cable_problem *pb, const cable_solution *sol, in
   w.dphi = malloc((size_t)((degree + 1) * w.nq) * sizeof *w.dphi);
   w.ls = malloc((size_t)(sol->ncol + 1) * sizeof *w.ls);
   w.dls = malloc((size_t)(sol->ncol + 1) * sizeof *w.dls);
-  double *Q = NULL, *T = NULL, *Kz = NULL, *Mz = NULL, *ev = NULL, *tau = NULL;
+  double *Q = NULL, *Kz = NULL, *Mz = NULL, *ev = NULL, *tau = NULL;
   lapack_int *jpvt = NULL;
   int st = CABLE_SUCCESS;
   if (!w.K || !w.M || !w.G || !w.P || !w.C || !w.R || !w.a || !w.b || !w.B || !w.Hb || !w.u || !w.phi || !w.dphi ||
@@ -187,12 +186,11 @@ int cable_stability_index(const cable_problem *pb, const cable_solution *sol, in
     goto done;
   }
   if ((st = assemble(pb, sol, refine, &w, err)) != CABLE_SUCCESS) goto done;
-  /* the null space of G: QR with column pivoting of G^T (N x nc), then the
-     last N - rank columns of the full Q */
+  /* the null space of G: QR with column pivoting of G^T (N x nc); the last
+     N - rank columns of its Q span it */
   int rank = 0;
-  const double *Z = NULL;
   if (nc > 0) {
-    Q = calloc(NN, sizeof *Q);
+    Q = calloc((size_t)N * (size_t)nc, sizeof *Q);
     tau = calloc((size_t)nc, sizeof *tau);
     jpvt = calloc((size_t)nc, sizeof *jpvt);
     if (!Q || !tau || !jpvt) {
@@ -209,11 +207,16 @@ int cable_stability_index(const cable_problem *pb, const cable_solution *sol, in
     double r11 = fabs(Q[0]);
     for (int r = 0; r < kq; r++)
       if (fabs(Q[(size_t)r + (size_t)N * (size_t)r]) > 1e-12 * r11) rank++;
-    if (LAPACKE_dorgqr(LAPACK_COL_MAJOR, N, N, kq, Q, N, tau) != 0) {
-      st = cable_error_set(err, CABLE_ERR_LINSOLVE, "", 0, "STAB", "dorgqr failed");
+    /* Q^T K Q and Q^T M Q by the nc Householder reflectors themselves
+       (dormqr, O(N^2 nc)); their trailing (N - rank) blocks are Z^T K Z and
+       Z^T M Z (Z: the last N - rank columns of Q) */
+    if (LAPACKE_dormqr(LAPACK_COL_MAJOR, 'L', 'T', N, N, kq, Q, N, tau, w.K, N) != 0 ||
+        LAPACKE_dormqr(LAPACK_COL_MAJOR, 'R', 'N', N, N, kq, Q, N, tau, w.K, N) != 0 ||
+        LAPACKE_dormqr(LAPACK_COL_MAJOR, 'L', 'T', N, N, kq, Q, N, tau, w.M, N) != 0 ||
+        LAPACKE_dormqr(LAPACK_COL_MAJOR, 'R', 'N', N, N, kq, Q, N, tau, w.M, N) != 0) {
+      st = cable_error_set(err, CABLE_ERR_LINSOLVE, "", 0, "STAB", "dormqr failed");
       goto done;
     }
-    Z = Q + (size_t)N * (size_t)rank;
   }
   const int nz = N - rank;
   res->nbasis = N;
@@ -226,20 +229,12 @@ int cable_stability_index(const cable_problem *pb, const cable_solution *sol, in
     st = cable_error_set(err, CABLE_ERR_ALLOC, "", 0, "STAB", "out of memory (N = %d)", N);
     goto done;
   }
-  if (Z) {
-    T = malloc((size_t)N * (size_t)nz * sizeof *T);
-    if (!T) {
-      st = cable_error_set(err, CABLE_ERR_ALLOC, "", 0, "STAB", "out of memory (N = %d)", N);
-      goto done;
+  for (int j = 0; j < nz; j++)
+    for (int i = 0; i < nz; i++) {
+      size_t src = (size_t)(rank + i) + (size_t)N * (size_t)(rank + j);
+      Kz[(size_t)i + (size_t)nz * (size_t)j] = w.K[src];
+      Mz[(size_t)i + (size_t)nz * (size_t)j] = w.M[src];
     }
-    cblas_dsymm(CblasColMajor, CblasLeft, CblasUpper, N, nz, 1.0, w.K, N, Z, N, 0.0, T, N);
-    cblas_dgemm(CblasColMajor, CblasTrans, CblasNoTrans, nz, nz, N, 1.0, Z, N, T, N, 0.0, Kz, nz);
-    cblas_dsymm(CblasColMajor, CblasLeft, CblasUpper, N, nz, 1.0, w.M, N, Z, N, 0.0, T, N);
-    cblas_dgemm(CblasColMajor, CblasTrans, CblasNoTrans, nz, nz, N, 1.0, Z, N, T, N, 0.0, Mz, nz);
-  } else {
-    memcpy(Kz, w.K, NN * sizeof *Kz);
-    memcpy(Mz, w.M, NN * sizeof *Mz);
-  }
   if (LAPACKE_dsygv(LAPACK_COL_MAJOR, 1, 'N', 'U', nz, Kz, nz, Mz, nz, ev) != 0) {
     st = cable_error_set(err, CABLE_ERR_LINSOLVE, "", 0, "STAB",
                          "dsygv failed (the mass form on the admissible variations is not positive definite?)");
@@ -255,6 +250,6 @@ int cable_stability_index(const cable_problem *pb, const cable_solution *sol, in
   for (int i = 0; i < res->neig; i++) res->eig[i] = ev[i];
 done:
   ws_free(&w);
-  free(Q); free(T); free(Kz); free(Mz); free(ev); free(tau); free(jpvt);
+  free(Q); free(Kz); free(Mz); free(ev); free(tau); free(jpvt);
   return st;
 }
