@@ -10,6 +10,8 @@
  *    state index n for (n pi)^2 < lambda < ((n+1) pi)^2 with sigma_1 = pi^2 -
  *    lambda, the first buckled branch stable (index 0), the second index 1;
  *    without the constraint (elastica) sigma_1 = -lambda, unstable;
+ *  - two uncoupled columns: the index jumps by 2 at each (double) branch point
+ *    and nowhere else;
  *  - the convergence table of doc/stability.md S5 (printed);
  *  - STAB=1 is refused for a problem that is not variational (file:line:key);
  *  - the b-file of a STAB=1 run: header line STAB = 1, PT < 0 exactly at the
@@ -292,6 +294,125 @@ static void test_elastica_run(void)
   }
 }
 
+/* ---------------------------------------------------------------- double branch points */
+
+/* Two uncoupled Euler columns under one load lambda, each with its ends on
+ * one line: u = (theta1, theta1', theta2, theta2'), PAR = (lambda, nu1, nu2).
+ * Every branch point of the straight state is double, and there two
+ * eigenvalues of the second variation cross zero together: the index must
+ * jump by 2 exactly there (the braid's D7-symmetric flat knot in small). */
+static void sub_par(const double *par, int k, double p2[2])
+{
+  p2[0] = par[0];
+  p2[1] = par[1 + k];
+}
+
+static int dcol_func(int ndim, const double *u, const int *icp, const double *par, int ijac, double *f,
+                     double *dfdu, double *dfdp, void *params)
+{
+  (void)ndim; (void)ijac; (void)dfdu; (void)dfdp;
+  const cable_problem *e = cable_testproblem_elastica_int();
+  int rc = 0;
+  for (int k = 0; k < 2; k++) {
+    double p2[2];
+    sub_par(par, k, p2);
+    rc |= e->func(2, u + 2 * k, icp, p2, 0, f + 2 * k, NULL, NULL, params);
+  }
+  return rc;
+}
+
+static int dcol_bcnd(int ndim, const double *par, const int *icp, int nbc, const double *u0, const double *u1,
+                     int ijac, double *fb, double *dbc, void *params)
+{
+  (void)ndim; (void)par; (void)icp; (void)nbc; (void)ijac; (void)dbc; (void)params;
+  fb[0] = u0[1]; fb[1] = u1[1]; fb[2] = u0[3]; fb[3] = u1[3];
+  return 0;
+}
+
+static int dcol_icnd(int ndim, const double *par, const int *icp, int nint, const double *u, const double *uold,
+                     const double *udot, const double *upold, int ijac, double *fi, double *dint, void *params)
+{
+  (void)ndim; (void)par; (void)icp; (void)nint; (void)uold; (void)udot; (void)upold; (void)ijac; (void)dint;
+  (void)params;
+  fi[0] = sin(u[0]);
+  fi[1] = sin(u[2]);
+  return 0;
+}
+
+static int dcol_stpnt(int ndim, double t, double *u, double *par, void *params)
+{
+  (void)t; (void)params;
+  for (int i = 0; i < ndim; i++) u[i] = 0.0;
+  par[0] = 1.0; par[1] = par[2] = 0.0;
+  return 0;
+}
+
+static int dcol_hessian(int ndim, const double *u, const double *par, int nvar, double *P, double *C, double *R,
+                        void *params)
+{
+  (void)ndim; (void)params;
+  const cable_variational *v = cable_testproblem_elastica_int()->variational;
+  for (int i = 0; i < nvar * nvar; i++) P[i] = C[i] = R[i] = 0.0;
+  for (int k = 0; k < 2; k++) {
+    double p2[2], p, c, r;
+    sub_par(par, k, p2);
+    int rc = v->hessian(2, u + 2 * k, p2, 1, &p, &c, &r, NULL);
+    if (rc) return rc;
+    P[k + 2 * k] = p; C[k + 2 * k] = c; R[k + 2 * k] = r;
+  }
+  return 0;
+}
+
+static int dcol_constraints(int ndim, const double *u, const double *par, int nvar, int ncon, double *a, double *b,
+                            void *params)
+{
+  (void)ndim; (void)par; (void)nvar; (void)params;
+  for (int i = 0; i < 2 * ncon; i++) a[i] = b[i] = 0.0;
+  a[0 + ncon * 0] = cos(u[0]);   /* row 0: int cos(theta1) v1 = 0 */
+  a[1 + ncon * 1] = cos(u[2]);   /* row 1: int cos(theta2) v2 = 0 */
+  return 0;
+}
+
+static void test_double_bp(void)
+{
+  static const cable_variational var = {.nvar = 2, .ncon = 2, .nvbc = 0, .hessian = dcol_hessian,
+                                        .constraints = dcol_constraints};
+  cable_problem pb = {.abi_version = CABLE_PROBLEM_ABI, .struct_size = sizeof(cable_problem),
+                      .name = "double-column", .ndim = 4, .nbc = 4, .nint = 2, .npar = 3,
+                      .func = dcol_func, .bcnd = dcol_bcnd, .icnd = dcol_icnd, .stpnt = dcol_stpnt,
+                      .variational = &var};
+  cable_constants c;
+  engine_constants(&c, 40, 4);
+  c.jac = 0;   /* the problem gives no derivatives */
+  c.icp[1] = 1; c.icp[2] = 2; c.nicp = 3;
+  c.ds = 0.5; c.dsmin = 1e-6; c.dsmax = 3.0; c.nmx = 200;
+  c.rl1 = 45.0; c.isp = 2; c.epss = 1e-9;
+  c.stab = 1;
+  srun r;
+  int st = srun_run(&pb, &c, NULL, &r);
+  test_true("double column: the straight branch with STAB=1 reaches RL1", st == CABLE_END_BOUNDS);
+  int nbp = 0, jumps = 0, at_bp = 1, by2 = 1, right = 1;
+  for (int i = 0; i < r.n; i++) {
+    if (r.itp[i] % 10 == CABLE_TY_BP) nbp++;
+    else right &= r.index[i] == 2 * straight_index(r.lambda[i], 1) && r.nzero[i] == 0;
+    if (i == 0 || r.index[i] == r.index[i - 1]) continue;
+    jumps++;
+    /* a jump happens between a point and a located BP, or across one (the BP
+       itself, a zero eigenvalue pair, counts its own index either way) */
+    int bp_here = r.itp[i] % 10 == CABLE_TY_BP || r.itp[i - 1] % 10 == CABLE_TY_BP;
+    at_bp &= bp_here;
+    int lo = i - 1, hi = i;
+    if (r.itp[hi] % 10 == CABLE_TY_BP && hi + 1 < r.n) hi++;
+    if (r.itp[lo] % 10 == CABLE_TY_BP && lo > 0) lo--;
+    by2 &= abs(r.index[hi] - r.index[lo]) == 2;
+  }
+  test_int("double column: two double branch points below 45", nbp, 2);
+  test_true("double column: index 2n for (n pi)^2 < lambda < ((n+1) pi)^2 (away from the BPs)", right);
+  test_true("double column: the index changes only next to a located BP", jumps >= 2 && at_bp);
+  test_true("double column: across each double BP it changes by 2", by2);
+  srun_free(&r);
+}
+
 /* ---------------------------------------------------------------- convergence */
 
 /* The straight column (theta = 0) at lambda = 50 stored on a uniform mesh. */
@@ -454,6 +575,7 @@ int main(void)
   test_bratu_exact();
   test_bratu_run();
   test_elastica_run();
+  test_double_bp();
   test_convergence();
   test_refusal();
   test_bfile();
