@@ -203,6 +203,38 @@ static int picture_build(const cable_solution *s, braid_picture *bp)
   return CABLE_SUCCESS;
 }
 
+/* A knot's strands are two open tubes that join end to end (L + L2 = Ltot); a link's are closed. */
+static int solution_is_knot(const cable_solution *s)
+{
+  return s->par[BP_LTOT] > 0 && fabs(s->par[BP_L] + s->par[BP_L2] - s->par[BP_LTOT]) < 1e-6 * s->par[BP_LTOT];
+}
+
+static int braid_solution_check(const cable_solution *s)
+{
+  return s && s->ndim == BR_NDIM && s->npar > BP_LTOT && s->u && cable_solution_npts(s) >= 2;
+}
+
+int cable_solution_strands(const cable_solution *s, cable_strands *out)
+{
+  if (!out) return CABLE_ERR_NULL;
+  memset(out, 0, sizeof *out);
+  if (!s) return CABLE_ERR_NULL;
+  if (!braid_solution_check(s)) return CABLE_ERR_INPUT;
+  braid_picture bp;
+  int rc = picture_build(s, &bp);
+  free(bp.c);
+  *out = (cable_strands){bp.n, !solution_is_knot(s), 0.5 * s->par[BP_DELTA], bp.r1, bp.r2, bp.p1, bp.p2};
+  if (rc) cable_strands_free(out);
+  return rc;
+}
+
+void cable_strands_free(cable_strands *st)
+{
+  if (!st) return;
+  free(st->r1); free(st->r2); free(st->p1); free(st->p2);
+  memset(st, 0, sizeof *st);
+}
+
 int cable_render_solution(const cable_solution *s, const render_options *o, const char *out, const char *vtp,
                           const char *ply, cable_error *err)
 {
@@ -222,8 +254,7 @@ int cable_render_solution(const cable_solution *s, const render_options *o, cons
     picture_free(&bp);
     return cable_error_set(err, rc, NULL, 0, "", "cannot evaluate label %d: %s", s->lab, cable_status_message(rc));
   }
-  /* a knot's strands are two open tubes that join end to end; a link's are closed */
-  int knot = s->par[BP_LTOT] > 0 && fabs(s->par[BP_L] + s->par[BP_L2] - s->par[BP_LTOT]) < 1e-6 * s->par[BP_LTOT];
+  int knot = solution_is_knot(s);
   double radius = 0.5 * s->par[BP_DELTA];
   /* strand 1 red, strand 2 blue */
   render_tube t[2] = {{bp.n, bp.r1, bp.p1, radius, {0.80, 0.20, 0.15}, !knot},
