@@ -33,7 +33,7 @@ static void usage(FILE *out)
         "  view DIR [o=FILE.html]\n"
         "                     one offline HTML page of a run directory's b./s. files or\n"
         "                     an atlas: the diagram beside the 3-D knot (python3 -m\n"
-        "                     cable.view; doc/view.md)\n"
+        "                     cable.webview; doc/view.md)\n"
         "  table b.NAME       the branch table of a b-file\n"
         "  list s.NAME        the labelled solutions of an s-file\n"
         "  analyze s.NAME LABEL...\n"
@@ -154,7 +154,7 @@ int main(int argc, char **argv)
   }
   if (strcmp(cmd, "run") == 0) return report(cable_cmd_run(argc - 2, argv + 2, &err), &err);
   if (strcmp(cmd, "atlas") == 0) return python_module("cable.atlas", argc, argv);
-  if (strcmp(cmd, "view") == 0) return python_module("cable.view", argc, argv);
+  if (strcmp(cmd, "view") == 0) return python_module("cable.webview", argc, argv);
   if (strcmp(cmd, "replay") == 0) {
     if (argc != 3) {
       fprintf(stderr, "cable: usage: cable replay SCRIPT\n");

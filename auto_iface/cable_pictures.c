@@ -4,6 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "cable/cable_analysis.h"
 #include "cable/cable_aufile.h"
 #include "cable/cable_names.h"
 #include "cable_commands.h"
@@ -48,6 +49,19 @@ static int check_suffix(const char *path, const char *key, const char *const *su
 static int same_point(double x1, double y1, double x2, double y2)
 {
   return fabs(x1 - x2) <= 1e-9 * (1 + fabs(x1)) && fabs(y1 - y2) <= 1e-9 * (1 + fabs(y1));
+}
+
+/* The diagram's caption: title, axes, branches and what the marks mean, in one line. */
+static void plot_caption(const char *title, const char *x, const char *y, const plot_branch *b, int nb, char *buf,
+                         size_t n)
+{
+  size_t k = (size_t)snprintf(buf, n, "%s%scable plot: %s against %s; branches:", title ? title : "",
+                              title ? ". " : "", y, x);
+  for (int i = 0; i < nb && k < n; i++) k += (size_t)snprintf(buf + k, n - k, "%s %s", i ? "," : "", b[i].name);
+  if (k < n)
+    snprintf(buf + k, n - k, "; filled circles: branch points, triangles: folds, open circles: labelled points");
+  for (char *p = buf; *p; p++)
+    if (*p == '\n' || *p == '\r') *p = ' ';   /* one line (a title may hold a newline) */
 }
 
 int cable_plot_files(const char *dir, const char *const *bfiles, int nfiles, const char *xcol, const char *ycol,
@@ -129,7 +143,9 @@ int cable_plot_files(const char *dir, const char *const *bfiles, int nfiles, con
   if (!rc && nb == 0) rc = cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, "", "the b-files hold no points");
   if (!rc) {
     plot_options o = {xl, yl, title, 0, 0, has_suffix(out, ".svg") ? PLOT_FORMAT_SVG : PLOT_FORMAT_PNG};
-    rc = plot_bifurcation_annotated(br, nb, marks, nmarks, &o, out);
+    char caption[1000];
+    plot_caption(title, xl, yl, br, nb, caption, sizeof caption);
+    rc = plot_bifurcation_captioned(br, nb, marks, nmarks, &o, caption, out);
     if (rc) cable_error_set(err, rc, out, 0, "o", "cannot write the diagram: %s", cable_status_message(rc));
   }
   for (int i = 0; i < nb; i++) free(labels[i]);
@@ -235,6 +251,28 @@ void cable_strands_free(cable_strands *st)
   memset(st, 0, sizeof *st);
 }
 
+/* The largest contact pressure is drawn this many drawn tube radii from the
+ * contact curve: inside a strand's far edge (2 radii), so the profile stays
+ * on the knot. */
+#define RENDER_PROFILE_REACH 1.7
+
+/* The PNG's caption: what the picture shows, in one line. */
+static void picture_caption(const cable_solution *s, const render_options *o, double pmax, char *buf, size_t n)
+{
+  braid_analysis *a = malloc(sizeof *a);
+  char topo[160] = "";
+  if (a && braid_analysis_compute(s, a) == 0)
+    snprintf(topo, sizeof topo, ", Lk = %.4g, braid axis: %s, tubes %s", a->topo.lk, a->topo.axis.name,
+             a->tube.noverlap > 0 ? "overlap" : "do not overlap");
+  free(a);
+  snprintf(buf, n,
+           "cable render: label %d, T = %.8g, F = %.8g, Delta = %.6g%s; strand 1 red, strand 2 blue%s; "
+           "contact pressure (max |p| = %.6g) along the contact curve: white on strand 1, black on strand 2, "
+           "dark red where negative",
+           s->lab, s->par[BP_T], s->par[BP_F], s->par[BP_DELTA], topo,
+           o && o->colormap != RENDER_COLORMAP_NONE ? " (coloured by contact pressure)" : "", pmax);
+}
+
 int cable_render_solution(const cable_solution *s, const render_options *o, const char *out, const char *vtp,
                           const char *ply, cable_error *err)
 {
@@ -259,19 +297,28 @@ int cable_render_solution(const cable_solution *s, const render_options *o, cons
   /* strand 1 red, strand 2 blue */
   render_tube t[2] = {{bp.n, bp.r1, bp.p1, radius, {0.80, 0.20, 0.15}, !knot},
                       {bp.n, bp.r2, bp.p2, radius, {0.15, 0.35, 0.80}, !knot}};
-  double pmax = 0, ext = 0;
-  for (int k = 0; k < bp.n; k++) {
-    pmax = fmax(pmax, fmax(fabs(bp.p1[k]), fabs(bp.p2[k])));
-    for (int i = 0; i < 3; i++) ext = fmax(ext, fabs(bp.c[3 * k + i] - bp.c[i]));
-  }
+  double pmax = 0;
+  for (int k = 0; k < bp.n; k++) pmax = fmax(pmax, fmax(fabs(bp.p1[k]), fabs(bp.p2[k])));
   /* pressure profiles: white for strand 1, black for strand 2 (the paper's
-     convention), dark red where the pressure is negative; the largest
-     pressure is drawn 4 % of the knot's size away from the contact curve */
-  double scale = pmax > 0 ? 0.04 * ext / pmax : 0;
-  render_profile prof[2] = {{bp.c, bp.p1, bp.n, {1, 1, 1}, {0.6, 0, 0}, scale},
-                            {bp.c, bp.p2, bp.n, {0, 0, 0}, {0.6, 0, 0}, -scale}};
+     convention), dark red where the pressure is negative, each drawn from
+     the contact curve towards the strand it acts on; the largest pressure
+     reaches RENDER_PROFILE_REACH drawn tube radii, so that the profiles lie
+     on the tubes (a strand's far edge is two radii from the contact curve)
+     and read as a graph across them, whatever the picture's size */
+  render_camera cam;
+  double scale = 0;
+  if (out && (rc = render_camera_fit(t, 2, o, &cam)) != CABLE_SUCCESS) {
+    picture_free(&bp);
+    return cable_error_set(err, rc, out, 0, "o", "cannot draw label %d: %s", s->lab, cable_status_message(rc));
+  }
+  if (out && pmax > 0) scale = RENDER_PROFILE_REACH * radius * cam.thicken / pmax;
+  render_profile prof[2] = {{bp.c, bp.p1, bp.n, {1, 1, 1}, {0.6, 0, 0}, scale, bp.r1},
+                            {bp.c, bp.p2, bp.n, {0, 0, 0}, {0.6, 0, 0}, scale, bp.r2}};
   if (out) {
-    rc = render_tubes_png(t, 2, prof, 2, o, out);
+    char caption[600];
+    picture_caption(s, o, pmax, caption, sizeof caption);
+    render_text text = {caption, "contact pressure"};
+    rc = render_tubes_png_text(t, 2, prof, 2, o, &text, out);
     if (rc) cable_error_set(err, rc, out, 0, "o", "cannot write the picture: %s", cable_status_message(rc));
   }
   export_options eo = {0, "pressure"};

@@ -15,7 +15,7 @@ from .constants import Constants
 from .results import Parameters, Result, Solution, SolutionList
 from . import scenes
 from .script import run_script
-from .view import view
+from .webview import view
 
 _runner = None
 

@@ -207,7 +207,7 @@ class Solution:
     # --- cable's own ---------------------------------------------------------------
     def _repr_html_(self):
         """A notebook shows the solution in cable view's page (cable.view)."""
-        from .view import view
+        from .webview import view
         return view(self)._repr_html_()
 
     @property
@@ -305,7 +305,7 @@ class Result:
 
     def _repr_html_(self):
         """A notebook shows the result in cable view's page (cable.view)."""
-        from .view import view
+        from .webview import view
         return view(self)._repr_html_()
 
     @property

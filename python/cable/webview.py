@@ -2,7 +2,7 @@
 to the 3-D shapes of its solutions (doc/view.md).
 
     cable view DIR [o=FILE.html]        # a run directory's b./s. files, or an atlas
-    python3 -m cable.view DIR [o=FILE.html]
+    python3 -m cable.webview DIR [o=FILE.html]
     cable.view(result)                  # in a notebook: shown inline (_repr_html_)
     cable.view(result, 'page.html')     # the same page, written to a file
 
