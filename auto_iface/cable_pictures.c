@@ -124,11 +124,17 @@ int cable_plot_files(const char *dir, const char *const *bfiles, int nfiles, con
       nb++;
     }
   }
+  int any_filled = 0;
+  for (int m = 0; m < nmarks; m++) any_filled |= marks[m].filled != 0;
   /* a point that sits on a branch point of another branch (a branch's start
      at the BP it was switched from) or on a mark is drawn only once: as the
      BP or the mark */
   for (int i = 0; !rc && i < nb; i++)
     for (int k = 0; k < br[i].n; k++) {
+      /* a scene that numbers branch points itself (filled marks: the paper's
+         "1".."4") replaces their AUTO labels: every branch point keeps its
+         circle, only the scene's numbers are written */
+      if (cable_type_base(types[i][k]) == 6 && any_filled) labels[i][k] = 0;
       if (cable_type_base(types[i][k]) == 6 || !labels[i][k]) continue;
       int hidden = 0;
       for (int m = 0; m < nmarks; m++) hidden |= same_point(br[i].x[k], br[i].y[k], marks[m].x, marks[m].y);

@@ -226,7 +226,7 @@ PyObject *pyc_bfile(PyObject *mod, PyObject *args)
 #define PLOT_MAX_FILES 64
 #define PLOT_MAX_MARKS 64
 
-/* plot(out, [bfile, ...], x, y, [(x, y, text), ...], title) */
+/* plot(out, [bfile, ...], x, y, [(x, y, text[, filled]), ...], title) */
 PyObject *pyc_plot(PyObject *mod, PyObject *args)
 {
   (void)mod;
@@ -251,7 +251,10 @@ PyObject *pyc_plot(PyObject *mod, PyObject *args)
     if (!(bf[k] = PyUnicode_AsUTF8(PySequence_Fast_GET_ITEM(ff, k)))) goto done;
   for (Py_ssize_t k = 0; k < nm; k++) {
     ann[k].filled = 0;
-    if (!PyArg_ParseTuple(PySequence_Fast_GET_ITEM(mf, k), "dds", &ann[k].x, &ann[k].y, &ann[k].text)) goto done;
+    /* (x, y, text) or (x, y, text, filled) */
+    if (!PyArg_ParseTuple(PySequence_Fast_GET_ITEM(mf, k), "dds|p", &ann[k].x, &ann[k].y, &ann[k].text,
+                          &ann[k].filled))
+      goto done;
   }
   cable_error err;
   cable_error_clear(&err);

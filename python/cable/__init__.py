@@ -15,7 +15,6 @@ from .constants import Constants
 from .results import Parameters, Result, Solution, SolutionList
 from . import scenes
 from .script import run_script
-from .webview import view
 
 _runner = None
 
@@ -41,6 +40,16 @@ for _n in ('run', 'r', 'load', 'ld', 'loadbd', 'bd', 'save', 'sv', 'merge', 'mb'
            'overlap_free', 'branch_table'):
     globals()[_n] = _delegate(_n)
 del _n
+
+
+
+def view(x, file=None, title=None):
+    """view(result | solution | 'DIR' [, 'page.html']): cable view's page (doc/view.md);
+    a notebook shows it inline.  (cable.webview is imported on first use, so that
+    `python3 -m cable.webview` runs it as a script without a second copy.)"""
+    from .webview import view as _view
+    return _view(x, file, title)
+
 
 branch_points = scenes.branch_points
 branch_point = scenes.branch_point

@@ -149,7 +149,10 @@ function drawDiagram() {
   el('text', {x: (M.l + W - M.r) / 2, y: H - 8, 'text-anchor': 'middle', 'font-size': 13}, svg).textContent = view.x;
   el('text', {x: 14, y: (M.t + H - M.b) / 2, 'text-anchor': 'middle', 'font-size': 13,
               transform: 'rotate(-90 14 ' + (M.t + H - M.b) / 2 + ')'}, svg).textContent = view.y;
+  // lines, then open circles and texts, then branch points on top (a branch
+  // starts at another's branch point: the BP stays visible)
   var g = el('g', {'clip-path': 'url(#plotarea)'}, svg), marks = el('g', {'clip-path': 'url(#plotarea)'}, svg);
+  var bpg = el('g', {'clip-path': 'url(#plotarea)'}, svg);
   run.branches.forEach(function (br, bi) {
     var X = column(br, view.x), Y = column(br, view.y), d = '', pen = false;
     var color = PALETTE[bi % PALETTE.length];
@@ -169,7 +172,7 @@ function drawDiagram() {
       var cx = sx(X[s.row]), cy = sy(Y[s.row]), isbp = s.ty === 'BP';
       var c = el('circle', {cx: cx, cy: cy, r: isbp ? 4 : 4.5, fill: isbp ? '#000' : '#fff', stroke: '#000',
                             'stroke-width': 1.2, 'class': 'pt', 'data-branch': bi, 'data-index': si,
-                            'data-lab': s.lab, 'data-ty': s.ty}, marks);
+                            'data-lab': s.lab, 'data-ty': s.ty}, isbp ? bpg : marks);
       c.addEventListener('click', function () { select(bi, si); });
       c.addEventListener('mousemove', function (ev) { tip(ev, br, s.row, s); });
       c.addEventListener('mouseleave', function () { $('tip').style.display = 'none'; });
@@ -180,16 +183,31 @@ function drawDiagram() {
   if (cur.b >= 0) {
     var s = run.branches[cur.b].sols[cur.s], br2 = run.branches[cur.b];
     el('circle', {cx: sx(column(br2, view.x)[s.row]), cy: sy(column(br2, view.y)[s.row]), r: 8, 'class': 'sel',
-                  id: 'selmark'}, marks);
+                  id: 'selmark'}, bpg);
   }
-  // legend: the branch names, top right
-  var lg = el('g', {'class': 'legend'}, svg), ly = M.t + 14;
-  el('rect', {x: W - M.r - 136, y: M.t + 2, width: 132, height: 14 * run.branches.length + 6, fill: '#fff',
-              'fill-opacity': 0.85, stroke: '#bbb'}, lg);
+  // legend: the branch names, in the corner of the plot that hides the fewest points
+  var lw = 150, lh = 14 * run.branches.length + 6, pad = 4;
+  var corners = [[W - M.r - lw - pad, M.t + pad], [M.l + pad, M.t + pad], [W - M.r - lw - pad, H - M.b - lh - pad],
+                 [M.l + pad, H - M.b - lh - pad]];
+  var best = 0, fewest = Infinity;
+  corners.forEach(function (c, k) {
+    var n = 0;
+    run.branches.forEach(function (br) {
+      var X = column(br, view.x), Y = column(br, view.y);
+      for (var i = 0; i < br.npt; i++) {
+        var px = sx(X[i]), py = sy(Y[i]);
+        if (px >= c[0] && px <= c[0] + lw && py >= c[1] && py <= c[1] + lh) n++;
+      }
+    });
+    if (n < fewest) { fewest = n; best = k; }
+  });
+  var lx = corners[best][0], ly = corners[best][1] + 14;
+  var lg = el('g', {'class': 'legend'}, svg);
+  el('rect', {x: lx, y: corners[best][1], width: lw, height: lh, fill: '#fff', 'fill-opacity': 0.85, stroke: '#bbb'}, lg);
   run.branches.forEach(function (br, bi) {
-    el('line', {x1: W - M.r - 130, x2: W - M.r - 110, y1: ly - 4, y2: ly - 4, stroke: PALETTE[bi % PALETTE.length],
+    el('line', {x1: lx + 6, x2: lx + 26, y1: ly - 4, y2: ly - 4, stroke: PALETTE[bi % PALETTE.length],
                 'stroke-width': 2.5}, lg);
-    el('text', {x: W - M.r - 104, y: ly}, lg).textContent = br.name;
+    el('text', {x: lx + 32, y: ly}, lg).textContent = br.name;
     ly += 14;
   });
 }
@@ -315,7 +333,7 @@ function solutionArrays(br, s) {
 function drawColorbar(cm) {
   var c = $('colorbar'), ctx = c.getContext('2d');
   ctx.clearRect(0, 0, c.width, c.height);
-  var x0 = 4, y0 = 24, h = c.height - 36, w = 14, top = cm.div ? cm.m : cm.hi, bot = cm.div ? -cm.m : cm.lo;
+  var x0 = 4, y0 = 28, h = c.height - 40, w = 14, top = cm.div ? cm.m : cm.hi, bot = cm.div ? -cm.m : cm.lo;
   for (var i = 0; i < h; i++) {
     var rgb = pcolor(top + (bot - top) * i / (h - 1), cm);
     ctx.fillStyle = 'rgb(' + Math.round(255 * rgb[0]) + ',' + Math.round(255 * rgb[1]) + ',' + Math.round(255 * rgb[2]) + ')';
@@ -323,7 +341,8 @@ function drawColorbar(cm) {
   }
   ctx.strokeStyle = '#444'; ctx.strokeRect(x0, y0, w, h);
   ctx.fillStyle = '#222'; ctx.font = '10px sans-serif';
-  ctx.fillText('pressure', 2, 10);
+  ctx.fillText('contact', 2, 9);
+  ctx.fillText('pressure', 2, 20);
   var r3 = function (x) { return fmt(Number(x.toPrecision(3))); };
   ctx.fillText(r3(top), x0 + w + 3, y0 + 4);
   ctx.fillText(r3(cm.div ? 0 : (top + bot) / 2), x0 + w + 3, y0 + h / 2 + 4);
@@ -399,7 +418,9 @@ function select(bi, si) {
     for (var k in s.a) info[k] = s.a[k];
   }
   if (s.n && three) {
+    var t0 = performance.now();
     var cm = show3d(br, s);
+    window.cableView.timing.show3d = performance.now() - t0;
     info.plo = cm.lo; info.phi = cm.hi;
   } else if (!s.n) {
     lines.push('(no 3-D shape: ' + (s.why || 'not a braid solution') + ')');
@@ -495,10 +516,12 @@ window.cableView.openTask = function (name) {
 };
 
 function start() {
+  var T = window.cableView.timing = {start: performance.now()};
   $('title').textContent = document.title = DATA.title;
   setupDiagram();
   try {
     setup3d();
+    T.webgl = performance.now();
   } catch (e) {
     window.cableView.error = 'WebGL: ' + e.message;
     $('view3d').textContent = 'no 3-D view: this browser gives no WebGL (' + e.message + ')';
@@ -515,6 +538,7 @@ function start() {
   };
   $('slider').oninput = function () { if (cur.b >= 0) select(cur.b, Number(this.value)); };
   if (DATA.kind === 'atlas') showAtlas(); else showRun(DATA);
+  T.shown = performance.now();
   window.cableView.ready = true;
   window.cableView.readyAt = performance.now();
 }
