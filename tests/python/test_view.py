@@ -257,3 +257,40 @@ def test_view_errors(tmp_path):
     p = cable_view(str(tmp_path), 'o=x.htm')
     assert p.returncode == 2 and 'must end in .html' in p.stderr
     assert os.listdir(str(tmp_path)) == []
+
+
+def test_picture_captions(rundir, tmp_path, monkeypatch):
+    """cable render and cable plot write a caption line (tEXt Description)
+    that names what the picture shows; a filled mark on a branch point (the
+    paper's numbering) replaces the AUTO labels of the branch points."""
+    import cable
+    import matplotlib.image as mpimg
+    from cable import _cable
+    from test_doc_img import png_caption
+    env = dict(os.environ, PYTHONPATH=os.path.join(BUILD, 'python'))
+    exe = os.path.join(BUILD, 'cable')
+    out = str(tmp_path / 'r.png')
+    p = subprocess.run([exe, 'render', 's.mode1', 'UZ1', 'o=' + out, 'color=pressure'], cwd=str(rundir),
+                       capture_output=True, text=True, env=env)
+    assert p.returncode == 0, p.stderr
+    cap = png_caption(out)
+    monkeypatch.chdir(str(rundir))
+    runner = cable.Runner()
+    uz = runner.loadbd('mode1')('UZ1')
+    a = runner.analyze(uz)
+    assert cap.startswith('cable render: label %d, T = %.8g' % (uz.LAB, uz['PAR(1)'])), cap
+    assert 'Lk = %.4g, braid axis: %s' % (a['Lk'], a['knot']) in cap and '(coloured by contact pressure)' in cap
+    plot = str(tmp_path / 'p.png')
+    p = subprocess.run([exe, 'plot', 'b.flat', 'b.mode1', 'o=' + plot, 'title=two branches'], cwd=str(rundir),
+                       capture_output=True, text=True, env=env)
+    assert p.returncode == 0, p.stderr
+    assert png_caption(plot) == ('two branches. cable plot: F against T; branches: flat, mode1; filled circles: '
+                                 'branch points, triangles: folds, open circles: labelled points')
+    bp = runner.loadbd('flat')('BP1')
+    plain, numbered = str(tmp_path / 'a.png'), str(tmp_path / 'b.png')
+    _cable.plot(plain, ['b.flat'], None, None, [], None)
+    # a filled mark without text on BP1: the BPs keep their circles, their labels go
+    _cable.plot(numbered, ['b.flat'], None, None, [(bp['PAR(1)'], bp['PAR(16)'], '', True)], None)
+    x, y = mpimg.imread(plain)[:, :, :3], mpimg.imread(numbered)[:, :, :3]
+    # the labels are dark text: the numbered diagram has fewer dark pixels
+    assert (y.max(axis=2) < 0.3).sum() < (x.max(axis=2) < 0.3).sum()
