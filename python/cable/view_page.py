@@ -271,7 +271,19 @@ function colormapFor(p1, p2, n) {
 }
 function setup3d() {
   var box = $('view3d');
-  var renderer = new THREE.WebGLRenderer({antialias: true, preserveDrawingBuffer: true});
+  // A software WebGL (SwiftShader, llvmpipe) takes seconds to set up a
+  // multisampled context: there the page draws without antialiasing, on the
+  // context it probed with (WEBGL_debug_renderer_info names the renderer).
+  var canvas = document.createElement('canvas');
+  var attrs = {antialias: false, preserveDrawingBuffer: true, alpha: false, depth: true, stencil: false};
+  var gl = canvas.getContext('webgl', attrs);
+  if (!gl) throw new Error('no WebGL context');
+  var dbg = gl.getExtension('WEBGL_debug_renderer_info');
+  var name = dbg ? String(gl.getParameter(dbg.UNMASKED_RENDERER_WEBGL)) : '';
+  var software = /swiftshader|llvmpipe|software/i.test(name);
+  window.cableView.webgl = {renderer: name, software: software};
+  var renderer = software ? new THREE.WebGLRenderer({canvas: canvas, context: gl, preserveDrawingBuffer: true})
+                          : new THREE.WebGLRenderer({antialias: true, preserveDrawingBuffer: true});
   renderer.setPixelRatio(1);
   renderer.setSize(box.clientWidth, box.clientHeight);
   renderer.setClearColor(0xffffff, 1);
