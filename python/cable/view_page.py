@@ -100,11 +100,12 @@ function niceStep(span, n) {
   return (f < 1.5 ? 1 : f < 3.5 ? 2 : f < 7.5 ? 5 : 10) * p;
 }
 function column(b, name) {
-  var k = run.columns.indexOf(name);
-  if (!b.cols) b.cols = b.data ? b64floats(b.data) : new Float32Array(0);
-  var n = b.npt, out = new Float32Array(n);
-  for (var i = 0; i < n; i++) out[i] = b.cols[k * n + i];
-  return out;
+  if (!b.cols) { b.cols = b.data ? b64floats(b.data) : new Float32Array(0); b.colcache = {}; }
+  if (!b.colcache[name]) {
+    var k = run.columns.indexOf(name);
+    b.colcache[name] = b.cols.subarray(k * b.npt, (k + 1) * b.npt);
+  }
+  return b.colcache[name];
 }
 function dataBox() {
   var x0 = Infinity, x1 = -Infinity, y0 = Infinity, y1 = -Infinity;
@@ -235,6 +236,20 @@ function setupDiagram() {
   }, {passive: false});
   svg.addEventListener('mousedown', function (ev) { drag = {x: ev.clientX, y: ev.clientY, box: view.box.slice()}; });
   window.addEventListener('mouseup', function () { drag = null; });
+  // hover anywhere near a branch: the nearest row (within 8 px) and its values
+  svg.addEventListener('mousemove', function (ev) {
+    if (drag || (ev.target && ev.target.classList && ev.target.classList.contains('pt'))) return;
+    var r = svg.getBoundingClientRect(), px = ev.clientX - r.left, py = ev.clientY - r.top, best = null, bd = 64;
+    run.branches.forEach(function (br) {
+      var X = column(br, view.x), Y = column(br, view.y);
+      for (var i = 0; i < br.npt; i++) {
+        var dx = sx(X[i]) - px, dy = sy(Y[i]) - py, d2 = dx * dx + dy * dy;
+        if (d2 < bd) { bd = d2; best = [br, i]; }
+      }
+    });
+    if (best) tip(ev, best[0], best[1], null); else $('tip').style.display = 'none';
+  });
+  svg.addEventListener('mouseleave', function () { $('tip').style.display = 'none'; });
   window.addEventListener('mousemove', function (ev) {
     if (!drag) return;
     var dx = (ev.clientX - drag.x) / (W - M.l - M.r) * (drag.box[1] - drag.box[0]);
@@ -472,6 +487,12 @@ function showRun(r) {
   });
   view.box = dataBox();
   drawDiagram();
+  // a link to a label: view.html#BRANCH/LAB (e.g. #mode2/19)
+  var hash = decodeURIComponent((window.location.hash || '').slice(1)).split('/');
+  if (hash.length === 2) {
+    var where = window.cableView.findLabel(hash[0], Number(hash[1]));
+    if (where) { select(where[0], where[1]); return; }
+  }
   if (run.select !== undefined)
     for (var b0 = 0; b0 < run.branches.length; b0++)
       for (var s0 = 0; s0 < run.branches[b0].sols.length; s0++)
