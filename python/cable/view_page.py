@@ -486,7 +486,7 @@ function showRun(r) {
     bs.appendChild(o);
   });
   view.box = dataBox();
-  drawDiagram();
+  // (select() draws the diagram; without a selection it is drawn at the end)
   // a link to a label: view.html#BRANCH/LAB (e.g. #mode2/19)
   var hash = decodeURIComponent((window.location.hash || '').slice(1)).split('/');
   if (hash.length === 2) {
@@ -504,6 +504,7 @@ function showRun(r) {
   for (var b = 0; b < run.branches.length; b++)
     for (var s = 0; s < run.branches[b].sols.length; s++)
       if (run.branches[b].sols[s].n) { select(b, s); return; }
+  drawDiagram();
   $('info').textContent = 'no labelled solution with a 3-D shape';
 }
 
