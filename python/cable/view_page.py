@@ -394,7 +394,9 @@ function show3d(br, s) {
   grp.add(new THREE.Mesh(tubeGeometry(A.r2, n, s.radius, s.closed, c2), mat));
   var axg = new THREE.BufferGeometry();
   axg.setAttribute('position', new THREE.BufferAttribute(ax, 3));
-  var axis = new THREE.Line(axg, new THREE.LineBasicMaterial({color: 0x00aa00}));
+  // the axis lies where the tubes touch, inside them: drawn over them
+  var axis = new THREE.Line(axg, new THREE.LineBasicMaterial({color: 0xe00000, depthTest: false}));
+  axis.renderOrder = 1;
   axis.visible = $('axis').checked; axis.name = 'axis';
   grp.add(axis);
   three.scene.add(grp);
