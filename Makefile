@@ -222,6 +222,7 @@ help:
 	@echo "make install    headers, libcable.so, cable.pc, cable and the Python package under PREFIX"
 	@echo "make check      build and run the test suite (summary: N passed, M failed)"
 	@echo "make demo       build and run the main job (the paper's knot scene)"
+	@echo "make doc-img    the README's pictures (doc/img) from the knot72 scene, and its cable view screenshot"
 	@echo "make asan       tests under AddressSanitizer + UBSan"
 	@echo "make valgrind   tests under valgrind memcheck"
 	@echo "make scenes     replay every scene in runs/"
