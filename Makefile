@@ -72,7 +72,7 @@ PYPKG    := $(BUILD)/python/cable
 PY_FILES := $(patsubst python/cable/%,$(PYPKG)/%,$(wildcard python/cable/*.py))
 PY_SO    := $(PYPKG)/_cable.so
 
-.PHONY: bench-atlas all lib python install check asan valgrind demo scenes bench stress fuzz clean help deps tests-build
+.PHONY: doc-img bench-atlas all lib python install check asan valgrind demo scenes bench stress fuzz clean help deps tests-build
 
 all: cable $(LIBSO) python
 
@@ -171,6 +171,10 @@ valgrind: tests-build
 	@CABLE_TEST_WRAPPER="valgrind --quiet --error-exitcode=99 --leak-check=full --errors-for-leak-kinds=definite,indirect" \
 	  CABLE_TEST_QUICK=1 CABLE_TEST_JOBS=$${CABLE_TEST_JOBS:-$$(nproc)} bash scripts/run-tests.sh $(BUILD)
 
+# The README's pictures (doc/img) from the knot72 scene (scripts/doc-img.sh).
+doc-img: cable python
+	@bash scripts/doc-img.sh
+
 # The README's main job: the paper's knot scene on its defaults.
 demo: cable python
 	@bash scripts/demo.sh
@@ -218,6 +222,7 @@ help:
 	@echo "make install    headers, libcable.so, cable.pc, cable and the Python package under PREFIX"
 	@echo "make check      build and run the test suite (summary: N passed, M failed)"
 	@echo "make demo       build and run the main job (the paper's knot scene)"
+	@echo "make doc-img    the README's pictures (doc/img) from the knot72 scene, and its cable view screenshot"
 	@echo "make asan       tests under AddressSanitizer + UBSan"
 	@echo "make valgrind   tests under valgrind memcheck"
 	@echo "make scenes     replay every scene in runs/"

@@ -30,6 +30,10 @@ static void usage(FILE *out)
         "  atlas SWEEP.toml [--workers N | --scheduler ADDRESS] [--check] [--retry-failed]\n"
         "                     an atlas of cable knots and links on Dask (python3 -m\n"
         "                     cable.atlas; doc/atlas.md)\n"
+        "  view DIR [o=FILE.html]\n"
+        "                     one offline HTML page of a run directory's b./s. files or\n"
+        "                     an atlas: the diagram beside the 3-D knot (python3 -m\n"
+        "                     cable.webview; doc/view.md)\n"
         "  table b.NAME       the branch table of a b-file\n"
         "  list s.NAME        the labelled solutions of an s-file\n"
         "  analyze s.NAME LABEL...\n"
@@ -103,17 +107,19 @@ static int replay(const char *script)
   return 1;
 }
 
-/* cable atlas ARGS: exec CABLE_PYTHON -m cable.atlas ARGS (argv[2..]) with the package on PYTHONPATH. */
-static int atlas(int argc, char **argv)
+/* cable atlas|view ARGS: exec CABLE_PYTHON -m MODULE ARGS (argv[2..]) with the package on PYTHONPATH. */
+static int python_module(const char *name, int argc, char **argv)
 {
   enum { MAX_ARGS = 64 };
   char *args[MAX_ARGS + 4];
   if (argc - 2 > MAX_ARGS) {
-    fprintf(stderr, "cable: atlas: too many arguments\n");
+    fprintf(stderr, "cable: %s: too many arguments\n", argv[1]);
     return 2;
   }
   if (package_on_path() != 0) return 1;
-  static char python[] = CABLE_PYTHON, dash_m[] = "-m", module[] = "cable.atlas";
+  static char python[] = CABLE_PYTHON, dash_m[] = "-m";
+  char module[32];
+  snprintf(module, sizeof module, "%s", name);
   int n = 0;
   args[n++] = python;
   args[n++] = dash_m;
@@ -147,7 +153,8 @@ int main(int argc, char **argv)
     return 0;
   }
   if (strcmp(cmd, "run") == 0) return report(cable_cmd_run(argc - 2, argv + 2, &err), &err);
-  if (strcmp(cmd, "atlas") == 0) return atlas(argc, argv);
+  if (strcmp(cmd, "atlas") == 0) return python_module("cable.atlas", argc, argv);
+  if (strcmp(cmd, "view") == 0) return python_module("cable.webview", argc, argv);
   if (strcmp(cmd, "replay") == 0) {
     if (argc != 3) {
       fprintf(stderr, "cable: usage: cable replay SCRIPT\n");

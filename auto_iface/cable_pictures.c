@@ -4,6 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "cable/cable_analysis.h"
 #include "cable/cable_aufile.h"
 #include "cable/cable_names.h"
 #include "cable_commands.h"
@@ -48,6 +49,19 @@ static int check_suffix(const char *path, const char *key, const char *const *su
 static int same_point(double x1, double y1, double x2, double y2)
 {
   return fabs(x1 - x2) <= 1e-9 * (1 + fabs(x1)) && fabs(y1 - y2) <= 1e-9 * (1 + fabs(y1));
+}
+
+/* The diagram's caption: title, axes, branches and what the marks mean, in one line. */
+static void plot_caption(const char *title, const char *x, const char *y, const plot_branch *b, int nb, char *buf,
+                         size_t n)
+{
+  size_t k = (size_t)snprintf(buf, n, "%s%scable plot: %s against %s; branches:", title ? title : "",
+                              title ? ". " : "", y, x);
+  for (int i = 0; i < nb && k < n; i++) k += (size_t)snprintf(buf + k, n - k, "%s %s", i ? "," : "", b[i].name);
+  if (k < n)
+    snprintf(buf + k, n - k, "; filled circles: branch points, triangles: folds, open circles: labelled points");
+  for (char *p = buf; *p; p++)
+    if (*p == '\n' || *p == '\r') *p = ' ';   /* one line (a title may hold a newline) */
 }
 
 int cable_plot_files(const char *dir, const char *const *bfiles, int nfiles, const char *xcol, const char *ycol,
@@ -112,11 +126,17 @@ int cable_plot_files(const char *dir, const char *const *bfiles, int nfiles, con
       nb++;
     }
   }
+  int any_filled = 0;
+  for (int m = 0; m < nmarks; m++) any_filled |= marks[m].filled != 0;
   /* a point that sits on a branch point of another branch (a branch's start
      at the BP it was switched from) or on a mark is drawn only once: as the
      BP or the mark */
   for (int i = 0; !rc && i < nb; i++)
     for (int k = 0; k < br[i].n; k++) {
+      /* a scene that numbers branch points itself (filled marks: the paper's
+         "1".."4") replaces their AUTO labels: every branch point keeps its
+         circle, only the scene's numbers are written */
+      if (cable_type_base(types[i][k]) == 6 && any_filled) labels[i][k] = 0;
       if (cable_type_base(types[i][k]) == 6 || !labels[i][k]) continue;
       int hidden = 0;
       for (int m = 0; m < nmarks; m++) hidden |= same_point(br[i].x[k], br[i].y[k], marks[m].x, marks[m].y);
@@ -131,7 +151,9 @@ int cable_plot_files(const char *dir, const char *const *bfiles, int nfiles, con
   if (!rc && nb == 0) rc = cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, "", "the b-files hold no points");
   if (!rc) {
     plot_options o = {xl, yl, title, 0, 0, has_suffix(out, ".svg") ? PLOT_FORMAT_SVG : PLOT_FORMAT_PNG};
-    rc = plot_bifurcation_annotated(br, nb, marks, nmarks, &o, out);
+    char caption[1000];
+    plot_caption(title, xl, yl, br, nb, caption, sizeof caption);
+    rc = plot_bifurcation_captioned(br, nb, marks, nmarks, &o, caption, out);
     if (rc) cable_error_set(err, rc, out, 0, "o", "cannot write the diagram: %s", cable_status_message(rc));
   }
   for (int i = 0; i < nb; i++) free(labels[i]);
@@ -205,6 +227,60 @@ static int picture_build(const cable_solution *s, braid_picture *bp)
   return CABLE_SUCCESS;
 }
 
+/* A knot's strands are two open tubes that join end to end (L + L2 = Ltot); a link's are closed. */
+static int solution_is_knot(const cable_solution *s)
+{
+  return s->par[BP_LTOT] > 0 && fabs(s->par[BP_L] + s->par[BP_L2] - s->par[BP_LTOT]) < 1e-6 * s->par[BP_LTOT];
+}
+
+static int braid_solution_check(const cable_solution *s)
+{
+  return s && s->ndim == BR_NDIM && s->npar > BP_LTOT && s->u && cable_solution_npts(s) >= 2;
+}
+
+int cable_solution_strands(const cable_solution *s, cable_strands *out)
+{
+  if (!out) return CABLE_ERR_NULL;
+  memset(out, 0, sizeof *out);
+  if (!s) return CABLE_ERR_NULL;
+  if (!braid_solution_check(s)) return CABLE_ERR_INPUT;
+  braid_picture bp;
+  int rc = picture_build(s, &bp);
+  free(bp.c);
+  *out = (cable_strands){bp.n, !solution_is_knot(s), 0.5 * s->par[BP_DELTA], bp.r1, bp.r2, bp.p1, bp.p2};
+  if (rc) cable_strands_free(out);
+  return rc;
+}
+
+void cable_strands_free(cable_strands *st)
+{
+  if (!st) return;
+  free(st->r1); free(st->r2); free(st->p1); free(st->p2);
+  memset(st, 0, sizeof *st);
+}
+
+/* The largest contact pressure is drawn this many drawn tube radii from the
+ * contact curve: inside a strand's far edge (2 radii), so the profile stays
+ * on the knot. */
+#define RENDER_PROFILE_REACH 1.7
+
+/* The PNG's caption: what the picture shows, in one line. */
+static void picture_caption(const cable_solution *s, const render_options *o, double pmax, char *buf, size_t n)
+{
+  braid_analysis *a = malloc(sizeof *a);
+  char topo[160] = "";
+  if (a && braid_analysis_compute(s, a) == 0)
+    snprintf(topo, sizeof topo, ", Lk = %.4g, braid axis: %s, tubes %s", a->topo.lk, a->topo.axis.name,
+             a->tube.noverlap > 0 ? "overlap" : "do not overlap");
+  free(a);
+  snprintf(buf, n,
+           "cable render: label %d, T = %.8g, F = %.8g, Delta = %.6g%s; strand 1 red, strand 2 blue%s; "
+           "contact pressure (max |p| = %.6g) along the contact curve: white on strand 1, black on strand 2, "
+           "dark red where negative",
+           s->lab, s->par[BP_T], s->par[BP_F], s->par[BP_DELTA], topo,
+           o && o->colormap != RENDER_COLORMAP_NONE ? " (coloured by contact pressure)" : "", pmax);
+}
+
 int cable_render_solution(const cable_solution *s, const render_options *o, const char *out, const char *vtp,
                           const char *ply, cable_error *err)
 {
@@ -224,25 +300,33 @@ int cable_render_solution(const cable_solution *s, const render_options *o, cons
     picture_free(&bp);
     return cable_error_set(err, rc, NULL, 0, "", "cannot evaluate label %d: %s", s->lab, cable_status_message(rc));
   }
-  /* a knot's strands are two open tubes that join end to end; a link's are closed */
-  int knot = s->par[BP_LTOT] > 0 && fabs(s->par[BP_L] + s->par[BP_L2] - s->par[BP_LTOT]) < 1e-6 * s->par[BP_LTOT];
+  int knot = solution_is_knot(s);
   double radius = 0.5 * s->par[BP_DELTA];
   /* strand 1 red, strand 2 blue */
   render_tube t[2] = {{bp.n, bp.r1, bp.p1, radius, {0.80, 0.20, 0.15}, !knot},
                       {bp.n, bp.r2, bp.p2, radius, {0.15, 0.35, 0.80}, !knot}};
-  double pmax = 0, ext = 0;
-  for (int k = 0; k < bp.n; k++) {
-    pmax = fmax(pmax, fmax(fabs(bp.p1[k]), fabs(bp.p2[k])));
-    for (int i = 0; i < 3; i++) ext = fmax(ext, fabs(bp.c[3 * k + i] - bp.c[i]));
-  }
+  double pmax = 0;
+  for (int k = 0; k < bp.n; k++) pmax = fmax(pmax, fmax(fabs(bp.p1[k]), fabs(bp.p2[k])));
   /* pressure profiles: white for strand 1, black for strand 2 (the paper's
-     convention), dark red where the pressure is negative; the largest
-     pressure is drawn 4 % of the knot's size away from the contact curve */
-  double scale = pmax > 0 ? 0.04 * ext / pmax : 0;
-  render_profile prof[2] = {{bp.c, bp.p1, bp.n, {1, 1, 1}, {0.6, 0, 0}, scale},
-                            {bp.c, bp.p2, bp.n, {0, 0, 0}, {0.6, 0, 0}, -scale}};
+     convention), dark red where the pressure is negative, each drawn from
+     the contact curve towards the strand it acts on; the largest pressure
+     reaches RENDER_PROFILE_REACH drawn tube radii, so that the profiles lie
+     on the tubes (a strand's far edge is two radii from the contact curve)
+     and read as a graph across them, whatever the picture's size */
+  render_camera cam;
+  double scale = 0;
+  if (out && (rc = render_camera_fit(t, 2, o, &cam)) != CABLE_SUCCESS) {
+    picture_free(&bp);
+    return cable_error_set(err, rc, out, 0, "o", "cannot draw label %d: %s", s->lab, cable_status_message(rc));
+  }
+  if (out && pmax > 0) scale = RENDER_PROFILE_REACH * radius * cam.thicken / pmax;
+  render_profile prof[2] = {{bp.c, bp.p1, bp.n, {1, 1, 1}, {0.6, 0, 0}, scale, bp.r1},
+                            {bp.c, bp.p2, bp.n, {0, 0, 0}, {0.6, 0, 0}, scale, bp.r2}};
   if (out) {
-    rc = render_tubes_png(t, 2, prof, 2, o, out);
+    char caption[600];
+    picture_caption(s, o, pmax, caption, sizeof caption);
+    render_text text = {caption, "contact pressure"};
+    rc = render_tubes_png_text(t, 2, prof, 2, o, &text, out);
     if (rc) cable_error_set(err, rc, out, 0, "o", "cannot write the picture: %s", cable_status_message(rc));
   }
   export_options eo = {0, "pressure"};

@@ -40,5 +40,7 @@ PyObject *pyc_passages(PyObject *mod, PyObject *args);
 PyObject *pyc_tube_dmin(PyObject *mod, PyObject *args);
 PyObject *pyc_plot(PyObject *mod, PyObject *args);
 PyObject *pyc_render(PyObject *mod, PyObject *args);
+PyObject *pyc_strands(PyObject *mod, PyObject *args);
+PyObject *pyc_bfile(PyObject *mod, PyObject *args);
 
 #endif

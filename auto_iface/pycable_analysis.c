@@ -140,10 +140,93 @@ PyObject *pyc_tube_dmin(PyObject *mod, PyObject *args)
   return PyFloat_FromDouble(td.dmin);
 }
 
+static int set_bytes(PyObject *d, const char *key, const double *x, size_t n)
+{
+  PyObject *v = PyBytes_FromStringAndSize((const char *)x, (Py_ssize_t)(n * sizeof(double)));
+  int rc = v ? PyDict_SetItemString(d, key, v) : -1;
+  Py_XDECREF(v);
+  return rc;
+}
+
+/* strands(branch, i) -> {'n', 'closed', 'radius', 'r1', 'r2', 'p1', 'p2'}:
+ * the strand centre lines [3n] and contact pressures [n] as bytes of
+ * doubles (cable_solution_strands; numpy.frombuffer reads them) */
+PyObject *pyc_strands(PyObject *mod, PyObject *args)
+{
+  (void)mod;
+  PyObject *b;
+  int i;
+  if (!PyArg_ParseTuple(args, "Oi", &b, &i)) return NULL;
+  const cable_solution *s = pyc_solution_arg(b, i);
+  if (!s) return NULL;
+  cable_strands st;
+  int rc;
+  Py_BEGIN_ALLOW_THREADS
+  rc = cable_solution_strands(s, &st);
+  Py_END_ALLOW_THREADS
+  if (rc) {
+    cable_error err;
+    cable_error_set(&err, rc, NULL, 0, NULL, "label %d: no strands (%s)", s->lab, cable_status_message(rc));
+    return pyc_raise(rc, &err);
+  }
+  size_t n = (size_t)st.n;
+  PyObject *d = PyDict_New();
+  int bad = !d || set_int(d, "n", st.n) || set_int(d, "closed", st.closed) || set_num(d, "radius", st.radius) ||
+            set_bytes(d, "r1", st.r1, 3 * n) || set_bytes(d, "r2", st.r2, 3 * n) || set_bytes(d, "p1", st.p1, n) ||
+            set_bytes(d, "p2", st.p2, n);
+  cable_strands_free(&st);
+  if (bad) {
+    Py_XDECREF(d);
+    return NULL;
+  }
+  return d;
+}
+
+static int set_ints(PyObject *d, const char *key, const int *x, int n)
+{
+  PyObject *l = PyList_New(n);
+  for (int i = 0; l && i < n; i++) PyList_SET_ITEM(l, i, PyLong_FromLong(x[i]));
+  int rc = l ? PyDict_SetItemString(d, key, l) : -1;
+  Py_XDECREF(l);
+  return rc;
+}
+
+/* bfile(path) -> [{'columns', 'br', 'pt', 'ty', 'lab', 'data'}, ...]: the
+ * sections of a b-file (cable_bfile_read), every row; data holds the value
+ * columns as bytes of doubles, column-major (column j: rows j*nrow ..) */
+PyObject *pyc_bfile(PyObject *mod, PyObject *args)
+{
+  (void)mod;
+  const char *path;
+  if (!PyArg_ParseTuple(args, "s", &path)) return NULL;
+  cable_error err;
+  cable_error_clear(&err);
+  cable_bfile *bf;
+  Py_BEGIN_ALLOW_THREADS
+  bf = cable_bfile_read(path, &err);
+  Py_END_ALLOW_THREADS
+  if (!bf) return pyc_raise(err.status ? err.status : CABLE_ERR_IO, &err);
+  PyObject *out = PyList_New(0);
+  for (int k = 0; out && k < bf->nbranch; k++) {
+    const cable_bfile_branch *b = &bf->branch[k];
+    PyObject *d = PyDict_New(), *cols = d ? PyList_New(b->ncol) : NULL;
+    for (int j = 0; cols && j < b->ncol; j++) PyList_SET_ITEM(cols, j, PyUnicode_FromString(b->colname[j]));
+    int bad = !cols || PyDict_SetItemString(d, "columns", cols) || set_ints(d, "br", b->br, b->nrow) ||
+              set_ints(d, "pt", b->pt, b->nrow) || set_ints(d, "ty", b->ty, b->nrow) ||
+              set_ints(d, "lab", b->lab, b->nrow) ||
+              set_bytes(d, "data", b->data, (size_t)b->nrow * (size_t)b->ncol) || PyList_Append(out, d);
+    Py_XDECREF(cols);
+    Py_XDECREF(d);
+    if (bad) Py_CLEAR(out);
+  }
+  cable_bfile_free(bf);
+  return out;
+}
+
 #define PLOT_MAX_FILES 64
 #define PLOT_MAX_MARKS 64
 
-/* plot(out, [bfile, ...], x, y, [(x, y, text), ...], title) */
+/* plot(out, [bfile, ...], x, y, [(x, y, text[, filled]), ...], title) */
 PyObject *pyc_plot(PyObject *mod, PyObject *args)
 {
   (void)mod;
@@ -168,7 +251,10 @@ PyObject *pyc_plot(PyObject *mod, PyObject *args)
     if (!(bf[k] = PyUnicode_AsUTF8(PySequence_Fast_GET_ITEM(ff, k)))) goto done;
   for (Py_ssize_t k = 0; k < nm; k++) {
     ann[k].filled = 0;
-    if (!PyArg_ParseTuple(PySequence_Fast_GET_ITEM(mf, k), "dds", &ann[k].x, &ann[k].y, &ann[k].text)) goto done;
+    /* (x, y, text) or (x, y, text, filled) */
+    if (!PyArg_ParseTuple(PySequence_Fast_GET_ITEM(mf, k), "dds|p", &ann[k].x, &ann[k].y, &ann[k].text,
+                          &ann[k].filled))
+      goto done;
   }
   cable_error err;
   cable_error_clear(&err);

@@ -73,6 +73,10 @@ static PyMethodDef module_methods[] = {
      "tube_dmin(branch, i) -> closest approach of non-adjacent strand parts / Delta"},
     {"plot", (PyCFunction)(void (*)(void))pyc_plot, METH_VARARGS,
      "plot(out, bfiles, x, y, marks, title): bifurcation diagram of b-files"},
+    {"bfile", (PyCFunction)(void (*)(void))pyc_bfile, METH_VARARGS,
+     "bfile(path) -> the sections of a b-file, every row (columns, br, pt, ty, lab, data)"},
+    {"strands", (PyCFunction)(void (*)(void))pyc_strands, METH_VARARGS,
+     "strands(branch, i) -> the strand centre lines and contact pressures (bytes of doubles)"},
     {"render", (PyCFunction)(void (*)(void))pyc_render, METH_VARARGS,
      "render(branch, i, out, view, size, thicken, pressure, vtp, ply)"},
     {NULL, NULL, 0, NULL}};

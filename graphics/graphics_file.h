@@ -16,5 +16,10 @@ cairo_status_t graphics_file_cairo_write(void *closure, const unsigned char *dat
 /* Write an image surface as PNG to path, atomically.  CABLE_SUCCESS or
  * CABLE_ERR_IO. */
 int graphics_file_write_png(cairo_surface_t *surface, const char *path);
+/* The same with a one-line caption (no newline, at most GRAPHICS_CAPTION_MAX
+ * bytes, else CABLE_ERR_INPUT and nothing written) in a tEXt chunk with the
+ * keyword "Description" (PNG 1.2, 11.3.4.2) right after IHDR; NULL or "": none. */
+#define GRAPHICS_CAPTION_MAX 2000
+int graphics_file_write_png_caption(cairo_surface_t *surface, const char *path, const char *caption);
 
 #endif

@@ -227,9 +227,43 @@ static void plot_lines(cairo_t *cr, const plot_branch *b, int nb, const plot_fra
   cairo_restore(cr);
 }
 
+/* Marker shapes: a circle (filled: branch point, open: labelled point) or
+ * an open triangle (a fold, AUTO's LP), r the circle's radius. */
+enum { PLOT_MARK_OPEN = 0, PLOT_MARK_FILLED = 1, PLOT_MARK_FOLD = 2 };
+
+static void plot_marker_at(cairo_t *cr, double px, double py, double r, int shape, double lw)
+{
+  cairo_new_path(cr);
+  if (shape == PLOT_MARK_FOLD) {
+    double t = 1.35 * r;   /* the triangle's area about the circle's */
+    cairo_move_to(cr, px, py - t);
+    cairo_line_to(cr, px + 0.866 * t, py + 0.5 * t);
+    cairo_line_to(cr, px - 0.866 * t, py + 0.5 * t);
+    cairo_close_path(cr);
+  } else {
+    cairo_arc(cr, px, py, r, 0, 2 * GRAPHICS_PI);
+  }
+  int filled = shape == PLOT_MARK_FILLED;
+  cairo_set_source_rgb(cr, filled ? 0 : 1, filled ? 0 : 1, filled ? 0 : 1);
+  cairo_fill_preserve(cr);
+  cairo_set_source_rgb(cr, 0, 0, 0);
+  cairo_set_line_width(cr, lw);
+  cairo_stroke(cr);
+}
+
+static int plot_is_fold(int type)
+{
+  int base = abs(type) % 10;
+  return base == CABLE_TY_LP || base == 2;   /* 5: fold of a BVP, 2: of an ODE (AUTO's codes) */
+}
+
 static void plot_marker(cairo_t *cr, const plot_frame *f, double x, double y, int filled)
 {
   double r = PLOT_MARKER_R * f->fs, px = plot_px(f, x), py = plot_py(f, y);
+  if (filled == PLOT_MARK_FOLD) {
+    plot_marker_at(cr, px, py, r, filled, 0.1 * f->fs);
+    return;
+  }
   cairo_new_path(cr);
   cairo_arc(cr, px, py, r, 0, 2 * GRAPHICS_PI);
   cairo_set_source_rgb(cr, filled ? 0 : 1, filled ? 0 : 1, filled ? 0 : 1);
@@ -328,9 +362,10 @@ static int plot_markers(cairo_t *cr, const plot_branch *b, int nb, const plot_an
       double x = b[i].x[k], y = b[i].y[k];
       if (!isfinite(x) || !isfinite(y)) continue;
       int bp = b[i].type && b[i].type[k] == CABLE_TY_BP;
+      int fold = b[i].type && plot_is_fold(b[i].type[k]);
       int lab = b[i].label ? b[i].label[k] : 0;
-      if (!bp && lab == 0) continue;
-      plot_marker(cr, f, x, y, bp);
+      if (!bp && !fold && lab == 0) continue;
+      plot_marker(cr, f, x, y, fold ? PLOT_MARK_FOLD : bp);
       if (lab != 0) {
         snprintf(buf, sizeof buf, "%d", lab);
         if (marks) nm = plot_mark_add(marks, nm, cap, f, x, y, buf);
@@ -379,18 +414,43 @@ static long plot_hidden(const plot_branch *b, int nb, const plot_box *boxes, int
   return c;
 }
 
-static void plot_legend(cairo_t *cr, const plot_branch *b, int nb, const plot_box *boxes, int nbox,
-                        const plot_frame *f)
+/* The marker shapes the diagram shows, for the legend's key: [0] branch
+ * points, [1] folds; [2] (open circles) stays 0: they carry their label or
+ * text beside them and need no key. */
+static void plot_shapes_used(const plot_branch *b, int nb, const plot_annotation *an, int na, int used[3])
+{
+  used[0] = used[1] = used[2] = 0;
+  for (int i = 0; i < nb; i++)
+    for (int k = 0; k < b[i].n; k++) {
+      int t = b[i].type ? b[i].type[k] : 0;
+      if (!isfinite(b[i].x[k]) || !isfinite(b[i].y[k])) continue;
+      if (t == CABLE_TY_BP) used[0] = 1;
+      else if (b[i].type && plot_is_fold(t)) used[1] = 1;
+    }
+  for (int i = 0; i < na; i++) used[0] |= an[i].filled != 0;
+}
+
+static const char *const plot_shape_names[3] = {"branch point", "fold", "labelled point"};
+
+static void plot_legend(cairo_t *cr, const plot_branch *b, int nb, const plot_annotation *an, int na,
+                        const plot_box *boxes, int nbox, const plot_frame *f)
 {
   char buf[32];
   double fs = f->fs, row = PLOT_LEGEND_ROW * fs, sample = PLOT_LEGEND_SAMPLE * fs;
   graphics_text_font(cr, 0.9 * fs, 0);
   double tw = 0;
+  int used[3], nkey = 0;
+  plot_shapes_used(b, nb, an, na, used);
   for (int i = 0; i < nb; i++) {
     snprintf(buf, sizeof buf, "branch %d", i + 1);
     tw = fmax(tw, graphics_text_width(cr, b[i].name ? b[i].name : buf));
   }
-  double w = sample + tw + 1.5 * fs, h = nb * row + 0.4 * fs, m = 0.5 * fs;
+  for (int k = 0; k < 3; k++)
+    if (used[k]) {
+      nkey++;
+      tw = fmax(tw, graphics_text_width(cr, plot_shape_names[k]));
+    }
+  double w = sample + tw + 1.5 * fs, h = (nb + nkey) * row + 0.4 * fs, m = 0.5 * fs;
   /* the corner that hides the fewest data points and labels; top right on a tie */
   const double cx[4] = {f->left + f->pw - m - w, f->left + m, f->left + f->pw - m - w, f->left + m};
   const double cy[4] = {f->top + m, f->top + m, f->top + f->ph - m - h, f->top + f->ph - m - h};
@@ -418,6 +478,16 @@ static void plot_legend(cairo_t *cr, const plot_branch *b, int nb, const plot_bo
     snprintf(buf, sizeof buf, "branch %d", i + 1);
     graphics_text_show(cr, x + sample + 0.5 * fs, yc, b[i].name ? b[i].name : buf, 0.0, 0.5);
   }
+  /* the key of the marks under the branches */
+  static const int shape[3] = {PLOT_MARK_FILLED, PLOT_MARK_FOLD, PLOT_MARK_OPEN};
+  for (int k = 0, r = nb; k < 3; k++) {
+    if (!used[k]) continue;
+    double yc = y + 0.2 * fs + (r + 0.5) * row;
+    plot_marker_at(cr, x + 0.5 * fs + 0.5 * (sample - 0.5 * fs), yc, PLOT_MARKER_R * fs, shape[k], 0.1 * fs);
+    cairo_set_source_rgb(cr, 0, 0, 0);
+    graphics_text_show(cr, x + sample + 0.5 * fs, yc, plot_shape_names[k], 0.0, 0.5);
+    r++;
+  }
 }
 
 static void plot_draw(cairo_t *cr, const plot_branch *b, int nb, const plot_annotation *an,
@@ -429,13 +499,19 @@ static void plot_draw(cairo_t *cr, const plot_branch *b, int nb, const plot_anno
   plot_lines(cr, b, nb, f);
   plot_box *boxes = NULL;
   int nbox = plot_markers(cr, b, nb, an, na, f, &boxes);
-  plot_legend(cr, b, nb, boxes, nbox, f);
+  plot_legend(cr, b, nb, an, na, boxes, nbox, f);
   free(boxes);
 }
 
 int plot_bifurcation_annotated(const plot_branch *branches, int nbranch,
                                const plot_annotation *annot, int nannot,
                                const plot_options *opt, const char *path)
+{
+  return plot_bifurcation_captioned(branches, nbranch, annot, nannot, opt, NULL, path);
+}
+
+int plot_bifurcation_captioned(const plot_branch *branches, int nbranch, const plot_annotation *annot, int nannot,
+                               const plot_options *opt, const char *caption, const char *path)
 {
   int st = plot_validate(branches, nbranch, annot, nannot, opt, path);
   if (st != CABLE_SUCCESS) return st;
@@ -470,7 +546,7 @@ int plot_bifurcation_annotated(const plot_branch *branches, int nbranch,
   }
   if (st == CABLE_SUCCESS) {
     cairo_surface_flush(s);
-    st = cairo_surface_status(s) == CAIRO_STATUS_SUCCESS ? graphics_file_write_png(s, path)
+    st = cairo_surface_status(s) == CAIRO_STATUS_SUCCESS ? graphics_file_write_png_caption(s, path, caption)
                                                          : CABLE_ERR_ALLOC;
   }
   cairo_surface_destroy(s);

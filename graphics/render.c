@@ -22,9 +22,9 @@ static const double render_background[3] = {1.0, 1.0, 1.0};
 #define RENDER_FACET_SAMPLES 3.0
 #define RENDER_SIDES_MIN 8
 #define RENDER_SIDES_MAX 48
-/* Profile line width in pixels: 2 px at 600 px and proportionally larger
+/* Profile line width in pixels: 3 px at 600 px and proportionally larger
  * in larger pictures; the contrasting outline adds RENDER_OUTLINE_PX a side. */
-#define RENDER_PROFILE_PX 2.0
+#define RENDER_PROFILE_PX 3.0
 #define RENDER_PROFILE_REF_SIZE 600.0
 #define RENDER_OUTLINE_PX 0.5
 /* The profile is pulled towards the viewer by this many drawn tube radii:
@@ -139,6 +139,17 @@ static void render_profile_point(const render_ctx *c, const render_profile *p, i
    * (y grows downwards), so a positive value is drawn to the curve's left */
   double nx = tl > 0 ? ty / tl : 0.0, ny = tl > 0 ? -tx / tl : 0.0;
   double off = p->value[i] * p->scale * cam->scale;
+  if (p->toward) {
+    /* in 3-D: from the curve towards toward[i] (the strand), projected, so
+       the profile follows the strand round the contact curve as the braid
+       twists instead of jumping from one side to the other */
+    const double *q = p->xyz + 3 * i, *t = p->toward + 3 * i;
+    double d[3] = {t[0] - q[0], t[1] - q[1], t[2] - q[2]}, dl = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    double w[3];
+    for (int k = 0; k < 3; k++) w[k] = q[k] + (dl > 0 ? p->value[i] * p->scale * d[k] / dl : 0.0);
+    render_camera_project(cam, w, &x, &y, &z);
+    off = 0;
+  }
   out[0] = (x + off * nx) * ss;
   out[1] = (y + off * ny) * ss;
   out[2] = z - RENDER_PROFILE_BIAS_RADII * c->max_radius;
@@ -193,6 +204,12 @@ static void render_resolve(const render_zbuf *zb, cairo_surface_t *s)
 int render_tubes_png(const render_tube *tubes, int ntube, const render_profile *profiles,
                      int nprof, const render_options *opt, const char *path)
 {
+  return render_tubes_png_text(tubes, ntube, profiles, nprof, opt, NULL, path);
+}
+
+int render_tubes_png_text(const render_tube *tubes, int ntube, const render_profile *profiles, int nprof,
+                          const render_options *opt, const render_text *text, const char *path)
+{
   int st = render_validate(tubes, ntube, profiles, nprof, opt, path);
   if (st != CABLE_SUCCESS) return st;
   render_camera cam;
@@ -220,12 +237,13 @@ int render_tubes_png(const render_tube *tubes, int ntube, const render_profile *
     render_resolve(zb, s);
     if (c.map != RENDER_COLORMAP_NONE) {
       cairo_t *cr = cairo_create(s);
-      render_colorbar_draw(cr, c.map, c.lo, c.hi, cam.plot_width, cam.width, cam.height);
+      render_colorbar_draw(cr, c.map, c.lo, c.hi, cam.plot_width, cam.width, cam.height,
+                           text ? text->colorbar_title : NULL);
       if (cairo_status(cr) != CAIRO_STATUS_SUCCESS) st = CABLE_ERR_ALLOC;
       cairo_destroy(cr);
     }
     cairo_surface_flush(s);
-    if (st == CABLE_SUCCESS) st = graphics_file_write_png(s, path);
+    if (st == CABLE_SUCCESS) st = graphics_file_write_png_caption(s, path, text ? text->caption : NULL);
   } else {
     st = CABLE_ERR_ALLOC;
   }

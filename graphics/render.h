@@ -34,6 +34,10 @@ typedef struct {
   int n;                 /* >= 2 */
   double rgb_pos[3], rgb_neg[3];
   double scale;          /* world length per unit of value */
+  const double *toward;  /* [3n] or NULL: point i is moved by value * scale
+                            in 3-D towards toward[i] (e.g. the centre line of
+                            the strand the pressure acts on), then projected;
+                            NULL: across the projected curve, to its left */
 } render_profile;
 
 
@@ -74,5 +78,18 @@ void render_camera_project(const render_camera *cam, const double p[3], double *
  * CABLE_ERR_ALLOC. */
 int render_tubes_png(const render_tube *tubes, int ntube, const render_profile *profiles,
                      int nprof, const render_options *opt, const char *path);
+
+/* Texts of a picture: the colour bar's title (drawn above the bar when a
+ * colour map is on) and a one-line caption that the PNG carries in a tEXt
+ * chunk with the keyword "Description" (no newline, at most 2000 bytes).
+ * NULL: none. */
+typedef struct {
+  const char *caption;
+  const char *colorbar_title;
+} render_text;
+
+/* render_tubes_png with texts (text NULL: none). */
+int render_tubes_png_text(const render_tube *tubes, int ntube, const render_profile *profiles, int nprof,
+                          const render_options *opt, const render_text *text, const char *path);
 
 #endif

@@ -67,7 +67,7 @@ int render_colorbar_width(int width, int height)
 }
 
 void render_colorbar_draw(cairo_t *cr, int map, double lo, double hi, double x0, int width,
-                          int height)
+                          int height, const char *title)
 {
   double strip = width - x0;
   double fs = fmin(16.0, fmax(7.0, height / 40.0));
@@ -85,6 +85,14 @@ void render_colorbar_draw(cairo_t *cr, int map, double lo, double hi, double x0,
   cairo_set_line_width(cr, 1.0);
   cairo_rectangle(cr, bx, y0, bw, y1 - y0);
   cairo_stroke(cr);
+  if (title && title[0]) {
+    /* the title above the bar, right-aligned to the picture's edge when it
+       is wider than the strip */
+    graphics_text_font(cr, fs, 0);
+    double tw = graphics_text_width(cr, title);
+    double tx = fmin(bx, width - 0.3 * fs - tw);
+    graphics_text_show(cr, tx, y0 - 0.6 * fs, title, 0.0, 1.0);
+  }
   plot_ticks t;
   if (plot_ticks_nice(lo, hi, RENDER_BAR_TICKS, &t) != 0) return;
   graphics_text_font(cr, fs, 0);

@@ -14,6 +14,6 @@ void render_colormap_range(int map, double vmin, double vmax, double *lo, double
 int render_colorbar_width(int width, int height);
 /* Draw the bar for [lo, hi] in the strip x >= x0 of a width x height picture. */
 void render_colorbar_draw(cairo_t *cr, int map, double lo, double hi, double x0, int width,
-                          int height);
+                          int height, const char *title);
 
 #endif

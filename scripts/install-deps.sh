@@ -23,6 +23,10 @@ probes=(
   "/usr/bin/pkg-config:pkgconf"            # make check builds against an installed libcable
   "/usr/bin/time:time"                     # make bench: CPU and wall time of the knot72 runs
   "/usr/bin/bc:bc"                         # make bench: arithmetic in scripts/bench.sh
+  "/usr/share/javascript/three/three.min.js:libjs-three"   # cable view: the 3-D view's WebGL library
+  "/usr/bin/chromium:chromium"             # make check: the view's page in a real browser
+  "/usr/bin/chromedriver:chromium-driver"
+  "/usr/lib/python3/dist-packages/selenium/__init__.py:python3-selenium"
 )
 
 arch_dir=$(dpkg-architecture -qDEB_HOST_MULTIARCH 2>/dev/null || echo x86_64-linux-gnu)

@@ -5,6 +5,7 @@
 #include <dirent.h>
 #include <errno.h>
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -1020,7 +1021,7 @@ static void test_render_depth(void)
     pxyz[3 * i] = 0, pxyz[3 * i + 1] = -1 + 2.0 * i / (NP - 1), pxyz[3 * i + 2] = -0.2;
     pv[i] = 0.05;
   }
-  render_profile prof = {pxyz, pv, NP, {0, 1, 0}, {0, 1, 0}, 1.0};
+  render_profile prof = {pxyz, pv, NP, {0, 1, 0}, {0, 1, 0}, 1.0, NULL};
   o.view_dir[2] = -1;
   test_int("render: profile", render_tubes_png(t, 2, &prof, 1, &o, OUTDIR "/cross_profile.png"), CABLE_SUCCESS);
   render_camera cam;
@@ -1080,7 +1081,7 @@ static void test_render_errors(void)
   t.xyz = same;
   test_int("render error: all points coincide", render_tubes_png(&t, 1, NULL, 0, &o, png), CABLE_ERR_INPUT);
   t.xyz = a;
-  render_profile p = {a, NULL, 2, {1, 1, 1}, {0, 0, 0}, 1};
+  render_profile p = {a, NULL, 2, {1, 1, 1}, {0, 0, 0}, 1, NULL};
   test_int("render error: profile without values", render_tubes_png(&t, 1, &p, 1, &o, png), CABLE_ERR_INPUT);
   test_int("render error: NULL profiles with nprof 1", render_tubes_png(&t, 1, NULL, 1, &o, png), CABLE_ERR_INPUT);
   o.colormap = 9;
@@ -1153,7 +1154,7 @@ static void test_export(void)
     cv[i] = sin(phi);
   }
   render_tube t[2] = {{N, s0, sc, a, {0.9, 0.1, 0.1}, 0}, {N + 1, s1, NULL, a, {0.1, 0.2, 0.9}, 1}};
-  render_profile contact = {cxyz, cv, N, {1, 1, 1}, {1, 1, 1}, 0};
+  render_profile contact = {cxyz, cv, N, {1, 1, 1}, {1, 1, 1}, 0, NULL};
   export_options eo = {S, "contact_pressure"};
   const char *vtp = OUTDIR "/tubes.vtp", *ply = OUTDIR "/tubes.ply";
   test_int("export: vtp", export_vtp_write(t, 2, &contact, 1, &eo, vtp), CABLE_SUCCESS);
@@ -1269,6 +1270,124 @@ static void test_export(void)
   test_int("export error: NULL tubes", export_ply_write(NULL, 1, NULL, ply), CABLE_ERR_INPUT);
 }
 
+/* Folds (LP) get an open triangle and a key row in the legend; a PNG's
+ * caption is a tEXt chunk right after IHDR with a valid CRC. */
+static uint32_t crc_table_value(uint32_t c)
+{
+  for (int k = 0; k < 8; k++) c = c & 1u ? 0xedb88320u ^ (c >> 1) : c >> 1;
+  return c;
+}
+
+static void test_plot_folds_caption(void)
+{
+  double x[11], y[11];
+  int ty_none[11] = {0}, ty_fold[11] = {0}, lab5[11] = {0};
+  for (int i = 0; i < 11; i++) x[i] = i, y[i] = 100 + 10 * i;
+  ty_fold[5] = 5;   /* CABLE_TY_LP */
+  lab5[5] = 3;
+  plot_branch none = {"line", 11, x, y, ty_none, NULL}, fold = {"line", 11, x, y, ty_fold, NULL};
+  plot_branch labelled = {"line", 11, x, y, ty_none, lab5};
+  cairo_surface_t *s0 = plot_to_surface(&none, 1, NULL, 0, OUTDIR "/fold0.png");
+  cairo_surface_t *s1 = plot_to_surface(&fold, 1, NULL, 0, OUTDIR "/fold1.png");
+  cairo_surface_t *s2 = plot_to_surface(&labelled, 1, NULL, 0, OUTDIR "/fold2.png");
+  long d0 = s0 ? count_dark(s0) : 0, d1 = s1 ? count_dark(s1) : 0;
+  int box[4];
+  long dl = s1 && s2 ? diff_bbox(s1, s2, box) : 0;
+  printf("     fold: dark pixels without %ld, with a fold %ld; fold against a labelled point: %ld differ\n", d0,
+         d1, dl);
+  test_true("plot: a fold adds its triangle and the legend's key (more dark pixels)", d1 > d0 + 20);
+  test_true("plot: a fold's mark is not a labelled point's circle", dl > 0);
+  if (s0) cairo_surface_destroy(s0);
+  if (s1) cairo_surface_destroy(s1);
+  if (s2) cairo_surface_destroy(s2);
+
+  plot_options o = {"T", "F", NULL, 200, 150, PLOT_FORMAT_PNG};
+  const char *cap = "Fig. 1: a line, its fold", *path = OUTDIR "/caption.png";
+  test_int("plot caption: written", plot_bifurcation_captioned(&fold, 1, NULL, 0, &o, cap, path), CABLE_SUCCESS);
+  unsigned char buf[200] = {0};
+  FILE *f = fopen(path, "rb");
+  size_t n = f ? fread(buf, 1, sizeof buf, f) : 0;
+  if (f) fclose(f);
+  size_t len = strlen("Description") + 1 + strlen(cap);
+  uint32_t clen = (uint32_t)buf[33] << 24 | (uint32_t)buf[34] << 16 | (uint32_t)buf[35] << 8 | buf[36];
+  int ok = n > 33 + 12 + len && memcmp(buf + 12, "IHDR", 4) == 0 && memcmp(buf + 37, "tEXt", 4) == 0 &&
+           clen == len && memcmp(buf + 41, "Description", 12) == 0 && memcmp(buf + 53, cap, strlen(cap)) == 0;
+  test_true("plot caption: a tEXt chunk \"Description\" after IHDR holds the caption", ok);
+  if (ok) {
+    uint32_t c = 0xffffffffu;
+    for (size_t i = 37; i < 41 + len; i++) c = crc_table_value((c ^ buf[i]) & 0xffu) ^ (c >> 8);
+    c ^= 0xffffffffu;
+    const unsigned char *q = buf + 41 + len;
+    uint32_t stored = (uint32_t)q[0] << 24 | (uint32_t)q[1] << 16 | (uint32_t)q[2] << 8 | q[3];
+    test_true("plot caption: the chunk's CRC-32 is right", c == stored);
+  }
+  cairo_surface_t *back = cairo_image_surface_create_from_png(path);
+  test_true("plot caption: the PNG still reads", cairo_surface_status(back) == CAIRO_STATUS_SUCCESS &&
+                                                     cairo_image_surface_get_width(back) == 200);
+  cairo_surface_destroy(back);
+  test_int("plot caption: a newline is refused", plot_bifurcation_captioned(&fold, 1, NULL, 0, &o, "a\nb",
+                                                                           OUTDIR "/caption_nl.png"), CABLE_ERR_INPUT);
+  test_true("plot caption: nothing written after the refusal", fopen(OUTDIR "/caption_nl.png", "rb") == NULL);
+}
+
+/* A profile with `toward` points is drawn towards them in 3-D (above or
+ * below a straight tube seen from +z); a colour bar's title goes above the bar. */
+static void test_render_toward_title(void)
+{
+  enum { NT = 41 };
+  double a[3 * NT], up[3 * NT], down[3 * NT], v[NT], sc[NT];
+  for (int i = 0; i < NT; i++) {
+    a[3 * i] = -1 + 2.0 * i / (NT - 1), a[3 * i + 1] = 0, a[3 * i + 2] = 0;
+    up[3 * i] = down[3 * i] = a[3 * i], up[3 * i + 1] = 1, down[3 * i + 1] = -1, up[3 * i + 2] = down[3 * i + 2] = 0;
+    v[i] = 1, sc[i] = i;
+  }
+  render_tube t = {NT, a, NULL, 0.05, {0.5, 0.5, 0.5}, 0};
+  render_options o = {SIZE, SIZE, {0, 0, -1}, {0, 1, 0}, 0, 1.0};
+  double rows[2] = {0, 0};
+  for (int k = 0; k < 2; k++) {
+    render_profile p = {a, v, NT, {0, 1, 0}, {0, 1, 0}, 0.3, k == 0 ? up : down};
+    const char *path = k == 0 ? OUTDIR "/toward_up.png" : OUTDIR "/toward_down.png";
+    test_int("render toward: drawn", render_tubes_png(&t, 1, &p, 1, &o, path), CABLE_SUCCESS);
+    cairo_surface_t *s = cairo_image_surface_create_from_png(path);
+    long n = 0;
+    double sum = 0;
+    for (int yy = 0; yy < SIZE; yy++)
+      for (int xx = 0; xx < SIZE; xx++) {
+        int c[3];
+        rgb_at(s, xx, yy, c);
+        if (c[1] > 200 && c[0] < 60 && c[2] < 60) n++, sum += yy;
+      }
+    cairo_surface_destroy(s);
+    rows[k] = n ? sum / n : -1;
+  }
+  render_camera cam;
+  render_camera_fit(&t, 1, &o, &cam);
+  double x, yc, z, q[3] = {0, 0, 0};
+  render_camera_project(&cam, q, &x, &yc, &z);
+  double off = 0.3 * cam.scale;
+  printf("     toward: profile rows %.1f (towards +y) and %.1f (towards -y), tube at %.1f, offset %.1f px\n", rows[0],
+         rows[1], yc, off);
+  /* the line's centre row within 1.5 px of the curve moved by 0.3 world units */
+  test_true("render toward: towards +y the profile is drawn above the tube", fabs(rows[0] - (yc - off)) < 1.5);
+  test_true("render toward: towards -y the profile is drawn below the tube", fabs(rows[1] - (yc + off)) < 1.5);
+
+  render_tube ts = {NT, a, sc, 0.05, {0.5, 0.5, 0.5}, 0};
+  o.colormap = 1;   /* RENDER_COLORMAP_SEQUENTIAL */
+  render_text title = {"caption", "contact pressure"};
+  test_int("render title: without", render_tubes_png(&ts, 1, NULL, 0, &o, OUTDIR "/bar0.png"), CABLE_SUCCESS);
+  test_int("render title: with", render_tubes_png_text(&ts, 1, NULL, 0, &o, &title, OUTDIR "/bar1.png"),
+           CABLE_SUCCESS);
+  cairo_surface_t *b0 = cairo_image_surface_create_from_png(OUTDIR "/bar0.png");
+  cairo_surface_t *b1 = cairo_image_surface_create_from_png(OUTDIR "/bar1.png");
+  int box[4];
+  long d = diff_bbox(b0, b1, box);
+  printf("     colour bar title: %ld pixels differ, rows %d..%d, columns %d..%d\n", d, box[1], box[3], box[0], box[2]);
+  /* the bar starts at 12 % of the height (render_colormap.c): the title is above it, in the right strip */
+  test_true("render title: drawn above the colour bar", d > 50 && box[3] < 0.12 * SIZE && box[0] > SIZE / 2);
+  cairo_surface_destroy(b0);
+  cairo_surface_destroy(b1);
+}
+
 int main(void)
 {
   mkdir("tests/tmp", 0755);
@@ -1283,9 +1402,11 @@ int main(void)
   test_plot();
   test_plot_labels();
   test_plot_dashed();
+  test_plot_folds_caption();
   test_render_knot();
   test_render_depth();
   test_render_errors();
+  test_render_toward_title();
   test_export();
   test_int("no temporary files left behind", leftover_temporaries(), 0);
   graphics_text_cleanup();

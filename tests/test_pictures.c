@@ -1,10 +1,13 @@
 /* cable's picture commands on real output: a bifurcation diagram from a
  * b-file the AUTO writer produced, a rendered braid solution with its
  * exports, and the error paths (missing file, unknown column, not a braid). */
+#include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 
+#include "cable/cable_analysis.h"
 #include "cable/cable_aufile.h"
 #include "braid_problems.h"
 #include "braid_start.h"
@@ -104,6 +107,33 @@ int main(void)
     test_true("render: PNG", png_signature("tests/tmp/pictures/knot.png"));
     test_true("render: VTK file", file_size("tests/tmp/pictures/knot.vtp") > 10000);
     test_true("render: PLY file", file_size("tests/tmp/pictures/knot.ply") > 10000);
+    /* the strands cable view stores: r2 = r1 + Delta d1 with |d1| = 1, a
+       knot (closed 0), radius Delta/2; the pressures at the nodes span the
+       range the analysis (braid_analysis_compute) reports for each strand */
+    cable_strands cs;
+    const cable_solution *sol = cable_cont_solution(cc);
+    test_int("strands of a braid solution", cable_solution_strands(sol, &cs), 0);
+    double dd = 0, lo1 = INFINITY, hi1 = -INFINITY, lo2 = INFINITY, hi2 = -INFINITY;
+    for (int k = 0; k < cs.n; k++) {
+      double d2 = 0;
+      for (int i = 0; i < 3; i++) d2 += (cs.r2[3 * k + i] - cs.r1[3 * k + i]) * (cs.r2[3 * k + i] - cs.r1[3 * k + i]);
+      dd = fmax(dd, fabs(sqrt(d2) - 2 * cs.radius));
+      lo1 = fmin(lo1, cs.p1[k]), hi1 = fmax(hi1, cs.p1[k]), lo2 = fmin(lo2, cs.p2[k]), hi2 = fmax(hi2, cs.p2[k]);
+    }
+    braid_analysis *ba = malloc(sizeof *ba);
+    int arc = ba ? braid_analysis_compute(sol, ba) : -1;
+    printf("     strands: n %d, | |r2 - r1| - Delta | <= %.2e, p1 %.8g..%.8g (analysis %.8g..%.8g), "
+           "p2 %.8g..%.8g (analysis %.8g..%.8g)\n", cs.n, dd, lo1, hi1, arc ? (double)NAN : ba->pmin1, arc ? (double)NAN : ba->pmax1,
+           lo2, hi2, arc ? (double)NAN : ba->pmin2, arc ? (double)NAN : ba->pmax2);
+    test_true("strands: n = NTST NCOL + 1, a knot, radius Delta/2",
+              cs.n == 30 * 4 + 1 && cs.closed == 0 && fabs(cs.radius - 0.5 * 0.0051364907419) < 1e-15);
+    test_true("strands: |r2 - r1| = Delta (1e-12)", dd < 1e-12);
+    test_true("strands: the pressure range of each strand is the analysis's (1e-9 relative)",
+              arc == 0 && fabs(lo1 - ba->pmin1) <= 1e-9 * fabs(hi1) && fabs(hi1 - ba->pmax1) <= 1e-9 * fabs(hi1) &&
+                  fabs(lo2 - ba->pmin2) <= 1e-9 * fabs(hi2) && fabs(hi2 - ba->pmax2) <= 1e-9 * fabs(hi2));
+    free(ba);
+    cable_strands_free(&cs);
+    test_int("strands: NULL solution", cable_solution_strands(NULL, &cs), CABLE_ERR_NULL);
     /* a file's format follows its name: a PNG is never written into an .svg
      * (the CLI's o=x.svg did that silently), nor an export under another
      * suffix; refused before anything is written */
@@ -131,6 +161,10 @@ int main(void)
   test_int("render a non-braid solution: CABLE_ERR_INPUT",
            b1 ? cable_render_solution(b1, NULL, "tests/tmp/pictures/z.png", NULL, NULL, &err) : -99, CABLE_ERR_INPUT);
   test_true("non-braid: nothing written", file_size("tests/tmp/pictures/z.png") < 0);
+  cable_strands cs2;
+  test_int("strands of a non-braid solution: CABLE_ERR_INPUT", b1 ? cable_solution_strands(b1, &cs2) : -99,
+           CABLE_ERR_INPUT);
+  test_true("  and no arrays", cs2.r1 == NULL && cs2.n == 0);
   cable_sfile_free(sf);
   graphics_text_cleanup();
   return test_summary();

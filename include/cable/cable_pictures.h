@@ -54,6 +54,21 @@ CABLE_API int cable_render_solution(const cable_solution *s, const render_option
 /* Release cairo's and fontconfig's process-wide caches once, at the very
  * end of a program that drew text (so that leak checkers stay quiet); no
  * picture may be drawn afterwards. */
+/* The strands of a braid solution at its mesh points, as the pictures and
+ * the HTML view (cable view) draw them: centre lines r1, r2 = r1 + Delta d1
+ * [3n], the contact pressures p1, p2 [n] on strand 1 and 2, the tube radius
+ * Delta/2 and closed = 1 for a link (each strand closes on itself), 0 for a
+ * knot (the two strands join end to end).  The arrays are the caller's:
+ * cable_strands_free releases them (also after a failed call). */
+typedef struct {
+  int n, closed;
+  double radius;
+  double *r1, *r2, *p1, *p2;
+} cable_strands;
+
+CABLE_API int cable_solution_strands(const cable_solution *s, cable_strands *out);
+CABLE_API void cable_strands_free(cable_strands *st);
+
 CABLE_API void cable_pictures_cleanup(void);
 
 #endif

@@ -41,6 +41,16 @@ for _n in ('run', 'r', 'load', 'ld', 'loadbd', 'bd', 'save', 'sv', 'merge', 'mb'
     globals()[_n] = _delegate(_n)
 del _n
 
+
+
+def view(x, file=None, title=None):
+    """view(result | solution | 'DIR' [, 'page.html']): cable view's page (doc/view.md);
+    a notebook shows it inline.  (cable.webview is imported on first use, so that
+    `python3 -m cable.webview` runs it as a script without a second copy.)"""
+    from .webview import view as _view
+    return _view(x, file, title)
+
+
 branch_points = scenes.branch_points
 branch_point = scenes.branch_point
 mirror_table = scenes.mirror_table

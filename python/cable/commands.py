@@ -287,7 +287,9 @@ class Runner:
         for mk in marks:
             if len(mk) != 2 or not isinstance(mk[0], Solution) or not isinstance(mk[1], str):
                 raise CableError('marks: marks are [solution, \'text\'] pairs')
-            m.append((mk[0]['T'], mk[0]['F'], mk[1]))
+            # a branch point is marked as one (a filled circle: the paper's
+            # numbering of branch points, marks=[[bp, '1'], ...]); others open
+            m.append((mk[0]['T'], mk[0]['F'], mk[1], mk[0].TY == 'BP'))
         _cable.plot(file, ['b.%s' % n for n in names], x, y, m, title)
         print('  diagram written to %s' % file)
 

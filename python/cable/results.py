@@ -205,6 +205,11 @@ class Solution:
                 + str(self.PAR))
 
     # --- cable's own ---------------------------------------------------------------
+    def _repr_html_(self):
+        """A notebook shows the solution in cable view's page (cable.view)."""
+        from .webview import view
+        return view(self)._repr_html_()
+
     @property
     def branch(self):
         """(the engine branch, the index of this solution in it)"""
@@ -297,6 +302,11 @@ class Result:
 
     def getLabel(self, label):
         return self(label)
+
+    def _repr_html_(self):
+        """A notebook shows the result in cable view's page (cable.view)."""
+        from .webview import view
+        return view(self)._repr_html_()
 
     @property
     def coordnames(self):
