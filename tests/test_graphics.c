@@ -1285,8 +1285,8 @@ static void test_plot_folds_caption(void)
   for (int i = 0; i < 11; i++) x[i] = i, y[i] = 100 + 10 * i;
   ty_fold[5] = 5;   /* CABLE_TY_LP */
   lab5[5] = 3;
-  plot_branch none = {"line", 11, x, y, ty_none, NULL}, fold = {"line", 11, x, y, ty_fold, NULL};
-  plot_branch labelled = {"line", 11, x, y, ty_none, lab5};
+  plot_branch none = {"line", 11, x, y, ty_none, NULL, NULL}, fold = {"line", 11, x, y, ty_fold, NULL, NULL};
+  plot_branch labelled = {"line", 11, x, y, ty_none, lab5, NULL};
   cairo_surface_t *s0 = plot_to_surface(&none, 1, NULL, 0, OUTDIR "/fold0.png");
   cairo_surface_t *s1 = plot_to_surface(&fold, 1, NULL, 0, OUTDIR "/fold1.png");
   cairo_surface_t *s2 = plot_to_surface(&labelled, 1, NULL, 0, OUTDIR "/fold2.png");
