@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "constants_check.h"
 #include "cont_impl.h"
 
 /* Step-size control (IADS): Newton iteration counts at or below
@@ -120,7 +121,11 @@ int cable_cont_check(const cable_problem *pb, const cable_constants *c, cable_er
   if (!pb || !c)
     return cable_error_set(err, CABLE_ERR_NULL, NULL, 0, NULL, "cable_cont_check: %s is NULL",
                            !pb ? "the problem" : "the constants");
-  int rc = check_input(pb, c, msg, sizeof msg);
+  /* counts beyond their arrays and indices beyond the parameters first:
+     everything below reads the arrays */
+  int rc = cable_constants_consistent(c, c->npar > pb->npar ? c->npar : pb->npar, err);
+  if (rc) return rc;
+  rc = check_input(pb, c, msg, sizeof msg);
   if (rc) return cable_error_set(err, rc, NULL, 0, NULL, "%s", msg);
   if (err) cable_error_clear(err);
   return CABLE_SUCCESS;

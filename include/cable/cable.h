@@ -14,6 +14,7 @@
 #include "cable/cable_solution.h"     /* stored solutions */
 #include "cable/cable_output.h"       /* what the engine hands out: points, sinks */
 #include "cable/cable_cont.h"         /* the continuation handle and driver */
+#include "cable/cable_fold.h"         /* fold continuation (ISW = 2): the extended problem */
 #include "cable/cable_aufile.h"       /* b./s./d. files: writer and readers */
 #include "cable/cable_plugin.h"       /* problems from shared objects */
 #include "cable/cable_autoeq.h"       /* AUTO equation files (NAME.f90, NAME.f, NAME.c) */

@@ -41,7 +41,8 @@ CABLE_API int cable_cont_set_start(cable_cont *cc, const cable_solution *start);
 
 /* The mesh for a STPNT start (call before cable_cont_set_start(cc, NULL)):
  * NTST + 1 points, 0 = mesh[0] < ... < mesh[NTST] = 1.  Without it a STPNT
- * start uses the uniform mesh.  CABLE_ERR_INPUT for a mesh that is not. */
+ * start uses the uniform mesh.  CABLE_ERR_INPUT for a mesh that is not,
+ * CABLE_ERR_STATE after cable_cont_set_start (wrong order). */
 CABLE_API int cable_cont_set_mesh(cable_cont *cc, const double *mesh);
 
 /* Compute and accept the next point (the first call converges the start).
