@@ -1,4 +1,5 @@
 /* Continuation driver: start, predictor-corrector steps, step control, limits. */
+#include <limits.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -91,6 +92,15 @@ static int check_input(const cable_problem *pb, const cable_constants *c, char *
   if (pb->abi_version != CABLE_PROBLEM_ABI)
     return snprintf(msg, len, "problem ABI %d, cable expects %d", pb->abi_version, CABLE_PROBLEM_ABI),
            CABLE_ERR_INPUT;
+  /* a problem struct filled by hand: sizes the engine can allocate and index
+     with int (the unknowns number (NTST NCOL + 1) NDIM + NFPR) */
+  if (pb->ndim < 1 || pb->nbc < 0 || pb->nint < 0 || pb->npar < 0)
+    return snprintf(msg, len, "problem '%s': NDIM=%d, NBC=%d, NINT=%d, npar=%d (need NDIM >= 1, the others >= 0)",
+                    pb->name ? pb->name : "?", pb->ndim, pb->nbc, pb->nint, pb->npar), CABLE_ERR_INPUT;
+  if ((double)pb->ndim * ((double)c->ntst * c->ncol + 1) + pb->nbc + pb->nint > (double)(INT_MAX / 16) ||
+      pb->npar > INT_MAX / 16)
+    return snprintf(msg, len, "problem '%s' with NTST=%d, NCOL=%d: NDIM=%d, NBC=%d, NINT=%d, npar=%d are too large",
+                    pb->name ? pb->name : "?", c->ntst, c->ncol, pb->ndim, pb->nbc, pb->nint, pb->npar), CABLE_ERR_INPUT;
   if (c->ips != 4) return snprintf(msg, len, "IPS=%d: cable solves IPS=4 problems only", c->ips), CABLE_ERR_UNSUPPORTED;
   if (c->ndim && c->ndim != pb->ndim)
     return snprintf(msg, len, "NDIM=%d but problem '%s' has %d equations", c->ndim, pb->name, pb->ndim),

@@ -141,6 +141,38 @@ static void constants_counts(void)
   }
 }
 
+/* A problem struct whose sizes contradict themselves: the engine refuses it
+ * before allocating anything. */
+static void bad_problem(void)
+{
+  const cable_problem *bratu = cable_problem_builtin("bratu");
+  cable_constants c;
+  bratu_constants(&c);
+  c.ndim = c.nbc = c.nint = 0;   /* the problem's own */
+  struct {
+    const char *what;
+    int ndim, nbc, nint, npar;
+  } cases[] = {{"NDIM = 0", 0, 1, 0, 1},         {"NDIM = -2", -2, -1, 0, 1}, {"NBC = -1", 2, -1, 2, 1},
+               {"NINT = -1", 2, 3, -1, 1},       {"npar = -1", 2, 2, 0, -1},  {"NDIM = 2^30", 1 << 30, 1 << 30, 0, 1}};
+  for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+    cable_problem pb = *bratu;
+    pb.ndim = cases[k].ndim;
+    pb.nbc = cases[k].nbc;
+    pb.nint = cases[k].nint;
+    pb.npar = cases[k].npar;
+    cable_error err;
+    cable_error_clear(&err);
+    char what[200];
+    snprintf(what, sizeof what, "a problem with %s: cable_cont_check", cases[k].what);
+    expect(what, cable_cont_check(&pb, &c, &err), CABLE_ERR_INPUT, &err, NULL);
+    int st = 0;
+    cable_cont *cc = cable_cont_alloc(&pb, &c, &st);
+    snprintf(what, sizeof what, "a problem with %s: cable_cont_alloc gives NULL", cases[k].what);
+    api_check(what, cc == NULL && st == CABLE_ERR_INPUT);
+    cable_cont_free(cc);
+  }
+}
+
 /* Calls out of order on a valid continuation handle. */
 static void cont_order(void)
 {
@@ -272,6 +304,7 @@ int main(void)
   }
   session_args();       /* also writes s.ok, read by constants_counts */
   constants_counts();
+  bad_problem();
   cont_order();
   return api_summary();
 }
