@@ -147,7 +147,14 @@ $(BUILD)/tests/%: $(BUILD)/tests/%.o $(LIBCABLE)
 # Programs written against include/cable/ only, linked with the shared library.
 $(BUILD)/tests/test_api_%: tests/api/api_%.c $(LIBSO) | $(DEPS_OK)
 	@mkdir -p $(dir $@)
-	$(CC) $(CFLAGS) $(PUBINC) $< $(LDFLAGS) -L$(BUILD) -lcable -Wl,-rpath,$(abspath $(BUILD)) -lm -o $@
+	$(CC) $(CFLAGS) $(PUBINC) -I$(BUILD)/gen $< $(LDFLAGS) -L$(BUILD) -lcable -Wl,-rpath,$(abspath $(BUILD)) -lm -o $@
+
+# The misuse cases of every CABLE_API function, generated from the headers
+# (and checked against what libcable.so exports): doc/api.md, Contracts.
+$(BUILD)/gen/api_misuse_gen.inc: scripts/gen_api_misuse.py $(wildcard include/cable/*.h) $(LIBSO)
+	@mkdir -p $(dir $@)
+	$(PYTHON) scripts/gen_api_misuse.py $@ $(LIBSO)
+$(BUILD)/tests/test_api_generated: $(BUILD)/gen/api_misuse_gen.inc
 
 # Plug-ins see the public headers only.
 $(BUILD)/plugins/%.so: tests/plugins/%.c | $(DEPS_OK)

@@ -12,6 +12,7 @@
 #include <sys/types.h>
 
 #include "cable/cable_status.h"
+#include "constants_check.h"
 
 #define SFILE_MAX_VALUES 100000000L   /* numbers per solution block: a sanity bound (800 MB) */
 #define BFILE_MAX_COLS 4096           /* value columns per b-file row */
@@ -319,6 +320,8 @@ int cable_sfile_resolve_irs(const cable_sfile *s, cable_constants *c, cable_erro
 {
   char spec[32];
   if (!s || !c) return cable_error_set(err, CABLE_ERR_NULL, "", 0, "IRS", "no s-file or no constants (NULL)");
+  int rc0 = cable_constants_consistent(c, CABLE_NAMES_MAX, err);
+  if (rc0) return rc0;
   if (c->irs_name[0]) snprintf(spec, sizeof spec, "%s", c->irs_name);
   else snprintf(spec, sizeof spec, "%d", c->irs);
   if (!c->irs_name[0] && c->irs == 0) return 0;   /* STPNT start: nothing to look up */

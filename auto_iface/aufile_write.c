@@ -13,6 +13,7 @@
 
 #include "atomic_file.h"
 #include "cable/cable_status.h"
+#include "constants_check.h"
 
 #define BCOL 19            /* b-file and s-file number width: ES19.10E3 */
 #define BDIG 10            /* digits after the point: 11 significant digits */
@@ -744,6 +745,7 @@ cable_aufile *cable_aufile_open(const char *dir, const char *name, const cable_c
                     name ? name : "(null)");
     return NULL;
   }
+  if (cable_constants_consistent(c, CABLE_NAMES_MAX, err)) return NULL;   /* the headers read every array */
   cable_aufile *w = calloc(1, sizeof *w);
   if (!w) {
     cable_error_set(err, CABLE_ERR_ALLOC, "", 0, "", "out of memory");
@@ -777,7 +779,9 @@ cable_aufile *cable_aufile_open(const char *dir, const char *name, const cable_c
 
 void cable_aufile_set_constants(cable_aufile *w, const cable_constants *c)
 {
-  if (w && c) {
+  /* constants whose counts exceed their arrays are not taken (the headers
+     would read past them): the writer keeps the ones it has */
+  if (w && c && cable_constants_consistent(c, CABLE_NAMES_MAX, NULL) == 0) {
     w->c = *c;
     w->in_section = 0;   /* the next point starts a section with the new header */
   }

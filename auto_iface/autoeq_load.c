@@ -48,8 +48,10 @@ int cable_autoeq_find(const char *dir, const char *name, char *path, size_t len)
 
 cable_autoeq *cable_autoeq_open(const char *src, cable_error *err)
 {
+  cable_error local;
+  if (!err) err = &local;   /* the build reads err->status */
   if (!src || !src[0]) {
-    cable_error_set(err, CABLE_ERR_INPUT, "", 0, "e", "no equation file given");
+    cable_error_set(err, src ? CABLE_ERR_INPUT : CABLE_ERR_NULL, "", 0, "e", "no equation file given");
     return NULL;
   }
   cable_autoeq *m = calloc(1, sizeof *m);
@@ -120,7 +122,7 @@ int cable_autoeq_problem(cable_autoeq *m, const cable_constants *c, const char *
 {
   if (!pb) return cable_error_set(err, CABLE_ERR_NULL, "", 0, "", "no place for the problem (NULL)");
   *pb = NULL;
-  if (!m) return cable_error_set(err, CABLE_ERR_INPUT, "", 0, "", "no equation module");
+  if (!m) return cable_error_set(err, CABLE_ERR_NULL, "", 0, "", "no equation module (NULL)");
   if (!c) {   /* names only: AUTO's equations have no names of their own */
     memset(&m->pb, 0, sizeof m->pb);
     m->pb.abi_version = CABLE_PROBLEM_ABI;

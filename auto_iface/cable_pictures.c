@@ -71,7 +71,7 @@ int cable_plot_files(const char *dir, const char *const *bfiles, int nfiles, con
   static const char *const plot_suffixes[2] = {".png", ".svg"};
   cable_error local;
   if (!err) err = &local;   /* the function reads err->status below */
-  if (!out) return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, "o", "no output file");
+  if (!out) return cable_error_set(err, CABLE_ERR_NULL, NULL, 0, "o", "no output file (NULL)");
   if (check_suffix(out, "o", plot_suffixes, 2, err)) return err->status;
   if (nfiles < 1 || nfiles > 64) return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, "", "give 1 to 64 b-files");
   if (!bfiles) return cable_error_set(err, CABLE_ERR_NULL, NULL, 0, "", "no b-file names (NULL)");

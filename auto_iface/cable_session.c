@@ -21,7 +21,44 @@
 
 void cable_session_options_init(cable_session_options *o)
 {
-  memset(o, 0, sizeof *o);
+  if (o) memset(o, 0, sizeof *o);
+}
+
+/* ---- the API contract: NULL and inconsistent arguments (doc/api.md) -------------- */
+
+/* CABLE_ERR_NULL naming the argument of fn. */
+static int null_arg(const char *fn, const char *what, cable_error *err)
+{
+  return cable_error_set(err, CABLE_ERR_NULL, NULL, 0, NULL, "%s: %s is NULL", fn, what);
+}
+
+/* A list of n branches: n >= 0, and when n > 0 an array without NULL entries. */
+static int check_branch_list(const char *fn, cable_branch *const *list, int n, cable_error *err)
+{
+  if (n < 0) return cable_error_set(err, CABLE_ERR_SIZE, NULL, 0, NULL, "%s: %d branches (a count < 0)", fn, n);
+  if (n > 0 && !list) return cable_error_set(err, CABLE_ERR_NULL, NULL, 0, NULL, "%s: %d branches but the list is NULL", fn, n);
+  for (int k = 0; k < n; k++)
+    if (!list[k]) return cable_error_set(err, CABLE_ERR_NULL, NULL, 0, NULL, "%s: branch %d of %d is NULL", fn, k + 1, n);
+  return 0;
+}
+
+/* The run arguments agree with themselves: counts with their arrays, at
+ * most one start, a solution index inside its branch. */
+static int check_run_args(const char *fn, const cable_run_args *a, cable_error *err)
+{
+  int rc = check_branch_list(fn, a->branches, a->nbranch, err);
+  if (rc) return rc;
+  if (a->nover < 0) return cable_error_set(err, CABLE_ERR_SIZE, NULL, 0, NULL, "%s: nover = %d (a count < 0)", fn, a->nover);
+  if (a->nover > 0 && !a->over)
+    return cable_error_set(err, CABLE_ERR_NULL, NULL, 0, NULL, "%s: nover = %d but over is NULL", fn, a->nover);
+  for (int i = 0; i < a->nover; i++)
+    if (!a->over[i]) return cable_error_set(err, CABLE_ERR_NULL, NULL, 0, NULL, "%s: override %d of %d is NULL", fn, i + 1, a->nover);
+  if (a->sol_branch && a->nbranch > 0)
+    return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, NULL, "%s: a solution and a result given as the start (at most one)", fn);
+  if (a->sol_branch && (a->sol_index < 0 || a->sol_index >= cable_branch_nsolutions(a->sol_branch)))
+    return cable_error_set(err, CABLE_ERR_RANGE, NULL, 0, NULL, "%s: solution index %d outside the branch's 0..%d", fn,
+                           a->sol_index, cable_branch_nsolutions(a->sol_branch) - 1);
+  return 0;
 }
 
 static FILE *rp_log(const cable_session *r) { return r->opt.log ? r->opt.log : stdout; }
@@ -789,7 +826,7 @@ static void remember(cable_session *r, rp_setup *s)
   } else if (!s->sf && s->start_br) {
     if (s->start_br != r->cur_br) {
       rp_branch *b = (rp_branch *)s->start_br;
-      b->refs++;
+      __atomic_add_fetch(&b->refs, 1, __ATOMIC_RELAXED);
       rp_branch_decref(r->cur_br);
       r->cur_br = b;
       cable_sfile_free(r->cur_sf);
@@ -803,10 +840,13 @@ static void remember(cable_session *r, rp_setup *s)
 
 int cable_session_run(cable_session *r, const cable_run_args *a, cable_branch **out, cable_error *err)
 {
+  if (out) *out = NULL;
+  if (!r || !a || !out) return null_arg("cable_session_run", !r ? "the session" : !a ? "the arguments" : "out", err);
+  int rc = check_run_args("cable_session_run", a, err);
+  if (rc) return rc;
   rp_setup s;
   rp_branch *b = NULL;
-  *out = NULL;
-  int rc = build_setup(r, a, &s, err);
+  rc = build_setup(r, a, &s, err);
   if (!rc) rc = engine_run(r, &s, &b, err);
   if (!rc) remember(r, &s);
   rp_result res = {1, &b};
@@ -826,8 +866,11 @@ int cable_session_run(cable_session *r, const cable_run_args *a, cable_branch **
 int cable_session_save(cable_session *r, cable_branch *const *branches, int n, int sol_index, const char *name,
                        int append, cable_error *err)
 {
+  if (!r || !name) return null_arg("cable_session_save", !r ? "the session" : "the name", err);
+  int rc = check_branch_list("cable_session_save", branches, n, err);
+  if (rc) return rc;
   char nm[CABLE_NAME_MAX];
-  int rc = name_arg("save", name, nm, sizeof nm, err);
+  rc = name_arg("save", name, nm, sizeof nm, err);
   if (rc) return rc;
   if (sol_index >= 0) {
     /* one solution: a one-point result */
@@ -883,18 +926,23 @@ static int result_to_list(rp_result *res, cable_branch ***out, int *n, cable_err
 
 int cable_session_loadbd(cable_session *r, const char *name, cable_branch ***out, int *n, cable_error *err)
 {
+  if (out) *out = NULL;
+  if (n) *n = 0;
+  if (!r || !name || !out || !n)
+    return null_arg("cable_session_loadbd", !r ? "the session" : !name ? "the name" : !out ? "out" : "n", err);
   rp_result *res = NULL;
-  *out = NULL;
-  *n = 0;
   int rc = read_named(r, name, &res, err);
   return rc ? rc : result_to_list(res, out, n, err);
 }
 
 int cable_session_load(cable_session *r, const cable_run_args *a, cable_branch **out, cable_error *err)
 {
+  if (out) *out = NULL;
+  if (!r || !a || !out) return null_arg("cable_session_load", !r ? "the session" : !a ? "the arguments" : "out", err);
+  int rc = check_run_args("cable_session_load", a, err);
+  if (rc) return rc;
   rp_setup s;
-  *out = NULL;
-  int rc = build_setup(r, a, &s, err);
+  rc = build_setup(r, a, &s, err);
   /* AUTO's load('name') / load(s='name') without IRS: the file's last solution */
   int n = s.sf ? cable_sfile_count(s.sf) : 0;
   if (!rc && !s.start && n > 0 && s.c.irs == 0 && !s.c.irs_name[0]) {
@@ -935,17 +983,21 @@ int cable_session_load(cable_session *r, const cable_run_args *a, cable_branch *
 int cable_session_transform(cable_session *r, cable_branch *const *in, int n, int relabel, cable_branch ***out,
                             int *nout, cable_error *err)
 {
-  (void)r;
+  if (out) *out = NULL;
+  if (nout) *nout = 0;
+  if (!r || !out || !nout)
+    return null_arg("cable_session_transform", !r ? "the session" : !out ? "out" : "nout", err);
+  int rc = check_branch_list("cable_session_transform", in, n, err);
+  if (rc) return rc;
   rp_result view = {n, (rp_branch **)in}, *res = NULL;
-  *out = NULL;
-  *nout = 0;
-  int rc = relabel ? rp_result_relabel(&view, &res) : rp_result_merge(&view, &res);
+  rc = relabel ? rp_result_relabel(&view, &res) : rp_result_merge(&view, &res);
   if (rc) return cable_error_set(err, rc, NULL, 0, NULL, "out of memory");
   return result_to_list(res, out, nout, err);
 }
 
 int cable_session_transform_files(cable_session *r, const char *name, int relabel, cable_error *err)
 {
+  if (!r || !name) return null_arg("cable_session_transform_files", !r ? "the session" : "the name", err);
   rp_result *res = NULL, *t = NULL;
   int rc = read_named(r, name, &res, err);
   if (!rc && (rc = relabel ? rp_result_relabel(res, &t) : rp_result_merge(res, &t)))
@@ -958,6 +1010,9 @@ int cable_session_transform_files(cable_session *r, const char *name, int relabe
 
 void cable_session_path(const cable_session *r, const char *type, const char *name, char *buf, size_t len)
 {
+  if (!buf || len == 0) return;
+  buf[0] = '\0';
+  if (!r || !name) return;
   if (type) {
     rp_path(r, type, name, buf, len);
     return;
@@ -968,7 +1023,7 @@ void cable_session_path(const cable_session *r, const char *type, const char *na
 
 void cable_branch_incref(cable_branch *b)
 {
-  b->refs++;
+  if (b) __atomic_add_fetch(&b->refs, 1, __ATOMIC_RELAXED);
 }
 
 void cable_branch_decref(cable_branch *b)

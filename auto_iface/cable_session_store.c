@@ -25,7 +25,8 @@ rp_branch *rp_branch_alloc(int ibr, const cable_constants *c, const cable_names 
 
 void rp_branch_decref(rp_branch *b)
 {
-  if (!b || --b->refs > 0) return;
+  /* atomic: Python threads drop references while another session's run holds one */
+  if (!b || __atomic_sub_fetch(&b->refs, 1, __ATOMIC_ACQ_REL) > 0) return;
   for (int i = 0; i < b->npt; i++) {
     free(b->pts[i].mem);
     free(b->pts[i].note);
@@ -407,7 +408,7 @@ int rp_result_merge(const rp_result *in, rp_result **out)
       r->br[n++] = j;
       i++;
     } else {
-      in->br[i]->refs++;
+      __atomic_add_fetch(&in->br[i]->refs, 1, __ATOMIC_RELAXED);
       r->br[n++] = in->br[i];
     }
   }
@@ -440,27 +441,28 @@ int rp_result_relabel(const rp_result *in, rp_result **out)
 
 /* ---- what a branch holds (cable_session.h) ------------------------------------------ */
 
-int cable_branch_number(const cable_branch *b) { return b->ibr; }
-int cable_branch_npoints(const cable_branch *b) { return b->npt; }
-int cable_branch_nsolutions(const cable_branch *b) { return b->nsol; }
-const cable_names *cable_branch_names(const cable_branch *b) { return &b->names; }
-const cable_constants *cable_branch_constants(const cable_branch *b) { return &b->c; }
-const char *cable_branch_problem(const cable_branch *b) { return b->e; }
-const char *cable_branch_end_note(const cable_branch *b) { return b->end_note; }
+/* A NULL branch has nothing: 0 and NULL (doc/api.md, Contracts). */
+int cable_branch_number(const cable_branch *b) { return b ? b->ibr : 0; }
+int cable_branch_npoints(const cable_branch *b) { return b ? b->npt : 0; }
+int cable_branch_nsolutions(const cable_branch *b) { return b ? b->nsol : 0; }
+const cable_names *cable_branch_names(const cable_branch *b) { return b ? &b->names : NULL; }
+const cable_constants *cable_branch_constants(const cable_branch *b) { return b ? &b->c : NULL; }
+const char *cable_branch_problem(const cable_branch *b) { return b ? b->e : NULL; }
+const char *cable_branch_end_note(const cable_branch *b) { return b ? b->end_note : NULL; }
 
 const cable_point *cable_branch_point(const cable_branch *b, int i)
 {
-  return i >= 0 && i < b->npt ? &b->pts[i].pt : NULL;
+  return b && i >= 0 && i < b->npt ? &b->pts[i].pt : NULL;
 }
 
 const cable_solution *cable_branch_solution(const cable_branch *b, int i)
 {
-  return i >= 0 && i < b->nsol ? b->sol[i] : NULL;
+  return b && i >= 0 && i < b->nsol ? b->sol[i] : NULL;
 }
 
 const char *cable_branch_solution_note(const cable_branch *b, int i)
 {
-  for (int k = 0; k < b->npt; k++)
+  for (int k = 0; b && k < b->npt; k++)
     if (b->pts[k].sol == i) return b->pts[k].note;
   return NULL;
 }

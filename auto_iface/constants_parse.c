@@ -19,6 +19,7 @@
 #include <strings.h>
 
 #include "cable/cable_status.h"
+#include "constants_check.h"
 
 #define TOK_MAX 1024          /* longest token (strings are names or file names) */
 #define DEPTH_MAX 8           /* nesting of lists/dicts; AUTO needs 2 */
@@ -1280,19 +1281,21 @@ int cable_constants_parse_string(const char *name, const char *text, cable_const
                                  cable_names *names, const char *const *parnames, int npar,
                                  cable_error *err)
 {
+  if (!text || !c) return cable_error_set(err, CABLE_ERR_NULL, name, 0, "", "cable_constants_parse_string: %s is NULL", !text ? "the text" : "the constants");
   return parse_string(name, text, NULL, parnames, npar, c, names, err);
 }
 
 int cable_constants_parse_string_for(const char *name, const char *text, const cable_problem *pb,
                                      cable_constants *c, cable_names *names, cable_error *err)
 {
+  if (!text || !c) return cable_error_set(err, CABLE_ERR_NULL, name, 0, "", "cable_constants_parse_string_for: %s is NULL", !text ? "the text" : "the constants");
   return parse_string(name, text, pb, pb ? pb->parnames : NULL, pb ? pb->npar : 0, c, names, err);
 }
 
 static int parse_file(const char *path, const cable_problem *pb, const char *const *parnames, int npar,
                       cable_constants *c, cable_names *names, cable_error *err)
 {
-  if (!path) return cable_error_set(err, CABLE_ERR_INPUT, "", 0, "", "no constants file given");
+  if (!path || !c) return cable_error_set(err, CABLE_ERR_NULL, "", 0, "", "%s is NULL", !path ? "the constants file name" : "the constants");
   FILE *f = fopen(path, "rb");
   if (!f) return cable_error_set(err, CABLE_ERR_IO, path, 0, "", "cannot open constants file: %s", strerror(errno));
   char *buf = malloc((size_t)FILE_MAX + 1);
@@ -1334,7 +1337,9 @@ int cable_constants_parse_file_for(const char *path, const cable_problem *pb, ca
 static int parse_override(const char *keyvalue, const cable_problem *pb, const char *const *parnames, int npar,
                           cable_constants *c, cable_names *names, cable_error *err)
 {
-  if (!keyvalue || !c) return cable_error_set(err, CABLE_ERR_INPUT, "", 0, "", "no override given");
+  if (!keyvalue || !c) return cable_error_set(err, CABLE_ERR_NULL, "", 0, "", "%s is NULL", !keyvalue ? "the override" : "the constants");
+  int rc0 = cable_constants_consistent(c, CABLE_NAMES_MAX, err);   /* the constants it adds to */
+  if (rc0) return rc0;
   if (strchr(keyvalue, '\n'))
     return cable_error_set(err, CABLE_ERR_PARSE, "", 0, "", "an override is one line of KEY=VALUE");
   pctx *x = pctx_new("", keyvalue, err);

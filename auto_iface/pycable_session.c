@@ -1,14 +1,63 @@
 /* cable._cable.Session: AUTO's runner on cable's engine (cable_session.h).
  * Runs release the GIL; after every computed point the session takes it back
  * for a moment to run Python's signal handlers, so Ctrl-C (KeyboardInterrupt)
- * stops a run at the next point, before anything of it is written. */
+ * stops a run at the next point, before anything of it is written.
+ *
+ * Threads: the C session is one runner's state (AUTO's), not safe to use from
+ * two threads at once, and a run releases the GIL.  So every method takes the
+ * session's lock: a second thread calling run() (or any other method) on a
+ * runner that is running waits until the first call returns, then runs; a
+ * call from the running thread itself (a signal handler during the run) is
+ * refused with RuntimeError.  Separate runners run at the same time. */
 #include "pycable.h"
 
 typedef struct pyc_session {
   PyObject_HEAD
   cable_session *s;
-  PyThreadState *ts;   /* the thread's state while a run has released the GIL */
+  PyThreadState *ts;          /* the running thread's state while a run has released the GIL */
+  PyThread_type_lock lock;    /* held by the call in progress */
+  int busy;                   /* a call is in progress (read and written with the GIL held) */
+  unsigned long owner;        /* ... in this thread */
 } pyc_session;
+
+/* How long a waiting call sleeps between looks at Python's signal handlers
+ * (Ctrl-C while waiting for another thread's run), in microseconds. */
+#define SESSION_WAIT_US 100000
+
+/* Take the session for one call (with the GIL): waits, with the GIL released,
+ * while another thread's call is in progress.  0, or -1 with an exception. */
+static int session_enter(pyc_session *self)
+{
+  unsigned long me = PyThread_get_thread_ident();
+  if (!self->s || !self->lock) {
+    PyErr_SetString(PyExc_RuntimeError, "cable: the runner's session is not initialised (Session.__init__ not called)");
+    return -1;
+  }
+  if (self->busy && self->owner == me) {
+    PyErr_SetString(PyExc_RuntimeError,
+                    "cable: this runner is already running a command in this thread (a call from a signal handler "
+                    "during run()?); use another Runner");
+    return -1;
+  }
+  while (!PyThread_acquire_lock(self->lock, NOWAIT_LOCK)) {
+    PyLockStatus got;
+    Py_BEGIN_ALLOW_THREADS
+    got = PyThread_acquire_lock_timed(self->lock, SESSION_WAIT_US, 0);
+    Py_END_ALLOW_THREADS
+    if (got == PY_LOCK_ACQUIRED) break;
+    if (PyErr_CheckSignals() < 0) return -1;
+  }
+  self->busy = 1;
+  self->owner = me;
+  return 0;
+}
+
+static void session_leave(pyc_session *self)
+{
+  self->busy = 0;
+  self->owner = 0;
+  PyThread_release_lock(self->lock);
+}
 
 /* The session's interrupt check: Python's pending signal handlers, with the GIL. */
 static int session_interrupt(void *ctx)
@@ -29,6 +78,10 @@ static int session_init(PyObject *obj, PyObject *args, PyObject *kw)
     return -1;
   }
   if (self->s) return 0;
+  if (!self->lock && !(self->lock = PyThread_allocate_lock())) {
+    PyErr_NoMemory();
+    return -1;
+  }
   cable_session_options o;
   cable_session_options_init(&o);
   o.dir = NULL;   /* the current directory: the Python layer changes it (AUTO's cd) */
@@ -44,7 +97,9 @@ static int session_init(PyObject *obj, PyObject *args, PyObject *kw)
 
 static void session_dealloc(PyObject *obj)
 {
-  cable_session_free(((pyc_session *)obj)->s);
+  pyc_session *self = (pyc_session *)obj;
+  cable_session_free(self->s);
+  if (self->lock) PyThread_free_lock(self->lock);
   Py_TYPE(obj)->tp_free(obj);
 }
 
@@ -118,6 +173,10 @@ static PyObject *session_run(PyObject *obj, PyObject *args)
     inputs_free(&in);
     return NULL;
   }
+  if (session_enter(self) < 0) {
+    inputs_free(&in);
+    return NULL;
+  }
   cable_branch *b = NULL;
   cable_error err;
   cable_error_clear(&err);
@@ -126,6 +185,7 @@ static PyObject *session_run(PyObject *obj, PyObject *args)
   int rc = cable_session_run(self->s, &in.a, &b, &err);
   PyEval_RestoreThread(self->ts);
   self->ts = NULL;
+  session_leave(self);
   fflush(stdout);
   inputs_free(&in);
   return rc ? pyc_raise(rc, &err) : pyc_branch_wrap(b);
@@ -140,10 +200,15 @@ static PyObject *session_load(PyObject *obj, PyObject *args)
     inputs_free(&in);
     return NULL;
   }
+  if (session_enter(self) < 0) {
+    inputs_free(&in);
+    return NULL;
+  }
   cable_branch *b = NULL;
   cable_error err;
   cable_error_clear(&err);
   int rc = cable_session_load(self->s, &in.a, &b, &err);
+  session_leave(self);
   inputs_free(&in);
   if (!rc && !b) Py_RETURN_NONE;   /* no solution: the runner's constants were set */
   return rc ? pyc_raise(rc, &err) : pyc_branch_wrap(b);
@@ -160,10 +225,15 @@ static PyObject *session_save(PyObject *obj, PyObject *args)
   cable_branch **br;
   int n;
   if (pyc_branches_from(seq, &br, &n) < 0) return NULL;
+  if (session_enter(self) < 0) {
+    PyMem_Free(br);
+    return NULL;
+  }
   cable_error err;
   cable_error_clear(&err);
   fflush(stdout);
   int rc = cable_session_save(self->s, br, n, sol, name, append, &err);
+  session_leave(self);
   fflush(stdout);
   PyMem_Free(br);
   if (rc) return pyc_raise(rc, &err);
@@ -178,9 +248,11 @@ static PyObject *session_loadbd(PyObject *obj, PyObject *args)
   if (!PyArg_ParseTuple(args, "s", &name)) return NULL;
   cable_branch **list = NULL;
   int n = 0;
+  if (session_enter(self) < 0) return NULL;
   cable_error err;
   cable_error_clear(&err);
   int rc = cable_session_loadbd(self->s, name, &list, &n, &err);
+  session_leave(self);
   return rc ? pyc_raise(rc, &err) : pyc_branch_list(list, n);
 }
 
@@ -194,9 +266,14 @@ static PyObject *session_transform(PyObject *obj, PyObject *args)
   cable_branch **br, **list = NULL;
   int n, nout = 0;
   if (pyc_branches_from(seq, &br, &n) < 0) return NULL;
+  if (session_enter(self) < 0) {
+    PyMem_Free(br);
+    return NULL;
+  }
   cable_error err;
   cable_error_clear(&err);
   int rc = cable_session_transform(self->s, br, n, relabel, &list, &nout, &err);
+  session_leave(self);
   PyMem_Free(br);
   return rc ? pyc_raise(rc, &err) : pyc_branch_list(list, nout);
 }
@@ -208,9 +285,11 @@ static PyObject *session_transform_files(PyObject *obj, PyObject *args)
   const char *name;
   int relabel;
   if (!PyArg_ParseTuple(args, "sp", &name, &relabel)) return NULL;
+  if (session_enter(self) < 0) return NULL;
   cable_error err;
   cable_error_clear(&err);
   int rc = cable_session_transform_files(self->s, name, relabel, &err);
+  session_leave(self);
   if (rc) return pyc_raise(rc, &err);
   Py_RETURN_NONE;
 }
@@ -220,13 +299,17 @@ static PyObject *session_transform_files(PyObject *obj, PyObject *args)
 static PyObject *session_constants(PyObject *obj, PyObject *noargs)
 {
   (void)noargs;
+  pyc_session *self = (pyc_session *)obj;
   const cable_constants *c;
   const cable_names *names;
   const char *e;
   cable_error err;
   cable_error_clear(&err);
-  int rc = cable_session_constants(((pyc_session *)obj)->s, &c, &names, &e, &err);
-  return rc ? pyc_raise(rc, &err) : pyc_constants_dict(c, names, e);
+  if (session_enter(self) < 0) return NULL;
+  int rc = cable_session_constants(self->s, &c, &names, &e, &err);
+  PyObject *d = rc ? pyc_raise(rc, &err) : pyc_constants_dict(c, names, e);
+  session_leave(self);
+  return d;
 }
 
 static PyMethodDef session_methods[] = {

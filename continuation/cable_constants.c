@@ -1,4 +1,5 @@
 #include "cable/cable_constants.h"
+#include "cable/cable_status.h"
 
 #include <unistd.h>
 
@@ -35,6 +36,7 @@ double cable_constants_key(const cable_constants *c, const cable_problem *pb, co
 
 int cable_threads(const cable_constants *c)
 {
+  if (!c) return CABLE_ERR_NULL;
   if (c->nthreads > 0) return c->nthreads;
   long np = sysconf(_SC_NPROCESSORS_ONLN);
   if (np < 1) np = 1;

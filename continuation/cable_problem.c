@@ -6,6 +6,7 @@
 
 #include "cable/cable_error.h"
 #include "cable/cable_status.h"
+#include "constants_check.h"
 
 int cable_problem_prepare(const cable_problem *pb, const struct cable_constants *c, int from_stpnt,
                           const cable_problem **instance, cable_error *err)
@@ -14,6 +15,8 @@ int cable_problem_prepare(const cable_problem *pb, const struct cable_constants 
   if (!pb || !c || !instance)
     return cable_error_set(err, CABLE_ERR_NULL, NULL, 0, NULL, "cable_problem_prepare: %s is NULL",
                            !pb ? "the problem" : !c ? "the constants" : "the instance pointer");
+  int rc0 = cable_constants_consistent(c, c->npar > pb->npar ? c->npar : pb->npar, err);
+  if (rc0) return rc0;
   if (!pb->prepare) {
     *instance = pb;
     return CABLE_SUCCESS;

@@ -1,10 +1,12 @@
 /* Continuation driver: start, predictor-corrector steps, step control, limits. */
+#include <limits.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "constants_check.h"
 #include "cont_impl.h"
 
 /* Step-size control (IADS): Newton iteration counts at or below
@@ -90,6 +92,15 @@ static int check_input(const cable_problem *pb, const cable_constants *c, char *
   if (pb->abi_version != CABLE_PROBLEM_ABI)
     return snprintf(msg, len, "problem ABI %d, cable expects %d", pb->abi_version, CABLE_PROBLEM_ABI),
            CABLE_ERR_INPUT;
+  /* a problem struct filled by hand: sizes the engine can allocate and index
+     with int (the unknowns number (NTST NCOL + 1) NDIM + NFPR) */
+  if (pb->ndim < 1 || pb->nbc < 0 || pb->nint < 0 || pb->npar < 0)
+    return snprintf(msg, len, "problem '%s': NDIM=%d, NBC=%d, NINT=%d, npar=%d (need NDIM >= 1, the others >= 0)",
+                    pb->name ? pb->name : "?", pb->ndim, pb->nbc, pb->nint, pb->npar), CABLE_ERR_INPUT;
+  if ((double)pb->ndim * ((double)c->ntst * c->ncol + 1) + pb->nbc + pb->nint > (double)(INT_MAX / 16) ||
+      pb->npar > INT_MAX / 16)
+    return snprintf(msg, len, "problem '%s' with NTST=%d, NCOL=%d: NDIM=%d, NBC=%d, NINT=%d, npar=%d are too large",
+                    pb->name ? pb->name : "?", c->ntst, c->ncol, pb->ndim, pb->nbc, pb->nint, pb->npar), CABLE_ERR_INPUT;
   if (c->ips != 4) return snprintf(msg, len, "IPS=%d: cable solves IPS=4 problems only", c->ips), CABLE_ERR_UNSUPPORTED;
   if (c->ndim && c->ndim != pb->ndim)
     return snprintf(msg, len, "NDIM=%d but problem '%s' has %d equations", c->ndim, pb->name, pb->ndim),
@@ -123,7 +134,11 @@ int cable_cont_check(const cable_problem *pb, const cable_constants *c, cable_er
   if (!pb || !c)
     return cable_error_set(err, CABLE_ERR_NULL, NULL, 0, NULL, "cable_cont_check: %s is NULL",
                            !pb ? "the problem" : "the constants");
-  int rc = check_input(pb, c, msg, sizeof msg);
+  /* counts beyond their arrays and indices beyond the parameters first:
+     everything below reads the arrays */
+  int rc = cable_constants_consistent(c, c->npar > pb->npar ? c->npar : pb->npar, err);
+  if (rc) return rc;
+  rc = check_input(pb, c, msg, sizeof msg);
   if (rc) return cable_error_set(err, rc, NULL, 0, NULL, "%s", msg);
   if (err) cable_error_clear(err);
   return CABLE_SUCCESS;

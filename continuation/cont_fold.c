@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "cable/cable_status.h"
+#include "constants_check.h"
 
 struct cable_fold {
   cable_problem pb;             /* the extended problem; params = this struct */
@@ -255,6 +256,7 @@ void cable_fold_free(cable_fold *f)
 
 void cable_fold_mesh(const cable_fold *f, int ntst, double *mesh)
 {
+  if (!f || !mesh || ntst < 1) return;
   const cable_solution *s = f->start;
   int ntold = s->ntst, nc = s->ncol;
   for (int j = 0; j <= ntst; j++) {
@@ -268,8 +270,8 @@ void cable_fold_mesh(const cable_fold *f, int ntst, double *mesh)
   mesh[ntst] = 1.0;
 }
 
-const cable_problem *cable_fold_problem(const cable_fold *f) { return &f->pb; }
-const cable_constants *cable_fold_constants(const cable_fold *f) { return &f->c; }
+const cable_problem *cable_fold_problem(const cable_fold *f) { return f ? &f->pb : NULL; }
+const cable_constants *cable_fold_constants(const cable_fold *f) { return f ? &f->c : NULL; }
 
 /* int |v|^2 dt of the stored direction (trapezoid on the stored points: a
  * first guess only, the start's Newton solves the normalisation) plus |w|^2 */
@@ -302,6 +304,24 @@ static double start_norm(const cable_fold *f, const cable_solution *s)
 cable_fold *cable_fold_alloc(const cable_problem *pb, const cable_constants *c, const cable_solution *start,
                              int *status, char *msg, size_t len)
 {
+  /* status and msg may be NULL (not wanted) */
+  int dummy_status;
+  char dummy_msg[8];
+  if (!status) status = &dummy_status;
+  if (!msg) {
+    msg = dummy_msg;
+    len = sizeof dummy_msg;
+  }
+  if (!pb || !c) {
+    *status = CABLE_ERR_NULL;
+    snprintf(msg, len, "cable_fold_alloc: %s is NULL", !pb ? "the problem" : "the constants");
+    return NULL;
+  }
+  cable_error cerr;
+  if ((*status = cable_constants_consistent(c, c->npar > pb->npar ? c->npar : pb->npar, &cerr)) != 0) {
+    snprintf(msg, len, "%s", cerr.msg);
+    return NULL;
+  }
   cable_fold *f = calloc(1, sizeof *f);
   if (!f) {
     *status = CABLE_ERR_ALLOC;

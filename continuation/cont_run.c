@@ -12,6 +12,12 @@ int cable_cont_set_mesh(cable_cont *cc, const double *mesh)
 {
   if (!cc || !mesh) return CABLE_ERR_NULL;
   if (cc->ended) return cc->end_status;
+  /* the mesh of a STPNT start: once a start is set its solution lives on the
+     old mesh, so a new one now would silently change the problem */
+  if (cc->have_start || cc->npt > 0) {
+    cont_set_error(cc, "cable_cont_set_mesh after cable_cont_set_start: set the mesh first");
+    return CABLE_ERR_STATE;
+  }
   int nt = cc->sys->ntst;
   int ok = mesh[0] == 0.0 && mesh[nt] == 1.0;
   for (int j = 0; j < nt && ok; j++) ok = mesh[j + 1] > mesh[j];

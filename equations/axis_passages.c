@@ -200,7 +200,7 @@ static int axis_samples(const cable_solution *s, int n, braid_curves *bc)
 
 int braid_axis_passages(const cable_solution *a, const cable_solution *b, axis_passages *out)
 {
-  if (!a || !b || !out) return CABLE_ERR_INPUT;
+  if (!a || !b || !out) return CABLE_ERR_NULL;
   int rc = braid_geometry_check(a);
   if (!rc) rc = braid_geometry_check(b);
   if (rc) return rc;

@@ -298,7 +298,8 @@ done:
 
 int braid_tube_distance_solution(const cable_solution *sol, int n, tube_distance_result *out)
 {
-  if (!out || n < 0 || n == 1) return CABLE_ERR_INPUT;
+  if (!sol || !out) return CABLE_ERR_NULL;
+  if (n < 0 || n == 1) return CABLE_ERR_INPUT;
   int rc = braid_geometry_check(sol);
   if (rc != CABLE_SUCCESS) return rc;
   if (n == 0) {

@@ -15,6 +15,7 @@
 #include "cable/cable_output.h"       /* what the engine hands out: points, sinks */
 #include "cable/cable_cont.h"         /* the continuation handle and driver */
 #include "cable/cable_stability.h"    /* the Morse index of a variational problem's solution */
+#include "cable/cable_fold.h"         /* fold continuation (ISW = 2): the extended problem */
 #include "cable/cable_aufile.h"       /* b./s./d. files: writer and readers */
 #include "cable/cable_plugin.h"       /* problems from shared objects */
 #include "cable/cable_autoeq.h"       /* AUTO equation files (NAME.f90, NAME.f, NAME.c) */

@@ -118,7 +118,8 @@ typedef struct cable_constants {
 
 /* AUTO-07p defaults (no problem key set). */
 CABLE_API void cable_constants_init(cable_constants *c);
-/* The thread count a run uses: NTHREADS, or its default when 0. */
+/* The thread count a run uses: NTHREADS, or its default when 0;
+ * CABLE_ERR_NULL for NULL. */
 CABLE_API int cable_threads(const cable_constants *c);
 
 /* A problem-specific key's value: as set in c, else the default pb declares

@@ -23,8 +23,10 @@ typedef struct cable_cont cable_cont;
 
 /* Check the problem against the constants (dimensions, callbacks, ICP,
  * NTST, NCOL, step sizes, tolerances) without allocating anything.  0, or a
- * status (CABLE_ERR_NULL, CABLE_ERR_INPUT, CABLE_ERR_UNSUPPORTED) with the
- * reason in err (may be NULL). */
+ * status (CABLE_ERR_NULL, CABLE_ERR_INPUT, CABLE_ERR_UNSUPPORTED;
+ * CABLE_ERR_SIZE for a count beyond its array, NUZR = 100000, and
+ * CABLE_ERR_RANGE for an index beyond the parameters, UZR[0].par = 999, in
+ * constants filled by hand) with the reason in err (may be NULL). */
 CABLE_API int cable_cont_check(const cable_problem *pb, const cable_constants *c, cable_error *err);
 
 /* Check (as cable_cont_check) and allocate every workspace.  Returns a
@@ -41,7 +43,8 @@ CABLE_API int cable_cont_set_start(cable_cont *cc, const cable_solution *start);
 
 /* The mesh for a STPNT start (call before cable_cont_set_start(cc, NULL)):
  * NTST + 1 points, 0 = mesh[0] < ... < mesh[NTST] = 1.  Without it a STPNT
- * start uses the uniform mesh.  CABLE_ERR_INPUT for a mesh that is not. */
+ * start uses the uniform mesh.  CABLE_ERR_INPUT for a mesh that is not,
+ * CABLE_ERR_STATE after cable_cont_set_start (wrong order). */
 CABLE_API int cable_cont_set_mesh(cable_cont *cc, const double *mesh);
 
 /* Compute and accept the next point (the first call converges the start).

@@ -51,7 +51,8 @@ typedef struct cable_fold cable_fold;
  * ...] (the problem's k free parameters with the new one q second).  start:
  * an LP of the problem's branch (its stored direction is the null vector),
  * or a point of a fold curve of the same problem (NDIM = 2 NDIM).  NULL
- * with *status and msg on error. */
+ * with *status and msg on error (CABLE_ERR_NULL for a NULL problem or
+ * constants; status and msg may be NULL: not wanted). */
 CABLE_API cable_fold *cable_fold_alloc(const cable_problem *pb, const cable_constants *c, const cable_solution *start,
                                        int *status, char *msg, size_t len);
 CABLE_API void cable_fold_free(cable_fold *f);   /* NULL is a no-op */
@@ -61,8 +62,9 @@ CABLE_API void cable_fold_free(cable_fold *f);   /* NULL is a no-op */
 /* The start's mesh density resampled to ntst intervals (as a restart keeps
  * it, cont_mesh.c) into mesh[0..ntst]: the fold run's mesh, so that the
  * fold curve starts on the discrete problem the LP was located on. */
-CABLE_API void cable_fold_mesh(const cable_fold *f, int ntst, double *mesh);
+CABLE_API void cable_fold_mesh(const cable_fold *f, int ntst, double *mesh);   /* NULL f or mesh: nothing */
 
+/* NULL for a NULL handle. */
 CABLE_API const cable_problem *cable_fold_problem(const cable_fold *f);
 CABLE_API const cable_constants *cable_fold_constants(const cable_fold *f);
 

@@ -106,7 +106,13 @@ typedef struct cable_run_args {
 
 /* One continuation run; *out: the new branch (also when it ended abnormally,
  * MX).  0 or a negative cable_status with err (CABLE_ERR_INTERRUPTED when
- * the interrupt callback stopped it: no file is written then). */
+ * the interrupt callback stopped it: no file is written then).
+ * The session functions check their arguments first (doc/api.md,
+ * Contracts): a NULL session, arguments or output give CABLE_ERR_NULL; in a
+ * (and in save's and transform's lists) a negative count gives
+ * CABLE_ERR_SIZE, a count with a NULL array or a NULL entry CABLE_ERR_NULL, a
+ * sol_index outside sol_branch CABLE_ERR_RANGE, and a solution together with
+ * a result CABLE_ERR_INPUT; *out is NULL then. */
 CABLE_API int cable_session_run(cable_session *s, const cable_run_args *a, cable_branch **out, cable_error *err);
 /* AUTO's load: the start a run with the same arguments would use, as a
  * one-solution branch, and the runner state of that run.  A name without IRS
@@ -139,7 +145,8 @@ CABLE_API int cable_session_transform_files(cable_session *s, const char *name, 
 CABLE_API int cable_session_constants(const cable_session *s, const cable_constants **c, const cable_names **names,
                                       const char **e, cable_error *err);
 /* The path of TYPE.NAME ("c", "s", "b", "d") or of a plain file (type NULL)
- * in the session's directory. */
+ * in the session's directory ("" for a NULL session or name; nothing for a
+ * NULL buf or len 0). */
 CABLE_API void cable_session_path(const cable_session *s, const char *type, const char *name, char *buf, size_t len);
 
 CABLE_API void cable_branch_incref(cable_branch *b);
@@ -148,7 +155,8 @@ CABLE_API void cable_branch_list_free(cable_branch **list, int n);
 
 /* What a branch holds: its number, its points (the b-file rows, with the
  * engine's notes), its labelled solutions and the constants, names and
- * problem they were computed with.  Pointers stay valid while b lives. */
+ * problem they were computed with.  Pointers stay valid while b lives.  A
+ * NULL branch gives 0 and NULL; incref and decref of NULL do nothing. */
 CABLE_API int cable_branch_number(const cable_branch *b);
 CABLE_API int cable_branch_npoints(const cable_branch *b);
 CABLE_API const cable_point *cable_branch_point(const cable_branch *b, int i);

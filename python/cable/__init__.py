@@ -9,6 +9,8 @@ Scripts (`cable replay X.auto`, `python3 -m cable X.auto`) get these commands
 preloaded, as AUTO's `auto X.auto` does (cable.script).  doc/scripts.md lists
 the commands and where they differ from AUTO's.
 """
+import threading
+
 from ._cable import CableError
 from .commands import Runner, constant_text
 from .constants import Constants
@@ -17,14 +19,18 @@ from . import scenes
 from .script import run_script
 
 _runner = None
+_runner_lock = threading.Lock()
 
 
 def runner():
-    """The module's own runner (AUTO's interactive one), made on first use."""
+    """The module's own runner (AUTO's interactive one), made on first use
+    (once, also when threads ask at the same time: they share it, and its
+    commands run one after the other)."""
     global _runner
-    if _runner is None:
-        _runner = Runner()
-    return _runner
+    with _runner_lock:
+        if _runner is None:
+            _runner = Runner()
+        return _runner
 
 
 def _delegate(name):

@@ -1,0 +1,19 @@
+/* The consistency of a cable_constants struct filled by hand (the API
+ * contract, doc/api.md): every count within its array, every parameter index
+ * within the parameter slots, every string terminated.  The constants parser
+ * never produces anything else; a program that fills the struct itself may. */
+#ifndef CABLE_CONSTANTS_CHECK_H
+#define CABLE_CONSTANTS_CHECK_H
+
+#include "cable/cable_constants.h"
+#include "cable/cable_error.h"
+
+/* 0, or CABLE_ERR_SIZE (a count beyond its array or negative, a string that
+ * fills its array without a terminating NUL) or CABLE_ERR_RANGE (a parameter
+ * index outside 0..npar-1, NPAR outside 0..CABLE_NAMES_MAX, NTHREADS outside
+ * 0..CABLE_THREADS_MAX, an unknown LINSOLVER) with err naming the field.
+ * npar: the parameter slots of the run (the larger of NPAR and the problem's;
+ * at most CABLE_NAMES_MAX is used). */
+int cable_constants_consistent(const cable_constants *c, int npar, cable_error *err);
+
+#endif
