@@ -61,7 +61,8 @@ def test_par_on_a_restart_gives_a_solution_in_row_1(knot):
     independently: row 1 is labelled (NPR=1), and a restart from that label
     evaluates the residual of the stored data (the d-file note of an
     uncorrected restart).  Before, row 1 was the old Delta's solution with the
-    new Delta written next to it: residual 1.6e-2 (measured)."""
+    new Delta written next to it: max |F| = 1.35 in that check (measured on
+    the code before the fix)."""
     rn, flat = knot
     r = rn.run(flat('BP1'), ISW=1, NMX=2, NPR=1, PAR={'Delta': 0.0052}, sv='moved')
     first = r()[0]
@@ -120,3 +121,24 @@ def test_non_utf8_names_are_refused(work):
         rn.run(e='bratu', c='latin')
     msg = str(e.value)
     assert 'c.latin' in msg and 'parnames' in msg and 'UTF-8' in msg
+
+
+def test_fatal_user_routine_fails_the_run(work):
+    """A FUNC returning -3 (fatal, doc/plugins.md) in an AUTO equation file:
+    the branch ends, its points are saved, and `cable run` exits non-zero
+    (before: exit status 0)."""
+    import subprocess
+    from conftest import BUILD
+    copy_in(work, 'tests/data/autoeq/bratu_c/bratu.c', 'tests/data/autoeq/bratu_c/c.bratu')
+    with open('bratu.c') as f:
+        src = f.read()
+    anchor = '  f[1] = -par[0] * exp(u[0]);\n'
+    assert src.count(anchor) == 1
+    with open('bratu.c', 'w') as f:
+        f.write(src.replace(anchor, anchor + '  if (par[0] > 1.0) return -3;\n'))
+    p = subprocess.run([os.path.join(BUILD, 'cable'), 'run', 'e=bratu', 'c=bratu', 'sv=x'], capture_output=True,
+                       text=True, timeout=600)
+    assert p.returncode != 0, p.stdout + p.stderr
+    assert 'status -3' in p.stderr and 'saved to b./s./d.x' in p.stderr, p.stderr
+    lams = [float(line.split()[4]) for line in open('b.x') if line.split()[0] != '0']
+    assert len(lams) > 3 and max(lams) <= 1.0
