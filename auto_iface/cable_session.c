@@ -713,7 +713,8 @@ static int engine_run(cable_session *r, rp_setup *s, rp_branch **out, cable_erro
   }
   if (st == 0) st = cable_cont_set_start(cc, start);
   if (st) {
-    cable_error_set(err, st, NULL, 0, NULL, "%s", cable_cont_error(cc)[0] ? cable_cont_error(cc) : cable_status_message(st));
+    const char *why = cable_cont_error(cc)[0] ? cable_cont_error(cc) : cable_status_message(st);
+    cable_error_set(err, st, NULL, 0, strncmp(why, "PAR sets", 8) == 0 ? "PAR" : NULL, "%s", why);
     cable_cont_free(cc);
     cable_fold_free(fold);
     problem_release(r, &prob);

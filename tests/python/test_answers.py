@@ -51,7 +51,7 @@ def test_par_on_a_switch_is_refused(knot):
     rn, flat = knot
     with pytest.raises(cable.CableError) as e:
         rn.run(flat('BP1'), e='braid_knot_sym', c='knot72sym', NMX=3, PAR={'T': 5.0}, sv='sw5')
-    assert 'PAR(1) = 5' in str(e.value) and 'branch point' in str(e.value)
+    assert str(e.value).startswith('PAR: PAR sets PAR(1) = 5') and 'branch point' in str(e.value)
     assert not os.path.exists('b.sw5')
 
 
