@@ -9,7 +9,7 @@ void cable_constants_init(cable_constants *c)
 {
   if (!c) return;
   memset(c, 0, sizeof *c);
-  /* AUTO-07p's defaults (its INIT; tests/test_auto07p_defaults.c compares
+  /* AUTO-07p's defaults (its INIT; tests/python/test_auto07p_defaults.py compares
      them with the b-file header auto-07p writes for an empty constants
      file), except NDIM = 0 ("take it from the problem") and ICP (none: a run
      must name its parameters), doc/constants.md.  IPS = 1 is AUTO's default
