@@ -142,3 +142,14 @@ def test_fatal_user_routine_fails_the_run(work):
     assert 'status -3' in p.stderr and 'saved to b./s./d.x' in p.stderr, p.stderr
     lams = [float(line.split()[4]) for line in open('b.x') if line.split()[0] != '0']
     assert len(lams) > 3 and max(lams) <= 1.0
+
+
+def test_negative_measure_is_inside_the_default_bounds(work):
+    """A0's default is unbounded below, as AUTO's: with IPLT=-2 (MIN U(2), u'
+    of Bratu's problem, negative) the run goes on to NMX (before, A0 = 0
+    ended it after the first step with 'RL0, RL1, A0, A1 reached')."""
+    copy_in(work, 'runs/bratu/c.bratu')
+    rn = cable.Runner()
+    r = rn.run(e='bratu', c='bratu', IPLT=-2, NMX=10, NPR=0)
+    sols = r()
+    assert sols[-1]['PT'] == 10 and sols[-1]['TY'] == 'EP'
