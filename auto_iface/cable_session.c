@@ -200,6 +200,8 @@ typedef struct rp_setup {
   cable_sfile *sf;               /* s.NAME of a string start or s= (owned), or the runner's */
   int sf_borrowed;               /* sf is the runner's (cable_session.cur_sf): not freed here */
   int forget_sf;                 /* run('NAME') without s.NAME: the runner's solutions are dropped */
+  int fatal;                     /* the branch ended with a user routine's fatal (negative) status */
+  char fatal_msg[640];
   char sfpath[1024];             /* its path */
   char sv[CABLE_NAME_MAX], ap[CABLE_NAME_MAX];
   int mbr, mlab;                 /* AUTO's MBR, MLAB: the restart data's largest branch number and label */
@@ -429,9 +431,12 @@ static int build_setup(cable_session *r, const cable_run_args *a, rp_setup *s, c
     s->c = b->has_c_user ? b->c_user : b->c;
     s->names = b->names;
     snprintf(s->e, sizeof s->e, "%s", b->e);
-    /* a stored solution's IRS is history: AUTO resets it */
+    /* a stored solution's IRS is history: AUTO resets it; so are PAR and U
+       (AUTO's bifDiag.nonekeys): the PAR={'T': 0.0} of the run that computed
+       the solution would otherwise move a restart from it */
     s->c.irs = 0;
     s->c.irs_name[0] = '\0';
+    s->c.npar_override = 0;
   } else {
     s->c = r->cur;
     s->names = r->cur_names;
@@ -462,8 +467,9 @@ static int build_setup(cable_session *r, const cable_run_args *a, rp_setup *s, c
         cable_error_clear(err);
       }
     }
-    if (!rc) rc = read_constants_file(r, name, s, 0, err);
-    if (!rc) snprintf(cfile_sv, sizeof cfile_sv, "%s", s->c.sv);
+    /* c= names the run's constants: c.NAME is then neither read nor checked */
+    if (!rc && !a->c) rc = read_constants_file(r, name, s, 0, err);
+    if (!rc && !a->c) snprintf(cfile_sv, sizeof cfile_sv, "%s", s->c.sv);
     char spath[1024];
     rp_path(r, "s", name, spath, sizeof spath);
     if (!rc && file_exists(spath)) {
@@ -659,6 +665,16 @@ static void log_branch(const cable_session *r, const rp_branch *b, int status, c
 static int engine_run(cable_session *r, rp_setup *s, rp_branch **out, cable_error *err)
 {
   *out = NULL;
+  if (s->c.ips != 4) {
+    /* a constants file without IPS means AUTO's IPS=1 (algebraic
+       equilibria), never silently another problem type; a value other than
+       4 was refused at its line when read */
+    const cable_key_origin *o = &s->c.origin_ips;
+    return cable_error_set(err, CABLE_ERR_UNSUPPORTED, o->file[0] ? o->file : "<no constants file>", o->line, "IPS",
+                           "IPS=%d%s is a problem type cable does not solve: cable solves boundary-value problems "
+                           "(IPS=4); write IPS = 4 in the constants file (or give IPS=4)",
+                           s->c.ips, o->line ? "" : " (not set: AUTO's default)");
+  }
   rp_problem prob;
   int rc = find_problem(r, s->e, &s->c, s->start == NULL, &prob, err);
   if (rc) return rc;
@@ -734,7 +750,8 @@ static int engine_run(cable_session *r, rp_setup *s, rp_branch **out, cable_erro
   }
   if (st == 0) st = cable_cont_set_start(cc, start);
   if (st) {
-    cable_error_set(err, st, NULL, 0, NULL, "%s", cable_cont_error(cc)[0] ? cable_cont_error(cc) : cable_status_message(st));
+    const char *why = cable_cont_error(cc)[0] ? cable_cont_error(cc) : cable_status_message(st);
+    cable_error_set(err, st, NULL, 0, strncmp(why, "PAR sets", 8) == 0 ? "PAR" : NULL, "%s", why);
     cable_cont_free(cc);
     cable_fold_free(fold);
     problem_release(r, &prob);
@@ -783,7 +800,13 @@ static int engine_run(cable_session *r, rp_setup *s, rp_branch **out, cable_erro
     rp_branch_decref(col.b);
     return cable_error_set(err, st, NULL, 0, NULL, "no point converged: %s", why[0] ? why : cable_status_message(st));
   }
-  /* like AUTO, a branch that ends abnormally (MX) is still a result */
+  /* like AUTO, a branch that ends abnormally (MX) is still a result; a
+     user routine's fatal return (doc/plugins.md) also fails the run once its
+     points are saved (cable_session_run) */
+  if (st == CABLE_ERR_CALLBACK) {
+    s->fatal = st;
+    snprintf(s->fatal_msg, sizeof s->fatal_msg, "branch %d ended after %d points: %s", col.b->ibr, col.b->npt, why);
+  }
   log_branch(r, col.b, st, why, now_seconds() - t_start);
   *out = col.b;
   return 0;
@@ -855,6 +878,9 @@ int cable_session_run(cable_session *r, const cable_run_args *a, cable_branch **
   if (!rc && (s.sv[0] || s.ap[0]))
     fprintf(rp_log(r), "  %s b.%s, s.%s, d.%s\n", s.sv[0] ? "saved to" : "appended to", s.sv[0] ? s.sv : s.ap,
             s.sv[0] ? s.sv : s.ap, s.sv[0] ? s.sv : s.ap);
+  if (!rc && s.fatal)
+    rc = cable_error_set(err, s.fatal, NULL, 0, NULL, "%s%s%s", s.fatal_msg,
+                         s.sv[0] || s.ap[0] ? "; its points are saved to b./s./d." : "", s.sv[0] ? s.sv : s.ap);
   setup_free(&s);
   if (rc) rp_branch_decref(b);
   else *out = b;
@@ -872,6 +898,10 @@ int cable_session_save(cable_session *r, cable_branch *const *branches, int n, i
   char nm[CABLE_NAME_MAX];
   rc = name_arg("save", name, nm, sizeof nm, err);
   if (rc) return rc;
+  /* a negative count wrote three empty files and returned 0 */
+  if (n < 0 || (n > 0 && !branches))
+    return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, "n", "%s", n < 0 ? "the number of branches must not be negative"
+                                                                           : "n branches but no array of them");
   if (sol_index >= 0) {
     /* one solution: a one-point result */
     const rp_branch *src = n > 0 ? branches[0] : NULL;

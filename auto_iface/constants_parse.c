@@ -809,6 +809,34 @@ static int apply_thu(pctx *x, const key_desc *d, const stmt *s)
   return 0;
 }
 
+/* 1 when t is well-formed UTF-8 (no overlong forms, surrogates or code
+ * points beyond U+10FFFF): names and file names go into b-file headers,
+ * which AUTO's parser reads as UTF-8 text. */
+static int utf8_valid(const char *t)
+{
+  const unsigned char *p = (const unsigned char *)t;
+  while (*p) {
+    unsigned c = *p;
+    int n = c < 0x80 ? 0 : (c & 0xE0) == 0xC0 ? 1 : (c & 0xF0) == 0xE0 ? 2 : (c & 0xF8) == 0xF0 ? 3 : -1;
+    if (n < 0 || c == 0xC0 || c == 0xC1 || c > 0xF4) return 0;
+    unsigned cp = n == 0 ? c : c & (0x3Fu >> n);
+    for (int k = 1; k <= n; k++) {
+      if ((p[k] & 0xC0) != 0x80) return 0;
+      cp = (cp << 6) | (p[k] & 0x3Fu);
+    }
+    if ((n == 2 && cp < 0x800) || (n == 3 && (cp < 0x10000 || cp > 0x10FFFF)) || (cp >= 0xD800 && cp <= 0xDFFF))
+      return 0;
+    p += n + 1;
+  }
+  return 1;
+}
+
+static int check_utf8(pctx *x, const cv *v, const char *key)
+{
+  if (utf8_valid(v->text)) return 0;
+  return perr(x, CABLE_ERR_INPUT, v->line, key, "the string contains bytes that are not UTF-8 text");
+}
+
 static int apply_names(pctx *x, const key_desc *d, const stmt *s)
 {
   (void)d;
@@ -828,6 +856,9 @@ static int apply_names(pctx *x, const key_desc *d, const stmt *s)
       return perr(x, CABLE_ERR_INPUT, key->line, s->key, "index %ld out of range 1..%d", key->i, CABLE_NAMES_MAX);
     if (val->kind != CV_STR || !val->text[0])
       return perr(x, CABLE_ERR_INPUT, val->line, s->key, "names must be non-empty strings");
+    if (!utf8_valid(val->text))
+      return perr(x, CABLE_ERR_INPUT, val->line, s->key, "the name for index %ld contains bytes that are not UTF-8 text",
+                  key->i);
     if (strlen(val->text) >= CABLE_NAME_LEN)
       return perr(x, CABLE_ERR_INPUT, val->line, s->key, "name '%s' longer than %d characters", val->text,
                   CABLE_NAME_LEN - 1);
@@ -852,6 +883,8 @@ static int apply_string(pctx *x, const key_desc *d, const stmt *s)
   const cv *v = s->value;
   if (v->kind != CV_STR)
     return perr(x, CABLE_ERR_INPUT, s->line, s->key, "must be a string, got %s", describe(v, b, sizeof b));
+  int st = check_utf8(x, v, s->key);
+  if (st) return st;
   if (strlen(v->text) >= CABLE_NAME_MAX)
     return perr(x, CABLE_ERR_INPUT, s->line, s->key, "longer than %d characters", CABLE_NAME_MAX - 1);
   if (strpbrk(v->text, "/ \t") && strcmp(s->key, "e") == 0)
@@ -1154,7 +1187,8 @@ static int apply_statements(pctx *x)
       if (d->slot != KI_NONE) x->line_of[d->slot] = x->st[i].line;
       cable_key_origin *o = strcmp(d->key, "NDIM") == 0 ? &x->c.origin_ndim
                             : strcmp(d->key, "NBC") == 0 ? &x->c.origin_nbc
-                            : strcmp(d->key, "NINT") == 0 ? &x->c.origin_nint : NULL;
+                            : strcmp(d->key, "NINT") == 0 ? &x->c.origin_nint
+                            : strcmp(d->key, "IPS") == 0 ? &x->c.origin_ips : NULL;
       if (o) {
         snprintf(o->file, sizeof o->file, "%s", x->origin ? x->origin : x->file);
         o->line = x->origin ? 0 : x->st[i].line;
@@ -1268,6 +1302,8 @@ static int parse_string(const char *name, const char *text, const cable_problem 
   cable_constants_init(&x->c);
   cable_names_init(&x->names);
   int st = run(x, parnames, npar, pb);
+  if (st == 0 && !x->c.origin_ips.file[0])   /* no IPS: AUTO's 1; the run names this file */
+    snprintf(x->c.origin_ips.file, sizeof x->c.origin_ips.file, "%s", x->file);
   if (st == 0) {
     memcpy(c, &x->c, sizeof *c);   /* padding included: callers may memcmp */
     if (names) *names = x->names;

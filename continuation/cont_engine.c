@@ -314,6 +314,34 @@ static int first_point(cable_cont *cc)
     }
     snprintf(cc->note, sizeof cc->note, "start: Newton converged in %d iterations, max |F| = %.3e",
              cc->newton_iters, colloc_newton_residual(cc->nw));
+  } else if (cc->restart_moved) {
+    /* PAR changed parameters of the stored solution (cont_run.c): Newton in
+       the plane through it normal to its stored direction (a zero step of
+       the arclength equation, which stays regular at a fold), or at fixed
+       principal parameter when it has none */
+    int dir = 0;
+    for (int i = 0; i < cc->n; i++) dir |= cc->xdot[i] != 0.0;
+    if (dir) {
+      cont_normalize(cc, cc->xdot);
+      rc = cont_correct_from(cc, cc->x, cc->xdot, 0.0, cc->x);
+    } else {
+      s->closing = COLLOC_CLOSE_FIXPAR;
+      s->fixpar = 0;
+      s->fixval = principal(cc, cc->x);
+      rc = colloc_newton_solve(cc->nw, cc->x);
+      cc->newton_iters = colloc_newton_iterations(cc->nw);
+      cc->rejected[0] = '\0';
+      if (rc == CABLE_SUCCESS) rc = check_nodes(cc, cc->x);
+    }
+    if (rc != CABLE_SUCCESS) {
+      cont_set_error(cc, "the restart with the parameters PAR changed did not converge (%s; %s)",
+                     cable_status_message(rc), cc->rejected[0] ? cc->rejected : colloc_newton_message(cc->nw));
+      cc->ended = 1;
+      return cc->end_status = rc == CABLE_ERR_CALLBACK ? rc : CABLE_ERR_NEWTON;
+    }
+    snprintf(cc->note, sizeof cc->note,
+             "restart: PAR changed the stored solution's parameters; Newton converged in %d iterations, max |F| = %.3e",
+             cc->newton_iters, colloc_newton_residual(cc->nw));
   } else if (!cc->switch_pending) {
     /* a restart is taken as stored (AUTO): its residual shows whether it
        still solves the problem with this run's parameters */
@@ -381,7 +409,11 @@ static int first_point(cable_cont *cc)
      is not labelled (auto-07p, demo lin: run 2 from BP1 has no EP at PT 1) */
   cc->itp = !cc->restart ? CABLE_TY_EP : CABLE_TY_NONE;
   cc->switch_pending = 0;
-  cont_store_solution(cc, cc->itp, 0);
+  if ((rc = cont_store_solution(cc, cc->itp, 0)) != CABLE_SUCCESS) {
+    cc->npt = 0;   /* nothing to store as MX */
+    cc->ended = 1;
+    return cc->end_status = rc;
+  }
   return CABLE_SUCCESS;
 }
 
@@ -547,7 +579,10 @@ int cable_cont_step(cable_cont *cc)
       cc->itp_q = CABLE_TY_NONE;
     }
     accept_trial(cc);
-    cont_store_solution(cc, cc->itp, 0);
+    if ((rc = cont_store_solution(cc, cc->itp, 0)) != CABLE_SUCCESS) {
+      cc->ended = 1;
+      return cc->end_status = rc;
+    }
     check_limits(cc);
     return CABLE_SUCCESS;
   }
@@ -623,7 +658,10 @@ int cable_cont_step(cable_cont *cc)
   /* output first: the stored solution is the converged one on its own mesh;
      the new mesh's interpolant is only the next corrector's start (AUTO
      writes its point before ADAPT too) */
-  cont_store_solution(cc, cc->itp, 0);
+  if ((rc = cont_store_solution(cc, cc->itp, 0)) != CABLE_SUCCESS) {
+    cc->ended = 1;
+    return cc->end_status = rc;
+  }
   check_limits(cc);
   if (!cc->ended && cc->c.iad > 0 && !cc->queued && ++cc->nstep_adapt >= cc->c.iad) {
     cc->nstep_adapt = 0;

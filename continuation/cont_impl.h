@@ -55,6 +55,10 @@ struct cable_cont {
   int started;                  /* the start has been processed */
   int restart;                  /* start came from a stored solution */
   int switch_pending;           /* ISW = -1 from a BP: first step along the kernel */
+  int pvls_fatal;               /* a negative PVLS status seen at a trial point (0: none) */
+  int store_failed;             /* PVLS failed while storing a point: its solution is half
+                                   written, so no MX point repeats it */
+  int restart_moved;            /* PAR changed a stored solution's parameters: correct it first */
   int npt;                      /* points accepted on this branch */
   int nstep_adapt;              /* steps since the last mesh adaptation */
   int newton_iters;             /* iterations of the last corrector */
@@ -167,7 +171,10 @@ void cont_counts_report(const cable_cont *cc);
 int cont_adapt_mesh(cable_cont *cc);
 double cont_error_estimate(const cable_cont *cc, const double *x);
 int cont_load_solution(cable_cont *cc, const cable_solution *s);
-void cont_store_solution(cable_cont *cc, int itp, int lab);
+/* CABLE_SUCCESS, or CABLE_ERR_CALLBACK when PVLS returned a negative
+ * (fatal) status, here or at a trial point since the last call (the message
+ * is set; the point is not stored). */
+int cont_store_solution(cable_cont *cc, int itp, int lab);
 
 /* cont_switch.c: the direction of the bifurcating branch at a BP start */
 int cont_switch_direction(cable_cont *cc);

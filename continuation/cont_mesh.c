@@ -207,8 +207,13 @@ int cont_load_solution(cable_cont *cc, const cable_solution *src)
   return CABLE_SUCCESS;
 }
 
-void cont_store_solution(cable_cont *cc, int itp, int lab)
+int cont_store_solution(cable_cont *cc, int itp, int lab)
 {
+  if (cc->pvls_fatal) {
+    cont_set_error(cc, "PVLS returned %d (fatal) at a trial point near point %d", cc->pvls_fatal, cc->npt);
+    cc->store_failed = 1;
+    return CABLE_ERR_CALLBACK;
+  }
   colloc_system *s = cc->sys;
   cable_solution *sol = cc->sol;
   int nd = s->ndim, npts = s->ntst * s->ncol + 1;
@@ -237,7 +242,14 @@ void cont_store_solution(cable_cont *cc, int itp, int lab)
   sol->pvls_ds = cc->ds_used;
   sol->pvls_fld = cc->tf.lp;
   sol->pvls_bif = cont_bp_value(cc, &cc->tf);
-  if (cc->pb->pvls) cc->pb->pvls(sol, sol->par, cc->pb->params);
+  /* a negative PVLS status is fatal (doc/plugins.md); > 0 at a converged
+     point has no step to reject and is not an error */
+  int pv = cc->pb->pvls ? cc->pb->pvls(sol, sol->par, cc->pb->params) : 0;
+  if (pv < 0) {
+    cont_set_error(cc, "PVLS returned %d (fatal) at point %d", pv, cc->npt);
+    cc->store_failed = 1;
+    return CABLE_ERR_CALLBACK;
+  }
   /* L2-NORM: sqrt of the integral of |u|^2 (unweighted); MAX U(i): AUTO's
      MXUPSP, the largest value (signed, not the modulus) of u_i over the
      NTST*NCOL+1 stored points */
@@ -273,4 +285,5 @@ void cont_store_solution(cable_cont *cc, int itp, int lab)
   pt->det_sign = cc->tf.det_sign;
   pt->sv1 = cc->tf.sv1;
   pt->sv2 = cc->tf.sv2;
+  return CABLE_SUCCESS;
 }

@@ -65,7 +65,28 @@ int cable_cont_set_start(cable_cont *cc, const cable_solution *start)
       cc->switch_pending = 1;
     }
   }
-  for (int k = 0; k < cc->c.npar_override; k++) s->par[cc->c.par_override[k].index] = cc->c.par_override[k].value;
+  /* PAR={...} (AUTO's PARVALS) applies after STPNT or the stored solution.
+     A stored solution whose parameters it changes no longer solves the
+     problem: the first point is then corrected by Newton (first_point), so
+     that the branch's first row holds the point the engine continues from.
+     A branch switch (ISW=-1) happens at the stored branch point itself,
+     which a changed parameter would move: refused. */
+  cc->restart_moved = 0;
+  for (int k = 0; k < cc->c.npar_override; k++) {
+    int i = cc->c.par_override[k].index;
+    double v = cc->c.par_override[k].value;
+    if (start && s->par[i] != v) {
+      if (cc->switch_pending) {
+        cont_set_error(cc, "PAR sets PAR(%d) = %.10g, but the branch point (label %d) has PAR(%d) = %.10g: a switch "
+                       "(ISW=-1) starts at the stored branch point; leave PAR(%d) out of PAR",
+                       i + 1, v, start->lab, i + 1, s->par[i], i + 1);
+        cc->switch_pending = 0;
+        return CABLE_ERR_INPUT;
+      }
+      cc->restart_moved = 1;
+    }
+    s->par[i] = v;
+  }
   double *p = cc->x + (cc->n - cc->nfpr);
   for (int q = 0; q < cc->nfpr; q++) p[q] = s->par[s->icp[q]];
   for (int i = 0; i < cc->n; i++)
@@ -183,7 +204,7 @@ int cable_cont_run(cable_cont *cc, const cable_sink *sink, int ibr, int first_la
       cc->end_status = CABLE_END_STOP;
     }
   }
-  if (rc < 0 && rc != CABLE_ERR_INTERRUPTED && cc->npt > 0) {
+  if (rc < 0 && rc != CABLE_ERR_INTERRUPTED && cc->npt > 0 && !cc->store_failed) {
     /* the branch ends abnormally: the last good point is stored as MX */
     cc->pt.itp = CABLE_TY_MX;
     (void)emit(cc, sink, ibr, &lab);

@@ -56,7 +56,7 @@ static int pvls_at(cable_cont *cc, const double *x)
   cable_solution *sol = cc->pvsol;
   const colloc_system *s = cc->sys;
   int npts = s->ntst * s->ncol + 1;
-  if (sol->ntst != s->ntst) return -1; /* the mesh size is fixed for a run */
+  if (sol->ntst != s->ntst) return 1; /* the mesh size is fixed for a run: not usable, not PVLS's failure */
   colloc_system_times(s, sol->t);
   memcpy(sol->u, x, (size_t)npts * (size_t)cc->ndim * sizeof *sol->u);
   memcpy(sol->par, s->par, (size_t)cc->npar * sizeof *sol->par);
@@ -74,7 +74,9 @@ static int pvls_at(cable_cont *cc, const double *x)
 void cont_tests_fill(cable_cont *cc, const double *x, const double *xdot, cont_tests *tf)
 {
   tf->lp = xdot[cc->n - cc->nfpr];
-  int pv = cc->pvsol && cc->c.nuzr > 0 && pvls_at(cc, x) == 0;
+  int pvst = cc->pvsol && cc->c.nuzr > 0 ? pvls_at(cc, x) : 1;
+  int pv = pvst == 0;
+  if (pvst < 0 && !cc->pvls_fatal) cc->pvls_fatal = pvst;   /* fatal: reported when the point is stored */
   for (int k = 0; k < cc->c.nuzr; k++) {
     int j = cc->c.uzr[k].par;
     double v = param_value(cc, x, j);

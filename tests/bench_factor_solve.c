@@ -27,7 +27,7 @@ int main(void)
   cable_blas_single_thread();
   int ntst = 150;
   cable_constants c;
-  cable_constants_init(&c);
+  cable_constants_init(&c); c.ips = 4;   /* a boundary-value problem (AUTO's default IPS is 1) */
   c.ntst = ntst; c.ncol = 4; c.jac = 1;
   int icp[4] = {BP_T, BP_L, BP_L2, BP_EPS21}, st;
   colloc_system *s = colloc_system_alloc(&pb, &c, ntst, 4, icp, 4, &st);

@@ -35,7 +35,7 @@ typedef struct {
 
 static void constants(cable_constants *c, int ntst, cable_linsolver ls)
 {
-  cable_constants_init(c);
+  cable_constants_init(c); c->ips = 4;   /* a boundary-value problem (AUTO's default IPS is 1) */
   c->ntst = ntst; c->ncol = 4; c->jac = 1; c->iad = 0; c->linsolver = ls;
   c->icp[0] = BP_T; c->icp[1] = BP_L; c->icp[2] = BP_L2; c->icp[3] = BP_EPS21; c->nicp = 4;
   c->ds = 1.0; c->dsmin = 1e-6; c->dsmax = 1.0; c->iads = 0; c->nmx = STEPS + 1;

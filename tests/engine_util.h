@@ -29,7 +29,7 @@ typedef struct {
  * analytic Jacobians, no mesh adaptation. */
 static inline void engine_constants(cable_constants *c, int ntst, int ncol)
 {
-  cable_constants_init(c);
+  cable_constants_init(c); c->ips = 4;   /* a boundary-value problem (AUTO's default IPS is 1) */
   c->ntst = ntst;
   c->ncol = ncol;
   c->icp[0] = 0;

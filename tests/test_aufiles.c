@@ -474,7 +474,7 @@ static void test_with_engine(void)
 {
   const cable_problem *pb = cable_testproblem_elastica();
   static const char ctext[] =
-    "e = 'elastica', NDIM = 2, NBC = 2, NINT = 0, ICP = ['lambda']\n"
+    "e = 'elastica', NDIM = 2, IPS = 4, NBC = 2, NINT = 0, ICP = ['lambda']\n"
     "NTST = 50, NCOL = 5, JAC = 1, IAD = 0\n"
     "DS = 0.5, DSMIN = 1e-6, DSMAX = 4.0, NMX = 200, RL1 = 100\n"
     "ISP = 2, ILP = 0, EPSS = 1e-10\n";
@@ -712,16 +712,16 @@ static void layout_of_engine_run(const char *name, const cable_problem *pb, cons
 static void test_layout_engine_problems(void)
 {
   layout_of_engine_run("bratu", cable_testproblem_bratu(),
-                       "ICP = ['lambda'], NTST = 20, NCOL = 4, JAC = 1, IAD = 3\n"
+                       "IPS = 4, ICP = ['lambda'], NTST = 20, NCOL = 4, JAC = 1, IAD = 3\n"
                        "DS = 0.1, DSMIN = 1e-6, DSMAX = 0.5, NMX = 40, RL1 = 10, ILP = 1, NPR = 10\n");
   layout_of_engine_run("elastica", cable_testproblem_elastica(),
-                       "ICP = ['lambda'], NTST = 30, NCOL = 5, JAC = 1, IAD = 0, ISP = 2, ILP = 0, EPSS = 1e-10\n"
+                       "IPS = 4, ICP = ['lambda'], NTST = 30, NCOL = 5, JAC = 1, IAD = 0, ISP = 2, ILP = 0, EPSS = 1e-10\n"
                        "DS = 0.5, DSMIN = 1e-6, DSMAX = 4.0, NMX = 60, RL1 = 50\n");
   layout_of_engine_run("layer", cable_testproblem_layer(),
-                       "ICP = ['p', 'eps'], NTST = 12, NCOL = 3, IAD = 1, JAC = 1, IIS = 2\n"
+                       "IPS = 4, ICP = ['p', 'eps'], NTST = 12, NCOL = 3, IAD = 1, JAC = 1, IIS = 2\n"
                        "DS = 0.05, DSMIN = 1e-4, DSMAX = 0.05, NMX = 10, IADS = 0, NPR = 3\n");
   layout_of_engine_run("stiff", cable_testproblem_stiff(),
-                       "ICP = ['k'], NTST = 50, NCOL = 7, JAC = 1, IIS = 0, EPSS = 1e-10\n"
+                       "IPS = 4, ICP = ['k'], NTST = 50, NCOL = 7, JAC = 1, IIS = 0, EPSS = 1e-10\n"
                        "DS = 1.0, DSMIN = 1e-4, DSMAX = 2.0, NMX = 40, UZSTOP = {'k': 60}, UZR = {'k': 50}\n");
 }
 
@@ -735,6 +735,7 @@ int main(void)
   static const char *const unames[3] = {"x", "y", NULL};
   cable_constants c;
   cable_constants_init(&c);
+  c.ips = 4;
   c.ndim = 3;
   c.ntst = 5;
   c.ncol = 4;
@@ -939,7 +940,7 @@ int main(void)
   long blen;
   char *btext = slurp(OUTDIR "/b.syn", &blen);
   test_true("b.syn header: first line '0 RL0 RL1 A0 A1' as Fortran's ES12.4 writes 1e300 (no E)",
-            btext && strncmp(btext, "   0  -1.0000+300  1.0000+300  0.0000E+00  1.0000+300\n", 54) == 0);
+            btext && strncmp(btext, "   0  -1.0000+300  1.0000+300 -1.0000+300  1.0000+300\n", 54) == 0);
   test_true("b.syn header: EPSL line in AUTO's A8,ES11.4 form",
             btext && strstr(btext, "   0   EPSL= 1.0000E-07  EPSU = 1.0000E-07  EPSS = 1.0000E-05\n"));
   test_true("b.syn header: NDIM line", btext && strstr(btext, "   0   NDIM=   3   IPS =   4   IRS =   0   ILP =   1\n"));

@@ -31,7 +31,7 @@ static const double LINK_DELTA = 0.016016913268;
 static cable_constants braid_constants(int ntst, double ds)
 {
   cable_constants c;
-  cable_constants_init(&c);
+  cable_constants_init(&c); c.ips = 4;   /* a boundary-value problem (AUTO's default IPS is 1) */
   /* a uniform mesh (IAD=0) is mapped onto itself by the mirror and by S0
      (s -> L - s), so the discrete solutions keep those symmetries exactly */
   c.ntst = ntst; c.ncol = 4; c.jac = 1; c.iad = 0;

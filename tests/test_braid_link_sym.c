@@ -185,7 +185,7 @@ typedef struct {
 static void polish(const cable_problem *pb, const int *icp, int nfpr, double *x, polish_result *out)
 {
   cable_constants c;
-  cable_constants_init(&c);
+  cable_constants_init(&c); c.ips = 4;   /* a boundary-value problem (AUTO's default IPS is 1) */
   c.ndim = BR_NDIM; c.nbc = pb->nbc; c.nint = 0; c.ntst = POLISH_NTST; c.ncol = POLISH_NCOL;
   c.jac = 1; c.epsl = c.epsu = polish_eps; c.itnw = 20; c.nwtn = 20;
   memset(out, 0, sizeof *out);

@@ -45,7 +45,7 @@ static cable_solution *flat_at(const char *name, int p, int hand, double delta, 
   cable_problem pb;
   if (braid_problem_instance(name, &sp, &pb) != 0) return NULL;
   cable_constants c;
-  cable_constants_init(&c);
+  cable_constants_init(&c); c.ips = 4;   /* a boundary-value problem (AUTO's default IPS is 1) */
   /* a uniform mesh (IAD=0) keeps the two mirror-image computations identical */
   c.ntst = ntst; c.ncol = 4; c.jac = 1; c.iad = 0;
   for (int k = 0; k < nicp; k++) c.icp[k] = icp[k];

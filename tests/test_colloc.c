@@ -87,7 +87,7 @@ static double jacobian_error(colloc_system *s, const double *x) { return jacobia
 static double system_error(const cable_problem *pb, int jac, int integral_rows_only)
 {
   cable_constants c;
-  cable_constants_init(&c);
+  cable_constants_init(&c); c.ips = 4;   /* a boundary-value problem (AUTO's default IPS is 1) */
   c.jac = jac;
   int icp[2] = {0, 1}, st, nfpr = pb->nbc + pb->nint - pb->ndim + 1;
   colloc_system *s = colloc_system_alloc(pb, &c, 5, 3, icp, nfpr, &st);

@@ -41,7 +41,7 @@ int main(void)
   cable_error err;
   /* a b-file from a real run: the Bratu branch */
   cable_constants c;
-  cable_constants_init(&c);
+  cable_constants_init(&c); c.ips = 4;   /* a boundary-value problem (AUTO's default IPS is 1) */
   c.ntst = 10; c.ncol = 4; c.jac = 1; c.icp[0] = 0; c.nicp = 1;
   c.ds = 0.2; c.dsmin = 1e-5; c.dsmax = 0.5; c.nmx = 20; c.npr = 5; c.ilp = 1;
   cable_constants_take_problem_dims(&c, 2, 2, 0);
@@ -89,7 +89,7 @@ int main(void)
   braid_start_params_init(&sp, BRAID_START_TORUS, 7, +1, 0.0051364907419, 1.98889, 0.0);
   cable_problem pb;
   test_int("torus start", braid_start_prepare(&sp) || braid_problem_instance("braid_knot", &sp, &pb), 0);
-  cable_constants_init(&c);
+  cable_constants_init(&c); c.ips = 4;   /* a boundary-value problem (AUTO's default IPS is 1) */
   c.ntst = 30; c.ncol = 4; c.jac = 1; c.icp[0] = BP_T; c.icp[1] = BP_L; c.icp[2] = BP_L2; c.icp[3] = BP_EPS21;
   c.nicp = 4; c.nmx = 1;
   cc = cable_cont_alloc(&pb, &c, &st);

@@ -483,7 +483,7 @@ static void test_documented_build(void)
   cable_constants c;
   cable_names names;
   int st = p ? cable_constants_parse_string("c.bratu",
-                                            "ICP = ['lambda'], NTST = 20, NCOL = 4, JAC = 1, IAD = 3\n"
+                                            "IPS = 4, ICP = ['lambda'], NTST = 20, NCOL = 4, JAC = 1, IAD = 3\n"
                                             "DS = 0.1, DSMIN = 1e-6, DSMAX = 0.5, NMX = 60, RL1 = 10\n"
                                             "ILP = 1, ISP = 0, EPSS = 1e-7\n",
                                             &c, &names, pb->parnames, pb->npar, &err)

@@ -235,7 +235,7 @@ static void stress_rmdir(const char *dir)
 
 static void stress_constants(const stress_case *k, cable_constants *c)
 {
-  cable_constants_init(c);
+  cable_constants_init(c); c->ips = 4;   /* a boundary-value problem (AUTO's default IPS is 1) */
   c->ntst = k->ntst; c->ncol = 4; c->jac = 1; c->iad = 0;   /* uniform mesh: clean and perturbed runs comparable */
   for (int q = 0; q < k->nicp; q++) c->icp[q] = k->icp[q];
   c->nicp = k->nicp;

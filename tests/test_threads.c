@@ -50,7 +50,7 @@ static int run_flat(int nthreads, branch *b)
   cable_problem pb;
   if (braid_problem_instance("braid_knot", &sp, &pb) != 0) return -1;
   cable_constants c;
-  cable_constants_init(&c);
+  cable_constants_init(&c); c.ips = 4;   /* a boundary-value problem (AUTO's default IPS is 1) */
   const int icp[] = {BP_T, BP_L, BP_L2, BP_EPS21, BP_F};
   for (int k = 0; k < 5; k++) c.icp[k] = icp[k];
   c.nicp = 5;
@@ -243,7 +243,7 @@ static int probe_pass(int nthreads, int concurrent, double fail_above, pass_resu
                       .ndim = 2, .nbc = 2, .nint = 0, .npar = 1, .func = probe_func, .bcnd = probe_bcnd,
                       .params = &pp, .concurrent = concurrent};
   cable_constants c;
-  cable_constants_init(&c);
+  cable_constants_init(&c); c.ips = 4;   /* a boundary-value problem (AUTO's default IPS is 1) */
   c.jac = 0;
   c.nthreads = nthreads;
   const int icp[] = {0};

@@ -101,6 +101,10 @@ typedef struct cable_constants {
   /* where NDIM, NBC and NINT were set: a built-in problem's dimensions are
      fixed, and a contradicting value is reported at its line */
   cable_key_origin origin_ndim, origin_nbc, origin_nint;
+  /* where IPS was set; when no file or override sets it (AUTO's default
+     IPS=1, which cable does not solve), the constants file read last, line 0,
+     so that the run's refusal names it */
+  cable_key_origin origin_ips;
   /* keys AUTO accepts and ignores for boundary-value problems (MXBF, ...),
      "KEY (line N)" separated by ", ", for the run's log; "" when none */
   char ignored[256];

@@ -59,9 +59,12 @@ def main(argv=None):
     except KeyboardInterrupt:
         print('\ncable atlas: interrupted; finished tasks are kept, run again to resume', file=sys.stderr)
         return 130
-    print('cable atlas: %d tasks: %d finished earlier, %d computed (%d failed); table %s/atlas.csv'
-          % (c['total'], c['skipped'], c['computed'], c['failed'], sweep.output))
-    return 1 if c['failed'] else 0
+    earlier = c.get('failed_earlier', 0)
+    print('cable atlas: %d tasks: %d finished earlier%s, %d computed (%d failed); table %s/atlas.csv'
+          % (c['total'], c['skipped'], ' (%d of them failed: --retry-failed computes them again)' % earlier
+             if earlier else '', c['computed'], c['failed'], sweep.output))
+    # non-zero while the table holds a failed task, whenever it failed
+    return 1 if c['failed'] or earlier else 0
 
 
 if __name__ == '__main__':

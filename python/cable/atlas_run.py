@@ -144,7 +144,8 @@ def _client(scheduler, workers):
 
 def run_sweep(sweep, scheduler=None, workers=None, retry_failed=False, stream=None):
     """Runs the tasks of sweep not yet finished; returns a dict with the
-    counts: total, skipped (finished before), computed, failed, and when
+    counts: total, skipped (finished before), computed, failed,
+    failed_earlier (skipped tasks whose recorded status is failed), and when
     tasks ran: cluster_start (s to start or reach the cluster), elapsed (s
     from the first submission to the last result), threads (the cluster's
     worker threads at the end)."""
@@ -153,19 +154,21 @@ def run_sweep(sweep, scheduler=None, workers=None, retry_failed=False, stream=No
     stream = stream or sys.stderr
     os.makedirs(os.path.join(sweep.output, 'tasks'), exist_ok=True)
     remove_stale_partials(sweep)
-    todo, skipped = [], 0
+    todo, skipped, failed_earlier = [], 0, 0
     known = {}   # task name -> result of the finished tasks (the table is made from these)
     for t in sweep.tasks:
         r = read_result(sweep, t)
         if r is not None and (r['status'] == 'ok' or not retry_failed):
             skipped += 1
+            failed_earlier += r['status'] != 'ok'
             known[t.name] = r
             continue
         if r is not None:
             shutil.rmtree(os.path.dirname(_result_path(sweep, t)))
         todo.append(t)
     prog = Progress(len(sweep.tasks), skipped, stream)
-    counts = {'total': len(sweep.tasks), 'skipped': skipped, 'computed': 0, 'failed': 0}
+    counts = {'total': len(sweep.tasks), 'skipped': skipped, 'computed': 0, 'failed': 0,
+              'failed_earlier': failed_earlier}
 
     def table():
         write_outputs(sweep, [(t, known[t.name]) for t in sweep.tasks if t.name in known])

@@ -95,6 +95,10 @@ def _args(data, kw):
     names = {}
     over = []
     for k, v in kw.items():
+        # a keyword is one constants key: run(**{'NMX=50, NPR': 1}) would
+        # otherwise be pasted into the override text as two statements
+        if not (isinstance(k, str) and k.isidentifier() and k.isascii()):
+            raise CableError('%r: not a constants key (a key is a name such as NMX or DS)' % (k,))
         if k in _NAME_KEYS:
             if not isinstance(v, str):
                 raise CableError('%s: must be a non-empty name, got a %s' % (k, type(v).__name__))

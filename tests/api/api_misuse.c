@@ -10,7 +10,7 @@
 #include "api_check.h"
 #include "cable/cable.h"
 
-static const char *const bratu_text = "ICP = ['lambda'], NTST = 10, NCOL = 3, DS = 0.1, NMX = 5\n";
+static const char *const bratu_text = "IPS = 4, ICP = ['lambda'], NTST = 10, NCOL = 3, DS = 0.1, NMX = 5\n";
 
 static void misuse_status_error(void)
 {

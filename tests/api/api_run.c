@@ -23,7 +23,7 @@
 #define BRATU_FOLD_TOL 1e-9
 
 static const char *const constants_text =
-  "ICP = ['lambda'], NTST = 20, NCOL = 4, JAC = 1, IAD = 3\n"
+  "IPS = 4, ICP = ['lambda'], NTST = 20, NCOL = 4, JAC = 1, IAD = 3\n"
   "DS = 0.1, DSMIN = 1e-6, DSMAX = 0.5, NMX = 60, RL1 = 10\n"
   "ILP = 1, ISP = 0, EPSS = 1e-7\n";
 

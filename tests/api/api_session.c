@@ -13,7 +13,7 @@
 #include "cable/cable.h"
 
 static const char *const constants_text =
-    "e = 'bratu'\nICP = ['lambda'], NTST = 20, NCOL = 4, DS = 0.1, DSMAX = 0.5, NMX = 40\n"
+    "e = 'bratu'\nIPS = 4, ICP = ['lambda'], NTST = 20, NCOL = 4, DS = 0.1, DSMAX = 0.5, NMX = 40\n"
     "RL0 = -0.01, RL1 = 5, UZR = {'lambda': 1.5}\n";
 
 static int write_file(const char *path, const char *text)

@@ -453,3 +453,7 @@ def test_flat_branch_without_its_files(work):
     assert 'other branch points than its result.json' in after[link.name]['error'], after[link.name]['error']
     assert not os.path.exists(os.path.join(fdir, link.flat.name, 's.flat'))
     assert not [n for n in os.listdir(fdir) if n.startswith('.')]
+    # run again: nothing to compute, but the table still holds the failed
+    # task: exit status 1 (it was 0, as if the atlas were complete)
+    rc, out, err = _finish(_start(path, workers=1))
+    assert rc == 1 and '2 finished earlier (1 of them failed' in out and '0 computed' in out, out + err

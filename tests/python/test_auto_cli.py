@@ -40,7 +40,7 @@ PR_LINES = ["e = 'bratu'",
             'UZR = {}',
             'UZSTOP = {}',
             'STOP = []',
-            'RL0 = -0.01, RL1 = 5.0, A0 = 0.0, A1 = 1e+300',
+            'RL0 = -0.01, RL1 = 5.0, A0 = -1e+300, A1 = 1e+300',
             "LINSOLVER = 'condense', NSV = 0, NTHREADS = 0, BPDIR = 0, PREDICTOR = 1"]
 
 

@@ -399,8 +399,11 @@ def test_problem_keys_and_prepare(work):
     tests/test_script.c)."""
     rn = cable.Runner()
     cases = [
-        (dict(e='braid_knot'), "PAR: a braid start needs the strand distance: PAR={'Delta': ...}"),
-        (dict(e='braid_link_sym'), "e: 'braid_link_sym' has no start from STPNT: restart from a stored "
+        (dict(e='braid_knot'), "<no constants file>: IPS: IPS=1 (not set: AUTO's default) is a problem type "
+                               "cable does not solve: cable solves boundary-value problems (IPS=4); write IPS = 4 "
+                               "in the constants file (or give IPS=4)"),
+        (dict(e='braid_knot', IPS=4), "PAR: a braid start needs the strand distance: PAR={'Delta': ...}"),
+        (dict(e='braid_link_sym', IPS=4), "e: 'braid_link_sym' has no start from STPNT: restart from a stored "
                                    "solution (run(sol) or IRS with s=)"),
         (dict(e='braid_knot', TORUS=-3), "TORUS: must be an integer in 0..1001, got -3 (the start from STPNT: "
                                          "the (p,2) torus knot (odd p) or link (even p >= 2); 0: the two rings) "

@@ -15,7 +15,7 @@ from cable import scenes
 
 from conftest import copy_in
 
-FLAT = dict(e='braid_knot', TORUS=7, HAND=1, PAR={'Delta': 0.0051364907419, 'Ltot': 1.98889, 'T': 0},
+FLAT = dict(e='braid_knot', IPS=4, TORUS=7, HAND=1, PAR={'Delta': 0.0051364907419, 'Ltot': 1.98889, 'T': 0},
             ICP=['T', 'L', 'L2', 'eps21', 'F'], NTST=40, NCOL=4, DS=1, DSMAX=1, NMX=6, NPR=2, ISP=0, ILP=0)
 
 
