@@ -35,7 +35,7 @@ static int null_arg(const char *fn, const char *what, cable_error *err)
 /* A list of n branches: n >= 0, and when n > 0 an array without NULL entries. */
 static int check_branch_list(const char *fn, cable_branch *const *list, int n, cable_error *err)
 {
-  if (n < 0) return cable_error_set(err, CABLE_ERR_SIZE, NULL, 0, NULL, "%s: %d branches (a count < 0)", fn, n);
+  if (n < 0) return cable_error_set(err, CABLE_ERR_SIZE, NULL, 0, "n", "%s: %d branches (a count < 0)", fn, n);
   if (n > 0 && !list) return cable_error_set(err, CABLE_ERR_NULL, NULL, 0, NULL, "%s: %d branches but the list is NULL", fn, n);
   for (int k = 0; k < n; k++)
     if (!list[k]) return cable_error_set(err, CABLE_ERR_NULL, NULL, 0, NULL, "%s: branch %d of %d is NULL", fn, k + 1, n);
@@ -898,10 +898,6 @@ int cable_session_save(cable_session *r, cable_branch *const *branches, int n, i
   char nm[CABLE_NAME_MAX];
   rc = name_arg("save", name, nm, sizeof nm, err);
   if (rc) return rc;
-  /* a negative count wrote three empty files and returned 0 */
-  if (n < 0 || (n > 0 && !branches))
-    return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, "n", "%s", n < 0 ? "the number of branches must not be negative"
-                                                                           : "n branches but no array of them");
   if (sol_index >= 0) {
     /* one solution: a one-point result */
     const rp_branch *src = n > 0 ? branches[0] : NULL;

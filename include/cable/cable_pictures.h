@@ -51,9 +51,6 @@ CABLE_API int cable_plot_files(const char *dir, const char *const *bfiles, int n
 CABLE_API int cable_render_solution(const cable_solution *s, const render_options *o, const char *out, const char *vtp,
                           const char *ply, cable_error *err);
 
-/* Release cairo's and fontconfig's process-wide caches once, at the very
- * end of a program that drew text (so that leak checkers stay quiet); no
- * picture may be drawn afterwards. */
 /* The strands of a braid solution at its mesh points, as the pictures and
  * the HTML view (cable view) draw them: centre lines r1, r2 = r1 + Delta d1
  * [3n], the contact pressures p1, p2 [n] on strand 1 and 2, the tube radius
@@ -69,6 +66,9 @@ typedef struct {
 CABLE_API int cable_solution_strands(const cable_solution *s, cable_strands *out);
 CABLE_API void cable_strands_free(cable_strands *st);
 
+/* Release cairo's and fontconfig's process-wide caches once, at the very
+ * end of a program that drew text (so that leak checkers stay quiet); no
+ * picture may be drawn afterwards. */
 CABLE_API void cable_pictures_cleanup(void);
 
 #endif

@@ -15,7 +15,7 @@
 
 #define DIR_ "tests/tmp/api_contract"
 
-static const char *const bratu_text = "ICP = ['lambda'], NTST = 10, NCOL = 3, DS = 0.1, DSMAX = 0.5, NMX = 40, RL1 = 10\n";
+static const char *const bratu_text = "IPS = 4, ICP = ['lambda'], NTST = 10, NCOL = 3, DS = 0.1, DSMAX = 0.5, NMX = 40, RL1 = 10\n";
 
 static void bratu_constants(cable_constants *c)
 {
@@ -206,7 +206,7 @@ static void session_args(void)
   cable_session *s = cable_session_alloc(&o);
   cable_error err;
   cable_branch *b = NULL, *out = (cable_branch *)1;
-  static const char *const over[] = {"ICP=['lambda']", "NTST=10", "NCOL=3", "DS=0.1", "DSMAX=0.5", "NMX=40", "RL1=10"};
+  static const char *const over[] = {"IPS=4", "ICP=['lambda']", "NTST=10", "NCOL=3", "DS=0.1", "DSMAX=0.5", "NMX=40", "RL1=10"};
   cable_run_args a;
   memset(&a, 0, sizeof a);
   a.e = "bratu";

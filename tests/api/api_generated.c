@@ -43,6 +43,8 @@ typedef struct fx {
   const braid_analysis *bas[1];
   tube_distance_result tube;
   axis_passages ap;
+  cable_strands strands;          /* cable_solution_strands' output */
+  cable_stab_result stab;
   plot_annotation marks[1];
   render_options ropt;
   char buf[2048];
@@ -53,9 +55,9 @@ typedef struct fx {
   const cable_names *nptr;
 } fx;
 
-static const char *const bratu_over[] = {"ICP=['lambda']", "NTST=10", "NCOL=3", "DS=0.1", "DSMAX=0.5",
+static const char *const bratu_over[] = {"IPS=4", "ICP=['lambda']", "NTST=10", "NCOL=3", "DS=0.1", "DSMAX=0.5",
                                          "NMX=40", "RL1=10", "ILP=1", "ISP=0"};
-static const char *const bratu_text = "e = 'bratu', ICP = ['lambda'], NTST = 10, NCOL = 3, DS = 0.1, NMX = 5\n";
+static const char *const bratu_text = "e = 'bratu', IPS = 4, ICP = ['lambda'], NTST = 10, NCOL = 3, DS = 0.1, NMX = 5\n";
 
 static void fx_constants(fx *f)
 {
@@ -89,6 +91,7 @@ static void fx_after(fx *f)
   f->list_out = NULL;
   if (f->pb_out && f->pb_out != f->pb) cable_problem_release(f->pb, f->pb_out);
   f->pb_out = NULL;
+  cable_strands_free(&f->strands);
 }
 
 /* A fresh writer for the functions that take one (discarded after the case). */
