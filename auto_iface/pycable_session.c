@@ -1,7 +1,8 @@
 /* cable._cable.Session: AUTO's runner on cable's engine (cable_session.h).
  * Runs release the GIL; after every computed point the session takes it back
  * for a moment to run Python's signal handlers, so Ctrl-C (KeyboardInterrupt)
- * stops a run at the next point, before anything of it is written. */
+ * stops a run after the point being computed: its files (sv=) hold every
+ * point before, the exception says where and carries the partial branch. */
 #include "pycable.h"
 
 typedef struct pyc_session {
@@ -109,6 +110,30 @@ static int inputs_parse(PyObject *args, run_inputs *in)
   return 0;
 }
 
+/* A KeyboardInterrupt (or another exception a signal handler raised) that
+ * stopped a run: it gets the run's message as a note (where the points are)
+ * and the partial branch as its attribute branch. */
+static PyObject *interrupted(cable_branch *b, const cable_error *err)
+{
+  PyObject *t, *v, *tb;
+  PyErr_Fetch(&t, &v, &tb);
+  PyErr_NormalizeException(&t, &v, &tb);
+  if (v) {
+    char buf[1400];
+    PyObject *r = PyObject_CallMethod(v, "add_note", "s", cable_error_format(err, buf, sizeof buf));
+    Py_XDECREF(r);
+    PyObject *w = b ? pyc_branch_wrap(b) : NULL;
+    b = NULL;
+    if (w) PyObject_SetAttrString(v, "branch", w);
+    Py_XDECREF(w);
+    PyErr_Clear();   /* a failure above leaves the interrupt as it was */
+    if (tb) PyException_SetTraceback(v, tb);
+  }
+  cable_branch_decref(b);
+  PyErr_Restore(t, v, tb);
+  return NULL;
+}
+
 /* run(start, sol, mbr, mlab, name, e, c, s, sv, ap, over) -> Branch */
 static PyObject *session_run(PyObject *obj, PyObject *args)
 {
@@ -128,6 +153,7 @@ static PyObject *session_run(PyObject *obj, PyObject *args)
   self->ts = NULL;
   fflush(stdout);
   inputs_free(&in);
+  if (rc == CABLE_ERR_INTERRUPTED && PyErr_Occurred()) return interrupted(b, &err);
   return rc ? pyc_raise(rc, &err) : pyc_branch_wrap(b);
 }
 
