@@ -729,8 +729,10 @@ static int engine_run(cable_session *r, rp_setup *s, const char *out_name, int o
     rp_guard_init(guard, pb, origin);
     pb = &guard->pb;
   }
-  if (s->c.ignored[0])
+  if (s->c.ignored[0] && strcmp(s->c.ignored, r->noted_ignored) != 0) {
     fprintf(rp_log(r), "  note: accepted and ignored, as AUTO does for boundary-value problems: %s\n", s->c.ignored);
+    snprintf(r->noted_ignored, sizeof r->noted_ignored, "%s", s->c.ignored);
+  }
   int st = 0;
   /* ISW = 2 at an LP: the fold's extended problem, its constants (ICP with
      the null vector's parameter slots) and its own start (cable_fold.h) */

@@ -9,7 +9,36 @@ typedef struct pyc_session {
   PyObject_HEAD
   cable_session *s;
   PyThreadState *ts;   /* the thread's state while a run has released the GIL */
+  FILE *log;           /* the session's log, written to sys.stdout (log_write) */
 } pyc_session;
+
+/* The session's log lines go to Python's sys.stdout as they are printed,
+ * flushed: in order with the script's own prints, through a pipe, and in a
+ * notebook (whose cells show sys.stdout, not the process's stdout).  Called
+ * with or without the GIL (a run releases it). */
+static ssize_t log_write(void *cookie, const char *buf, size_t n)
+{
+  (void)cookie;
+  PyGILState_STATE g = PyGILState_Ensure();
+  PyObject *t, *v, *tb;
+  PyErr_Fetch(&t, &v, &tb);   /* a pending exception (KeyboardInterrupt) stays */
+  PyObject *out = PySys_GetObject("stdout");   /* borrowed */
+  PyObject *text = PyUnicode_DecodeUTF8(buf, (Py_ssize_t)n, "replace");
+  if (out && out != Py_None && text) {
+    PyObject *r = PyObject_CallMethod(out, "write", "O", text);
+    Py_XDECREF(r);
+    r = PyObject_CallMethod(out, "flush", NULL);
+    Py_XDECREF(r);
+  } else if (text) {
+    fwrite(buf, 1, n, stdout);   /* no sys.stdout (an embedding without one) */
+    fflush(stdout);
+  }
+  Py_XDECREF(text);
+  PyErr_Clear();
+  PyErr_Restore(t, v, tb);
+  PyGILState_Release(g);
+  return (ssize_t)n;
+}
 
 /* The session's interrupt check: Python's pending signal handlers, with the GIL. */
 static int session_interrupt(void *ctx)
@@ -35,6 +64,10 @@ static int session_init(PyObject *obj, PyObject *args, PyObject *kw)
   o.dir = NULL;   /* the current directory: the Python layer changes it (AUTO's cd) */
   o.interrupt = session_interrupt;
   o.interrupt_ctx = self;
+  cookie_io_functions_t io = {NULL, log_write, NULL, NULL};
+  self->log = fopencookie(NULL, "w", io);
+  if (self->log) setvbuf(self->log, NULL, _IOLBF, 0);   /* a line at a time */
+  o.log = self->log;
   self->s = cable_session_alloc(&o);
   if (!self->s) {
     PyErr_NoMemory();
@@ -46,6 +79,7 @@ static int session_init(PyObject *obj, PyObject *args, PyObject *kw)
 static void session_dealloc(PyObject *obj)
 {
   cable_session_free(((pyc_session *)obj)->s);
+  if (((pyc_session *)obj)->log) fclose(((pyc_session *)obj)->log);
   Py_TYPE(obj)->tp_free(obj);
 }
 
