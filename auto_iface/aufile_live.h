@@ -5,9 +5,11 @@
 
 #include "cable/cable_aufile.h"
 
-/* Complete copies of what w has written so far: dir/b, dir/d (followed by
- * the line dnote, NULL: none) and, when with_s, dir/s.  The files must not
- * exist yet.  0, or a negative status with err (w stays usable). */
-int cable_aufile_snapshot(cable_aufile *w, const char *dir, int with_s, const char *dnote, cable_error *err);
+/* Complete copies of what w has written so far: dir/b.new, dir/d.new
+ * (followed by the line dnote, NULL: none) and, when with_s, dir/s.new,
+ * synced to disk when sync is non-zero.  0, or a negative status with err
+ * (w stays usable). */
+int cable_aufile_snapshot(cable_aufile *w, const char *dir, int with_s, const char *dnote, int sync,
+                          cable_error *err);
 
 #endif

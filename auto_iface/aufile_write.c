@@ -817,7 +817,8 @@ int cable_aufile_checkpoint(cable_aufile *w, cable_error *err)
   return st;
 }
 
-int cable_aufile_snapshot(cable_aufile *w, const char *dir, int with_s, const char *dnote, cable_error *err)
+int cable_aufile_snapshot(cable_aufile *w, const char *dir, int with_s, const char *dnote, int sync,
+                          cable_error *err)
 {
   if (!w || !dir) return cable_error_set(err, CABLE_ERR_NULL, "", 0, "", "no writer (NULL)");
   if (w->failed) {
@@ -825,12 +826,12 @@ int cable_aufile_snapshot(cable_aufile *w, const char *dir, int with_s, const ch
     return w->err.status;
   }
   char path[4200];
-  snprintf(path, sizeof path, "%s/b", dir);
-  int st = cable_atomic_copy(w->b, path, NULL, err);
-  snprintf(path, sizeof path, "%s/d", dir);
-  if (st == 0) st = cable_atomic_copy(w->d, path, dnote, err);
-  snprintf(path, sizeof path, "%s/s", dir);
-  if (st == 0 && with_s) st = cable_atomic_copy(w->s, path, NULL, err);
+  snprintf(path, sizeof path, "%s/b.new", dir);
+  int st = cable_atomic_copy(w->b, path, NULL, sync, err);
+  snprintf(path, sizeof path, "%s/d.new", dir);
+  if (st == 0) st = cable_atomic_copy(w->d, path, dnote, sync, err);
+  snprintf(path, sizeof path, "%s/s.new", dir);
+  if (st == 0 && with_s) st = cable_atomic_copy(w->s, path, NULL, sync, err);
   return st;
 }
 

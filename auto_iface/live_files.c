@@ -10,6 +10,7 @@
 #include <string.h>
 #include <sys/file.h>
 #include <sys/stat.h>
+#include <time.h>
 #include <unistd.h>
 
 #include "atomic_file.h"
@@ -18,8 +19,11 @@
 
 #define WORK_PREFIX ".cable-"   /* the work directory .cable-NAME beside the files */
 #define LIVE_PATH 4400
-#define GEN_KEEP 2              /* generations kept: the current and the one before, which a
-                                   reader that has just resolved the links may still open */
+#define GEN_DIRS 3              /* generation K is written in .cable-NAME/g(K mod 3): the current
+                                   one and the one before stay whole for a reader that has just
+                                   resolved the links */
+#define SYNC_EVERY 1.0          /* seconds: a generation is synced to disk at most this often
+                                   (every one is whole for readers and after a kill) */
 /* the longest name written beside b.NAME: ".b.NAME.NNNN.csv.ckptXXXXXX" */
 #define NAME_EXTRA ((int)sizeof ".b..9999.csv.ckptXXXXXX" - 1)
 /* the d-file copy of a step ends with this line; a finished run's d-file has none */
@@ -257,6 +261,7 @@ struct rp_live {
   int gen;               /* the last published generation */
   int s_changed;         /* a solution since the last publish */
   int published;         /* this run has published a generation */
+  double synced_at;      /* when a generation was last synced to disk (monotonic seconds) */
   char files[3 * LIVE_PATH + 8];
 };
 
@@ -290,8 +295,24 @@ const char *rp_live_files(const rp_live *l)
   return l ? l->files : "";
 }
 
+static double now_seconds(void)
+{
+  struct timespec ts;
+  clock_gettime(CLOCK_MONOTONIC, &ts);
+  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+static void sync_path(const char *dir)
+{
+  int fd = open(dir, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (fd >= 0) {
+    (void)fsync(fd);
+    close(fd);
+  }
+}
+
 /* cur -> gN, by one rename (the publish). */
-static int set_current(const rp_lock *l, int gen, cable_error *err)
+static int set_current(const rp_lock *l, int gen, int sync, cable_error *err)
 {
   char tmp[LIVE_PATH + 16], cur[LIVE_PATH + 8], target[32];
   snprintf(tmp, sizeof tmp, "%s/cur.new", l->work);
@@ -300,11 +321,7 @@ static int set_current(const rp_lock *l, int gen, cable_error *err)
   unlink(tmp);
   if (symlink(target, tmp) != 0 || rename(tmp, cur) != 0)
     return cable_error_set(err, CABLE_ERR_IO, cur, 0, NULL, "cannot publish the run's files: %s", strerror(errno));
-  int fd = open(l->work, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-  if (fd >= 0) {
-    (void)fsync(fd);   /* the new link survives a power loss with its files */
-    close(fd);
-  }
+  if (sync) sync_path(l->work);   /* the new link survives a power loss with its files */
   return 0;
 }
 
@@ -334,7 +351,7 @@ static int start_links(rp_live *l, cable_error *err)
       if (!ok) return cable_error_set(err, CABLE_ERR_IO, p, 0, NULL, "cannot keep the file's contents: %s", strerror(errno));
     }
   }
-  int rc = set_current(k, 0, err);
+  int rc = set_current(k, 0, 1, err);
   for (int i = 0; i < 3 && !rc; i++) {
     file_path(k, kinds[i], p, sizeof p);
     link_target(k, kinds[i], target, sizeof target);
@@ -387,46 +404,56 @@ rp_live *rp_live_open(const char *dir, const char *name, int append, const cable
   return l;
 }
 
-/* A new generation of the three files (the d-file's copy followed by note), made current. */
-static int publish(rp_live *l, const char *note, cable_error *err)
+/* A new generation of the three files (the d-file's copy followed by note),
+ * made current.  Each file is written beside its place and renamed over the
+ * file of three generations before (on ext4 a replace-by-rename also orders
+ * the data before the rename); sync (or a second since the last) syncs it. */
+static int publish(rp_live *l, const char *note, int sync, cable_error *err)
 {
   rp_lock *k = l->lock;
-  int gen = l->gen + 1;
-  char g[LIVE_PATH + 16], prev[LIVE_PATH + 32], q[LIVE_PATH + 32];
-  snprintf(g, sizeof g, "%s/g%d", k->work, gen);
-  remove_tree(g);
-  if (mkdir(g, 0755) != 0) return cable_error_set(err, CABLE_ERR_IO, g, 0, NULL, "cannot create: %s", strerror(errno));
-  /* s changes only at labelled points: an unchanged s is the previous generation's */
+  int gen = l->gen + 1, slot = gen % GEN_DIRS, prev = l->gen % GEN_DIRS;
+  char g[LIVE_PATH + 16], from[LIVE_PATH + 32], to[LIVE_PATH + 32];
+  snprintf(g, sizeof g, "%s/g%d", k->work, slot);
+  if (mkdir(g, 0755) != 0 && errno != EEXIST)
+    return cable_error_set(err, CABLE_ERR_IO, g, 0, NULL, "cannot create: %s", strerror(errno));
+  double now = now_seconds();
+  if (now - l->synced_at >= SYNC_EVERY) sync = 1;
+  /* s changes only at labelled points: an unchanged s is the previous generation's file */
   int with_s = l->s_changed || !l->published;
+  snprintf(to, sizeof to, "%s/s.new", g);
+  unlink(to);
   if (!with_s) {
-    snprintf(prev, sizeof prev, "%s/g%d/s", k->work, l->gen);
-    snprintf(q, sizeof q, "%s/s", g);
-    if (access(prev, F_OK) == 0 && link(prev, q) != 0) with_s = 1;
+    snprintf(from, sizeof from, "%s/g%d/s", k->work, prev);
+    if (link(from, to) != 0) with_s = 1;
   }
-  int rc = cable_aufile_snapshot(l->w, g, with_s, note, err);
-  if (!rc) rc = set_current(k, gen, err);
-  if (rc) {
-    remove_tree(g);
-    return rc;
+  int rc = cable_aufile_snapshot(l->w, g, with_s, note, sync, err);
+  static const char *const parts[3] = {"b", "d", "s"};
+  for (int i = 0; i < 3 && !rc; i++) {
+    snprintf(from, sizeof from, "%s/%s.new", g, parts[i]);
+    snprintf(to, sizeof to, "%s/%s", g, parts[i]);
+    if (rename(from, to) != 0 && (i < 2 || errno != ENOENT))
+      rc = cable_error_set(err, CABLE_ERR_IO, to, 0, NULL, "cannot write: %s", strerror(errno));
   }
+  if (!rc && sync) sync_path(g);
+  if (!rc) rc = set_current(k, slot, sync, err);
+  if (rc) return rc;
+  if (sync) l->synced_at = now;
   l->s_changed = 0;
   l->published = 1;
   l->gen = gen;
-  snprintf(g, sizeof g, "%s/g%d", k->work, gen - GEN_KEEP);
-  if (gen - GEN_KEEP >= 0) remove_tree(g);
   return 0;
 }
 
 int rp_live_publish(rp_live *l, cable_error *err)
 {
-  return publish(l, LIVE_NOTE, err);
+  return publish(l, LIVE_NOTE, 0, err);
 }
 
 int rp_live_close(rp_live *l, const char *end_note, cable_error *err)
 {
   if (end_note && end_note[0]) l->sink.diag(l->sink.ctx, end_note);
   /* the last generation is the final files: the renames below change no contents */
-  int rc = publish(l, NULL, err);
+  int rc = publish(l, NULL, 1, err);
   if (rc) {
     cable_aufile_abort(l->w);   /* the links keep the last step that was published */
   } else {
