@@ -366,3 +366,25 @@ def test_plugin_fatal_return_ends_cable_run_nonzero(tmp_path):
     assert p.returncode == 1
     assert 'the FUNC routine of plug-in ./fatal.so returned -3 (fatal)' in p.stderr
     assert 'are in b.f, s.f, d.f' in p.stderr
+
+
+@pytest.mark.parametrize('stmt,sig,text', [('abort();', signal.SIGABRT, 'aborted the process (SIGABRT'),
+                                           ('*(volatile int *)0 = 1;', signal.SIGSEGV, 'crashed (SIGSEGV'),
+                                           ('exit(0);', None, 'ended the process with exit status 0')])
+def test_c_equation_file_that_ends_the_process_is_named(tmp_path, stmt, sig, text):
+    d = tmp_path / 'ceq'
+    d.mkdir()
+    src = os.path.join(ROOT, 'tests/data/autoeq/bratu_c')
+    shutil.copy(os.path.join(src, 'c.bratu'), d)
+    with open(os.path.join(src, 'bratu.c')) as f:
+        code = f.read()
+    code = code.replace('  f[0] = u[1];\n', '  if (par[0] > 1.5) { %s }\n  f[0] = u[1];\n' % stmt, 1)
+    code = code.replace('#include "auto_f2c.h"\n', '#include "auto_f2c.h"\n#include <stdlib.h>\n', 1)
+    (d / 'bratu.c').write_text(code)
+    p = subprocess.run([CABLE, 'run', 'bratu', 'sv=bratu'], cwd=str(d), capture_output=True, text=True, env=env(),
+                       timeout=600)
+    assert p.returncode == (-sig if sig else 1), (p.returncode, p.stderr)
+    assert re.search(r'the FUNC routine of equation file (\./)?bratu\.c ' + re.escape(text), p.stderr), p.stderr
+    assert 'the points so far are in b.bratu, s.bratu, d.bratu' in p.stderr
+    got = auto_read(str(d), 'bratu')
+    assert [r[1] for r in got['rows'] if r[1]] == [s[0] for s in got['sols']] and len(got['rows']) >= 8
