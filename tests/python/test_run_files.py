@@ -388,3 +388,27 @@ def test_c_equation_file_that_ends_the_process_is_named(tmp_path, stmt, sig, tex
     assert 'the points so far are in b.bratu, s.bratu, d.bratu' in p.stderr
     got = auto_read(str(d), 'bratu')
     assert [r[1] for r in got['rows'] if r[1]] == [s[0] for s in got['sols']] and len(got['rows']) >= 8
+
+
+def test_progress_line_on_a_terminal_names_the_parameter(tmp_path):
+    """The live progress line (stderr, when it is a terminal) names the
+    continuation parameter as the user wrote it (T), not PAR(1)."""
+    import pty
+    d = knot_dir(tmp_path, 'tty')
+    master, slave = pty.openpty()
+    p = subprocess.Popen([CABLE, 'run', 'c=knot72', 'NMX=4', 'sv=flat'], cwd=d, stdout=subprocess.DEVNULL,
+                         stderr=slave, env=env())
+    os.close(slave)
+    chunks = []
+    while True:
+        try:
+            data = os.read(master, 4096)
+        except OSError:   # the terminal closed with the process
+            break
+        if not data:
+            break
+        chunks.append(data)
+    os.close(master)
+    assert p.wait(timeout=600) == 0
+    text = b''.join(chunks).decode(errors='replace')
+    assert 'point     2  T = ' in text and 'PAR(1)' not in text, text
