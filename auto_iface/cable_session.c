@@ -743,7 +743,8 @@ static int engine_run(cable_session *r, rp_setup *s, const char *out_name, int o
     char msg[400];
     fold = cable_fold_alloc(pb, &s->c, s->start, &st, msg, sizeof msg);
     if (!fold) {
-      problem_release(r, &prob); free(guard);
+      problem_release(r, &prob);
+      free(guard);
       return cable_error_set(err, st, NULL, 0, "ISW", "%s", msg);
     }
     /* a point of a fold curve (NDIM = 2n) restarts the curve as it is
@@ -758,13 +759,15 @@ static int engine_run(cable_session *r, rp_setup *s, const char *out_name, int o
   st = cable_cont_check(pb, crun, err);
   if (st) {
     cable_fold_free(fold);
-    problem_release(r, &prob); free(guard);
+    problem_release(r, &prob);
+    free(guard);
     return st;
   }
   cable_cont *cc = cable_cont_alloc(pb, crun, &st);
   if (!cc) {
     cable_fold_free(fold);
-    problem_release(r, &prob); free(guard);
+    problem_release(r, &prob);
+    free(guard);
     return cable_error_set(err, st, NULL, 0, NULL, "could not set up the solver: %s", cable_status_message(st));
   }
   if (st == 0 && fold) {
@@ -782,7 +785,8 @@ static int engine_run(cable_session *r, rp_setup *s, const char *out_name, int o
     cable_error_set(err, st, NULL, 0, NULL, "%s", cable_cont_error(cc)[0] ? cable_cont_error(cc) : cable_status_message(st));
     cable_cont_free(cc);
     cable_fold_free(fold);
-    problem_release(r, &prob); free(guard);
+    problem_release(r, &prob);
+    free(guard);
     return st;
   }
   /* AUTO's NEWLAB: a new branch number after a start from STPNT or a switch;
@@ -806,7 +810,8 @@ static int engine_run(cable_session *r, rp_setup *s, const char *out_name, int o
   if (!col.b) {
     cable_cont_free(cc);
     cable_fold_free(fold);
-    problem_release(r, &prob); free(guard);
+    problem_release(r, &prob);
+    free(guard);
     return cable_error_set(err, CABLE_ERR_ALLOC, NULL, 0, NULL, "out of memory");
   }
   /* the files are open (and NAME locked) before the first step */
@@ -817,7 +822,8 @@ static int engine_run(cable_session *r, rp_setup *s, const char *out_name, int o
       rp_branch_decref(col.b);
       cable_cont_free(cc);
       cable_fold_free(fold);
-      problem_release(r, &prob); free(guard);
+      problem_release(r, &prob);
+      free(guard);
       return err && err->status ? err->status : CABLE_ERR_IO;
     }
     col.out = rp_live_sink(col.live);
@@ -844,15 +850,19 @@ static int engine_run(cable_session *r, rp_setup *s, const char *out_name, int o
   if (!col.rc && st < 0) col.rc = rp_branch_set_end_note(col.b, end_note);
   cable_cont_free(cc);
   cable_fold_free(fold);
-  problem_release(r, &prob); free(guard);
+  problem_release(r, &prob);
+  free(guard);
   if (col.tty) fprintf(stderr, "\r%*s\r", 100, "");
   int live_rc = col.out_rc;
-  if (col.live && col.out_rc && col.out_err.msg[0] && err) *err = col.out_err;
   if (col.live && col.b->npt == 0) {
     rp_live_abort(col.live);   /* nothing computed: the files stay as they were */
   } else if (col.live) {
-    int rc2 = rp_live_close(col.live, col.b->end_note, live_rc ? NULL : err);
+    /* close reports a failed write again, with its message */
+    cable_error cerr;
+    cable_error_clear(&cerr);
+    int rc2 = rp_live_close(col.live, col.b->end_note, &cerr);
     if (!live_rc) live_rc = rc2;
+    if (live_rc && err) *err = col.out_err.msg[0] ? col.out_err : cerr;
   }
   if (live_rc) {
     rp_branch_decref(col.b);

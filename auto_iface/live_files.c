@@ -357,8 +357,10 @@ static int start_links(rp_live *l, cable_error *err)
     link_target(k, kinds[i], target, sizeof target);
     snprintf(tmp, sizeof tmp, "%s.cable-link", p);
     unlink(tmp);
-    if (symlink(target, tmp) != 0 || rename(tmp, p) != 0)
+    if (symlink(target, tmp) != 0 || rename(tmp, p) != 0) {
       rc = cable_error_set(err, CABLE_ERR_IO, p, 0, NULL, "cannot link the file for the run: %s", strerror(errno));
+      unlink(tmp);
+    }
   }
   return rc;
 }
