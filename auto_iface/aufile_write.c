@@ -12,6 +12,7 @@
 #include <unistd.h>
 
 #include "atomic_file.h"
+#include "aufile_live.h"
 #include "cable/cable_status.h"
 #include "constants_check.h"
 
@@ -819,6 +820,24 @@ int cable_aufile_checkpoint(cable_aufile *w, cable_error *err)
   if (st == 0) st = cable_atomic_checkpoint(w->s, err);
   if (st == 0) st = cable_atomic_checkpoint(w->d, err);
   for (int k = 0; st == 0 && k < w->ncsv; k++) st = cable_atomic_checkpoint(w->csv[k], err);
+  return st;
+}
+
+int cable_aufile_snapshot(cable_aufile *w, const char *dir, int with_s, const char *dnote, int sync,
+                          cable_error *err)
+{
+  if (!w || !dir) return cable_error_set(err, CABLE_ERR_NULL, "", 0, "", "no writer (NULL)");
+  if (w->failed) {
+    if (err) *err = w->err;
+    return w->err.status;
+  }
+  char path[4200];
+  snprintf(path, sizeof path, "%s/b.new", dir);
+  int st = cable_atomic_copy(w->b, path, NULL, sync, err);
+  snprintf(path, sizeof path, "%s/d.new", dir);
+  if (st == 0) st = cable_atomic_copy(w->d, path, dnote, sync, err);
+  snprintf(path, sizeof path, "%s/s.new", dir);
+  if (st == 0 && with_s) st = cable_atomic_copy(w->s, path, NULL, sync, err);
   return st;
 }
 

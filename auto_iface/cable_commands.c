@@ -35,7 +35,7 @@ static void unquote(const char *v, char *out, size_t len)
 /* Each KEY=VALUE is what a constants file line would say (bare words are
  * strings there: IRS=BP1, LINSOLVER=klu); only DS=- needs its quotes,
  * because a lone '-' is not a value in the file syntax. */
-int cable_cmd_run(int argc, char **argv, cable_error *err)
+int cable_cmd_run(int argc, char **argv, int (*interrupt)(void *ctx), void *ctx, cable_error *err)
 {
   if (argc > CLI_MAX_ARGS)
     return cable_error_set(err, CABLE_ERR_INPUT, "<command line>", 0, NULL, "more than %d arguments", CLI_MAX_ARGS);
@@ -89,6 +89,8 @@ int cable_cmd_run(int argc, char **argv, cable_error *err)
     cable_session_options o;
     cable_session_options_init(&o);
     o.dir = ".";
+    o.interrupt = interrupt;
+    o.interrupt_ctx = ctx;
     cable_session *r = cable_session_alloc(&o);
     a.name = runname;
     a.nover = nover;

@@ -3,6 +3,7 @@
  * runs a script in CPython with the cable package (python/cable). */
 #include <errno.h>
 #include <limits.h>
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -131,6 +132,52 @@ static int python_module(const char *name, int argc, char **argv)
   return 1;
 }
 
+/* The signal that asked `cable run` to stop (0: none).  Process-wide by
+ * nature: a signal handler has no other place to leave it. */
+static volatile sig_atomic_t stop_signal;
+
+static void on_stop_signal(int sig)
+{
+  stop_signal = sig;
+}
+
+static int stop_requested(void *ctx)
+{
+  (void)ctx;
+  return stop_signal != 0;
+}
+
+/* SIGINT and SIGTERM end the run after the point being computed (its files
+ * hold every point before); a second one acts at once, as by default. */
+static void catch_stop_signals(void)
+{
+  struct sigaction sa;
+  memset(&sa, 0, sizeof sa);
+  sa.sa_handler = on_stop_signal;
+  sa.sa_flags = SA_RESETHAND;
+  sigemptyset(&sa.sa_mask);
+  sigaction(SIGINT, &sa, NULL);
+  sigaction(SIGTERM, &sa, NULL);
+}
+
+/* cable run: 0, 1 for an error, 128 + the signal when SIGINT or SIGTERM stopped it. */
+static int run_command(int argc, char **argv, cable_error *err)
+{
+  /* the log goes out line by line, also into a file or a pipe */
+  setvbuf(stdout, NULL, _IOLBF, 0);
+  catch_stop_signals();
+  int rc = cable_cmd_run(argc, argv, stop_requested, NULL, err);
+  fflush(stdout);
+  int sig = stop_signal;
+  if (rc == CABLE_ERR_INTERRUPTED && sig) {
+    char buf[1400];
+    fprintf(stderr, "cable: run stopped by %s: %s\n", sig == SIGINT ? "SIGINT" : "SIGTERM",
+            cable_error_format(err, buf, sizeof buf));
+    return 128 + sig;
+  }
+  return report(rc, err);
+}
+
 int main(int argc, char **argv)
 {
   if (argc < 2) {
@@ -152,8 +199,8 @@ int main(int argc, char **argv)
     usage(stdout);
     return 0;
   }
-  if (strcmp(cmd, "run") == 0) return report(cable_cmd_run(argc - 2, argv + 2, &err), &err);
-  if (strcmp(cmd, "atlas") == 0) return python_module("cable.atlas", argc, argv);
+  if (strcmp(cmd, "run") == 0) return run_command(argc - 2, argv + 2, &err);
+  if (strcmp(cmd, "atlas") == 0) return atlas(argc, argv);
   if (strcmp(cmd, "view") == 0) return python_module("cable.webview", argc, argv);
   if (strcmp(cmd, "replay") == 0) {
     if (argc != 3) {

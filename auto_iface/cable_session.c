@@ -18,6 +18,8 @@
 #include "cable/cable_fold.h"
 #include "cable/cable_status.h"
 #include "cable_session_impl.h"
+#include "live_files.h"
+#include "run_guard.h"
 
 void cable_session_options_init(cable_session_options *o)
 {
@@ -569,12 +571,21 @@ static int build_setup(cable_session *r, const cable_run_args *a, rp_setup *s, c
 typedef struct collector {
   rp_branch *b;
   FILE *diag;
+  FILE *log;        /* the labelled points and notes as they come (AUTO's screen lines) */
   int rc;
   int tty;          /* stderr is a terminal: show the progress line */
   int (*interrupt)(void *ctx);   /* the session's interrupt check (NULL: none) */
   void *interrupt_ctx;
   int interrupted;
+  rp_live *live;    /* the run's files, written as it goes (NULL: no sv= or ap=) */
+  cable_sink out;   /* live's sink */
+  int out_rc;       /* the first failure writing them */
+  cable_error out_err;
+  rp_guard *guard;  /* the user's routines' watch (NULL: cable's own problem) */
+  const char *e, *out_name;
 } collector;
+
+static void guard_where(rp_guard *g, const collector *c, const char *e, const char *out_name);
 
 static double now_seconds(void)
 {
@@ -583,33 +594,67 @@ static double now_seconds(void)
   return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
+static const char *par_name(const cable_names *n, int k, char *buf, size_t len);
+
 /* One-line live progress on a terminal (stderr), rewritten in place. */
 static void progress(const collector *c, const cable_point *pt)
 {
   if (!c->tty) return;
   int k = pt->nicp > 0 ? pt->icp[0] : 0;
-  fprintf(stderr, "\r  branch %d  point %5d  PAR(%d) = %-14.8g ds = %-9.3g Newton %d   ", pt->ibr, pt->pt, k + 1,
-          pt->par[k], pt->ds, pt->newton_iters);
+  char nm[64];
+  fprintf(stderr, "\r  branch %d  point %5d  %s = %-14.8g ds = %-9.3g Newton %d   ", pt->ibr, pt->pt,
+          par_name(&c->b->names, k, nm, sizeof nm), pt->par[k], pt->ds, pt->newton_iters);
   fflush(stderr);
 }
 
+/* AUTO prints every labelled point of a run as it is computed; so does the
+ * host, with the engine's remarks on the point (special points it could not
+ * locate, rejected steps, double branch points; also in the d-file). */
+static void log_point(const collector *c, const cable_point *p)
+{
+  char nm[64];
+  if (c->tty && (p->note || p->lab > 0)) fprintf(stderr, "\r%*s\r", 100, "");
+  if (p->note) fprintf(c->log, "  PT %5d: %s\n", p->pt, p->note);
+  if (p->lab > 0) {
+    int k = p->nicp > 0 ? p->icp[0] : 0;
+    const char *ty = cable_type_name(p->itp);
+    fprintf(c->log, "  BR %4d  PT %5d  TY %-2s  LAB %4d  %s = %.10g  L2-NORM = %.10g\n", p->ibr, p->pt,
+            ty[0] ? ty : "-", p->lab, par_name(&c->b->names, k, nm, sizeof nm), p->par[k], p->l2norm);
+  }
+  if (p->note || p->lab > 0) fflush(c->log);   /* through a pipe too, as it happens */
+}
+
+/* Every point is kept and, with sv= or ap=, on disk before the next step
+ * (published once its solution, if any, is written); an interrupt stops the
+ * run after the point just computed. */
 static int collect_point(void *ctx, const cable_point *pt)
 {
   collector *c = ctx;
   progress(c, pt);
   if (c->diag && pt->note) fprintf(c->diag, "%s\n", pt->note);
+  log_point(c, pt);
   /* a labelled point's solution comes next, with the same point: add both then */
+  if (pt->lab <= 0 && !c->rc) c->rc = rp_branch_add(c->b, pt, NULL);
+  if (c->live && !c->out_rc) {
+    c->out_rc = c->out.point(c->out.ctx, pt);
+    if (!c->out_rc && pt->lab <= 0) c->out_rc = rp_live_publish(c->live, &c->out_err);
+  }
   if (c->interrupt && c->interrupt(c->interrupt_ctx)) c->interrupted = 1;
-  if (c->interrupted) return 1;   /* the engine stops here (CABLE_ERR_INTERRUPTED) */
-  if (pt->lab > 0) return 0;
-  if (!c->rc) c->rc = rp_branch_add(c->b, pt, NULL);
-  return c->rc;
+  if (c->guard && pt->lab <= 0) guard_where(c->guard, c, c->e, c->out_name);
+  /* the engine stops here (CABLE_ERR_INTERRUPTED); a user routine's fatal
+     return too (the run reports it) */
+  return c->interrupted || c->rc || c->out_rc || (c->guard && c->guard->fatal);
 }
 
 static int collect_solution(void *ctx, const cable_point *pt, const cable_solution *sol)
 {
   collector *c = ctx;
   if (!c->rc) c->rc = rp_branch_add(c->b, pt, sol);
+  if (c->live && !c->out_rc) {
+    c->out_rc = c->out.solution(c->out.ctx, pt, sol);
+    if (!c->out_rc) c->out_rc = rp_live_publish(c->live, &c->out_err);
+  }
+  if (c->guard) guard_where(c->guard, c, c->e, c->out_name);
   return c->rc;
 }
 
@@ -626,22 +671,10 @@ static const char *par_name(const cable_names *n, int k, char *buf, size_t len)
   return buf;
 }
 
-/* AUTO prints every labelled point of a run; so does the host. */
+/* The run's end (its points were printed as they came: log_point). */
 static void log_branch(const cable_session *r, const rp_branch *b, int status, const char *why, double seconds)
 {
   FILE *f = rp_log(r);
-  char nm[64];
-  for (int i = 0; i < b->npt; i++) {
-    const cable_point *p = &b->pts[i].pt;
-    /* the engine's remarks (special points it could not locate, rejected
-       steps, double branch points) are also in the d-file */
-    if (p->note) fprintf(f, "  PT %5d: %s\n", p->pt, p->note);
-    if (p->lab <= 0) continue;
-    int k = p->nicp > 0 ? p->icp[0] : 0;
-    const char *ty = cable_type_name(p->itp);
-    fprintf(f, "  BR %4d  PT %5d  TY %-2s  LAB %4d  %s = %.10g  L2-NORM = %.10g\n", p->ibr, p->pt,
-            ty[0] ? ty : "-", p->lab, par_name(&b->names, k, nm, sizeof nm), p->par[k], p->l2norm);
-  }
   fprintf(f, "  branch %d: %d points, %d labelled; end: %s%s%s\n", b->ibr, b->npt, b->nsol,
           cable_status_message(status), why && why[0] ? ": " : "", why ? why : "");
   /* summary: special points, time, and the worst first-integral drift of
@@ -662,7 +695,43 @@ static void log_branch(const cable_session *r, const rp_branch *b, int status, c
   fprintf(f, "\n");
 }
 
-static int engine_run(cable_session *r, rp_setup *s, rp_branch **out, cable_error *err)
+/* What messages call a user's problem e ("equation file ./x.f90", "plug-in
+ * ./x.so"); 0 for cable's own problems (not watched). */
+static int user_origin(const cable_session *r, const char *e, char *buf, size_t len)
+{
+  for (int i = 0; i < r->nautoeq; i++)
+    if (strcmp(r->autoeq_name[i], e) == 0) {
+      snprintf(buf, len, "equation file %s", cable_autoeq_source(r->autoeq[i]));
+      return 1;
+    }
+  for (int i = 0; i < r->nplugins; i++)
+    if (strcmp(r->plugin_name[i], e) == 0) {
+      snprintf(buf, len, "plug-in %s", cable_plugin_path(r->plugin[i]));
+      return 1;
+    }
+  return 0;
+}
+
+/* The guard's text: the run, its last point and its files. */
+static void guard_where(rp_guard *g, const collector *c, const char *e, const char *out_name)
+{
+  char text[RP_GUARD_TEXT], at[64] = "before its first point";
+  const rp_branch *b = c->b;
+  if (b->npt > 0) snprintf(at, sizeof at, "after PT %d", b->pts[b->npt - 1].pt.pt);
+  if (out_name && b->npt > 0)
+    snprintf(text, sizeof text, "during branch %d of e='%s', %s; the points so far are in b.%s, s.%s, d.%s", b->ibr, e,
+             at, out_name, out_name, out_name);
+  else
+    snprintf(text, sizeof text, "during branch %d of e='%s', %s%s", b->ibr, e, at,
+             out_name ? "; nothing of the run is saved yet" : " (no sv=: nothing is saved)");
+  rp_guard_set_where(g, text);
+}
+
+/* One run; out_name (NULL: none) gets its b./s./d. files as it goes
+ * (out_append: AUTO's ap=).  An interrupted run returns
+ * CABLE_ERR_INTERRUPTED with its branch in *out. */
+static int engine_run(cable_session *r, rp_setup *s, const char *out_name, int out_append, rp_branch **out,
+                      cable_error *err)
 {
   *out = NULL;
   if (s->c.ips != 4) {
@@ -702,8 +771,21 @@ static int engine_run(cable_session *r, rp_setup *s, rp_branch **out, cable_erro
   /* AUTO's equations switch branches the way AUTO orients them, cable's own problems
      theirs (a restart keeps the stored constants: set it for this run's problem) */
   s->c.bp_orient_auto = prob.autoeq;
-  if (s->c.ignored[0])
+  /* a user's routines run under a watch: one that ends the process is named */
+  char origin[600];
+  rp_guard *guard = NULL;
+  if (user_origin(r, s->e, origin, sizeof origin)) {
+    if (!(guard = malloc(sizeof *guard))) {
+      problem_release(r, &prob);
+      return cable_error_set(err, CABLE_ERR_ALLOC, NULL, 0, NULL, "out of memory");
+    }
+    rp_guard_init(guard, pb, origin);
+    pb = &guard->pb;
+  }
+  if (s->c.ignored[0] && strcmp(s->c.ignored, r->noted_ignored) != 0) {
     fprintf(rp_log(r), "  note: accepted and ignored, as AUTO does for boundary-value problems: %s\n", s->c.ignored);
+    snprintf(r->noted_ignored, sizeof r->noted_ignored, "%s", s->c.ignored);
+  }
   int st = 0;
   /* ISW = 2 at an LP: the fold's extended problem, its constants (ICP with
      the null vector's parameter slots) and its own start (cable_fold.h) */
@@ -715,6 +797,7 @@ static int engine_run(cable_session *r, rp_setup *s, rp_branch **out, cable_erro
     fold = cable_fold_alloc(pb, &s->c, s->start, &st, msg, sizeof msg);
     if (!fold) {
       problem_release(r, &prob);
+      free(guard);
       return cable_error_set(err, st, NULL, 0, "ISW", "%s", msg);
     }
     /* a point of a fold curve (NDIM = 2n) restarts the curve as it is
@@ -730,12 +813,14 @@ static int engine_run(cable_session *r, rp_setup *s, rp_branch **out, cable_erro
   if (st) {
     cable_fold_free(fold);
     problem_release(r, &prob);
+    free(guard);
     return st;
   }
   cable_cont *cc = cable_cont_alloc(pb, crun, &st);
   if (!cc) {
     cable_fold_free(fold);
     problem_release(r, &prob);
+    free(guard);
     return cable_error_set(err, st, NULL, 0, NULL, "could not set up the solver: %s", cable_status_message(st));
   }
   if (st == 0 && fold) {
@@ -755,6 +840,7 @@ static int engine_run(cable_session *r, rp_setup *s, rp_branch **out, cable_erro
     cable_cont_free(cc);
     cable_fold_free(fold);
     problem_release(r, &prob);
+    free(guard);
     return st;
   }
   /* AUTO's NEWLAB: a new branch number after a start from STPNT or a switch;
@@ -763,8 +849,14 @@ static int engine_run(cable_session *r, rp_setup *s, rp_branch **out, cable_erro
   int ibr = s->mbr + 1;
   if (s->start && s->c.isw >= 0) ibr = fold && start == NULL ? s->start->lab : s->start->ibr;
   double t_start = now_seconds();
-  collector col = {rp_branch_alloc(ibr, crun, &s->names, s->e), r->opt.diag, 0, isatty(fileno(stderr)),
-                   r->opt.interrupt, r->opt.interrupt_ctx, 0};
+  collector col;
+  memset(&col, 0, sizeof col);
+  col.b = rp_branch_alloc(ibr, crun, &s->names, s->e);
+  col.diag = r->opt.diag;
+  col.log = rp_log(r);
+  col.tty = isatty(fileno(stderr));
+  col.interrupt = r->opt.interrupt;
+  col.interrupt_ctx = r->opt.interrupt_ctx;
   if (col.b && fold) {
     col.b->has_c_user = 1;
     col.b->c_user = s->c;
@@ -773,28 +865,96 @@ static int engine_run(cable_session *r, rp_setup *s, rp_branch **out, cable_erro
     cable_cont_free(cc);
     cable_fold_free(fold);
     problem_release(r, &prob);
+    free(guard);
     return cable_error_set(err, CABLE_ERR_ALLOC, NULL, 0, NULL, "out of memory");
   }
+  /* the files are open (and NAME locked) before the first step */
+  if (out_name) {
+    const char *dir = r->opt.dir && r->opt.dir[0] ? r->opt.dir : NULL;
+    col.live = rp_live_open(dir, out_name, out_append, &col.b->c, &col.b->names, rp_log(r), err);
+    if (!col.live) {
+      rp_branch_decref(col.b);
+      cable_cont_free(cc);
+      cable_fold_free(fold);
+      problem_release(r, &prob);
+      free(guard);
+      return err && err->status ? err->status : CABLE_ERR_IO;
+    }
+    col.out = rp_live_sink(col.live);
+  }
+  col.guard = guard;
+  col.e = s->e;
+  col.out_name = out_name;
+  if (guard) guard_where(guard, &col, s->e, out_name);
   cable_sink sink = {&col, collect_point, collect_solution, collect_diag};
   int next = s->mlab + 1;
   st = cable_cont_run(cc, &sink, ibr, s->mlab + 1, &next);
-  char why[512], end_note[600];
+  char why[512], end_note[600], fatal[1200] = "";
   snprintf(why, sizeof why, "%s", st < 0 ? cable_cont_error(cc) : "");
+  if (guard && guard->fatal) {
+    /* doc/plugins.md: a negative return is fatal; the run ends with what it has */
+    snprintf(fatal, sizeof fatal, "the %s routine of %s returned %d (fatal)", guard->fatal_routine, guard->origin,
+             guard->fatal);
+    snprintf(why, sizeof why, "%.500s", fatal);
+    if (st >= 0 || st == CABLE_ERR_INTERRUPTED) st = CABLE_ERR_PLUGIN;
+  } else if (st == CABLE_ERR_INTERRUPTED && col.interrupted)
+    snprintf(why, sizeof why, "stopped after PT %d (a signal, or KeyboardInterrupt); the points before are complete",
+             col.b->npt > 0 ? col.b->pts[col.b->npt - 1].pt.pt : 0);
   snprintf(end_note, sizeof end_note, "branch %d ended: %s: %s", ibr, cable_status_message(st), why);
   if (!col.rc && st < 0) col.rc = rp_branch_set_end_note(col.b, end_note);
   cable_cont_free(cc);
   cable_fold_free(fold);
   problem_release(r, &prob);
+  free(guard);
   if (col.tty) fprintf(stderr, "\r%*s\r", 100, "");
+  int live_rc = col.out_rc;
+  if (col.live && col.b->npt == 0) {
+    rp_live_abort(col.live);   /* nothing computed: the files stay as they were */
+  } else if (col.live) {
+    /* close reports a failed write again, with its message */
+    cable_error cerr;
+    cable_error_clear(&cerr);
+    int rc2 = rp_live_close(col.live, col.b->end_note, &cerr);
+    if (!live_rc) live_rc = rc2;
+    if (live_rc && err) *err = col.out_err.msg[0] ? col.out_err : cerr;
+  }
+  if (live_rc) {
+    rp_branch_decref(col.b);
+    return live_rc;
+  }
   if (col.rc) {
     rp_branch_decref(col.b);
     return cable_error_set(err, CABLE_ERR_ALLOC, NULL, 0, NULL, "out of memory keeping the branch");
   }
   if (st == CABLE_ERR_INTERRUPTED) {
-    int npt = col.b->npt;
+    const rp_branch *b = col.b;
+    const cable_point *last = b->npt > 0 ? &b->pts[b->npt - 1].pt : NULL;
+    char nm[64], at[160] = "before its first point";
+    if (last) {
+      int k = last->nicp > 0 ? last->icp[0] : 0;
+      snprintf(at, sizeof at, "after PT %d (%s = %.10g)", last->pt, par_name(&b->names, k, nm, sizeof nm),
+               last->par[k]);
+    }
+    char files[1200];
+    if (out_name && b->npt > 0) {
+      snprintf(files, sizeof files, "its %d points (%d labelled) are in b.%s, s.%s, d.%s", b->npt, b->nsol,
+               out_name, out_name, out_name);
+    } else {
+      snprintf(files, sizeof files, "its %d points are kept in memory only (no sv=)", b->npt);
+    }
+    cable_error_set(err, st, NULL, 0, NULL, "branch %d of e='%s' interrupted %s; %s", ibr, s->e, at, files);
+    *out = col.b;
+    return st;
+  }
+  if (fatal[0]) {
+    const rp_branch *b = col.b;
+    char files[1200] = "";
+    if (out_name && b->npt > 0)
+      snprintf(files, sizeof files, "; its %d points before are in b.%s, s.%s, d.%s", b->npt, out_name, out_name,
+               out_name);
+    cable_error_set(err, CABLE_ERR_PLUGIN, NULL, 0, NULL, "%s during branch %d of e='%s'%s", fatal, ibr, s->e, files);
     rp_branch_decref(col.b);
-    return cable_error_set(err, st, NULL, 0, NULL, "branch %d interrupted after %d points (nothing written for it)",
-                           ibr, npt);
+    return CABLE_ERR_PLUGIN;
   }
   if (st < 0 && col.b->npt == 0) {
     rp_branch_decref(col.b);
@@ -870,19 +1030,25 @@ int cable_session_run(cable_session *r, const cable_run_args *a, cable_branch **
   rp_setup s;
   rp_branch *b = NULL;
   rc = build_setup(r, a, &s, err);
-  if (!rc) rc = engine_run(r, &s, &b, err);
+  /* output names are checked before anything is computed */
+  if (!rc && s.sv[0]) rc = rp_out_name_check("sv", s.sv, err);
+  if (!rc && s.ap[0]) rc = rp_out_name_check("ap", s.ap, err);
+  /* sv= is written as the run goes (ap= too, when there is no sv=) */
+  const char *live = s.sv[0] ? s.sv : s.ap[0] ? s.ap : NULL;
+  if (!rc) rc = engine_run(r, &s, live, !s.sv[0], &b, err);
   if (!rc) remember(r, &s);
   rp_result res = {1, &b};
-  if (!rc && s.sv[0]) rc = rp_result_write(r, &res, s.sv, 0, err);
-  if (!rc && s.ap[0]) rc = rp_result_write(r, &res, s.ap, 1, err);
+  if (!rc && s.sv[0] && s.ap[0]) rc = rp_result_write(r, &res, s.ap, 1, err);
   if (!rc && (s.sv[0] || s.ap[0]))
     fprintf(rp_log(r), "  %s b.%s, s.%s, d.%s\n", s.sv[0] ? "saved to" : "appended to", s.sv[0] ? s.sv : s.ap,
             s.sv[0] ? s.sv : s.ap, s.sv[0] ? s.sv : s.ap);
+  if (!rc && s.sv[0] && s.ap[0]) fprintf(rp_log(r), "  appended to b.%s, s.%s, d.%s\n", s.ap, s.ap, s.ap);
   if (!rc && s.fatal)
     rc = cable_error_set(err, s.fatal, NULL, 0, NULL, "%s%s%s", s.fatal_msg,
                          s.sv[0] || s.ap[0] ? "; its points are saved to b./s./d." : "", s.sv[0] ? s.sv : s.ap);
+  fflush(rp_log(r));
   setup_free(&s);
-  if (rc) rp_branch_decref(b);
+  if (rc && rc != CABLE_ERR_INTERRUPTED) rp_branch_decref(b);
   else *out = b;
   return rc;
 }

@@ -75,6 +75,9 @@ struct cable_session {
   int nplugins;
   char plugin_name[RP_MAX_PLUGINS][CABLE_NAME_MAX];
   cable_plugin *plugin[RP_MAX_PLUGINS];
+  /* the last "accepted and ignored" note printed: the same note is not
+     printed again before every run of a script */
+  char noted_ignored[sizeof ((cable_constants *)0)->ignored];
   /* AUTO equation files (NAME.f90, NAME.f, NAME.c) loaded by this session */
   int nautoeq;
   char autoeq_name[RP_MAX_PLUGINS][CABLE_NAME_MAX];

@@ -9,6 +9,7 @@
 #include "cable/cable_aufile.h"
 #include "cable/cable_status.h"
 #include "cable_session_impl.h"
+#include "live_files.h"
 
 rp_branch *rp_branch_alloc(int ibr, const cable_constants *c, const cable_names *names, const char *e)
 {
@@ -180,8 +181,15 @@ int rp_result_write(const cable_session *r, const rp_result *res, const char *na
   o.append = append;
   o.write_csv = 1;   /* b.NAME.<k>.csv beside AUTO's files, for every saved result */
   const char *dir = r->opt.dir && r->opt.dir[0] ? r->opt.dir : NULL;
+  if (rp_out_name_check(append ? "ap" : "sv", name, err)) return err && err->status ? err->status : CABLE_ERR_INPUT;
+  /* NAME's lock: no other writer mixes its files with these (live_files.h) */
+  rp_lock *lock = rp_lock_take(dir, name, r->opt.log ? r->opt.log : stdout, err);
+  if (!lock) return err && err->status ? err->status : CABLE_ERR_IO;
   cable_aufile *w = cable_aufile_open(dir, name, &res->br[0]->c, &res->br[0]->names, &o, err);
-  if (!w) return err && err->status ? err->status : CABLE_ERR_IO;
+  if (!w) {
+    rp_lock_release(lock);
+    return err && err->status ? err->status : CABLE_ERR_IO;
+  }
   cable_sink s = cable_aufile_sink(w);
   int rc = 0;
   for (int k = 0; k < res->nbr && !rc; k++) {
@@ -196,6 +204,7 @@ int rp_result_write(const cable_session *r, const rp_result *res, const char *na
   }
   /* close reports a failed callback again, with its message */
   int rc2 = cable_aufile_close(w, err);
+  rp_lock_release(lock);
   return rc2 ? rc2 : rc;
 }
 

@@ -1,7 +1,8 @@
 /* cable._cable.Session: AUTO's runner on cable's engine (cable_session.h).
  * Runs release the GIL; after every computed point the session takes it back
  * for a moment to run Python's signal handlers, so Ctrl-C (KeyboardInterrupt)
- * stops a run at the next point, before anything of it is written.
+ * stops a run after the point being computed: its files (sv=) hold every
+ * point before, the exception says where and carries the partial branch.
  *
  * Threads: the C session is one runner's state (AUTO's), not safe to use from
  * two threads at once, and a run releases the GIL.  So every method takes the
@@ -18,6 +19,7 @@ typedef struct pyc_session {
   PyThread_type_lock lock;    /* held by the call in progress */
   int busy;                   /* a call is in progress (read and written with the GIL held) */
   unsigned long owner;        /* ... in this thread */
+  FILE *log;                  /* the session's log, written to sys.stdout (log_write) */
 } pyc_session;
 
 /* How long a waiting call sleeps between looks at Python's signal handlers
@@ -59,6 +61,34 @@ static void session_leave(pyc_session *self)
   PyThread_release_lock(self->lock);
 }
 
+/* The session's log lines go to Python's sys.stdout as they are printed,
+ * flushed: in order with the script's own prints, through a pipe, and in a
+ * notebook (whose cells show sys.stdout, not the process's stdout).  Called
+ * with or without the GIL (a run releases it). */
+static ssize_t log_write(void *cookie, const char *buf, size_t n)
+{
+  (void)cookie;
+  PyGILState_STATE g = PyGILState_Ensure();
+  PyObject *t, *v, *tb;
+  PyErr_Fetch(&t, &v, &tb);   /* a pending exception (KeyboardInterrupt) stays */
+  PyObject *out = PySys_GetObject("stdout");   /* borrowed */
+  PyObject *text = PyUnicode_DecodeUTF8(buf, (Py_ssize_t)n, "replace");
+  if (out && out != Py_None && text) {
+    PyObject *r = PyObject_CallMethod(out, "write", "O", text);
+    Py_XDECREF(r);
+    r = PyObject_CallMethod(out, "flush", NULL);
+    Py_XDECREF(r);
+  } else if (text) {
+    fwrite(buf, 1, n, stdout);   /* no sys.stdout (an embedding without one) */
+    fflush(stdout);
+  }
+  Py_XDECREF(text);
+  PyErr_Clear();
+  PyErr_Restore(t, v, tb);
+  PyGILState_Release(g);
+  return (ssize_t)n;
+}
+
 /* The session's interrupt check: Python's pending signal handlers, with the GIL. */
 static int session_interrupt(void *ctx)
 {
@@ -87,6 +117,10 @@ static int session_init(PyObject *obj, PyObject *args, PyObject *kw)
   o.dir = NULL;   /* the current directory: the Python layer changes it (AUTO's cd) */
   o.interrupt = session_interrupt;
   o.interrupt_ctx = self;
+  cookie_io_functions_t io = {NULL, log_write, NULL, NULL};
+  self->log = fopencookie(NULL, "w", io);
+  if (self->log) setvbuf(self->log, NULL, _IOLBF, 0);   /* a line at a time */
+  o.log = self->log;
   self->s = cable_session_alloc(&o);
   if (!self->s) {
     PyErr_NoMemory();
@@ -100,6 +134,7 @@ static void session_dealloc(PyObject *obj)
   pyc_session *self = (pyc_session *)obj;
   cable_session_free(self->s);
   if (self->lock) PyThread_free_lock(self->lock);
+  if (self->log) fclose(self->log);
   Py_TYPE(obj)->tp_free(obj);
 }
 
@@ -164,6 +199,30 @@ static int inputs_parse(PyObject *args, run_inputs *in)
   return 0;
 }
 
+/* A KeyboardInterrupt (or another exception a signal handler raised) that
+ * stopped a run: it gets the run's message as a note (where the points are)
+ * and the partial branch as its attribute branch. */
+static PyObject *interrupted(cable_branch *b, const cable_error *err)
+{
+  PyObject *t, *v, *tb;
+  PyErr_Fetch(&t, &v, &tb);
+  PyErr_NormalizeException(&t, &v, &tb);
+  if (v) {
+    char buf[1400];
+    PyObject *r = PyObject_CallMethod(v, "add_note", "s", cable_error_format(err, buf, sizeof buf));
+    Py_XDECREF(r);
+    PyObject *w = b ? pyc_branch_wrap(b) : NULL;
+    b = NULL;
+    if (w) PyObject_SetAttrString(v, "branch", w);
+    Py_XDECREF(w);
+    PyErr_Clear();   /* a failure above leaves the interrupt as it was */
+    if (tb) PyException_SetTraceback(v, tb);
+  }
+  cable_branch_decref(b);
+  PyErr_Restore(t, v, tb);
+  return NULL;
+}
+
 /* run(start, sol, mbr, mlab, name, e, c, s, sv, ap, over) -> Branch */
 static PyObject *session_run(PyObject *obj, PyObject *args)
 {
@@ -188,6 +247,7 @@ static PyObject *session_run(PyObject *obj, PyObject *args)
   session_leave(self);
   fflush(stdout);
   inputs_free(&in);
+  if (rc == CABLE_ERR_INTERRUPTED && PyErr_Occurred()) return interrupted(b, &err);
   return rc ? pyc_raise(rc, &err) : pyc_branch_wrap(b);
 }
 

@@ -175,6 +175,34 @@ int cable_atomic_checkpoint(cable_atomic_file *af, cable_error *err)
   return 0;
 }
 
+int cable_atomic_copy(cable_atomic_file *af, const char *dest, const char *trailer, int sync, cable_error *err)
+{
+  if (!af || !af->f || !dest) return cable_error_set(err, CABLE_ERR_INPUT, "", 0, "", "file is not open");
+  if (fflush(af->f) != 0 || ferror(af->f))
+    return cable_error_set(err, CABLE_ERR_IO, af->path, 0, "", "write error: %s", strerror(errno));
+  int fd = open(dest, O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, NEW_FILE_MODE);
+  if (fd < 0) return cable_error_set(err, CABLE_ERR_IO, dest, 0, "", "cannot create: %s", strerror(errno));
+  FILE *out = fdopen(fd, "wb");
+  if (!out) {
+    close(fd);
+    unlink(dest);
+    return cable_error_set(err, CABLE_ERR_IO, dest, 0, "", "fdopen failed: %s", strerror(errno));
+  }
+  FILE *in = fopen(af->tmp, "rb");
+  int st = in ? copy_stream(in, out) : -1;
+  if (in) fclose(in);
+  if (st == 0 && trailer && fputs(trailer, out) < 0) st = -1;
+  if (st == 0 && fflush(out) != 0) st = -1;
+  if (st == 0 && sync && fsync(fileno(out)) != 0) st = -1;
+  int e = errno;
+  if (fclose(out) != 0 && st == 0) st = -1, e = errno;
+  if (st != 0) {
+    unlink(dest);
+    return cable_error_set(err, CABLE_ERR_IO, dest, 0, "", "cannot write the copy: %s", strerror(e));
+  }
+  return 0;
+}
+
 int cable_atomic_finish(cable_atomic_file *af, cable_error *err)
 {
   if (!af) return cable_error_set(err, CABLE_ERR_INPUT, "", 0, "", "file is not open");

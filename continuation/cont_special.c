@@ -337,13 +337,13 @@ static int locate(cable_cont *cc, int type, int which, double seed, int plain)
       }
     }
     if (rc != CABLE_SUCCESS) {
-      cont_set_error(cc,
-                     "could not locate the %s in the bracket [%.10g, %.10g] of arclength from the last point "
-                     "(test function %.3e, %.3e at its ends, %.3e at the step's ends): %s at %.10g and at every "
-                     "point tried towards the bracket's far end (%s)",
-                     what, lo, hi, s0 < s1 ? g0 : g1, s0 < s1 ? g1 : g0, gstep,
-                     rc == CABLE_ERR_LINSOLVE ? "the extended Jacobian is singular" : "the corrector failed", sfail,
-                     cc->rejected[0] ? cc->rejected : colloc_newton_message(cc->nw));
+      /* one line with what matters: where the point lies (the bracket's
+         width) and why it was not reached; the corrector's own message is
+         in the d-file's rejected-step notes */
+      cont_set_error(cc, "could not locate the %s: it lies within %.3e of arclength, where %s", what, hi - lo,
+                     rc == CABLE_ERR_LINSOLVE ? "the extended Jacobian is singular" : "the corrector does not converge");
+      (void)sfail;
+      (void)gstep;
       return rc;
     }
     double f = test_value(&ts, type, which);
@@ -387,9 +387,8 @@ static int locate(cable_cont *cc, int type, int which, double seed, int plain)
              fabs(s1 - s0), fabs(g0), fabs(g1), tlo.sv2, thi.sv2, gstep, cc->c.itmx, tol);
     return locate_accept(cc, type, which, s, xs, xds, ts, far);
   }
-  cont_set_error(cc, "could not locate the %s within ITMX=%d iterations: bracket [%.10g, %.10g] of arclength from the "
-                 "last point, test function %.3e, %.3e at its ends, %.3e at the step's ends", what, cc->c.itmx,
-                 fmin(s0, s1), fmax(s0, s1), s0 < s1 ? g0 : g1, s0 < s1 ? g1 : g0, gstep);
+  cont_set_error(cc, "could not locate the %s within ITMX=%d iterations: it lies within %.3e of arclength", what,
+                 cc->c.itmx, fabs(s1 - s0));
   return CABLE_ERR_NEWTON;
 }
 
@@ -403,13 +402,13 @@ int cont_locate(cable_cont *cc, int type, int which, double seed)
   cc->cnt.locates++;
   int rc = locate(cc, type, which, seed, 0);
   if (rc == CABLE_SUCCESS || rc == CABLE_ERR_CALLBACK) return rc;
-  char first[230]; /* both messages fit in cc->err */
-  snprintf(first, sizeof first, "%.229s", cc->err);
   rc = locate(cc, type, which, (double)NAN, 1);
   if (rc != CABLE_SUCCESS && rc != CABLE_ERR_CALLBACK) {
-    char second[260];
-    snprintf(second, sizeof second, "%.259s", cc->err);
-    cont_set_error(cc, "%s; regula falsi: %s", first, second);
+    /* one line: the regula falsi's bracket (it shrinks every iteration, so
+       it is the closer of the two attempts) */
+    char second[400];
+    snprintf(second, sizeof second, "%.399s", cc->err);
+    cont_set_error(cc, "%s (secant steps, then regula falsi)", second);
   }
   return rc;
 }

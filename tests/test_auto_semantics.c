@@ -326,6 +326,62 @@ static void test_lp_bp_one_step(memrun *r)
   test_int(what, nbad, 0);
 }
 
+/* 6b. A fold the engine cannot locate is reported in one line with the
+ * number that matters (how closely it is bracketed), not the corrector's
+ * message twice (it was up to 350 characters).  The problem of 6 with its
+ * pitchfork far away (c = 0.5) and ITMX = 2: two secant iterations do not
+ * reach the tolerance EPSS = 1e-8. */
+typedef struct {
+  int n;
+  char note[8][600];
+} note_log;
+static int note_point(void *ctx, const cable_point *pt)
+{
+  note_log *l = ctx;
+  if (pt->note && strstr(pt->note, "could not locate the fold") && l->n < 8)
+    snprintf(l->note[l->n++], sizeof l->note[0], "%s", pt->note);
+  return 0;
+}
+
+static void test_fold_not_located_one_line(void)
+{
+  static const char *const names[] = {"lambda", "a", "c"};
+  int found = 0, ok = 1;
+  for (int k = 0; k < 20 && !found; k++) {
+    parab_start st0 = {0.75, 0.05, 0.5};
+    cable_problem pb = *cable_testproblem_bratu();
+    pb.name = "lpbp";
+    pb.ndim = 2; pb.nbc = 2; pb.nint = 0; pb.npar = 3;
+    pb.parnames = names; pb.unames = NULL;
+    pb.func = parab_func; pb.bcnd = parab_bcnd; pb.icnd = NULL; pb.stpnt = parab_stpnt; pb.pvls = NULL;
+    pb.func_has_jac = pb.bcnd_has_jac = pb.icnd_has_jac = 0;
+    pb.params = &st0;
+    cable_constants c;
+    engine_constants(&c, 4, 2);
+    c.jac = 0;
+    c.ds = -(0.1 + 0.01 * k); c.dsmin = 1e-6; c.dsmax = fabs(c.ds); c.iads = 0; c.nmx = 40;
+    c.rl0 = -1.0; c.rl1 = 2.0;
+    c.ilp = 1; c.isp = 0; c.itmx = 2;
+    c.epsl = c.epsu = 1e-10; c.epss = 1e-8;
+    int st = 0;
+    cable_cont *cc = cable_cont_alloc(&pb, &c, &st);
+    note_log l = {0};
+    cable_sink sink = {&l, note_point, NULL, NULL};
+    if (cc && cable_cont_set_start(cc, NULL) == 0) cable_cont_run(cc, &sink, 1, 1, NULL);
+    cable_cont_free(cc);
+    for (int i = 0; i < l.n; i++) {
+      found = 1;
+      const char *n = l.note[i];
+      const char *first = strstr(n, "corrector");
+      ok &= strlen(n) <= 160 && !strchr(n, '\n') && strstr(n, "it lies within") != NULL &&
+            (!first || !strstr(first + 1, "corrector"));
+      if (!ok) fprintf(stderr, "  note: %s\n", n);
+    }
+  }
+  test_true("ITMX = 2: the fold is not located and a point's note says so", found);
+  test_true("that note is one line of at most 160 characters with the bracket's width, the reason once", found && ok);
+}
+
 /* 7. The orientation of a switch at a simple branch point, for equations from
  * AUTO files (AUTO's STDRBV, the BVP start that ISW = -1 uses): the first free
  * parameter's component that is not negligible is positive, else the first
@@ -485,6 +541,7 @@ int main(void)
   test_pvls_uzr(&r);
   test_isp(&r);
   test_lp_bp_one_step(&r);
+  test_fold_not_located_one_line();
   test_switch_orientation(&r);
   test_uz_grid(&r);
   return test_summary();

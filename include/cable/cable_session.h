@@ -57,7 +57,8 @@ typedef struct cable_session_options {
   FILE *diag;                               /* the engine's per-point diagnostics (AUTO's
                                                fort.9 lines); NULL: not shown */
   /* Asked after every computed point (NULL: never): non-zero stops the run
-   * there with CABLE_ERR_INTERRUPTED (nothing is written for it). */
+   * there with CABLE_ERR_INTERRUPTED; its sv=/ap= files keep every point
+   * (doc/failures.md). */
   int (*interrupt)(void *ctx);
   void *interrupt_ctx;
 } cable_session_options;
@@ -105,8 +106,11 @@ typedef struct cable_run_args {
 } cable_run_args;
 
 /* One continuation run; *out: the new branch (also when it ended abnormally,
- * MX).  0 or a negative cable_status with err (CABLE_ERR_INTERRUPTED when
- * the interrupt callback stopped it: no file is written then).
+ * MX).  0 or a negative cable_status with err.  sv=NAME / ap=NAME files are
+ * written as the run goes (doc/failures.md): an output name that cannot be
+ * written is refused before the first step.  CABLE_ERR_INTERRUPTED: the
+ * interrupt callback stopped it; *out is then the partial branch (the
+ * caller's reference) and the files hold its points.
  * The session functions check their arguments first (doc/api.md,
  * Contracts): a NULL session, arguments or output give CABLE_ERR_NULL; in a
  * (and in save's and transform's lists) a negative count gives

@@ -133,7 +133,14 @@ class Runner:
         file, sv='NAME' saves b./s./d.NAME, ap='NAME' appends; every other
         keyword overrides a constant (NMX=200, DS='-', UZR={'T': -2.1})."""
         sys.stdout.flush()
-        self.last = Result([self.session.run(*_args(data, kw))])
+        try:
+            self.last = Result([self.session.run(*_args(data, kw))])
+        except KeyboardInterrupt as e:
+            # the run stopped after its last point: the partial branch stays
+            # with the exception (e.result) and as the runner's last result
+            if getattr(e, 'branch', None) is not None:
+                e.result = self.last = Result([e.branch])
+            raise
         return self.last
 
     def load(self, data=None, **kw):

@@ -14,6 +14,7 @@ import builtins
 import io
 import keyword
 import os
+import signal
 import sys
 import tokenize
 import traceback
@@ -177,6 +178,15 @@ def _report(path, line, msg, out, src_file=None):
         out.write('    %s\n' % src.strip())
 
 
+class Terminated(KeyboardInterrupt):
+    """SIGTERM, raised like Ctrl-C's KeyboardInterrupt: a run stops after the
+    point being computed and keeps its files."""
+
+
+def _on_sigterm(signum, frame):
+    raise Terminated('SIGTERM')
+
+
 def run_script(path, out=None):
     """Run the script at path (outputs in its directory).  Returns the exit
     status: 0, 1 for an error (reported on out, default stderr), 130 when
@@ -209,9 +219,11 @@ def run_script(path, out=None):
     except KeyboardInterrupt as e:
         sys.stdout.flush()
         w = sr.where(e) or (name, 0)
-        _report(_shown(w[0], path, name), w[1], 'interrupted (the run stopped at its last point; '
-                'files written before are complete)', out, w[0])
-        return 130
+        notes = getattr(e, '__notes__', None)
+        sig = 'SIGTERM' if isinstance(e, Terminated) else 'SIGINT'
+        _report(_shown(w[0], path, name), w[1], 'stopped by %s: %s' % (sig, '; '.join(notes) if notes else
+                'the script stopped; files written before are complete'), out, w[0])
+        return 143 if isinstance(e, Terminated) else 130
     except CableError as e:
         sys.stdout.flush()
         w = sr.where(e) or (name, 0)
@@ -239,6 +251,14 @@ def main(argv):
     # small blocks run fastest on one BLAS thread, and OpenBLAS's idle
     # threads spin (CABLE_BLAS_THREADS=n keeps n)
     blas_single_thread()
+    # the application's too: SIGINT and SIGTERM end the script (exit 130,
+    # 143) after the point being computed, keeping its files, and the log goes out line by line into a file or a pipe
+    signal.signal(signal.SIGTERM, _on_sigterm)
+    signal.signal(signal.SIGINT, signal.default_int_handler)   # also where the shell ignored it (cmd &)
+    try:
+        sys.stdout.reconfigure(line_buffering=True)
+    except (AttributeError, ValueError):
+        pass
     status = run_script(argv[0])
     sys.stdout.flush()
     return status
