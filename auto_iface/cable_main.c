@@ -200,7 +200,7 @@ int main(int argc, char **argv)
     return 0;
   }
   if (strcmp(cmd, "run") == 0) return run_command(argc - 2, argv + 2, &err);
-  if (strcmp(cmd, "atlas") == 0) return atlas(argc, argv);
+  if (strcmp(cmd, "atlas") == 0) return python_module("cable.atlas", argc, argv);
   if (strcmp(cmd, "view") == 0) return python_module("cable.webview", argc, argv);
   if (strcmp(cmd, "replay") == 0) {
     if (argc != 3) {
