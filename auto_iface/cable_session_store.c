@@ -347,10 +347,18 @@ static int same_start(const rp_branch *a, const rp_branch *b)
          fabs(p->l2norm - q->l2norm) <= RP_SAME_START_RTOL * fmax(1, fabs(p->l2norm));
 }
 
-/* b reversed, then a without its first point; the junction loses its label
- * (it is no longer an end point). */
+/* b reversed, then a without its first point, as AUTO's merge (parseB):
+ * the shared start keeps b's row, label and type; points are numbered 1, 2,
+ * ... and labels from the smaller of a's and b's smallest label on, in the
+ * new order (AUTO renumbers them so: no label repeats). */
 static rp_branch *join(const rp_branch *a, const rp_branch *b)
 {
+  int lab = 0;
+  for (int pass = 0; pass < 2; pass++) {
+    const rp_branch *src = pass ? a : b;
+    for (int j = 0; j < src->npt; j++)
+      if (src->pts[j].pt.lab > 0 && (lab == 0 || src->pts[j].pt.lab < lab)) lab = src->pts[j].pt.lab;
+  }
   rp_branch *n = rp_branch_alloc(a->ibr, &a->c, &a->names, a->e);
   if (!n) return NULL;
   n->has_c_user = a->has_c_user;
@@ -366,11 +374,7 @@ static rp_branch *join(const rp_branch *a, const rp_branch *b)
       const cable_solution *sol = p->sol >= 0 ? src->sol[p->sol] : NULL;
       pt.ibr = a->ibr;
       pt.pt = ++k;
-      if (!pass && i == 0) {   /* the shared start */
-        pt.itp = CABLE_TY_NONE;
-        pt.lab = 0;
-        sol = NULL;
-      }
+      if (pt.lab > 0) pt.lab = lab++;
       cable_solution *s2 = NULL;
       if (sol) {
         if (!(s2 = cable_solution_clone(sol))) {
@@ -379,6 +383,7 @@ static rp_branch *join(const rp_branch *a, const rp_branch *b)
         }
         s2->ibr = a->ibr;
         s2->ntot = k;
+        s2->lab = pt.lab;
       }
       int rc = rp_branch_add(n, &pt, s2);
       cable_solution_free(s2);
