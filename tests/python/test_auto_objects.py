@@ -42,6 +42,10 @@ sv(r, 'two')
 merge('two', 'merged')
 print("OUT two", loadbd('two').getLabels())
 print("OUT loaded", loadbd('merged').getLabels())
+print("OUT rows", [len(b.toArray()) for b in loadbd('two')], [len(b.toArray()) for b in loadbd('merged')])
+sv(loadbd('two'), 'again')
+print("OUT resaved", len([l for l in open('b.again') if l.split() and l.split()[0] != '0']),
+      len([l for l in open('b.two') if l.split() and l.split()[0] != '0']))
 print("TABLE")
 print(r1)
 print("SUMMARY")
@@ -99,6 +103,9 @@ def test_objects_as_auto07p(both):
     assert c[5] == 'toArray 12 4'      # 12 points, PAR(1) L2-NORM MAX U(1) MAX U(2)
     assert c[6] == 'two [1, 2, 1, 2]'  # merge('two', 'merged') leaves two as it was
     assert c[7] == 'loaded [1, 2, 3]'
+    # loadbd keeps every row (12 and 2 points, 13 merged), and re-saving writes them all
+    assert c[8] == 'rows [12, 2] [13]'
+    assert c[9] == 'resaved 14 14'
     table = _table(both['cable'], 'TABLE', 'SUMMARY')
     assert table[0] == '  BR    PT  TY  LAB    PAR(1)        L2-NORM       MAX U(1)      MAX U(2)'
     assert [ln[:19] for ln in table[1:]] == ['   1     1  EP    1', '   1    12  EP    2']
@@ -224,3 +231,28 @@ def test_auto_module_names_in_process(bratu):
     """import cable users get AUTO's module names inside the package."""
     from cable import AUTOclui, AUTOCommands
     assert callable(AUTOclui.run) and callable(AUTOCommands.merge) and 'mb' in AUTOclui.__all__
+
+
+def test_loadbd_rows_names_and_problem_from_the_files(work):
+    """loadbd without a constants file: every b-file row, the parameter
+    names of the b-file's header (parnames), and the problem its header
+    records (e=), so a run from a loaded solution needs no e=, as in AUTO."""
+    for f in ('bratu.f90', 'c.bratu'):
+        shutil.copy(os.path.join(ROOT, 'tests/data/autoeq/bratu_f90', f), str(work))
+    with open('c.bratu', 'a') as f:
+        f.write("parnames = {1: 'lam'}\n")
+    r = cable.Runner().run(e='bratu', c='bratu', NMX=40, sv='lower')
+    os.remove('c.bratu')
+    fresh = cable.Runner()
+    x = fresh.loadbd('lower')
+    # the files hold 11 significant digits (ES19.10E3): a relative 5e-11
+    assert len(x['lam']) == 40 and np.allclose(x['lam'], r['lam'], rtol=1e-10, atol=0)
+    assert np.allclose(x['L2-NORM'], r['L2-NORM'], rtol=1e-10, atol=0) and x.getLabels() == r.getLabels()
+    assert x('LP1')['lam'] == pytest.approx(r('LP1')['lam'], rel=1e-10)
+    assert x.branches[0].e == 'bratu'
+    y = fresh.run(x('LP1'), NMX=3)   # the problem from the file
+    assert y.branches[0].e == 'bratu' and len(y['lam']) == 3
+    fresh.save(x, 'again')
+    rows = [ln for ln in open('b.lower') if ln.split()[0] != '0']
+    assert [ln for ln in open('b.again') if ln.split()[0] != '0'] == rows
+    assert open('s.again').read() == open('s.lower').read()
