@@ -23,6 +23,8 @@ probes=(
   "/usr/lib/python3/dist-packages/pytest/__init__.py:python3-pytest"
   "/usr/lib/python3/dist-packages/distributed/__init__.py:python3-distributed"
   "/usr/lib/python3/dist-packages/matplotlib/__init__.py:python3-matplotlib"   # plot() returns a figure
+  "/usr/lib/python3/dist-packages/ipykernel/__init__.py:python3-ipykernel"   # import cable in a Jupyter kernel (a test)
+  "/usr/lib/python3/dist-packages/jupyter_client/__init__.py:python3-jupyter-client"
   "/usr/bin/pkg-config:pkgconf"            # make check builds against an installed libcable
   "/usr/bin/time:time"                     # make bench: CPU and wall time of the knot72 runs
   "/usr/bin/bc:bc"                         # make bench: arithmetic in scripts/bench.sh

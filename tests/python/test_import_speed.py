@@ -1,7 +1,8 @@
 """`import cable` runs as fast as the cable program (issue 26, item 5).
 
 The same braid run (the flat (7,2) knot, 24 steps) by `cable run` and inside
-a fresh `import cable` host (plain python3 with numpy, and a Dask worker),
+a fresh `import cable` host (plain python3 with numpy, a Jupyter (IPython)
+kernel, and a Dask worker),
 with the environment's OPENBLAS_NUM_THREADS removed as a user's shell has
 it: the CPU time of the run inside Python may exceed the program's by at most
 20 %.  Before libcable.so and the extension carried their own one-thread BLAS
@@ -100,6 +101,36 @@ else:
     if 'NOOPENBLAS' in p.stdout:
         pytest.skip("numpy's BLAS is not OpenBLAS here")
     assert 'THREADS 2' in p.stdout, p.stdout
+
+
+def test_jupyter_kernel_as_fast_as_the_program(knot):
+    """The same in an IPython kernel (what a notebook runs), started as
+    Jupyter starts it."""
+    jupyter_client = pytest.importorskip('jupyter_client')
+    pytest.importorskip('ipykernel')
+    km = jupyter_client.KernelManager(kernel_name='python3')
+    km.start_kernel(env=_env(), cwd=str(knot))
+    try:
+        kc = km.client()
+        kc.start_channels()
+        kc.wait_for_ready(timeout=120)
+        cli, py = [], []
+        for k in range(3):
+            cli.append(_cli_cpu(knot, 'cli%d' % k))
+            out = []
+
+            def hook(msg):
+                if msg['msg_type'] == 'stream' and msg['content']['name'] == 'stdout':
+                    out.append(msg['content']['text'])
+            code = CHILD.replace('sys.argv[1]', repr('kernel%d' % k))
+            reply = kc.execute_interactive(code, output_hook=hook, timeout=600)
+            assert reply['content']['status'] == 'ok', reply['content']
+            py.append(float([ln for ln in ''.join(out).splitlines() if ln.startswith('CPU ')][-1].split()[1]))
+        kc.stop_channels()
+    finally:
+        km.shutdown_kernel(now=True)
+    print('CPU s, cable run: %s; Jupyter kernel: %s' % (cli, py))
+    assert min(py) <= 1.2 * min(cli), 'Jupyter kernel: %.2f s CPU, cable run: %.2f s' % (min(py), min(cli))
 
 
 def test_dask_worker_as_fast_as_the_program(knot):
