@@ -218,8 +218,12 @@ class Runner:
         arguments would start from; sets the runner's constants.  None when
         that run would start from STPNT (ld(e='x', c='x') only sets the
         constants, which pr() shows)."""
-        with _data_start(data, kw) as (data, kw):
-            b = self.session.load(*_args(data, kw))
+        if _columns(data) is not None:
+            # AUTO's load(u) makes a solution of the table itself; cable's
+            # table is read by the run (as dat=), there is no solution before
+            raise CableError('data columns are a start for run(u, ...), not for load (cable reads them as '
+                             'dat= when the run starts)')
+        b = self.session.load(*_args(data, kw))
         return None if b is None else Result([b])(None)[0]
 
     def loadbd(self, name):
@@ -230,6 +234,9 @@ class Runner:
 
     def _last_run(self, what):
         if self.last is None:
+            if what in ('merge', 'relabel'):
+                raise CableError("%s() works on the last run's output (AUTO's fort.7, fort.8, fort.9), "
+                                 "but there was no run yet" % what)
             raise CableError("%s('NAME') saves the last run's output (AUTO's fort.7, fort.8, fort.9), "
                              "but there was no run yet" % what)
         return self.last

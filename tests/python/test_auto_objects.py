@@ -142,6 +142,8 @@ def test_merge_and_relabel_signatures(bratu):
     assert bratu.loadbd('c').getLabels() == [1, 2, 3, 4] and open('s.a').read() == before
     with pytest.raises(cable.CableError, match="merge\\('A', 'B'\\): B must be a name"):
         bratu.namespace()['merge']('a', 3)
+    with pytest.raises(cable.CableError, match="relabel\\(\\) works on the last run's output"):
+        cable.Runner().namespace()['relabel']()
     # no argument: the last run's output (AUTO's fort.* files), here r2's one branch
     assert bratu.merge().getLabels() == r2.getLabels()
 
@@ -196,6 +198,8 @@ def test_start_from_data_columns(work):
         run(rows[::-1].T, e='bratu', c='bratudat')
     with pytest.raises(cable.CableError, match='a point solution'):
         run([0.0, 1.0, 2.0], e='bratu', c='bratudat')
+    with pytest.raises(cable.CableError, match='not for load'):
+        rn.namespace()['load'](rows.T, e='bratu', c='bratudat')
     assert _dat_dirs() == before   # the temporary dat files are gone
 
 
