@@ -35,12 +35,21 @@ CFLAGS  := $(CSTD) $(WARN) $(OPT_$(MODE)) -MMD -MP -fPIC $(EXTRA_CFLAGS)
 LIBFLAGS := -fvisibility=hidden
 SAN_LD_asan := -fsanitize=address,undefined
 LDFLAGS := $(SAN_LD_$(MODE)) $(EXTRA_LDFLAGS)
-LIBS    := -lsundials_kinsol -lsundials_sunlinsolklu -lsundials_sunmatrixsparse \
-           -lsundials_nvecserial -lsundials_generic -lklu \
-           -lgsl -llapacke -llapack -lblas -lcairo -ldl -lpthread -lm
+LIBS_PRE  := -lsundials_kinsol -lsundials_sunlinsolklu -lsundials_sunmatrixsparse \
+             -lsundials_nvecserial -lsundials_generic -lklu -lgsl
+LIBS_POST := -lcairo -ldl -lpthread -lm
+LIBS    := $(LIBS_PRE) -llapacke -llapack -lblas $(LIBS_POST)
+# libcable.so and the Python extension carry a private OpenBLAS (static, its
+# symbols hidden), set to one thread when loaded (continuation/blas_private.c):
+# a host's own threaded BLAS (numpy's) then neither slows cable down nor is
+# changed by it.  The cable program and the tests use the shared BLAS.
+MULTIARCH := $(shell dpkg-architecture -qDEB_HOST_MULTIARCH 2>/dev/null || echo x86_64-linux-gnu)
+PRIVBLAS_OBJ := $(BUILD)/continuation/blas_private.o
+LIBS_PRIVBLAS := -Wl,--exclude-libs,liblapacke.a:libopenblas.a $(LIBS_PRE) /usr/lib/$(MULTIARCH)/liblapacke.a \
+                 /usr/lib/$(MULTIARCH)/openblas-pthread/libopenblas.a -lgfortran $(LIBS_POST)
 
 PY_SRCS  := $(wildcard auto_iface/pycable_*.c)
-LIB_SRCS := $(filter-out auto_iface/cable_main.c $(PY_SRCS),$(wildcard $(addsuffix /*.c,$(MODULES))))
+LIB_SRCS := $(filter-out auto_iface/cable_main.c continuation/blas_private.c $(PY_SRCS),$(wildcard $(addsuffix /*.c,$(MODULES))))
 LIB_OBJS := $(LIB_SRCS:%.c=$(BUILD)/%.o)
 GEN_OBJS := $(BUILD)/gen/autoeq_compat_text.o
 # auto_iface/auto_compat: the files cable writes next to an AUTO equation file it
@@ -119,15 +128,15 @@ $(LIBCABLE): $(LIB_OBJS) $(GEN_OBJS)
 	@rm -f $@
 	ar rcs $@ $^
 
-$(LIBSO): $(LIB_OBJS) $(GEN_OBJS)
-	$(CC) $(LDFLAGS) -shared -Wl,-soname,$(SONAME) $^ $(LIBS) -o $@
+$(LIBSO): $(LIB_OBJS) $(GEN_OBJS) $(PRIVBLAS_OBJ)
+	$(CC) $(LDFLAGS) -shared -Wl,-soname,$(SONAME) $^ $(LIBS_PRIVBLAS) -o $@
 	@ln -sf libcable.so $(BUILD)/$(SONAME)
 
 lib: $(LIBSO) $(LIBCABLE)
 
-$(PY_SO): $(PY_OBJS) $(LIBCABLE)
+$(PY_SO): $(PY_OBJS) $(PRIVBLAS_OBJ) $(LIBCABLE)
 	@mkdir -p $(dir $@)
-	$(CC) -shared $(LDFLAGS) $^ $(LIBS) -o $@
+	$(CC) -shared $(LDFLAGS) $^ $(LIBS_PRIVBLAS) -o $@
 
 $(PYPKG)/%.py: python/cable/%.py
 	@mkdir -p $(dir $@)

@@ -1094,6 +1094,16 @@ static int read_named(cable_session *r, const char *name, rp_result **res, cable
   char nm[CABLE_NAME_MAX];
   int rc = name_arg("loadbd", name, nm, sizeof nm, err);
   if (!rc) rc = read_constants_file(r, nm, &s, 0, err);
+  /* what the b-file's header records (AUTO's parseB reads it): the problem
+     and the names the columns were written with */
+  char path[1024], e[sizeof s.e];
+  int has_names = 0;
+  rp_path(r, "b", nm, path, sizeof path);
+  if (!rc) rp_bfile_header(path, e, sizeof e, &s.names, &has_names, &s.c);
+  if (!rc && e[0]) {
+    snprintf(s.e, sizeof s.e, "%s", e);
+    snprintf(s.c.e, sizeof s.c.e, "%s", e);
+  }
   if (!rc) rc = rp_result_read(r, nm, &s.c, &s.names, s.e, res, err);
   return rc;
 }

@@ -106,12 +106,26 @@ void rp_path(const cable_session *r, const char *type, const char *name, char *b
 /* b./s./d.NAME from a result (append: AUTO's ap). */
 int rp_result_write(const cable_session *r, const rp_result *res, const char *name, int append,
                     cable_error *err);
-/* A result from s.NAME (and b.NAME when present, for the norms of the
- * labelled rows): one branch per run (b.NAME's sections, split at its header
- * lines as AUTO's parseB does), labelled points only.
- * c/names: the constants the branches get. */
+/* A result from s.NAME and b.NAME: one branch per run (b.NAME's sections,
+ * split at its header lines as AUTO's parseB does), with every row of the
+ * b-file when its labelled rows are the s-file's labels in order (AUTO's
+ * loadbd); else (no b-file, or one that does not pair) the labelled points
+ * only, with the norms of their rows.  c/names: the constants the branches get. */
 int rp_result_read(const cable_session *r, const char *name, const cable_constants *c,
                    const cable_names *names, const char *e, rp_result **out, cable_error *err);
+
+/* ---- b-file rows and header (cable_session_rows.c) ---------------------------------- */
+
+/* The names b-file path's header records: e (its e = '...'; "" when none)
+ * and its parnames/unames dicts applied to *names (*has_names: 1 when one was);
+ * its NDIM, NBC and NINT set in *c where *c leaves them to the problem (0). */
+void rp_bfile_header(const char *path, char *e, size_t elen, cable_names *names, int *has_names, cable_constants *c);
+/* One branch from a b-file section: a point per row; the labelled rows take
+ * sols[0], sols[1], ... in order, with notes[] (the d-file's).  Parameters
+ * without a column take at an unlabelled row the value all labelled
+ * solutions share (NaN when they differ). */
+int rp_branch_from_rows(const cable_bfile_branch *bb, const cable_solution *const *sols, const char *const *notes,
+                        const cable_constants *c, const cable_names *names, const char *e, rp_branch **out);
 
 /* ---- d-file notes (cable_session_dnotes.c) ------------------------------------------- */
 

@@ -233,7 +233,7 @@ static double l2norm_estimate(const cable_solution *s)
  * b-file a run starts where the branch number changes or the point number
  * does not increase (every run starts at PT 1).  Branch numbers alone do not
  * split runs: AUTO numbers two runs from STPNT both branch 1. */
-static void assign_runs(const cable_sfile *sf, const cable_bfile *bf, int *run, double *l2)
+static int assign_runs(const cable_sfile *sf, const cable_bfile *bf, int *run, double *l2)
 {
   int n = cable_sfile_count(sf), i = 0, ok = bf != NULL;
   for (int j = 0; ok && j < bf->nbranch; j++) {
@@ -248,7 +248,7 @@ static void assign_runs(const cable_sfile *sf, const cable_bfile *bf, int *run, 
       }
     }
   }
-  if (ok && i == n) return;
+  if (ok && i == n) return 1;
   for (i = 0; i < n; i++) {
     const cable_solution *s = cable_sfile_get(sf, i), *p = i > 0 ? cable_sfile_get(sf, i - 1) : NULL;
     run[i] = !p ? 0 : run[i - 1] + (s->ibr != p->ibr || abs(s->ntot) <= abs(p->ntot));
@@ -261,6 +261,52 @@ static void assign_runs(const cable_sfile *sf, const cable_bfile *bf, int *run, 
         if (bb->lab[q] == s->lab && bb->br[q] == s->ibr) l2[i] = col[q];
     }
   }
+  return 0;
+}
+
+/* The d-file's note on each solution of sf (its nth label lab: the nth such line). */
+static void solution_notes(const cable_sfile *sf, const rp_dnotes *dn, const char **notes)
+{
+  int n = cable_sfile_count(sf);
+  for (int i = 0; i < n; i++) {
+    int nth = 0, lab = cable_sfile_get(sf, i)->lab;
+    for (int q = 0; q < i; q++) nth += cable_sfile_get(sf, q)->lab == lab;
+    notes[i] = rp_dnotes_find(dn, lab, nth);
+  }
+}
+
+/* Every row of a b-file that pairs with its s-file row by row: one branch
+ * per section (AUTO's parseB), labelled rows with their solutions. */
+static int read_rows(const cable_sfile *sf, const cable_bfile *bf, const rp_dnotes *dn, const cable_constants *c,
+                     const cable_names *names, const char *e, rp_result **out)
+{
+  int n = cable_sfile_count(sf), nbr = 0, rc = 0;
+  for (int j = 0; j < bf->nbranch; j++) nbr += bf->branch[j].nrow > 0;
+  const cable_solution **sols = malloc((size_t)(n > 0 ? n : 1) * sizeof *sols);
+  const char **notes = malloc((size_t)(n > 0 ? n : 1) * sizeof *notes);
+  rp_result *res = rp_result_alloc(nbr);
+  if (!sols || !notes || !res) rc = CABLE_ERR_ALLOC;
+  for (int i = 0; !rc && i < n; i++) sols[i] = cable_sfile_get(sf, i);
+  if (!rc) solution_notes(sf, dn, notes);
+  int i = 0, k = 0;
+  for (int j = 0; !rc && j < bf->nbranch; j++) {
+    const cable_bfile_branch *bb = &bf->branch[j];
+    if (bb->nrow == 0) continue;
+    rc = rp_branch_from_rows(bb, sols + i, notes + i, c, names, e, &res->br[k]);
+    if (rc) break;
+    rp_branch *b = res->br[k++];
+    for (int q = 0; q < b->nsol; q++)
+      if (dn->found) b->sol[q]->bp_kind = rp_bp_kind_from_note(b->sol[q]->itp, notes[i + q]);
+    i += b->nsol;
+  }
+  free(sols);
+  free(notes);
+  if (rc) {
+    rp_result_free(res);
+    return rc;
+  }
+  *out = res;
+  return 0;
 }
 
 int rp_result_read(const cable_session *r, const char *name, const cable_constants *c,
@@ -282,7 +328,19 @@ int rp_result_read(const cable_session *r, const char *name, const cable_constan
   int *run = malloc((size_t)(n > 0 ? n : 1) * sizeof *run);
   double *l2 = malloc((size_t)(n > 0 ? n : 1) * sizeof *l2);
   if (!run || !l2) rc = CABLE_ERR_ALLOC;
-  if (!rc) assign_runs(sf, bf, run, l2);
+  if (!rc && assign_runs(sf, bf, run, l2)) {
+    /* the b-file pairs with the s-file: every row comes back, as AUTO's loadbd */
+    rp_result *rows = NULL;
+    rc = read_rows(sf, bf, &dn, c, names, e, &rows);
+    free(run);
+    free(l2);
+    rp_dnotes_free(&dn);
+    cable_bfile_free(bf);
+    cable_sfile_free(sf);
+    if (rc) return cable_error_set(err, rc, NULL, 0, name, "out of memory");
+    *out = rows;
+    return 0;
+  }
   for (int i = 0; i < n && !rc; i++)
     if (i == 0 || run[i] != run[i - 1]) nbr++;
   rp_result *res = rc ? NULL : rp_result_alloc(nbr);
@@ -357,10 +415,18 @@ static int same_start(const rp_branch *a, const rp_branch *b)
          fabs(p->l2norm - q->l2norm) <= RP_SAME_START_RTOL * fmax(1, fabs(p->l2norm));
 }
 
-/* b reversed, then a without its first point; the junction loses its label
- * (it is no longer an end point). */
+/* b reversed, then a without its first point, as AUTO's merge (parseB):
+ * the shared start keeps b's row, label and type; points are numbered 1, 2,
+ * ... and labels from the smaller of a's and b's smallest label on, in the
+ * new order (AUTO renumbers them so: no label repeats). */
 static rp_branch *join(const rp_branch *a, const rp_branch *b)
 {
+  int lab = 0;
+  for (int pass = 0; pass < 2; pass++) {
+    const rp_branch *src = pass ? a : b;
+    for (int j = 0; j < src->npt; j++)
+      if (src->pts[j].pt.lab > 0 && (lab == 0 || src->pts[j].pt.lab < lab)) lab = src->pts[j].pt.lab;
+  }
   rp_branch *n = rp_branch_alloc(a->ibr, &a->c, &a->names, a->e);
   if (!n) return NULL;
   n->has_c_user = a->has_c_user;
@@ -376,11 +442,7 @@ static rp_branch *join(const rp_branch *a, const rp_branch *b)
       const cable_solution *sol = p->sol >= 0 ? src->sol[p->sol] : NULL;
       pt.ibr = a->ibr;
       pt.pt = ++k;
-      if (!pass && i == 0) {   /* the shared start */
-        pt.itp = CABLE_TY_NONE;
-        pt.lab = 0;
-        sol = NULL;
-      }
+      if (pt.lab > 0) pt.lab = lab++;
       cable_solution *s2 = NULL;
       if (sol) {
         if (!(s2 = cable_solution_clone(sol))) {
@@ -389,6 +451,7 @@ static rp_branch *join(const rp_branch *a, const rp_branch *b)
         }
         s2->ibr = a->ibr;
         s2->ntot = k;
+        s2->lab = pt.lab;
       }
       int rc = rp_branch_add(n, &pt, s2);
       cable_solution_free(s2);

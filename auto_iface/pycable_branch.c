@@ -90,34 +90,44 @@ static PyObject *array1(const double *x, npy_intp n)
   return a;
 }
 
-/* Points of the branch: {'par': (npt, npar), 'L2-NORM', 'PT', 'LAB', 'TY' (codes), 'BR'}. */
+/* Points of the branch: {'par': (npt, npar), 'L2-NORM', 'MAX U': (npt, ndim),
+ * 'measure' (IPLT's, the b-file's second column), 'PT', 'LAB', 'TY' (codes), 'BR'}. */
 static PyObject *branch_points(PyObject *self, PyObject *unused)
 {
   (void)unused;
   const cable_branch *b = ((pyc_branch *)self)->b;
-  npy_intp npt = cable_branch_npoints(b), npar = 0;
-  for (int i = 0; i < npt; i++)
+  npy_intp npt = cable_branch_npoints(b), npar = 0, ndim = 0;
+  for (int i = 0; i < npt; i++) {
     if (cable_branch_point(b, i)->npar > npar) npar = cable_branch_point(b, i)->npar;
-  npy_intp dims[2] = {npt, npar};
+    if (cable_branch_point(b, i)->umax && cable_branch_point(b, i)->ndim > ndim) ndim = cable_branch_point(b, i)->ndim;
+  }
+  npy_intp dims[2] = {npt, npar}, udims[2] = {npt, ndim};
+  PyObject *umax = PyArray_ZEROS(2, udims, NPY_DOUBLE, 0), *meas = PyArray_SimpleNew(1, &npt, NPY_DOUBLE);
   PyObject *par = PyArray_ZEROS(2, dims, NPY_DOUBLE, 0), *l2 = PyArray_SimpleNew(1, &npt, NPY_DOUBLE);
   PyObject *pt = PyArray_SimpleNew(1, &npt, NPY_LONG), *lab = PyArray_SimpleNew(1, &npt, NPY_LONG);
   PyObject *ty = PyArray_SimpleNew(1, &npt, NPY_LONG), *br = PyArray_SimpleNew(1, &npt, NPY_LONG);
   PyObject *d = NULL;
-  if (par && l2 && pt && lab && ty && br) {
+  if (par && l2 && pt && lab && ty && br && umax && meas) {
     double *P = PyArray_DATA((PyArrayObject *)par), *L = PyArray_DATA((PyArrayObject *)l2);
+    double *U = PyArray_DATA((PyArrayObject *)umax), *M = PyArray_DATA((PyArrayObject *)meas);
     long *T = PyArray_DATA((PyArrayObject *)pt), *B = PyArray_DATA((PyArrayObject *)lab);
     long *Y = PyArray_DATA((PyArrayObject *)ty), *R = PyArray_DATA((PyArrayObject *)br);
     for (npy_intp i = 0; i < npt; i++) {
       const cable_point *p = cable_branch_point(b, (int)i);
       for (int k = 0; k < p->npar; k++) P[i * npar + k] = p->par[k];
+      for (int k = 0; p->umax && k < p->ndim && k < ndim; k++) U[i * ndim + k] = p->umax[k];
       L[i] = p->l2norm;
+      M[i] = p->measure;
       T[i] = p->pt;
       B[i] = p->lab;
       Y[i] = p->itp;
       R[i] = p->ibr;
     }
-    d = Py_BuildValue("{sOsOsOsOsOsO}", "par", par, "L2-NORM", l2, "PT", pt, "LAB", lab, "TY", ty, "BR", br);
+    d = Py_BuildValue("{sOsOsOsOsOsOsOsO}", "par", par, "L2-NORM", l2, "MAX U", umax, "measure", meas, "PT", pt,
+                      "LAB", lab, "TY", ty, "BR", br);
   }
+  Py_XDECREF(umax);
+  Py_XDECREF(meas);
   Py_XDECREF(par);
   Py_XDECREF(l2);
   Py_XDECREF(pt);

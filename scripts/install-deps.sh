@@ -11,6 +11,8 @@ probes=(
   "/usr/include/lapacke.h:liblapacke-dev"
   "/usr/lib/x86_64-linux-gnu/liblapack.so:liblapack-dev"
   "/usr/lib/x86_64-linux-gnu/libopenblas.so:libopenblas-dev"
+  "/usr/lib/x86_64-linux-gnu/openblas-pthread/libopenblas.a:libopenblas-pthread-dev"   # libcable.so's private BLAS
+  "/usr/lib/x86_64-linux-gnu/liblapacke.a:liblapacke-dev"
   "/usr/include/gsl/gsl_version.h:libgsl-dev"
   "/usr/include/cairo/cairo.h:libcairo2-dev"
   "/usr/bin/gfortran:gfortran"
@@ -20,6 +22,9 @@ probes=(
   "/usr/lib/python3/dist-packages/numpy/core/include/numpy/arrayobject.h:python3-numpy"
   "/usr/lib/python3/dist-packages/pytest/__init__.py:python3-pytest"
   "/usr/lib/python3/dist-packages/distributed/__init__.py:python3-distributed"
+  "/usr/lib/python3/dist-packages/matplotlib/__init__.py:python3-matplotlib"   # plot() returns a figure
+  "/usr/lib/python3/dist-packages/ipykernel/__init__.py:python3-ipykernel"   # import cable in a Jupyter kernel (a test)
+  "/usr/lib/python3/dist-packages/jupyter_client/__init__.py:python3-jupyter-client"
   "/usr/bin/pkg-config:pkgconf"            # make check builds against an installed libcable
   "/usr/bin/time:time"                     # make bench: CPU and wall time of the knot72 runs
   "/usr/bin/bc:bc"                         # make bench: arithmetic in scripts/bench.sh

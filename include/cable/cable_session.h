@@ -127,8 +127,12 @@ CABLE_API int cable_session_load(cable_session *s, const cable_run_args *a, cabl
  * solution of branches[0] (a one-point file). */
 CABLE_API int cable_session_save(cable_session *s, cable_branch *const *branches, int n, int sol_index, const char *name,
                        int append, cable_error *err);
-/* The labelled solutions of s.NAME (with b.NAME's rows for their norms), one
- * branch per branch number: *out (free with cable_branch_list_free). */
+/* b.NAME and s.NAME as AUTO's loadbd reads them: one branch per b-file
+ * section with every row, the labelled rows with s.NAME's solutions (the
+ * labelled solutions only when there is no b-file, or one that does not pair
+ * with the s-file); the problem, names, NDIM/NBC/NINT and ICP the b-file's
+ * header records where c.NAME and the runner leave them open.  *out: free
+ * with cable_branch_list_free. */
 CABLE_API int cable_session_loadbd(cable_session *s, const char *name, cable_branch ***out, int *n, cable_error *err);
 /* AUTO's merge (relabel 0) and relabel (1) of branches: *out as loadbd's. */
 CABLE_API int cable_session_transform(cable_session *s, cable_branch *const *in, int n, int relabel, cable_branch ***out,

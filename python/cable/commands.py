@@ -19,7 +19,7 @@ import tempfile
 
 import numpy as np
 
-from . import _cable, scenes
+from . import _cable, plotting, scenes
 from ._cable import CableError
 from .constants import Constants
 from .results import Result, Solution
@@ -73,6 +73,28 @@ def _command(name):
     return wrap
 
 
+def _columns(data):
+    """Start data given as AUTO's columns, [[t0, ..., tn], [x0, ..., xn],
+    ...] (a list or numpy array; AUTO's load(data)), as a float array of
+    shape (NDIM + 1, n); None when data is not such a thing."""
+    if isinstance(data, np.ndarray) or (isinstance(data, (list, tuple)) and data and
+                                        not any(isinstance(x, (Solution, Result, str)) for x in data)):
+        try:
+            a = np.array(data, dtype=float)
+        except (TypeError, ValueError):
+            raise CableError('start data: columns of numbers expected ([[t0, ..., tn], [x0, ..., xn], ...])') from None
+        if a.ndim != 2 or a.shape[0] < 2 or a.shape[1] < 2:
+            raise CableError('start data: columns [[t0, ..., tn], [x0, ..., xn], ...] with at least two points '
+                             'expected, got an array of shape %s (a point solution [x, y, ...] is for algebraic '
+                             'problems, which cable does not run)' % (a.shape,))
+        if not np.all(np.isfinite(a)):
+            raise CableError('start data: a value is not finite')
+        if not np.all(np.diff(a[0]) > 0):
+            raise CableError('start data: t (the first column) must increase')
+        return a
+    return None
+
+
 def _start(data):
     """(start, sol, mbr, mlab, name) for the session from run()'s first
     argument; mbr, mlab: a solution's bundle maxima (AUTO's _mbr, _mlab)."""
@@ -109,6 +131,41 @@ def _args(data, kw):
             names.get('ap'), over)
 
 
+class _data_start:
+    """A start given as data columns becomes a dat= file (rows t U(1) ...
+    U(NDIM), as AUTO's dat files) for the run, in a temporary directory
+    removed afterwards, with IRS=0 (the run starts from the data, STPNT
+    giving the parameters and PAR= the rest, as dat= does)."""
+
+    def __init__(self, data, kw):
+        self.data, self.kw, self.dir = data, kw, None
+
+    def __enter__(self):
+        cols = _columns(self.data)
+        if cols is None:
+            return self.data, self.kw
+        if 'dat' in self.kw:
+            raise CableError('start data and dat= both given')
+        self.dir = tempfile.mkdtemp(prefix='cable-dat-')
+        path = os.path.join(self.dir, 'start.dat')
+        with open(path, 'w') as f:
+            for row in cols.T:
+                f.write(' '.join(repr(float(v)) for v in row) + '\n')
+        kw = dict(self.kw)
+        kw['dat'] = path
+        kw.setdefault('IRS', 0)
+        return None, kw
+
+    def __exit__(self, *exc):
+        if self.dir:
+            shutil.rmtree(self.dir, ignore_errors=True)
+        return False
+
+
+def _picture_file(name):
+    return os.path.splitext(name)[1].lower() in ('.png', '.svg')
+
+
 def _branches(x, what):
     if isinstance(x, Result):
         return x.branches, -1
@@ -116,6 +173,27 @@ def _branches(x, what):
         br, i = x.branch
         return [br], i
     raise CableError('%s needs a result or a solution, got a %s' % (what, type(x).__name__))
+
+
+# the commands and their aliases (AUTO's names; cable's own last)
+# (AUTO's commandXxx names are the same commands: AUTOclui exports both)
+COMMANDS = {
+    'run': ('r', 'rn', 'commandRun'), 'load': ('ld', 'commandRunnerLoadName', 'commandRunnerConfig'),
+    'loadbd': ('bd', 'commandParseOutputFiles'), 'save': ('sv',), 'merge': ('mb', 'commandMergeBranches'),
+    'relabel': ('rl', 'commandRelabel'), 'clean': ('cl', 'commandClean'),
+    'delete': ('dl', 'commandDeleteDataFiles'), 'copy': ('cp', 'commandCopyDataFiles'),
+    'append': ('ap', 'commandAppend'), 'cd': ('commandCd',), 'auto': (), 'wait': ('commandWait',),
+    'pr': ('printconstant', 'pc', 'commandRunnerPrintFort2'), 'analyze': (),
+    'plot': ('pl', 'p2', 'commandPlotter'),
+    'sl': ('solutionget', 'commandParseSolutionFile'), 'ch': ('changeconstant', 'cc', 'commandRunnerConfigFort2'),
+    'render': (), 'compare': (),
+    'overlap_free': (), 'branch_table': (),
+}
+
+
+def command_names():
+    """Every command name and alias a script's namespace has."""
+    return [n for name, aliases in COMMANDS.items() for n in (name,) + tuple(aliases)]
 
 
 class Runner:
@@ -131,16 +209,19 @@ class Runner:
         """run([start], KEY=value, ...): one continuation run (AUTO's run):
         c='NAME' reads c.NAME, e='NAME' the problem, s='NAME' the start
         file, sv='NAME' saves b./s./d.NAME, ap='NAME' appends; every other
-        keyword overrides a constant (NMX=200, DS='-', UZR={'T': -2.1})."""
+        keyword overrides a constant (NMX=200, DS='-', UZR={'T': -2.1}).
+        The start may also be data columns [[t...], [u1...], ...] (a list or
+        numpy array, AUTO's form), as a dat= file gives them."""
         sys.stdout.flush()
-        try:
-            self.last = Result([self.session.run(*_args(data, kw))])
-        except KeyboardInterrupt as e:
-            # the run stopped after its last point: the partial branch stays
-            # with the exception (e.result) and as the runner's last result
-            if getattr(e, 'branch', None) is not None:
-                e.result = self.last = Result([e.branch])
-            raise
+        with _data_start(data, kw) as (data, kw):
+            try:
+                self.last = Result([self.session.run(*_args(data, kw))])
+            except KeyboardInterrupt as e:
+                # the run stopped after its last point: the partial branch stays
+                # with the exception (e.result) and as the runner's last result
+                if getattr(e, 'branch', None) is not None:
+                    e.result = self.last = Result([e.branch])
+                raise
         return self.last
 
     def load(self, data=None, **kw):
@@ -148,6 +229,11 @@ class Runner:
         arguments would start from; sets the runner's constants.  None when
         that run would start from STPNT (ld(e='x', c='x') only sets the
         constants, which pr() shows)."""
+        if _columns(data) is not None:
+            # AUTO's load(u) makes a solution of the table itself; cable's
+            # table is read by the run (as dat=), there is no solution before
+            raise CableError('data columns are a start for run(u, ...), not for load (cable reads them as '
+                             'dat= when the run starts)')
         b = self.session.load(*_args(data, kw))
         return None if b is None else Result([b])(None)[0]
 
@@ -159,6 +245,9 @@ class Runner:
 
     def _last_run(self, what):
         if self.last is None:
+            if what in ('merge', 'relabel'):
+                raise CableError("%s() works on the last run's output (AUTO's fort.7, fort.8, fort.9), "
+                                 "but there was no run yet" % what)
             raise CableError("%s('NAME') saves the last run's output (AUTO's fort.7, fort.8, fort.9), "
                              "but there was no run yet" % what)
         return self.last
@@ -189,13 +278,32 @@ class Runner:
         sys.stdout.flush()
         self.session.save(br, i, name, True)
 
-    def merge(self, x):
-        """merge(r): the two directions from one start joined; merge('NAME') rewrites the files."""
-        if isinstance(x, str):
-            self.session.transform_files(x, False)
+    def _transform(self, what, relabel, name1, name2):
+        """AUTO's merge and relabel: an object gives a new one; 'A' rewrites
+        the files A; 'A', 'B' writes the files A's transformed into B (A
+        unchanged); no argument: the last run's result (AUTO: fort.*)."""
+        if name1 is None:
+            name1 = self._last_run(what)
+            self.last = Result(self.session.transform(name1.branches, relabel))
+            return self.last
+        if isinstance(name1, str):
+            if name2 is not None and not (isinstance(name2, str) and name2):
+                raise CableError("%s('A', 'B'): B must be a name, got a %s" % (what, type(name2).__name__))
+            target = name1
+            if name2 is not None and name2 != name1:
+                self._copy_files(name1, name2)
+                target = name2
+            self.session.transform_files(target, relabel)
+            print('%s done' % ('Relabeling' if relabel else 'Merging'))
             return None
-        br, _ = _branches(x, 'merge')
-        return Result(self.session.transform(br, False))
+        br, _ = _branches(name1, what)
+        return Result(self.session.transform(br, relabel))
+
+    def merge(self, name1=None, name2=None):
+        """merge(r): the two directions from one start joined (labels
+        renumbered, as AUTO's); merge('A') rewrites the files A;
+        merge('A', 'B') writes A's merged into B; merge(): the last run's."""
+        return self._transform('merge', False, name1, name2)
 
     def sl(self, name):
         """sl('NAME'): the labelled solutions of s.NAME, as a list (AUTO's sl: loadbd('NAME')())."""
@@ -212,13 +320,10 @@ class Runner:
         self.load(None, **kw)
         print('  %s changed' % ', '.join('%s = %r' % kv for kv in kw.items()))
 
-    def relabel(self, x):
-        """relabel(r): labels 1, 2, ...; relabel('NAME') rewrites the files."""
-        if isinstance(x, str):
-            self.session.transform_files(x, True)
-            return None
-        br, _ = _branches(x, 'relabel')
-        return Result(self.session.transform(br, True))
+    def relabel(self, name1=None, name2=None):
+        """relabel(r): labels 1, 2, ...; relabel('A') rewrites the files A;
+        relabel('A', 'B') writes A's relabelled into B; relabel(): the last run's."""
+        return self._transform('relabel', True, name1, name2)
 
     def pr(self, parameter=None):
         """pr(): print the runner's constants (what the next run without a
@@ -247,6 +352,9 @@ class Runner:
 
     def copy(self, name1, name2):
         """copy('A', 'B'): b./s./d.A copied to b./s./d.B (each file whole or not at all)."""
+        self._copy_files(name1, name2, verbose=True)
+
+    def _copy_files(self, name1, name2, verbose=False):
         found = False
         for t in 'bsd':
             src, dst = '%s.%s' % (t, name1), '%s.%s' % (t, name2)
@@ -261,7 +369,8 @@ class Runner:
             finally:
                 if os.path.exists(tmp):
                     os.remove(tmp)
-            print('Copying %s to %s ...' % (src, dst))
+            if verbose:
+                print('Copying %s to %s ...' % (src, dst))
         if not found:
             raise CableError('%s: no files b./s./d.%s' % (name1, name1))
 
@@ -288,10 +397,28 @@ class Runner:
         br, i = sol.branch
         return _cable.analyze(br, i)
 
-    def plot(self, file, names, marks=(), x=None, y=None, title=None):
-        """plot('fig.png', ['name', ...], marks=[[sol, 'text'], ...], x='T', y='F', title=...)"""
-        if not isinstance(file, str) or not isinstance(names, (list, tuple)) or not names:
-            raise CableError("plot('fig.png', ['name', ...] (saved results), marks=[[sol, 'text'], ...])")
+    def plot(self, file=None, names=None, marks=(), x=None, y=None, title=None):
+        """plot('fig.png', ['name', ...], marks=[[sol, 'text'], ...], x='T', y='F', title=...):
+        a diagram file; plot('name'), plot(result), plot(sol): a matplotlib
+        figure (the diagram of b.name or the result; a solution's first
+        component against t), as AUTO's plot(name) opens its plotter."""
+        if names is None and (isinstance(file, (Result, Solution)) or
+                              (isinstance(file, str) and not _picture_file(file))):
+            return plotting.figure(self._plot_data(file), x=x, y=y, title=title, marks=marks)
+        if file is None:
+            raise CableError("plot('name'), plot(result) or plot('fig.png', ['name', ...], marks=[[sol, 'text'], ...])")
+        if isinstance(names, (Result, str)):
+            names = [names]
+        if (isinstance(file, str) and isinstance(names, (list, tuple)) and names and
+                any(isinstance(n, Result) for n in names)):
+            # results in memory: drawn by matplotlib into the file
+            fig = plotting.figure([self._plot_data(n) for n in names], x=x, y=y, title=title, marks=marks)
+            plotting.save(fig, file)
+            print('  diagram written to %s' % file)
+            return fig
+        if not isinstance(file, str) or not isinstance(names, (list, tuple)) or not names or \
+                not all(isinstance(n, str) for n in names):
+            raise CableError("plot('fig.png', ['name', ...] (saved results or results), marks=[[sol, 'text'], ...])")
         if marks and ((x and x != 'T') or (y and y != 'F')):
             raise CableError('marks: marks are drawn on the default (T, F) axes only')
         m = []
@@ -303,6 +430,13 @@ class Runner:
             m.append((mk[0]['T'], mk[0]['F'], mk[1], mk[0].TY == 'BP'))
         _cable.plot(file, ['b.%s' % n for n in names], x, y, m, title)
         print('  diagram written to %s' % file)
+
+    def _plot_data(self, x):
+        if isinstance(x, str):
+            return self.loadbd(x)
+        if isinstance(x, (Result, Solution)):
+            return x
+        raise CableError('plot: a name, a result or a solution expected, got a %s' % type(x).__name__)
 
     def render(self, sol, file, view=None, size=0, thicken=0.0, color=None, vtp=None, ply=None):
         """render(sol, 'fig.png', view=[x, y, z], size=600, thicken=0, color='pressure', vtp=..., ply=...)"""
@@ -332,16 +466,8 @@ class Runner:
     # --- the namespace of a script ---------------------------------------------------------
     def namespace(self):
         """The commands under AUTO's names and aliases, for a script's globals."""
-        cmds = {
-            'run': ('r', 'rn'), 'load': ('ld',), 'loadbd': ('bd',), 'save': ('sv',), 'merge': ('mb',),
-            'relabel': ('rl',), 'clean': ('cl',), 'delete': ('dl',), 'copy': ('cp',), 'append': ('ap',),
-            'cd': (), 'auto': (), 'wait': (), 'pr': ('printconstant', 'pc'), 'analyze': (), 'plot': (),
-            'sl': ('solutionget',), 'ch': ('changeconstant', 'cc'),
-            'render': (), 'compare': (),
-            'overlap_free': (), 'branch_table': (),
-        }
         ns = {}
-        for name, aliases in cmds.items():
+        for name, aliases in COMMANDS.items():
             fn = _command(name)(getattr(self, name))
             ns[name] = fn
             for a in aliases:

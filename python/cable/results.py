@@ -308,6 +308,24 @@ class Result:
         from .webview import view
         return view(self)._repr_html_()
 
+    def getLabels(self):
+        """The labels of the labelled solutions, in order (AUTO's getLabels)."""
+        return [s.LAB for s in _solutions(self._br)]
+
+    def toArray(self):
+        """Every computed point as a row of the b-file's value columns (AUTO's
+        toArray: the rows without BR, PT, TY, LAB), a list of lists."""
+        rows = []
+        for b in self._br:
+            cols = [c for _, c in branch_columns(b)]
+            rows.extend([float(c[i]) for c in cols] for i in range(b.npt))
+        return rows
+
+    def summary(self):
+        """AUTO's summary (what print(r) shows): per branch, the labelled
+        rows under the b-file's column headings."""
+        return '\n'.join(t for t in (_branch_summary(b) for b in self._br) if t) + '\n'
+
     @property
     def coordnames(self):
         if not self._br:
@@ -321,12 +339,7 @@ class Result:
                                                                    n, '' if n == 1 else 's')
 
     def __str__(self):
-        lines = []
-        for b in self._br:
-            lines.append('  BR    PT  TY  LAB')
-            for s in _solutions([b]):
-                lines.append('%4d %5d  %-2s %4d' % (s.BR, s.PT, s.TY, s.LAB))
-        return '\n'.join(lines)
+        return self.summary()
 
 
 def _column(b, key):
@@ -344,3 +357,68 @@ def _column(b, key):
     if key in names and names.index(key) < p['par'].shape[1]:
         return p['par'][:, names.index(key)].copy()
     raise CableError("%s: no such column (the problem's parameters, PAR(k), L2-NORM, PT, LAB, TY, BR)" % key)
+
+
+# AUTO prints at most 7 parameter and MAX U columns (its WRLINE; aufile_write.c)
+_SCREEN_MAX = 7
+
+
+def _par_heading(b, k):
+    """The heading of PAR(k+1) (0-based k): its name, or PAR(k+1)."""
+    names = b.parnames
+    return names[k] if k < len(names) and names[k] else 'PAR(%d)' % (k + 1)
+
+
+def _u_heading(b, what, i):
+    names = b.unames
+    return '%s %s' % (what, names[i] if i < len(names) and names[i] else 'U(%d)' % (i + 1))
+
+
+def branch_columns(b):
+    """The b-file's value columns of branch b, as AUTO writes them:
+    [(heading, numpy array over every point)]: ICP(1), IPLT's measure
+    (L2-NORM by default), MAX U(i) (as many as fit AUTO's 7 columns), the
+    other ICP parameters."""
+    p = b.points()
+    icp = b.icp or [1]
+    ndim = p['MAX U'].shape[1]
+    nicp = len(icp)
+    n2 = 0 if nicp > _SCREEN_MAX else (_SCREEN_MAX - nicp if nicp + ndim > _SCREEN_MAX else ndim)
+    iplt = b.constants().get('IPLT') or 0
+    if iplt == 0 or ndim == 0:
+        mname = 'L2-NORM'
+    elif iplt < 0:
+        mname = _u_heading(b, 'MIN', -iplt - 1)
+    elif iplt <= ndim:
+        mname = _u_heading(b, 'MAX', iplt - 1)
+    elif iplt <= 2 * ndim:
+        mname = _u_heading(b, 'INTEGRAL', iplt - ndim - 1)
+    else:
+        mname = _u_heading(b, 'L2-NORM', iplt - 2 * ndim - 1)
+    par = p['par']
+
+    def pcol(k):
+        return par[:, k].copy() if k < par.shape[1] else np.full(len(par), np.nan)
+
+    cols = [(_par_heading(b, icp[0] - 1), pcol(icp[0] - 1)), (mname, p['measure'].copy())]
+    cols += [(_u_heading(b, 'MAX', i), p['MAX U'][:, i].copy()) for i in range(n2)]
+    cols += [(_par_heading(b, k - 1), pcol(k - 1)) for k in icp[1:]]
+    return cols
+
+
+def _branch_summary(b):
+    """AUTO's parseB summary of one branch: its labelled rows, headed."""
+    from ._cable import type_name
+    p = b.points()
+    cols = branch_columns(b)
+    lines = []
+    for i in range(b.npt):
+        ty = type_name(int(p['TY'][i])) if p['TY'][i] else ''
+        if not ty or p['LAB'][i] == 0:
+            continue
+        if not lines:
+            lines.append('\n  BR    PT  TY  LAB ' + ''.join('%-14s' % ('   ' + h) for h, _ in cols))
+        lines.append('%4d%6d%4s%5d' % (abs(int(p['BR'][i])), abs(int(p['PT'][i])) % 10000,
+                                        '  ' if ty == 'RG' else ty, int(p['LAB'][i]))
+                     + ''.join('%14.5E' % c[i] for _, c in cols))
+    return '\n'.join(lines)

@@ -18,9 +18,10 @@ import signal
 import sys
 import tokenize
 import traceback
+import types
 
 from ._cable import CableError, blas_single_thread
-from .commands import Runner
+from .commands import Runner, command_names
 
 _STOPS = ('NEWLINE', 'ENDMARKER')
 
@@ -137,6 +138,15 @@ class ScriptRunner:
         self.runner.script_runner = self.run_file
         self.namespace = self.runner.namespace()
         self.files = set()
+        # a script that imports AUTO's modules by name (import AUTOclui,
+        # from AUTOCommands import *) gets this runner's commands, as AUTO's
+        # scripts get AUTO's runner's
+        names = command_names()
+        for mod in ('AUTOclui', 'AUTOCommands'):
+            m = types.ModuleType(mod, "AUTO-07p's %s: cable's commands of the script's runner" % mod)
+            m.__dict__.update({k: v for k, v in self.namespace.items() if k in names})
+            m.__all__ = [k for k in names if k in self.namespace]
+            sys.modules[mod] = m
 
     def run_file(self, path):
         with open(path, encoding='utf-8') as f:

@@ -228,14 +228,18 @@ def test_append_forms_merge_files_clean(bratu, capsys):
     ns['ap']('a')
     assert [s['LAB'] for s in ns['bd']('a')()] == [s['LAB'] for s in lower()] + [s['LAB'] for s in up()]
     # merge('NAME'): the two directions from one start (STPNT, labelled in
-    # both) joined in the files; the shared start loses its label (doc/scripts.md)
+    # both) joined in the files; the shared start keeps one label and the
+    # labels are renumbered 1, 2, ... in the new order, as AUTO's merge does
+    # (doc/scripts.md; test_auto_objects.py compares with auto-07p)
     down = ns['run'](e='bratu', c='bratu', DS='-', NMX=3)
     ns['sv'](lower + down, 'm')
     assert len(ns['bd']('m')) == 2
     ns['mb']('m')
     merged = ns['bd']('m')
-    assert len(merged) == 1 and len(merged()) == len(lower()) + len(down()) - 2
-    assert merged('EP1')['lambda'] < 0 < merged('EP2')['lambda']   # from lambda < 0 through the start to > 0
+    assert len(merged) == 1 and len(merged()) == len(lower()) + len(down()) - 1
+    assert merged.getLabels() == list(range(1, len(merged()) + 1))
+    # from lambda < 0 through the start (lambda = 0) to > 0
+    assert merged('EP1')['lambda'] < 0 == merged('EP2')['lambda'] < merged('EP3')['lambda']
     # clean: nothing to delete; nothing changes
     before = snapshot('.')
     capsys.readouterr()
