@@ -90,6 +90,10 @@ void rp_bfile_header(const char *path, char *e, size_t elen, cable_names *names,
       snprintf(stmt, sizeof stmt, "%s=%d", dims[k], v);
       if (v >= 0 && *have == 0 && (k > 0 || v > 0)) (void)cable_constants_parse_override(stmt, c, NULL, NULL, 0, NULL);
     }
+    /* IPS, when the constants leave it at AUTO's default 1 (a value other
+       than 4 is refused where it is set): the header's IPS = 4 is the run's,
+       as AUTO restarts a loaded solution with its file's constants */
+    if (c && c->ips != 4 && header_int(p, "IPS") == 4) (void)cable_constants_parse_override("IPS=4", c, NULL, NULL, 0, NULL);
     if (names && (strncmp(p, "parnames", 8) == 0 || strncmp(p, "unames", 6) == 0)) {
       /* the dict in the constants syntax; a malformed one is ignored (a
          header is a record, not an input the user wrote) */

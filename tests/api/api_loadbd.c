@@ -69,7 +69,7 @@ int main(void)
   char path[512], path2[512];
   snprintf(path, sizeof path, "%s/c.bratu", dir);
   if (!api_check("c.bratu written",
-                 write_file(path, "e = 'bratu'\nICP = [1], NTST = 20, NCOL = 4, DS = 0.1, DSMAX = 0.5, NMX = 30\n"
+                 write_file(path, "e = 'bratu', IPS = 4\nICP = [1], NTST = 20, NCOL = 4, DS = 0.1, DSMAX = 0.5, NMX = 30\n"
                                   "RL0 = -1, RL1 = 5, UZR = {1: [1.0, 3.0]}\n") == 0))
     return api_summary();
 
