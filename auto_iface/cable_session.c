@@ -666,11 +666,20 @@ static int engine_run(cable_session *r, rp_setup *s, rp_branch **out, cable_erro
     }
     /* a point of a fold curve (NDIM = 2n) restarts the curve as it is
        stored, with its direction (run(r2) after a fold run goes on, as in
-       AUTO); an LP starts it through the extended problem's STPNT */
+       AUTO); at an LP the run is AUTO's first one: it generates the curve's
+       starting data (five steps along the null vector's norm, one EP label)
+       through the extended problem's STPNT, and the next run from that EP
+       follows the curve (doc/fold-continuation.md, "AUTO's runs") */
     int curve_restart = s->start && s->start->ndim == 2 * pb->ndim;
+    if (!curve_restart && (st = cable_fold_starting_data(fold, msg, sizeof msg)) != 0) {
+      cable_fold_free(fold);
+      problem_release(r, &prob);
+      return cable_error_set(err, st, NULL, 0, "ISW", "%s", msg);
+    }
+    if (!curve_restart) fprintf(rp_log(r), "  Generating starting data : Restart at EP label below :\n");
     pb = cable_fold_problem(fold);
     crun = cable_fold_constants(fold);
-    start = curve_restart ? s->start : NULL;
+    start = curve_restart ? cable_fold_start(fold) : NULL;
   }
   cable_names_fill(&s->names, pb->parnames, pb->npar, pb->unames, pb->ndim);
   st = cable_cont_check(pb, crun, err);

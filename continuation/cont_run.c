@@ -94,7 +94,7 @@ static int emit(cable_cont *cc, const cable_sink *sink, int ibr, int *lab)
     labelled = 1;
   }
   /* AUTO's types on a fold curve (ISW = 2): the point's type + 10 ITPST */
-  if (cc->c.isw == 2 && pt->itp != CABLE_TY_NONE && abs(pt->itp) < 10)
+  if ((cc->c.isw == 2 || cc->c.isw == -2) && pt->itp != CABLE_TY_NONE && abs(pt->itp) < 10)
     pt->itp += pt->itp > 0 ? 10 * CABLE_FOLD_ITPST : -10 * CABLE_FOLD_ITPST;
   pt->ibr = ibr;
   pt->lab = labelled ? (*lab)++ : 0;

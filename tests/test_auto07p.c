@@ -12,7 +12,8 @@
  *    restarts from a constants file's IRS that counts on it);
  *  - the first point (the start) exactly, and the first row of every later
  *    run (its restart point) to PAR_TOL;
- *  - the principal parameter PAR(1) of every LP, BP and UZ to 1e-6 relative:
+ *  - the principal parameter PAR(1) of every LP, BP and UZ (also on a fold
+ *    curve, types 55, 56, -54) to 1e-6 relative:
  *    AUTO stops its location secant early (measured: its UZ at lambda = 1 is
  *    at 1.0000001859, its BP at (2 pi)^2 is off by 1e-7 relative), while
  *    cable's are checked against the closed forms to 1e-8 in test_autoeq;
@@ -56,6 +57,9 @@ static const case_t cases[] = {
   {"bratu_iplt", "bratu.auto", "bratu", {"bratu.f90", "c.bratu", "bratu.auto", NULL}},
   {"bratu_dat", "dat.auto", "bratudat", {"bratu.f90", "bratu.dat", "c.bratudat", "dat.auto"}},
   {"numbering", "numbering.auto", "numbering", {"elastica.f", "c.elastica", "c.numb6", "numbering.auto", NULL}},
+  /* ISW=2 at an LP: the starting-data run (one EP label, type 59) and the
+     fold curve from it both ways (doc/fold-continuation.md, "AUTO's runs") */
+  {"foldstart", "foldstart.auto", "bf", {"bf.f90", "c.bf", "foldstart.auto", NULL}},
 };
 
 static char cable_bin[3 * PATH_MAX], root[PATH_MAX];
@@ -75,7 +79,12 @@ static int stage(const case_t *c, const char *who, char *dir, size_t len)
   return 1;
 }
 
-static int special(int ty) { return ty == 5 || ty == 6 || ty == -4; }
+/* LP, BP, UZ; on a fold curve their codes + 50 (-54 for a UZ) */
+static int special(int ty)
+{
+  int base = ty % 10;
+  return base == 5 || base == 6 || base == -4;
+}
 
 /* Section sec (one run) of AUTO's b-file (a) and cable's (b). */
 static void compare(const case_t *c, int sec, const cable_bfile_branch *a, const cable_bfile_branch *b)

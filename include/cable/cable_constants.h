@@ -111,6 +111,10 @@ typedef struct cable_constants {
      largest component positive).  No key: the session sets it for equations
      from AUTO files (doc/auto-users.md). */
   int bp_orient_auto;
+  /* AUTO's NDM: the components of an extended problem's solution that the
+     L2-NORM and MAX U columns cover (the fold's u, not its null vector);
+     0: all NDIM.  No key: set by cable_fold.h. */
+  int ndm;
 } cable_constants;
 
 /* AUTO-07p defaults (no problem key set). */
