@@ -712,11 +712,13 @@ static int engine_run(cable_session *r, rp_setup *s, rp_branch **out, cable_erro
     problem_release(r, &prob);
     return st;
   }
-  /* AUTO's NEWLAB: a new branch number after a start from STPNT or a switch;
-     for ISW = 2 from a point that is not on a fold curve, the start's label
-     (AUTO's IBR = IRS); a plain restart keeps the start's branch number */
+  /* AUTO's NEWLAB: a new branch number after a start from STPNT, a switch
+     or (ISW = -2 inside AUTO) the starting data of a fold curve, MBR + 1
+     (auto-07p, demo int: its run 2 from LP4 of branch 1 is branch 2); a
+     restart, a fold curve's from its starting data included, keeps the
+     start's branch number */
   int ibr = s->mbr + 1;
-  if (s->start && s->c.isw >= 0) ibr = fold && start == NULL ? s->start->lab : s->start->ibr;
+  if (s->start && s->c.isw >= 0 && !(fold && start == NULL)) ibr = s->start->ibr;
   double t_start = now_seconds();
   collector col = {rp_branch_alloc(ibr, crun, &s->names, s->e), r->opt.diag, 0, isatty(fileno(stderr)),
                    r->opt.interrupt, r->opt.interrupt_ctx, 0};

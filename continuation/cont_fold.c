@@ -22,7 +22,8 @@ struct cable_fold {
   int nslot;                    /* the slot of the null vector's squared norm (AUTO's PAR(NPAR+k)) */
   cable_solution *start;        /* owned copy of the start */
   int start_ext;                /* the start is a point of a fold curve */
-  double vscale;                /* 1 / norm of the start's null vector */
+  double vscale;                /* sqrt(n0) / norm of the start's null vector */
+  double n0;                    /* N at an LP start: 1, or CABLE_FOLD_START_NORM for starting data */
   cable_solution *pvsol;        /* original-NDIM scratch for PVLS */
   char **parnames, **unames;    /* owned names of the extended problem */
 };
@@ -192,7 +193,8 @@ static int fold_stpnt(int ndim, double t, double *U, double *par, void *params)
   int n = f->n;
   int np = s->npar < f->npar ? s->npar : f->npar;
   for (int k = 0; k < f->npar; k++) par[k] = k < np ? s->par[k] : 0.0;
-  if (!f->start_ext || s->npar <= f->nslot) par[f->nslot] = 1.0;
+  if (!f->start_ext) par[f->nslot] = f->n0;
+  else if (s->npar <= f->nslot) par[f->nslot] = 1.0;
   if (f->start_ext) {
     interp(s, s->u, 2 * n, 0, 2 * n, t, U);
     return 0;
@@ -372,6 +374,7 @@ cable_fold *cable_fold_alloc(const cable_problem *pb, const cable_constants *c, 
     double nv = start_norm(f, start);
     if (!(nv > 0)) FAIL(CABLE_ERR_INPUT, "ISW=2: the LP's stored direction is zero");
     f->vscale = 1.0 / nv;
+    f->n0 = 1.0;
   }
   if (pb->pvls && !(f->pvsol = cable_solution_alloc(n, c->ntst, c->ncol, f->npar0, k)))
     FAIL(CABLE_ERR_ALLOC, "out of memory");
@@ -456,6 +459,10 @@ int cable_fold_starting_data(cable_fold *f, char *msg, size_t len)
   c->ilp = 0;
   c->isp = 0;
   c->nmx = CABLE_FOLD_START_STEPS;
+  /* AUTO starts the null vector at 0, where the extended system (at fixed
+     q, N free) is singular; cable starts it small, and the run grows it */
+  f->vscale *= sqrt(CABLE_FOLD_START_NORM / f->n0);
+  f->n0 = CABLE_FOLD_START_NORM;
   return CABLE_SUCCESS;
 }
 

@@ -282,7 +282,8 @@ static void test_even_fold_curve(double lstar)
 /* AUTO's runs at an LP (the session's ISW=2 dispatch, doc/fold-continuation.md
  * "AUTO's runs"): the first run generates the starting data, five steps along
  * the null vector's norm N at fixed q, the LP's u and lambda unchanged, one
- * label (the EP, type 59) and an unlabelled start; the L2-NORM and MAX U
+ * label (the EP, type 59) and an unlabelled start, N growing from a small
+ * value (AUTO's from 0); the L2-NORM and MAX U
  * columns are the problem's u only.  The fold curve restarted from that EP
  * (N fixed at its value) is lambda* e^-a, a UZ on it at the closed form. */
 static void test_auto_runs(const cable_problem *pb, const cable_solution *lp, double lp_l2, double lstar)
@@ -327,7 +328,7 @@ static void test_auto_runs(const cable_problem *pb, const cable_solution *lp, do
   test_le("  lambda stays at lambda* (max rel. error)", dl, FOLD_TOL);
   test_le("  a stays 0 (q is fixed)", da, 0.0);
   test_le("  L2-NORM is the LP's (u only, not the null vector): max abs. difference", dl2, 1e-9);
-  test_true("  N grows from 1 at every step", r.par[0][nslot] == 1.0 && ngrow);
+  test_true("  N grows from CABLE_FOLD_START_NORM at every step", r.par[0][nslot] == CABLE_FOLD_START_NORM && ngrow);
   cable_solution *ep = r.nsol > 0 ? cable_solution_clone(r.sol[r.nsol - 1]) : NULL;
   double n_ep = ep ? ep->par[nslot] : 0;
   memrun_free(&r);

@@ -48,6 +48,10 @@
 /* AUTO's number of steps of the run that generates a fold curve's starting
  * data (its NMX = 5 for ISW = 2 at an LP of a BVP) */
 #define CABLE_FOLD_START_STEPS 5
+/* N at the start of that run: AUTO's starts at N = 0 (the null vector 0,
+ * where the extended system is singular); cable's at a small N, so that
+ * the steps grow the null vector from almost nothing as AUTO's do */
+#define CABLE_FOLD_START_NORM 1e-4
 
 typedef struct cable_fold cable_fold;
 

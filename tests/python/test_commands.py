@@ -387,14 +387,14 @@ def test_fold_run_through_python(work):
     assert len(dg) == 3 and dg[0] == df[-1]
     step = df[-1] - df[-2]
     assert all((dg[i + 1] - dg[i]) * step > 0 for i in range(2))
-    # AUTO's NEWLAB for ISW=2: the starting-data run from an LP is branch IRS
-    # (the LP's label), its label after the largest of s.link62lp; a restart
-    # from a point of the fold curve keeps that branch number
+    # AUTO's NEWLAB for ISW=2: the starting-data run from an LP (ISW=-2 inside
+    # AUTO) is a new branch, MBR + 1, its label after the largest of
+    # s.link62lp; the fold curve restarted from it keeps that branch number
     src = rn.sl('link62lp')
-    lp0 = [x for x in src if x.TY == 'LP'][0]
-    assert {x.BR for x in st()} == {lp0.LAB} and st()[0].LAB == max(x.LAB for x in src) + 1
-    assert {x.BR for x in f()} == {lp0.LAB} and f()[0].LAB == st()[0].LAB + 1
-    assert {x.BR for x in g()} == {lp0.LAB} and g()[0].LAB == f()[-1].LAB + 1
+    nbr = max(x.BR for x in src) + 1
+    assert {x.BR for x in st()} == {nbr} and st()[0].LAB == max(x.LAB for x in src) + 1
+    assert {x.BR for x in f()} == {nbr} and f()[0].LAB == st()[0].LAB + 1
+    assert {x.BR for x in g()} == {nbr} and g()[0].LAB == f()[-1].LAB + 1
 
 
 def test_problem_keys_and_prepare(work):
