@@ -356,6 +356,11 @@ cable_fold *cable_fold_alloc(const cable_problem *pb, const cable_constants *c, 
     FAIL(CABLE_ERR_INPUT, "ISW=2: the start has NDIM=%d, the problem %d (or %d on a fold curve)", start->ndim, n,
          2 * n);
   int base = start->itp >= 0 ? start->itp % 10 : -((-start->itp) % 10);
+  if (!f->start_ext && base == 6)
+    FAIL(CABLE_ERR_UNSUPPORTED,
+         "ISW=2 at a BP (label %d): branch-point continuation is not implemented (doc/fold-continuation.md, "
+         "\"Branch-point continuation\"); ISW=2 starts fold continuation from an LP, ISW=-1 switches branches here",
+         start->lab);
   if (!f->start_ext && base != 5)
     FAIL(CABLE_ERR_INPUT, "ISW=2: fold continuation starts from an LP; label %d has type %d", start->lab,
          start->itp);
