@@ -626,9 +626,13 @@ static int solution_cb(void *ctx, const cable_point *pt, const cable_solution *s
   if (dir) nrowpr += (nfpr + 19) / 20 + (nfpr + 6) / 7 + ((ndim + 6) / 7) * ntpl;
   int mtot = pt->pt >= 1 ? (pt->pt - 1) % 9999 + 1 : pt->pt;
   FILE *f = cable_atomic_stream(w->s);
-  /* AUTO's header: 6I6,I8,I6,I8,7I5 (16 integers: NPARI=0, IPS=4, IPRIV=0) */
+  /* AUTO's header: 6I6,I8,I6,I8,7I5 (16 integers: NPARI, NDM, IPS=4, IPRIV=0);
+     a fold curve's (cable_fold.h, constants' ndm = n < NDIM) has AUTO's
+     NPARI = NFPR/2 (its w and N slots) and NDM = n, as auto-07p writes */
+  int ext = w->c.ndm > 0 && w->c.ndm < ndim;
   fprintf(f, "%6d%6d%6d%6d%6d%6d%8d%6d%8d%5d%5d%5d%5d%5d%5d%5d\n", pt->ibr, mtot, pt->itp, pt->lab, nfpr,
-          sol->isw, ntpl, ndim + 1, nrowpr, sol->ntst, sol->ncol, npar, 0, ndim, 4, 0);
+          sol->isw, ntpl, ndim + 1, nrowpr, sol->ntst, sol->ncol, npar, ext ? nfpr / 2 : 0, ext ? w->c.ndm : ndim, 4,
+          0);
   for (int j = 0; j < ntpl; j++) {
     /* t then u(t): AUTO writes them as one record of ndim+1 numbers */
     char buf[64];

@@ -133,6 +133,48 @@ static void compare(const case_t *c, int sec, const cable_bfile_branch *a, const
   }
 }
 
+/* The s-file's solution headers (16 integers; the data lines hold reals):
+ * up to max of them into h[][16]; the count. */
+#define MAX_SOLS 64
+static int sfile_headers(const char *path, int h[MAX_SOLS][16])
+{
+  FILE *f = fopen(path, "r");
+  int n = 0;
+  char line[512];
+  while (f && n < MAX_SOLS && fgets(line, sizeof line, f)) {
+    if (strpbrk(line, ".EeDd")) continue;
+    int *r = h[n], used = 0;
+    if (sscanf(line, "%d%d%d%d%d%d%d%d%d%d%d%d%d%d%d%d%n", &r[0], &r[1], &r[2], &r[3], &r[4], &r[5], &r[6], &r[7],
+               &r[8], &r[9], &r[10], &r[11], &r[12], &r[13], &r[14], &r[15], &used) == 16)
+      n++;
+  }
+  if (f) fclose(f);
+  return n;
+}
+
+/* AUTO's solution headers against cable's, every field but the point number
+ * (IBR ITP LAB NFPR ISW NTPL NAR NROWPR NTST NCOL NPAR NPARI NDM IPS IPRIV). */
+static void compare_sfiles(const case_t *c, const char *da, const char *dc)
+{
+  static int ha[MAX_SOLS][16], hb[MAX_SOLS][16];
+  char pa[3 * PATH_MAX], pb[3 * PATH_MAX], what[256];
+  snprintf(pa, sizeof pa, "%s/s.%s", da, c->name);
+  snprintf(pb, sizeof pb, "%s/s.%s", dc, c->name);
+  int na = sfile_headers(pa, ha), nb = sfile_headers(pb, hb);
+  snprintf(what, sizeof what, "%s: s.%s: the same number of solutions", c->folder, c->name);
+  test_int(what, nb, na);
+  static const char *const field[16] = {"IBR", "NTOT", "ITP", "LAB", "NFPR", "ISW", "NTPL", "NAR",
+                                        "NROWPR", "NTST", "NCOL", "NPAR", "NPARI", "NDM", "IPS", "IPRIV"};
+  for (int i = 0; i < na && i < nb; i++) {
+    int bad = -1;
+    for (int k = 0; k < 16 && bad < 0; k++)
+      if (k != 1 && ha[i][k] != hb[i][k]) bad = k;
+    snprintf(what, sizeof what, "%s: s.%s: label %d's header as AUTO's%s%s", c->folder, c->name, ha[i][3],
+             bad >= 0 ? ": differs in " : "", bad >= 0 ? field[bad] : "");
+    test_true(what, bad < 0);
+  }
+}
+
 static void run_case(const case_t *c)
 {
   char da[2 * PATH_MAX], dc[2 * PATH_MAX], cmd[8 * PATH_MAX], ba[3 * PATH_MAX], bc[3 * PATH_MAX], what[3 * PATH_MAX];
@@ -169,6 +211,7 @@ static void run_case(const case_t *c)
   }
   cable_bfile_free(a);
   cable_bfile_free(b);
+  compare_sfiles(c, da, dc);
 }
 
 int main(int argc, char **argv)
