@@ -15,6 +15,7 @@
 #include "cable/cable_aufile.h"
 #include "cable/cable_constants.h"
 #include "cable/cable_cont.h"
+#include "cable/cable_bpcont.h"
 #include "cable/cable_fold.h"
 #include "cable/cable_status.h"
 #include "cable_session_impl.h"
@@ -655,9 +656,30 @@ static int engine_run(cable_session *r, rp_setup *s, rp_branch **out, cable_erro
   /* ISW = 2 at an LP: the fold's extended problem, its constants (ICP with
      the null vector's parameter slots) and its own start (cable_fold.h) */
   cable_fold *fold = NULL;
+  cable_bpcont *bpc = NULL;
   const cable_constants *crun = &s->c;
   const cable_solution *start = s->start;
-  if (s->c.isw == 2) {
+  /* ISW = 2 at a BP, or from a point of a curve of branch points (type 6x):
+     branch-point continuation (cable_bpcont.h), in AUTO's two runs as the
+     fold's below */
+  int at_bp = s->c.isw == 2 && s->start &&
+              ((s->start->ndim == pb->ndim && cable_type_base(s->start->itp) == 6) ||
+               (s->start->ndim == 2 * pb->ndim && abs(s->start->itp) / 10 == CABLE_BPCONT_ITPST));
+  if (at_bp) {
+    char msg[400];
+    bpc = cable_bpcont_alloc(pb, &s->c, s->start, &st, msg, sizeof msg);
+    int curve_restart = s->start->ndim == 2 * pb->ndim;
+    if (bpc && !curve_restart) st = cable_bpcont_starting_data(bpc, msg, sizeof msg);
+    if (!bpc || st) {
+      cable_bpcont_free(bpc);
+      problem_release(r, &prob);
+      return cable_error_set(err, st, NULL, 0, "ISW", "%s", msg);
+    }
+    if (!curve_restart) fprintf(rp_log(r), "  Generating starting data : Restart at EP label below :\n");
+    pb = cable_bpcont_problem(bpc);
+    crun = cable_bpcont_constants(bpc);
+    start = curve_restart ? cable_bpcont_start(bpc) : NULL;
+  } else if (s->c.isw == 2) {
     char msg[400];
     fold = cable_fold_alloc(pb, &s->c, s->start, &st, msg, sizeof msg);
     if (!fold) {
@@ -673,6 +695,7 @@ static int engine_run(cable_session *r, rp_setup *s, rp_branch **out, cable_erro
     int curve_restart = s->start && s->start->ndim == 2 * pb->ndim;
     if (!curve_restart && (st = cable_fold_starting_data(fold, msg, sizeof msg)) != 0) {
       cable_fold_free(fold);
+      cable_bpcont_free(bpc);
       problem_release(r, &prob);
       return cable_error_set(err, st, NULL, 0, "ISW", "%s", msg);
     }
@@ -685,21 +708,24 @@ static int engine_run(cable_session *r, rp_setup *s, rp_branch **out, cable_erro
   st = cable_cont_check(pb, crun, err);
   if (st) {
     cable_fold_free(fold);
+    cable_bpcont_free(bpc);
     problem_release(r, &prob);
     return st;
   }
   cable_cont *cc = cable_cont_alloc(pb, crun, &st);
   if (!cc) {
     cable_fold_free(fold);
+    cable_bpcont_free(bpc);
     problem_release(r, &prob);
     return cable_error_set(err, st, NULL, 0, NULL, "could not set up the solver: %s", cable_status_message(st));
   }
-  if (st == 0 && fold) {
-    /* the fold run starts on the LP's mesh */
+  if (st == 0 && (fold || bpc)) {
+    /* the fold run starts on the LP's mesh, the branch-point run on the BP's */
     double *mesh = malloc((size_t)(crun->ntst + 1) * sizeof *mesh);
     if (!mesh) st = CABLE_ERR_ALLOC;
     if (mesh) {
-      cable_fold_mesh(fold, crun->ntst, mesh);
+      if (fold) cable_fold_mesh(fold, crun->ntst, mesh);
+      else cable_bpcont_mesh(bpc, crun->ntst, mesh);
       st = cable_cont_set_mesh(cc, mesh);
       free(mesh);
     }
@@ -709,6 +735,7 @@ static int engine_run(cable_session *r, rp_setup *s, rp_branch **out, cable_erro
     cable_error_set(err, st, NULL, 0, NULL, "%s", cable_cont_error(cc)[0] ? cable_cont_error(cc) : cable_status_message(st));
     cable_cont_free(cc);
     cable_fold_free(fold);
+    cable_bpcont_free(bpc);
     problem_release(r, &prob);
     return st;
   }
@@ -718,17 +745,18 @@ static int engine_run(cable_session *r, rp_setup *s, rp_branch **out, cable_erro
      restart, a fold curve's from its starting data included, keeps the
      start's branch number */
   int ibr = s->mbr + 1;
-  if (s->start && s->c.isw >= 0 && !(fold && start == NULL)) ibr = s->start->ibr;
+  if (s->start && s->c.isw >= 0 && !((fold || bpc) && start == NULL)) ibr = s->start->ibr;
   double t_start = now_seconds();
   collector col = {rp_branch_alloc(ibr, crun, &s->names, s->e), r->opt.diag, 0, isatty(fileno(stderr)),
                    r->opt.interrupt, r->opt.interrupt_ctx, 0};
-  if (col.b && fold) {
+  if (col.b && (fold || bpc)) {
     col.b->has_c_user = 1;
     col.b->c_user = s->c;
   }
   if (!col.b) {
     cable_cont_free(cc);
     cable_fold_free(fold);
+    cable_bpcont_free(bpc);
     problem_release(r, &prob);
     return cable_error_set(err, CABLE_ERR_ALLOC, NULL, 0, NULL, "out of memory");
   }
@@ -741,6 +769,7 @@ static int engine_run(cable_session *r, rp_setup *s, rp_branch **out, cable_erro
   if (!col.rc && st < 0) col.rc = rp_branch_set_end_note(col.b, end_note);
   cable_cont_free(cc);
   cable_fold_free(fold);
+  cable_bpcont_free(bpc);
   problem_release(r, &prob);
   if (col.tty) fprintf(stderr, "\r%*s\r", 100, "");
   if (col.rc) {

@@ -357,10 +357,9 @@ cable_fold *cable_fold_alloc(const cable_problem *pb, const cable_constants *c, 
          2 * n);
   int base = start->itp >= 0 ? start->itp % 10 : -((-start->itp) % 10);
   if (!f->start_ext && base == 6)
-    FAIL(CABLE_ERR_UNSUPPORTED,
-         "ISW=2 at a BP (label %d): branch-point continuation is not implemented (doc/fold-continuation.md, "
-         "\"Branch-point continuation\"); ISW=2 starts fold continuation from an LP, ISW=-1 switches branches here",
-         start->lab);
+    FAIL(CABLE_ERR_INPUT,
+         "ISW=2 at a BP (label %d) is branch-point continuation (cable_bpcont.h), not fold continuation, which "
+         "starts from an LP", start->lab);
   if (!f->start_ext && base != 5)
     FAIL(CABLE_ERR_INPUT, "ISW=2: fold continuation starts from an LP; label %d has type %d", start->lab,
          start->itp);
@@ -432,6 +431,8 @@ cable_fold *cable_fold_alloc(const cable_problem *pb, const cable_constants *c, 
   memcpy(f->c.icp, icp, (size_t)m * sizeof *icp);
   f->c.nicp = m;
   f->c.ndm = n;
+  f->c.itpst = CABLE_FOLD_ITPST;
+  f->c.npari = k;   /* w2..wk and N */
   *status = CABLE_SUCCESS;
   return f;
 }

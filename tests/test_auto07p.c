@@ -60,6 +60,9 @@ static const case_t cases[] = {
   /* ISW=2 at an LP: the starting-data run (one EP label, type 59) and the
      fold curve from it both ways (doc/fold-continuation.md, "AUTO's runs") */
   {"foldstart", "foldstart.auto", "bf", {"bf.f90", "c.bf", "foldstart.auto", NULL}},
+  /* ISW=2 at a BP: the starting data and the curve of branch points from
+     them both ways (doc/fold-continuation.md, "Branch-point continuation") */
+  {"bpcont", "bpcont.auto", "el", {"el.f90", "c.el", "bpcont.auto", NULL}},
 };
 
 static char cable_bin[3 * PATH_MAX], root[PATH_MAX];
@@ -166,9 +169,14 @@ static void compare_sfiles(const case_t *c, const char *da, const char *dc)
   static const char *const field[16] = {"IBR", "NTOT", "ITP", "LAB", "NFPR", "ISW", "NTPL", "NAR",
                                         "NROWPR", "NTST", "NCOL", "NPAR", "NPARI", "NDM", "IPS", "IPRIV"};
   for (int i = 0; i < na && i < nb; i++) {
+    /* deliberate difference: AUTO's starting data at a BP (ISW = -2) are
+       its 4n start system (u, two null vectors, psi), cable's the 2n curve
+       system (u, psi) with psi computed directly: there only IBR, ITP, LAB
+       and ISW are compared (doc/fold-continuation.md) */
+    int start4 = ha[i][5] < 0 && abs(ha[i][2]) / 10 == 6;
     int bad = -1;
     for (int k = 0; k < 16 && bad < 0; k++)
-      if (k != 1 && ha[i][k] != hb[i][k]) bad = k;
+      if (k != 1 && ha[i][k] != hb[i][k] && (!start4 || k == 0 || k == 2 || k == 3 || k == 5)) bad = k;
     snprintf(what, sizeof what, "%s: s.%s: label %d's header as AUTO's%s%s", c->folder, c->name, ha[i][3],
              bad >= 0 ? ": differs in " : "", bad >= 0 ? field[bad] : "");
     test_true(what, bad < 0);

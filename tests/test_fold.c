@@ -380,14 +380,15 @@ static void test_bad_starts(const cable_problem *pb, const cable_solution *lp, c
   f = cable_fold_alloc(pb, &c, NULL, &st, msg, sizeof msg);
   test_true("ISW=2 without a start: refused", !f && st == CABLE_ERR_INPUT);
   cable_fold_free(f);
-  /* at a BP: refused as not implemented, naming the label and what to do */
+  /* at a BP: refused, naming the label and branch-point continuation */
   cable_solution *bp = cable_solution_clone(lp);
   if (bp) {
     bp->itp = CABLE_TY_BP;
     bp->lab = 7;
     f = cable_fold_alloc(pb, &c, bp, &st, msg, sizeof msg);
-    test_true("ISW=2 at a BP: refused as not implemented, the message names the label and ISW=-1",
-              !f && st == CABLE_ERR_UNSUPPORTED && strstr(msg, "at a BP (label 7)") && strstr(msg, "ISW=-1"));
+    test_true("cable_fold_alloc at a BP: refused, the message names the label and branch-point continuation",
+              !f && st == CABLE_ERR_INPUT && strstr(msg, "at a BP (label 7)") &&
+                  strstr(msg, "branch-point continuation"));
     cable_fold_free(f);
     cable_solution_free(bp);
   }
