@@ -36,6 +36,8 @@ struct cable_aufile {
   int nsections;               /* sections in the b-file incl. those appended to */
   /* current section */
   int in_section, sec_ibr, sec_ndim, sec_nicp, sec_icp[CABLE_MAX_ICP], sec_n2;
+  int sec_npcol, sec_pcol[CABLE_MAX_ICP];   /* the parameter columns after MAX U: icp[1..]
+                                               without an extended problem's own slots */
   int last_lab_point;          /* label of the last point (for the solution that follows) */
   /* d-file: 1 once the file has content (the next point's block needs a divider) */
   int d_started;
@@ -214,13 +216,13 @@ static void section_heading(const cable_aufile *w, int j, char out[BCOL + 1])
   } else if (j < 2 + n2) {
     umax_heading(w, j - 2, out);
   } else {
-    par_heading(w, w->sec_icp[j - 1 - n2], out);
+    par_heading(w, w->sec_pcol[j - 2 - n2], out);
   }
 }
 
 static int section_ncol(const cable_aufile *w)
 {
-  return 2 + w->sec_n2 + (w->sec_nicp - 1);
+  return 2 + w->sec_n2 + w->sec_npcol;
 }
 
 /* A name as a quoted string both AUTO's parseC and cable's parser read:
@@ -489,7 +491,13 @@ static int start_section(cable_aufile *w, const cable_point *pt)
   w->sec_ndim = pt->ndim;
   w->sec_nicp = pt->nicp;
   memcpy(w->sec_icp, pt->icp, (size_t)pt->nicp * sizeof pt->icp[0]);
-  w->sec_n2 = n_umax(pt->nicp, pt->ndim);
+  /* AUTO prints the user's parameters, not an extended problem's own (a
+     fold's w and N, a branch-point curve's b, psi*, d and a: the NPARI
+     slots after NPAR), and counts its MAX U columns with them */
+  w->sec_npcol = 0;
+  for (int k = 1; k < pt->nicp; k++)
+    if (!(w->c.npari > 0 && pt->icp[k] >= w->c.npar - w->c.npari)) w->sec_pcol[w->sec_npcol++] = pt->icp[k];
+  w->sec_n2 = n_umax(1 + w->sec_npcol, pt->ndim);
   w->nsections++;
   write_b_header(w, pt);
   FILE *d = cable_atomic_stream(w->d);
@@ -531,7 +539,7 @@ static int point_cb(void *ctx, const cable_point *pt)
   val[n++] = pt->par[pt->icp[0]];
   val[n++] = pt->measure;
   for (int i = 0; i < w->sec_n2; i++) val[n++] = pt->umax[i];
-  for (int k = 1; k < pt->nicp; k++) val[n++] = pt->par[pt->icp[k]];
+  for (int k = 0; k < w->sec_npcol; k++) val[n++] = pt->par[w->sec_pcol[k]];
   int mtot = (pt->pt - 1) % 9999 + 1;   /* AUTO wraps point numbers at 9999 */
   if (pt->pt < 1) mtot = pt->pt;
   if (pt->stab == 1) mtot = -mtot;      /* STAB=1: AUTO's sign for a stable point */
@@ -630,9 +638,14 @@ static int solution_cb(void *ctx, const cable_point *pt, const cable_solution *s
   if (dir) nrowpr += (nfpr + 19) / 20 + (nfpr + 6) / 7 + ((ndim + 6) / 7) * ntpl;
   int mtot = pt->pt >= 1 ? (pt->pt - 1) % 9999 + 1 : pt->pt;
   FILE *f = cable_atomic_stream(w->s);
-  /* AUTO's header: 6I6,I8,I6,I8,7I5 (16 integers: NPARI=0, IPS=4, IPRIV=0) */
+  /* AUTO's header: 6I6,I8,I6,I8,7I5 (16 integers: NPARI, NDM, IPS=4, IPRIV=0);
+     an extended problem's (cable_fold.h, cable_bpcont.h: constants' ndm = n
+     < NDIM) has AUTO's NPARI (its own parameter slots) and NDM = n, as
+     auto-07p writes */
+  int ext = w->c.ndm > 0 && w->c.ndm < ndim;
   fprintf(f, "%6d%6d%6d%6d%6d%6d%8d%6d%8d%5d%5d%5d%5d%5d%5d%5d\n", pt->ibr, mtot, pt->itp, pt->lab, nfpr,
-          sol->isw, ntpl, ndim + 1, nrowpr, sol->ntst, sol->ncol, npar, 0, ndim, 4, 0);
+          sol->isw, ntpl, ndim + 1, nrowpr, sol->ntst, sol->ncol, npar, ext ? w->c.npari : 0, ext ? w->c.ndm : ndim,
+          4, 0);
   for (int j = 0; j < ntpl; j++) {
     /* t then u(t): AUTO writes them as one record of ndim+1 numbers */
     char buf[64];

@@ -15,6 +15,7 @@
 #include "cable/cable_aufile.h"
 #include "cable/cable_constants.h"
 #include "cable/cable_cont.h"
+#include "cable/cable_bpcont.h"
 #include "cable/cable_fold.h"
 #include "cable/cable_status.h"
 #include "cable_session_impl.h"
@@ -790,9 +791,30 @@ static int engine_run(cable_session *r, rp_setup *s, const char *out_name, int o
   /* ISW = 2 at an LP: the fold's extended problem, its constants (ICP with
      the null vector's parameter slots) and its own start (cable_fold.h) */
   cable_fold *fold = NULL;
+  cable_bpcont *bpc = NULL;
   const cable_constants *crun = &s->c;
   const cable_solution *start = s->start;
-  if (s->c.isw == 2) {
+  /* ISW = 2 at a BP, or from a point of a curve of branch points (type 6x):
+     branch-point continuation (cable_bpcont.h), in AUTO's two runs as the
+     fold's below */
+  int at_bp = s->c.isw == 2 && s->start &&
+              ((s->start->ndim == pb->ndim && cable_type_base(s->start->itp) == 6) ||
+               (s->start->ndim == 2 * pb->ndim && abs(s->start->itp) / 10 == CABLE_BPCONT_ITPST));
+  if (at_bp) {
+    char msg[400];
+    bpc = cable_bpcont_alloc(pb, &s->c, s->start, &st, msg, sizeof msg);
+    int curve_restart = s->start->ndim == 2 * pb->ndim;
+    if (bpc && !curve_restart) st = cable_bpcont_starting_data(bpc, msg, sizeof msg);
+    if (!bpc || st) {
+      cable_bpcont_free(bpc);
+      problem_release(r, &prob);
+      return cable_error_set(err, st, NULL, 0, "ISW", "%s", msg);
+    }
+    if (!curve_restart) fprintf(rp_log(r), "  Generating starting data : Restart at EP label below :\n");
+    pb = cable_bpcont_problem(bpc);
+    crun = cable_bpcont_constants(bpc);
+    start = curve_restart ? cable_bpcont_start(bpc) : NULL;
+  } else if (s->c.isw == 2) {
     char msg[400];
     fold = cable_fold_alloc(pb, &s->c, s->start, &st, msg, sizeof msg);
     if (!fold) {
@@ -802,16 +824,27 @@ static int engine_run(cable_session *r, rp_setup *s, const char *out_name, int o
     }
     /* a point of a fold curve (NDIM = 2n) restarts the curve as it is
        stored, with its direction (run(r2) after a fold run goes on, as in
-       AUTO); an LP starts it through the extended problem's STPNT */
+       AUTO); at an LP the run is AUTO's first one: it generates the curve's
+       starting data (five steps along the null vector's norm, one EP label)
+       through the extended problem's STPNT, and the next run from that EP
+       follows the curve (doc/fold-continuation.md, "AUTO's runs") */
     int curve_restart = s->start && s->start->ndim == 2 * pb->ndim;
+    if (!curve_restart && (st = cable_fold_starting_data(fold, msg, sizeof msg)) != 0) {
+      cable_fold_free(fold);
+      cable_bpcont_free(bpc);
+      problem_release(r, &prob);
+      return cable_error_set(err, st, NULL, 0, "ISW", "%s", msg);
+    }
+    if (!curve_restart) fprintf(rp_log(r), "  Generating starting data : Restart at EP label below :\n");
     pb = cable_fold_problem(fold);
     crun = cable_fold_constants(fold);
-    start = curve_restart ? s->start : NULL;
+    start = curve_restart ? cable_fold_start(fold) : NULL;
   }
   cable_names_fill(&s->names, pb->parnames, pb->npar, pb->unames, pb->ndim);
   st = cable_cont_check(pb, crun, err);
   if (st) {
     cable_fold_free(fold);
+    cable_bpcont_free(bpc);
     problem_release(r, &prob);
     free(guard);
     return st;
@@ -819,16 +852,18 @@ static int engine_run(cable_session *r, rp_setup *s, const char *out_name, int o
   cable_cont *cc = cable_cont_alloc(pb, crun, &st);
   if (!cc) {
     cable_fold_free(fold);
+    cable_bpcont_free(bpc);
     problem_release(r, &prob);
     free(guard);
     return cable_error_set(err, st, NULL, 0, NULL, "could not set up the solver: %s", cable_status_message(st));
   }
-  if (st == 0 && fold) {
-    /* the fold run starts on the LP's mesh */
+  if (st == 0 && (fold || bpc)) {
+    /* the fold run starts on the LP's mesh, the branch-point run on the BP's */
     double *mesh = malloc((size_t)(crun->ntst + 1) * sizeof *mesh);
     if (!mesh) st = CABLE_ERR_ALLOC;
     if (mesh) {
-      cable_fold_mesh(fold, crun->ntst, mesh);
+      if (fold) cable_fold_mesh(fold, crun->ntst, mesh);
+      else cable_bpcont_mesh(bpc, crun->ntst, mesh);
       st = cable_cont_set_mesh(cc, mesh);
       free(mesh);
     }
@@ -839,15 +874,18 @@ static int engine_run(cable_session *r, rp_setup *s, const char *out_name, int o
     cable_error_set(err, st, NULL, 0, strncmp(why, "PAR sets", 8) == 0 ? "PAR" : NULL, "%s", why);
     cable_cont_free(cc);
     cable_fold_free(fold);
+    cable_bpcont_free(bpc);
     problem_release(r, &prob);
     free(guard);
     return st;
   }
-  /* AUTO's NEWLAB: a new branch number after a start from STPNT or a switch;
-     for ISW = 2 from a point that is not on a fold curve, the start's label
-     (AUTO's IBR = IRS); a plain restart keeps the start's branch number */
+  /* AUTO's NEWLAB: a new branch number after a start from STPNT, a switch
+     or (ISW = -2 inside AUTO) the starting data of a fold curve, MBR + 1
+     (auto-07p, demo int: its run 2 from LP4 of branch 1 is branch 2); a
+     restart, a fold curve's from its starting data included, keeps the
+     start's branch number */
   int ibr = s->mbr + 1;
-  if (s->start && s->c.isw >= 0) ibr = fold && start == NULL ? s->start->lab : s->start->ibr;
+  if (s->start && s->c.isw >= 0 && !((fold || bpc) && start == NULL)) ibr = s->start->ibr;
   double t_start = now_seconds();
   collector col;
   memset(&col, 0, sizeof col);
@@ -857,13 +895,14 @@ static int engine_run(cable_session *r, rp_setup *s, const char *out_name, int o
   col.tty = isatty(fileno(stderr));
   col.interrupt = r->opt.interrupt;
   col.interrupt_ctx = r->opt.interrupt_ctx;
-  if (col.b && fold) {
+  if (col.b && (fold || bpc)) {
     col.b->has_c_user = 1;
     col.b->c_user = s->c;
   }
   if (!col.b) {
     cable_cont_free(cc);
     cable_fold_free(fold);
+    cable_bpcont_free(bpc);
     problem_release(r, &prob);
     free(guard);
     return cable_error_set(err, CABLE_ERR_ALLOC, NULL, 0, NULL, "out of memory");
@@ -876,6 +915,7 @@ static int engine_run(cable_session *r, rp_setup *s, const char *out_name, int o
       rp_branch_decref(col.b);
       cable_cont_free(cc);
       cable_fold_free(fold);
+      cable_bpcont_free(bpc);
       problem_release(r, &prob);
       free(guard);
       return err && err->status ? err->status : CABLE_ERR_IO;
@@ -904,6 +944,7 @@ static int engine_run(cable_session *r, rp_setup *s, const char *out_name, int o
   if (!col.rc && st < 0) col.rc = rp_branch_set_end_note(col.b, end_note);
   cable_cont_free(cc);
   cable_fold_free(fold);
+  cable_bpcont_free(bpc);
   problem_release(r, &prob);
   free(guard);
   if (col.tty) fprintf(stderr, "\r%*s\r", 100, "");

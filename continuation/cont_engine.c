@@ -270,7 +270,7 @@ static double principal(const cable_cont *cc, const double *x)
  * whose fold curve is even in q). doc/fold-continuation.md. */
 static int start_fixpar(const cable_cont *cc)
 {
-  return cc->c.isw == 2 && cc->nfpr >= 2 ? 1 : 0;
+  return (cc->c.isw == 2 || cc->c.isw == -2) && cc->nfpr >= 2 ? 1 : 0;
 }
 
 /* A start direction computed at fixed q is oriented as the one at fixed p1
@@ -361,7 +361,11 @@ static int first_point(cable_cont *cc)
       return cc->end_status = rc;
     }
   } else if (!have_dir) {
-    /* tangent at fixed principal parameter: the closing row is e_p0, rhs e_last */
+    /* tangent at fixed principal parameter: the closing row is e_p0, rhs e_last
+       (on a fold curve at fixed q, restarts included: a fold curve restarted
+       from its starting data has no usable direction, and at fixed p1 its
+       start is singular where the curve turns in p1) */
+    fix = start_fixpar(cc);
     s->closing = COLLOC_CLOSE_FIXPAR;
     s->fixpar = fix;
     rc = cont_factor_at(cc, cc->x, NULL, NULL);
@@ -406,8 +410,9 @@ static int first_point(cable_cont *cc)
   cc->ds_used = 0.0;
   /* AUTO labels the first point of a run EP only when it is a new start: a
      restart, the switched first point at a branch point (ISW = -1) included,
-     is not labelled (auto-07p, demo lin: run 2 from BP1 has no EP at PT 1) */
-  cc->itp = !cc->restart ? CABLE_TY_EP : CABLE_TY_NONE;
+     is not labelled (auto-07p, demo lin: run 2 from BP1 has no EP at PT 1),
+     nor is the LP that a fold curve's starting data (ISW = -2) start from */
+  cc->itp = !cc->restart && cc->c.isw != -2 ? CABLE_TY_EP : CABLE_TY_NONE;
   cc->switch_pending = 0;
   if ((rc = cont_store_solution(cc, cc->itp, 0)) != CABLE_SUCCESS) {
     cc->npt = 0;   /* nothing to store as MX */

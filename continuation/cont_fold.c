@@ -16,13 +16,15 @@ struct cable_fold {
   cable_constants c;            /* the extended run's constants */
   const cable_problem *orig;    /* not owned */
   int n, k;                     /* original NDIM and number of free parameters */
-  int npar0, npar;              /* parameter slots: original, extended (npar0 + k - 1) */
+  int npar0, npar;              /* parameter slots: original, extended (npar0 + k) */
   int p[CABLE_MAX_ICP];         /* p[0..k-1]: the original free parameters p1..pk */
   int q;                        /* the new parameter */
   int wslot[CABLE_MAX_ICP];     /* wslot[j], j = 1..k-1: the slot of w for p[j] */
+  int nslot;                    /* the slot of the null vector's squared norm (AUTO's PAR(NPAR+k)) */
   cable_solution *start;        /* owned copy of the start */
   int start_ext;                /* the start is a point of a fold curve */
-  double vscale;                /* 1 / norm of the start's null vector */
+  double vscale;                /* sqrt(n0) / norm of the start's null vector */
+  double n0;                    /* N at an LP start: 1, or CABLE_FOLD_START_NORM for starting data */
   cable_solution *pvsol;        /* original-NDIM scratch for PVLS */
   char **parnames, **unames;    /* owned names of the extended problem */
 };
@@ -126,8 +128,8 @@ static int fold_bcnd(int ndim, const double *par, const int *icp, int nbc, const
   return 0;
 }
 
-/* ICND': g(u, p), D g[v, w] and the normalisation |v|^2 + |w|^2 - 1, whose
- * integral over [0, 1] is int |v|^2 dt + |w|^2 - 1.  The previous solution,
+/* ICND': g(u, p), D g[v, w] and the normalisation |v|^2 + |w|^2 - N, whose
+ * integral over [0, 1] is int |v|^2 dt + |w|^2 - N (N = par[nslot]).  The previous solution,
  * tangent and its derivative reach the original ICND in their u parts. */
 static int fold_icnd(int ndim, const double *par, const int *icp, int nint, const double *U, const double *uold,
                      const double *udot, const double *upold, int ijac, double *fi, double *dint, void *params)
@@ -137,7 +139,7 @@ static int fold_icnd(int ndim, const double *par, const int *icp, int nint, cons
   const cable_problem *o = f->orig;
   int n = f->n, ni = o->nint, rc;
   const double *u = U, *v = U + n;
-  double norm = -1.0;
+  double norm = -par[f->nslot];
   for (int i = 0; i < n; i++) norm += v[i] * v[i];
   for (int j = 1; j < f->k; j++) norm += par[f->wslot[j]] * par[f->wslot[j]];
   fi[2 * ni] = norm;
@@ -192,6 +194,8 @@ static int fold_stpnt(int ndim, double t, double *U, double *par, void *params)
   int n = f->n;
   int np = s->npar < f->npar ? s->npar : f->npar;
   for (int k = 0; k < f->npar; k++) par[k] = k < np ? s->par[k] : 0.0;
+  if (!f->start_ext) par[f->nslot] = f->n0;
+  else if (s->npar <= f->nslot) par[f->nslot] = 1.0;
   if (f->start_ext) {
     interp(s, s->u, 2 * n, 0, 2 * n, t, U);
     return 0;
@@ -293,6 +297,28 @@ static double start_norm(const cable_fold *f, const cable_solution *s)
   return sqrt(sum);
 }
 
+/* A copy of a fold-curve point with room for the norm slot: a point stored
+ * before the slot existed (NPAR = npar0 + k - 1) had |v|^2 + |w|^2 = 1. */
+static cable_solution *widen_start(const cable_solution *src, int npar)
+{
+  if (src->npar >= npar) return cable_solution_clone(src);
+  cable_solution *s = cable_solution_alloc(src->ndim, src->ntst, src->ncol, npar, src->nfpr);
+  if (!s) return NULL;
+  size_t np = (size_t)cable_solution_npts(src);
+  s->ibr = src->ibr; s->ntot = src->ntot; s->itp = src->itp; s->lab = src->lab;
+  s->bp_kind = src->bp_kind; s->isw = src->isw; s->err_est = src->err_est;
+  memcpy(s->t, src->t, np * sizeof *s->t);
+  memcpy(s->u, src->u, np * (size_t)src->ndim * sizeof *s->u);
+  if (src->udot) memcpy(s->udot, src->udot, np * (size_t)src->ndim * sizeof *s->udot);
+  memcpy(s->par, src->par, (size_t)src->npar * sizeof *s->par);
+  s->par[npar - 1] = 1.0;
+  if (src->nfpr > 0) {
+    memcpy(s->icp, src->icp, (size_t)src->nfpr * sizeof *s->icp);
+    memcpy(s->pardot, src->pardot, (size_t)src->nfpr * sizeof *s->pardot);
+  }
+  return s;
+}
+
 #define FAIL(st, ...)                  \
   do {                                 \
     snprintf(msg, len, __VA_ARGS__);   \
@@ -333,7 +359,8 @@ cable_fold *cable_fold_alloc(const cable_problem *pb, const cable_constants *c, 
   f->n = n;
   f->k = k;
   f->npar0 = c->npar > pb->npar ? c->npar : pb->npar;
-  f->npar = f->npar0 + k - 1;
+  f->npar = f->npar0 + k;
+  f->nslot = f->npar0 + k - 1;
   if (n > CABLE_FOLD_MAXDIM || f->npar > CABLE_FOLD_MAXPAR || pb->nbc > CABLE_FOLD_MAXPAR ||
       pb->nint > CABLE_FOLD_MAXPAR)
     FAIL(CABLE_ERR_UNSUPPORTED, "ISW=2: fold continuation supports NDIM <= %d and NPAR <= %d", CABLE_FOLD_MAXDIM,
@@ -349,6 +376,10 @@ cable_fold *cable_fold_alloc(const cable_problem *pb, const cable_constants *c, 
     FAIL(CABLE_ERR_INPUT, "ISW=2: the start has NDIM=%d, the problem %d (or %d on a fold curve)", start->ndim, n,
          2 * n);
   int base = start->itp >= 0 ? start->itp % 10 : -((-start->itp) % 10);
+  if (!f->start_ext && base == 6)
+    FAIL(CABLE_ERR_INPUT,
+         "ISW=2 at a BP (label %d) is branch-point continuation (cable_bpcont.h), not fold continuation, which "
+         "starts from an LP", start->lab);
   if (!f->start_ext && base != 5)
     FAIL(CABLE_ERR_INPUT, "ISW=2: fold continuation starts from an LP; label %d has type %d", start->lab,
          start->itp);
@@ -361,11 +392,13 @@ cable_fold *cable_fold_alloc(const cable_problem *pb, const cable_constants *c, 
   for (int a = 0; a <= k; a++)
     for (int b = 0; b < a; b++)
       if (c->icp[a] == c->icp[b]) FAIL(CABLE_ERR_INPUT, "ISW=2: PAR(%d) is listed twice in ICP", c->icp[a] + 1);
-  if (!(f->start = cable_solution_clone(start))) FAIL(CABLE_ERR_ALLOC, "out of memory");
+  if (!(f->start = f->start_ext ? widen_start(start, f->npar) : cable_solution_clone(start)))
+    FAIL(CABLE_ERR_ALLOC, "out of memory");
   if (!f->start_ext) {
     double nv = start_norm(f, start);
     if (!(nv > 0)) FAIL(CABLE_ERR_INPUT, "ISW=2: the LP's stored direction is zero");
     f->vscale = 1.0 / nv;
+    f->n0 = 1.0;
   }
   if (pb->pvls && !(f->pvsol = cable_solution_alloc(n, c->ntst, c->ncol, f->npar0, k)))
     FAIL(CABLE_ERR_ALLOC, "out of memory");
@@ -380,6 +413,7 @@ cable_fold *cable_fold_alloc(const cable_problem *pb, const cable_constants *c, 
     const char *nm = pb->parnames && f->p[j] < pb->npar ? pb->parnames[f->p[j]] : NULL;
     if (!(f->parnames[f->wslot[j]] = name_with("w_", nm, f->p[j]))) FAIL(CABLE_ERR_ALLOC, "out of memory");
   }
+  if (pb->parnames && !(f->parnames[f->nslot] = name_with("", "v_norm", 0))) FAIL(CABLE_ERR_ALLOC, "out of memory");
   for (int i = 0; i < n; i++) {
     const char *nm = pb->unames ? pb->unames[i] : NULL;
     char idx[32];
@@ -391,7 +425,7 @@ cable_fold *cable_fold_alloc(const cable_problem *pb, const cable_constants *c, 
   e->abi_version = CABLE_PROBLEM_ABI;
   e->struct_size = sizeof *e;
   e->name = pb->name;
-  e->description = "fold continuation (ISW=2): the problem, its linearisation along the null vector, |v| = 1";
+  e->description = "fold continuation (ISW=2): the problem, its linearisation along the null vector, its norm";
   e->ndim = 2 * n;
   e->nbc = 2 * pb->nbc;
   e->nint = 2 * pb->nint + 1;
@@ -416,6 +450,46 @@ cable_fold *cable_fold_alloc(const cable_problem *pb, const cable_constants *c, 
   for (int a = k + 1; a < c->nicp; a++) icp[m++] = c->icp[a];
   memcpy(f->c.icp, icp, (size_t)m * sizeof *icp);
   f->c.nicp = m;
+  f->c.ndm = n;
+  f->c.itpst = CABLE_FOLD_ITPST;
+  f->c.npari = k;   /* w2..wk and N */
   *status = CABLE_SUCCESS;
   return f;
 }
+
+int cable_fold_starting_data(cable_fold *f, char *msg, size_t len)
+{
+  if (!f) return CABLE_ERR_NULL;
+  if (f->start_ext) {
+    snprintf(msg, len, "ISW=2: label %d is already a point of a fold curve (it restarts the curve)", f->start->lab);
+    return CABLE_ERR_INPUT;
+  }
+  /* ICP = [p1, N, p2..pk, w2..wk, q, printed...]: q is fixed and printed,
+     the norm N is free (doc/fold-continuation.md, "AUTO's runs") */
+  cable_constants *c = &f->c;
+  if (c->nicp + 1 > CABLE_MAX_ICP) {
+    snprintf(msg, len, "ISW=2: too many ICP entries for the starting data (at most %d)", CABLE_MAX_ICP - 1);
+    return CABLE_ERR_INPUT;
+  }
+  int icp[CABLE_MAX_ICP], m = 0;
+  icp[m++] = c->icp[0];
+  icp[m++] = f->nslot;
+  for (int a = 2; a < c->nicp; a++) {
+    if (a == 2 * f->k) icp[m++] = f->q;
+    icp[m++] = c->icp[a];
+  }
+  if (c->nicp == 2 * f->k) icp[m++] = f->q;
+  memcpy(c->icp, icp, (size_t)m * sizeof *icp);
+  c->nicp = m;
+  c->isw = -2;
+  c->ilp = 0;
+  c->isp = 0;
+  c->nmx = CABLE_FOLD_START_STEPS;
+  /* AUTO starts the null vector at 0, where the extended system (at fixed
+     q, N free) is singular; cable starts it small, and the run grows it */
+  f->vscale *= sqrt(CABLE_FOLD_START_NORM / f->n0);
+  f->n0 = CABLE_FOLD_START_NORM;
+  return CABLE_SUCCESS;
+}
+
+const cable_solution *cable_fold_start(const cable_fold *f) { return f ? f->start : NULL; }

@@ -253,12 +253,16 @@ int cont_store_solution(cable_cont *cc, int itp, int lab)
   /* L2-NORM: sqrt of the integral of |u|^2 (unweighted); MAX U(i): AUTO's
      MXUPSP, the largest value (signed, not the modulus) of u_i over the
      NTST*NCOL+1 stored points */
+  /* an extended problem's columns cover its first NDM components (AUTO's
+     NDM: a fold's u, not its null vector) */
+  int nd_all = nd;
+  if (cc->c.ndm > 0 && cc->c.ndm < nd) nd = cc->c.ndm;
   double l2 = 0.0;
   for (int i = 0; i < nd; i++) cc->umax[i] = sol->u[i];
   for (int j = 0; j < s->ntst; j++) {
     double h = s->mesh[j + 1] - s->mesh[j];
     for (int k = 0; k <= s->ncol; k++) {
-      const double *u = sol->u + (size_t)(j * s->ncol + k) * (size_t)nd;
+      const double *u = sol->u + (size_t)(j * s->ncol + k) * (size_t)nd_all;
       double sq = 0.0;
       for (int i = 0; i < nd; i++) {
         sq += u[i] * u[i];

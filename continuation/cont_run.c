@@ -144,9 +144,10 @@ static int emit(cable_cont *cc, const cable_sink *sink, int ibr, int *lab)
     pt->itp = CABLE_TY_RG;
     labelled = 1;
   }
-  /* AUTO's types on a fold curve (ISW = 2): the point's type + 10 ITPST */
-  if (cc->c.isw == 2 && pt->itp != CABLE_TY_NONE && abs(pt->itp) < 10)
-    pt->itp += pt->itp > 0 ? 10 * CABLE_FOLD_ITPST : -10 * CABLE_FOLD_ITPST;
+  /* AUTO's types on a fold curve or a curve of branch points (ISW = 2): the
+     point's type + 10 ITPST */
+  if (cc->c.itpst > 0 && pt->itp != CABLE_TY_NONE && abs(pt->itp) < 10)
+    pt->itp += pt->itp > 0 ? 10 * cc->c.itpst : -10 * cc->c.itpst;
   pt->ibr = ibr;
   pt->lab = labelled ? (*lab)++ : 0;
   pt->note = cc->note[0] ? cc->note : NULL;

@@ -12,7 +12,8 @@
  *    restarts from a constants file's IRS that counts on it);
  *  - the first point (the start) exactly, and the first row of every later
  *    run (its restart point) to PAR_TOL;
- *  - the principal parameter PAR(1) of every LP, BP and UZ to 1e-6 relative:
+ *  - the principal parameter PAR(1) of every LP, BP and UZ (also on a fold
+ *    curve, types 55, 56, -54) to 1e-6 relative:
  *    AUTO stops its location secant early (measured: its UZ at lambda = 1 is
  *    at 1.0000001859, its BP at (2 pi)^2 is off by 1e-7 relative), while
  *    cable's are checked against the closed forms to 1e-8 in test_autoeq;
@@ -56,6 +57,12 @@ static const case_t cases[] = {
   {"bratu_iplt", "bratu.auto", "bratu", {"bratu.f90", "c.bratu", "bratu.auto", NULL}},
   {"bratu_dat", "dat.auto", "bratudat", {"bratu.f90", "bratu.dat", "c.bratudat", "dat.auto"}},
   {"numbering", "numbering.auto", "numbering", {"elastica.f", "c.elastica", "c.numb6", "numbering.auto", NULL}},
+  /* ISW=2 at an LP: the starting-data run (one EP label, type 59) and the
+     fold curve from it both ways (doc/fold-continuation.md, "AUTO's runs") */
+  {"foldstart", "foldstart.auto", "bf", {"bf.f90", "c.bf", "foldstart.auto", NULL}},
+  /* ISW=2 at a BP: the starting data and the curve of branch points from
+     them both ways (doc/fold-continuation.md, "Branch-point continuation") */
+  {"bpcont", "bpcont.auto", "el", {"el.f90", "c.el", "bpcont.auto", NULL}},
 };
 
 static char cable_bin[3 * PATH_MAX], root[PATH_MAX];
@@ -75,7 +82,12 @@ static int stage(const case_t *c, const char *who, char *dir, size_t len)
   return 1;
 }
 
-static int special(int ty) { return ty == 5 || ty == 6 || ty == -4; }
+/* LP, BP, UZ; on a fold curve their codes + 50 (-54 for a UZ) */
+static int special(int ty)
+{
+  int base = ty % 10;
+  return base == 5 || base == 6 || base == -4;
+}
 
 /* Section sec (one run) of AUTO's b-file (a) and cable's (b). */
 static void compare(const case_t *c, int sec, const cable_bfile_branch *a, const cable_bfile_branch *b)
@@ -124,6 +136,53 @@ static void compare(const case_t *c, int sec, const cable_bfile_branch *a, const
   }
 }
 
+/* The s-file's solution headers (16 integers; the data lines hold reals):
+ * up to max of them into h[][16]; the count. */
+#define MAX_SOLS 64
+static int sfile_headers(const char *path, int h[MAX_SOLS][16])
+{
+  FILE *f = fopen(path, "r");
+  int n = 0;
+  char line[512];
+  while (f && n < MAX_SOLS && fgets(line, sizeof line, f)) {
+    if (strpbrk(line, ".EeDd")) continue;
+    int *r = h[n], used = 0;
+    if (sscanf(line, "%d%d%d%d%d%d%d%d%d%d%d%d%d%d%d%d%n", &r[0], &r[1], &r[2], &r[3], &r[4], &r[5], &r[6], &r[7],
+               &r[8], &r[9], &r[10], &r[11], &r[12], &r[13], &r[14], &r[15], &used) == 16)
+      n++;
+  }
+  if (f) fclose(f);
+  return n;
+}
+
+/* AUTO's solution headers against cable's, every field but the point number
+ * (IBR ITP LAB NFPR ISW NTPL NAR NROWPR NTST NCOL NPAR NPARI NDM IPS IPRIV). */
+static void compare_sfiles(const case_t *c, const char *da, const char *dc)
+{
+  static int ha[MAX_SOLS][16], hb[MAX_SOLS][16];
+  char pa[3 * PATH_MAX], pb[3 * PATH_MAX], what[256];
+  snprintf(pa, sizeof pa, "%s/s.%s", da, c->name);
+  snprintf(pb, sizeof pb, "%s/s.%s", dc, c->name);
+  int na = sfile_headers(pa, ha), nb = sfile_headers(pb, hb);
+  snprintf(what, sizeof what, "%s: s.%s: the same number of solutions", c->folder, c->name);
+  test_int(what, nb, na);
+  static const char *const field[16] = {"IBR", "NTOT", "ITP", "LAB", "NFPR", "ISW", "NTPL", "NAR",
+                                        "NROWPR", "NTST", "NCOL", "NPAR", "NPARI", "NDM", "IPS", "IPRIV"};
+  for (int i = 0; i < na && i < nb; i++) {
+    /* deliberate difference: AUTO's starting data at a BP (ISW = -2) are
+       its 4n start system (u, two null vectors, psi), cable's the 2n curve
+       system (u, psi) with psi computed directly: there only IBR, ITP, LAB
+       and ISW are compared (doc/fold-continuation.md) */
+    int start4 = ha[i][5] < 0 && abs(ha[i][2]) / 10 == 6;
+    int bad = -1;
+    for (int k = 0; k < 16 && bad < 0; k++)
+      if (k != 1 && ha[i][k] != hb[i][k] && (!start4 || k == 0 || k == 2 || k == 3 || k == 5)) bad = k;
+    snprintf(what, sizeof what, "%s: s.%s: label %d's header as AUTO's%s%s", c->folder, c->name, ha[i][3],
+             bad >= 0 ? ": differs in " : "", bad >= 0 ? field[bad] : "");
+    test_true(what, bad < 0);
+  }
+}
+
 static void run_case(const case_t *c)
 {
   char da[2 * PATH_MAX], dc[2 * PATH_MAX], cmd[8 * PATH_MAX], ba[3 * PATH_MAX], bc[3 * PATH_MAX], what[3 * PATH_MAX];
@@ -160,6 +219,7 @@ static void run_case(const case_t *c)
   }
   cable_bfile_free(a);
   cable_bfile_free(b);
+  compare_sfiles(c, da, dc);
 }
 
 int main(int argc, char **argv)

@@ -279,6 +279,86 @@ static void test_even_fold_curve(double lstar)
   cable_solution_free(lp);
 }
 
+/* AUTO's runs at an LP (the session's ISW=2 dispatch, doc/fold-continuation.md
+ * "AUTO's runs"): the first run generates the starting data, five steps along
+ * the null vector's norm N at fixed q, the LP's u and lambda unchanged, one
+ * label (the EP, type 59) and an unlabelled start, N growing from a small
+ * value (AUTO's from 0); the L2-NORM and MAX U
+ * columns are the problem's u only.  The fold curve restarted from that EP
+ * (N fixed at its value) is lambda* e^-a, a UZ on it at the closed form. */
+static void test_auto_runs(const cable_problem *pb, const cable_solution *lp, double lp_l2, double lstar)
+{
+  cable_constants c;
+  base_constants(&c);
+  c.isw = 2;
+  c.icp[0] = 0; c.icp[1] = 1; c.nicp = 2;
+  c.nmx = 200; c.ilp = 1; c.isp = 2;
+  c.rl0 = 0.5; c.rl1 = 6.0;
+  c.npar = pb->npar;   /* N in PAR(4): inside memrun's parameter columns */
+  int st = 0;
+  char msg[300] = "", what[600];
+  cable_fold *f = cable_fold_alloc(pb, &c, lp, &st, msg, sizeof msg);
+  int rc = f ? cable_fold_starting_data(f, msg, sizeof msg) : -1;
+  snprintf(what, sizeof what, "AUTO's runs: the starting-data problem is set up (%s)", rc ? msg : "ok");
+  if (!test_true(what, rc == 0)) {
+    cable_fold_free(f);
+    return;
+  }
+  const cable_constants *cs = cable_fold_constants(f);
+  int nslot = cs->icp[1];
+  test_true("  its constants: ISW = -2, NMX = 5, ILP = ISP = 0, N free in place of a, a printed",
+            cs->isw == -2 && cs->nmx == 5 && cs->ilp == 0 && cs->isp == 0 && cs->icp[0] == 0 &&
+                nslot == cable_fold_problem(f)->npar - 1 && cs->nicp == 3 && cs->icp[2] == 1);
+  static memrun r;
+  memrun_run(cable_fold_problem(f), cs, NULL, &r);
+  snprintf(what, sizeof what, "  five points (%d; %s)", r.n, r.err);
+  test_int(what, r.n, 5);
+  int nlab = 0;
+  for (int i = 0; i < r.n; i++) nlab += r.lab[i] > 0;
+  test_int("  one label", nlab, 1);
+  test_true("  the start unlabelled, the last point the EP of type 59", r.n == 5 && r.lab[0] == 0 && r.itp[4] == 59);
+  double dl = 0, dl2 = 0, da = 0;
+  int ngrow = 1;
+  for (int i = 0; i < r.n; i++) {
+    dl = fmax(dl, fabs(r.par[i][0] - lstar) / lstar);
+    dl2 = fmax(dl2, fabs(r.l2[i] - lp_l2));
+    da = fmax(da, fabs(r.par[i][1]));
+    if (i > 0) ngrow &= r.par[i][nslot] > r.par[i - 1][nslot];
+  }
+  test_le("  lambda stays at lambda* (max rel. error)", dl, FOLD_TOL);
+  test_le("  a stays 0 (q is fixed)", da, 0.0);
+  test_le("  L2-NORM is the LP's (u only, not the null vector): max abs. difference", dl2, 1e-9);
+  test_true("  N grows from CABLE_FOLD_START_NORM at every step", r.par[0][nslot] == CABLE_FOLD_START_NORM && ngrow);
+  cable_solution *ep = r.nsol > 0 ? cable_solution_clone(r.sol[r.nsol - 1]) : NULL;
+  double n_ep = ep ? ep->par[nslot] : 0;
+  memrun_free(&r);
+  cable_fold_free(f);
+  if (!ep) return;
+  /* the next run: from the EP (a fold-curve point), the user's constants */
+  c.nuzr = 1;
+  c.uzr[0].par = 1; c.uzr[0].value = -0.5; c.uzr[0].stop = 0;
+  f = cable_fold_alloc(pb, &c, ep, &st, msg, sizeof msg);
+  test_true("AUTO's runs: the fold curve from the EP is set up", f != NULL);
+  if (f) {
+    test_int("  restarting from the EP is not starting data again", cable_fold_starting_data(f, msg, sizeof msg),
+             CABLE_ERR_INPUT);
+    memrun_run(cable_fold_problem(f), cable_fold_constants(f), cable_fold_start(f), &r);
+    snprintf(what, sizeof what, "  the curve runs to RL1 = 6 (%d points; %s)", r.n, r.err);
+    test_true(what, r.status == CABLE_END_BOUNDS && r.n > 5);
+    double worst = 0;
+    for (int i = 0; i < r.n; i++) worst = fmax(worst, fabs(r.par[i][0] - lstar * exp(-r.par[i][1])) / r.par[i][0]);
+    test_le("  every point on lambda = lambda* e^-a (max rel. error)", worst, FOLD_TOL);
+    test_le("  N stays the starting data's", r.n > 0 ? fabs(r.par[r.n - 1][nslot] - n_ep) : 1.0, 0.0);
+    test_true("  the restart is unlabelled", r.n > 0 && r.lab[0] == 0);
+    const cable_solution *uz = memrun_find(&r, CABLE_TY_UZ, 0);
+    test_int("  the UZ at a = -0.5 has type -54", uz ? uz->itp : 0, -54);
+    test_rel("  at the UZ, lambda = lambda* e^0.5", uz ? uz->par[0] : (double)NAN, lstar * exp(0.5), FOLD_TOL);
+    memrun_free(&r);
+  }
+  cable_fold_free(f);
+  cable_solution_free(ep);
+}
+
 static void test_bad_starts(const cable_problem *pb, const cable_solution *lp, const cable_solution *other)
 {
   cable_constants c;
@@ -300,6 +380,18 @@ static void test_bad_starts(const cable_problem *pb, const cable_solution *lp, c
   f = cable_fold_alloc(pb, &c, NULL, &st, msg, sizeof msg);
   test_true("ISW=2 without a start: refused", !f && st == CABLE_ERR_INPUT);
   cable_fold_free(f);
+  /* at a BP: refused, naming the label and branch-point continuation */
+  cable_solution *bp = cable_solution_clone(lp);
+  if (bp) {
+    bp->itp = CABLE_TY_BP;
+    bp->lab = 7;
+    f = cable_fold_alloc(pb, &c, bp, &st, msg, sizeof msg);
+    test_true("cable_fold_alloc at a BP: refused, the message names the label and branch-point continuation",
+              !f && st == CABLE_ERR_INPUT && strstr(msg, "at a BP (label 7)") &&
+                  strstr(msg, "branch-point continuation"));
+    cable_fold_free(f);
+    cable_solution_free(bp);
+  }
 }
 
 int main(void)
@@ -316,6 +408,9 @@ int main(void)
     memrun_run(&pb, &c, NULL, &r);
     cable_solution *lp = cable_solution_clone(memrun_find(&r, CABLE_TY_LP, 0));
     cable_solution *ep = cable_solution_clone(memrun_find(&r, CABLE_TY_EP, 0));
+    double lp_l2 = (double)NAN;
+    for (int i = 0; i < r.n; i++)
+      if (r.itp[i] == CABLE_TY_LP) lp_l2 = r.l2[i];
     memrun_free(&r);
     test_rel(k == 1 ? "the LP at a = 0" : "the LP at a = 0 with mu = int u free", lp ? lp->par[0] : (double)NAN,
              lstar, FOLD_TOL);
@@ -323,6 +418,7 @@ int main(void)
       fold_curve(&pb, lp, k, 0.1, lstar, k == 1 ? "fold curve, DS = +0.1" : "with NINT = 1, DS = +0.1");
       fold_curve(&pb, lp, k, -0.1, lstar, k == 1 ? "fold curve, DS = -0.1" : "with NINT = 1, DS = -0.1");
       if (k == 1 && ep) test_bad_starts(&pb, lp, ep);
+      if (k == 1) test_auto_runs(&pb, lp, lp_l2, lstar);
     }
     cable_solution_free(lp);
     cable_solution_free(ep);

@@ -1,6 +1,7 @@
 /* Acceptance test of the fold scene (runs/link62fold): fold continuation
  * (ISW=2) on the braid.  The scene follows the fold of the (6,2) link's
- * mode-2 branch at T = -8.2543 in (T, Delta); this test replays its fold run,
+ * mode-2 branch at T = -8.2543 in (T, Delta); this test replays its fold runs
+ * (AUTO's two: the starting data at the LP, then the curve from their EP),
  * with the scene's own constants files, from the same LP computed on a
  * coarser mesh (tests/data/fold/s.link62lp: the scene's lp run with NTST = 40,
  * label 100), and checks the fold curve independently: at Delta = 0.0163 (a
@@ -28,8 +29,8 @@
 #include "session_util.h"
 #include "test_files.h"
 
-static const char *const files[] = {"c.link62mode", "c.link62fold", "s.link62lp",
-                                    "b.fold", "s.fold", "d.fold", "b.chk", "s.chk", "d.chk"};
+static const char *const files[] = {"c.link62mode", "c.link62fold", "s.link62lp", "b.foldstart", "s.foldstart",
+                                    "d.foldstart", "b.fold", "s.fold", "d.fold", "b.chk", "s.chk", "d.chk"};
 
 /* the scene's fold curve at Delta = 0.0163 (runs/link62fold replay, NTST = 100) */
 #define SCENE_T_AT_0163 (-8.181832414)
@@ -80,9 +81,12 @@ int main(void)
   FILE *slog;
   cable_session *r = session_open(dir, &slog);
   cable_branch *f = NULL, *c = NULL;
-  int rc = r ? session_line(r, "s=link62lp IRS='LP1' c=link62fold NTST=40 IAD=0 ISP=0 NMX=8 NPR=100 "
-                               "UZR={'Delta': [0.0163]} sv=fold", NULL, &f, &err)
+  /* AUTO's two runs: the starting data at the LP, then the curve from its EP */
+  int rc = r ? session_line(r, "s=link62lp IRS='LP1' c=link62fold NTST=40 IAD=0 ISP=0 sv=foldstart", NULL, NULL, &err)
              : CABLE_ERR_ALLOC;
+  if (!rc)
+    rc = session_line(r, "s=foldstart IRS='EP1' c=link62fold NTST=40 IAD=0 ISP=0 NMX=8 NPR=100 "
+                         "UZR={'Delta': [0.0163]} sv=fold", NULL, &f, &err);
   if (!rc)
     rc = session_line(r, "s=link62lp IRS='LP1' c=link62mode NTST=40 IAD=0 ISW=1 ILP=1 ISP=0 ITMX=24 "
                          "PAR={'Delta': 0.0163} DS=-0.01 DSMAX=0.2 NMX=30 STOP=['LP1'] sv=chk", NULL, &c, &err);
@@ -104,17 +108,29 @@ int main(void)
   cable_branch_decref(f);
   cable_branch_decref(c);
   session_close(r, slog);
-  /* AUTO's type codes in the b-file: 59 for the start, -54 for the UZ */
+  /* AUTO's type codes in the b-files: the starting data end at their only
+     label, the EP (59); the curve's restart row is unlabelled (0), its UZ -54 */
   char bf[128];
-  path("b.fold", bf, sizeof bf);
+  path("b.foldstart", bf, sizeof bf);
   cable_bfile *b = cable_bfile_read(bf, &err);
+  int nlab = 0, last = 0, nrow = 0;
+  if (b && b->nbranch) {
+    nrow = b->branch[0].nrow;
+    for (int i = 0; i < nrow; i++) nlab += b->branch[0].lab[i] > 0;
+    last = nrow > 0 ? b->branch[0].ty[nrow - 1] : 0;
+  }
+  test_int("b.foldstart: AUTO's five points of starting data", nrow, 5);
+  test_true("b.foldstart: one label, the last row, TY 59", nlab == 1 && last == 59);
+  cable_bfile_free(b);
+  path("b.fold", bf, sizeof bf);
+  b = cable_bfile_read(bf, &err);
   int nuz = 0, first = 0;
   const double *delta = b && b->nbranch ? cable_bfile_column(&b->branch[0], "Delta") : NULL;
   if (delta) {
     first = b->branch[0].ty[0];
     for (int i = 0; i < b->branch[0].nrow; i++) nuz += b->branch[0].ty[i] == -54;
   }
-  test_int("b.fold: the first row is AUTO's EP of a BVP fold curve (TY 59)", first, 59);
+  test_int("b.fold: the first row is the unlabelled restart (TY 0)", first, 0);
   test_int("b.fold: one UZ row, TY -54", nuz, 1);
   test_rel("b.fold: the curve starts at the LP's Delta", delta ? delta[0] : (double)NAN, 0.016016913268, 1e-10);
   cable_bfile_free(b);

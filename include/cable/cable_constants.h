@@ -118,6 +118,17 @@ typedef struct cable_constants {
   /* STAB: 1 computes the Morse index at every point (doc/stability.md; the
      problem must declare its variational structure), 0 (default) does not */
   int stab;
+  /* AUTO's NDM: the components of an extended problem's solution that the
+     L2-NORM and MAX U columns cover (the fold's u, not its null vector);
+     0: all NDIM.  No key: set by cable_fold.h. */
+  int ndm;
+  /* AUTO's ITPST: a two-parameter run's type codes are the point's + 10 ITPST
+     (5 on a fold curve, 6 on a curve of branch points); 0: none.  No key:
+     set by cable_fold.h and cable_bpcont.h. */
+  int itpst;
+  /* AUTO's NPARI: the extended problem's own parameter slots after NPAR (the
+     s-file header's); 0: none.  Set with ndm. */
+  int npari;
 } cable_constants;
 
 /* AUTO-07p defaults (no problem key set). */

@@ -6,10 +6,10 @@
  * principal one, the fold is with respect to it) and a new parameter q, the
  * extended problem has the unknowns (u, v) (2 NDIM components), the free
  * parameters p1, q, p2..pk and the null vector's parameter components
- * w2..wk (in parameter slots after the problem's), and the conditions
+ * w2..wk (in parameter slots after the problem's, then the norm N), and the conditions
  *   u' = f(u, p),                         b(u(0), u(1), p) = 0,  int g(u, p) = 0,
  *   v' = D f(u, p)[v, w],                 D b[v(0), v(1), w] = 0, int D g[v, w] = 0,
- *   int |v|^2 dt + |w|^2 = 1,
+ *   int |v|^2 dt + |w|^2 = N   (N = PAR(NPAR + k): 1, or the starting data's),
  * where D is the derivative in the direction (v, 0, w2..wk) of (u, p1, p2..pk)
  * (central differences along that direction, step CABLE_FOLD_FD_STEP).  So
  * NDIM' = 2 NDIM, NBC' = 2 NBC, NINT' = 2 NINT + 1 and NFPR' = 2k.
@@ -45,6 +45,14 @@
  * end point, 54 for regular labels) */
 #define CABLE_FOLD_ITPST 5
 
+/* AUTO's number of steps of the run that generates a fold curve's starting
+ * data (its NMX = 5 for ISW = 2 at an LP of a BVP) */
+#define CABLE_FOLD_START_STEPS 5
+/* N at the start of that run: AUTO's starts at N = 0 (the null vector 0,
+ * where the extended system is singular); cable's at a small N, so that
+ * the steps grow the null vector from almost nothing as AUTO's do */
+#define CABLE_FOLD_START_NORM 1e-4
+
 typedef struct cable_fold cable_fold;
 
 /* c: the fold run's constants, ISW = 2, ICP = [p1, q, p2, ..., pk, printed
@@ -63,6 +71,18 @@ CABLE_API void cable_fold_free(cable_fold *f);   /* NULL is a no-op */
  * it, cont_mesh.c) into mesh[0..ntst]: the fold run's mesh, so that the
  * fold curve starts on the discrete problem the LP was located on. */
 CABLE_API void cable_fold_mesh(const cable_fold *f, int ntst, double *mesh);   /* NULL f or mesh: nothing */
+
+/* AUTO's run at an LP (ISW = 2, the session's dispatch): switch f, made from
+ * an LP, to the run that generates the fold curve's starting data: the LP and
+ * its null vector followed along the null vector's norm N (PAR(NPAR + k),
+ * free in place of q, which is fixed and printed) for CABLE_FOLD_START_STEPS
+ * steps, ISW = -2, ILP = ISP = 0; its last point is the EP (type 59) a fold
+ * curve restarts from.  Without this call the run from the LP follows the
+ * fold curve itself with N = 1.  0, or CABLE_ERR_INPUT with msg. */
+CABLE_API int cable_fold_starting_data(cable_fold *f, char *msg, size_t len);
+/* f's copy of its start (a fold-curve point with the norm slot N filled in:
+ * 1 for a point stored without it), to restart the curve from. */
+CABLE_API const cable_solution *cable_fold_start(const cable_fold *f);
 
 /* NULL for a NULL handle. */
 CABLE_API const cable_problem *cable_fold_problem(const cable_fold *f);

@@ -28,7 +28,8 @@ typedef struct cable_point {
   int nicp;             /* columns printed after L2-NORM and MAX U: icp[1..nicp-1] */
   const int *icp;       /* icp[0] is the principal parameter */
   const double *par;    /* [npar] */
-  double l2norm;        /* AUTO's L2-NORM of the solution (all components) */
+  double l2norm;        /* AUTO's L2-NORM of the solution (its first ndim components: all of
+                           them, or an extended problem's NDM, cable_constants.ndm) */
   const double *umax;   /* [ndim] MAX U(i): the signed maximum of u_i over the stored points, as AUTO (MXUPSP) */
   double measure;       /* AUTO's principal solution measure chosen by IPLT (the b-file's second
                            column; A0 and A1 bound it): 0 L2-NORM; i in 1..NDIM MAX U(i); -i MIN U(i);

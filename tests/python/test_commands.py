@@ -364,14 +364,18 @@ def test_run_name_is_e_and_c(bratu):
 
 def test_fold_run_through_python(work):
     """ISW=2 fold continuation (runs/link62fold) through the package: the
-    scene's fold run from tests/data/fold/s.link62lp (its LP at NTST = 40, as
+    scene's fold runs (AUTO's two: starting data, then the curve) from
+    tests/data/fold/s.link62lp (its LP at NTST = 40, as
     tests/test_fold_scene.c) reaches Delta = 0.0163 at the T where the
     ordinary branch at that fixed Delta has its LP (both located to the
     Newton tolerances, far below 1e-7)."""
     copy_in(work, 'runs/link62fold/c.link62mode', 'runs/link62fold/c.link62fold', 'tests/data/fold/s.link62lp')
     rn = cable.Runner()
-    f = rn.run(s='link62lp', IRS='LP1', c='link62fold', NTST=40, IAD=0, ISP=0, NMX=8, NPR=100,
-               UZR={'Delta': [0.0163]}, sv='fold')
+    # AUTO's first run at the LP generates the starting data: five points,
+    # one label (its EP, TY 59), branch IRS; the curve restarts from it
+    st = rn.run(s='link62lp', IRS='LP1', c='link62fold', NTST=40, IAD=0, ISP=0, sv='foldstart')
+    assert len(st()) == 1 and st()[0].TY == 'EP' and len(st['Delta']) == 5
+    f = rn.run(st('EP1'), NTST=40, IAD=0, ISP=0, NMX=8, NPR=100, UZR={'Delta': [0.0163]}, sv='fold')
     c = rn.run(s='link62lp', IRS='LP1', c='link62mode', NTST=40, IAD=0, ISW=1, ILP=1, ISP=0, ITMX=24,
                PAR={'Delta': 0.0163}, DS=-0.01, DSMAX=0.2, NMX=30, STOP=['LP1'], sv='chk')
     u, lp = f('UZ1'), c('LP1')
@@ -388,13 +392,14 @@ def test_fold_run_through_python(work):
     assert len(dg) == 3 and dg[0] == df[-1]
     step = df[-1] - df[-2]
     assert all((dg[i + 1] - dg[i]) * step > 0 for i in range(2))
-    # AUTO's NEWLAB for ISW=2: the fold run from an LP is branch IRS (the LP's
-    # label), its labels after the largest of s.link62lp; a restart from a
-    # point of the fold curve keeps that branch number
+    # AUTO's NEWLAB for ISW=2: the starting-data run from an LP (ISW=-2 inside
+    # AUTO) is a new branch, MBR + 1, its label after the largest of
+    # s.link62lp; the fold curve restarted from it keeps that branch number
     src = rn.sl('link62lp')
-    lp0 = [x for x in src if x.TY == 'LP'][0]
-    assert {x.BR for x in f()} == {lp0.LAB} and f()[0].LAB == max(x.LAB for x in src) + 1
-    assert {x.BR for x in g()} == {lp0.LAB} and g()[0].LAB == f()[-1].LAB + 1
+    nbr = max(x.BR for x in src) + 1
+    assert {x.BR for x in st()} == {nbr} and st()[0].LAB == max(x.LAB for x in src) + 1
+    assert {x.BR for x in f()} == {nbr} and f()[0].LAB == st()[0].LAB + 1
+    assert {x.BR for x in g()} == {nbr} and g()[0].LAB == f()[-1].LAB + 1
 
 
 def test_problem_keys_and_prepare(work):
