@@ -12,6 +12,7 @@
 
 #include "cable/cable_fold.h"
 #include "cable/cable_status.h"
+#include "constants_check.h"
 
 struct cable_bpcont {
   cable_problem pb;             /* the extended problem; params = this struct */
@@ -320,12 +321,12 @@ void cable_bpcont_free(cable_bpcont *f)
   free(f);
 }
 
-const cable_problem *cable_bpcont_problem(const cable_bpcont *f) { return &f->pb; }
-const cable_constants *cable_bpcont_constants(const cable_bpcont *f) { return &f->c; }
+const cable_problem *cable_bpcont_problem(const cable_bpcont *f) { return f ? &f->pb : NULL; }
+const cable_constants *cable_bpcont_constants(const cable_bpcont *f) { return f ? &f->c : NULL; }
 
 int cable_bpcont_starting_data(cable_bpcont *f, char *msg, size_t len)
 {
-  if (!f) return CABLE_ERR_NULL;
+  if (!f || !msg) return CABLE_ERR_NULL;
   if (f->start_ext) {
     snprintf(msg, len, "ISW=2: label %d is already a point of a curve of branch points", f->start->lab);
     return CABLE_ERR_INPUT;
@@ -361,6 +362,7 @@ const cable_solution *cable_bpcont_start(const cable_bpcont *f) { return f ? f->
 
 void cable_bpcont_mesh(const cable_bpcont *f, int ntst, double *mesh)
 {
+  if (!f || !mesh || ntst < 1) return;
   const cable_solution *s = f->start;
   int ntold = s->ntst, nc = s->ncol;
   for (int j = 0; j <= ntst; j++) {
@@ -385,6 +387,24 @@ void cable_bpcont_mesh(const cable_bpcont *f, int ntst, double *mesh)
 cable_bpcont *cable_bpcont_alloc(const cable_problem *pb, const cable_constants *c, const cable_solution *start,
                                  int *status, char *msg, size_t len)
 {
+  /* status and msg may be NULL (not wanted), as for cable_fold_alloc */
+  int dummy_status;
+  char dummy_msg[8];
+  if (!status) status = &dummy_status;
+  if (!msg) {
+    msg = dummy_msg;
+    len = sizeof dummy_msg;
+  }
+  if (!pb || !c) {
+    *status = CABLE_ERR_NULL;
+    snprintf(msg, len, "cable_bpcont_alloc: %s is NULL", !pb ? "the problem" : "the constants");
+    return NULL;
+  }
+  cable_error cerr;
+  if ((*status = cable_constants_consistent(c, c->npar > pb->npar ? c->npar : pb->npar, &cerr)) != 0) {
+    snprintf(msg, len, "%s", cerr.msg);
+    return NULL;
+  }
   cable_bpcont *f = calloc(1, sizeof *f);
   if (!f) {
     *status = CABLE_ERR_ALLOC;

@@ -459,7 +459,7 @@ cable_fold *cable_fold_alloc(const cable_problem *pb, const cable_constants *c, 
 
 int cable_fold_starting_data(cable_fold *f, char *msg, size_t len)
 {
-  if (!f) return CABLE_ERR_NULL;
+  if (!f || !msg) return CABLE_ERR_NULL;
   if (f->start_ext) {
     snprintf(msg, len, "ISW=2: label %d is already a point of a fold curve (it restarts the curve)", f->start->lab);
     return CABLE_ERR_INPUT;

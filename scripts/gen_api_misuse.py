@@ -57,6 +57,8 @@ FIXTURE = {
     # no valid module at hand without a compiler run or a plug-in file
     'cable_plugin *': None, 'const cable_plugin *': None,
     'cable_autoeq *': None, 'const cable_autoeq *': None,
+    # no branch point of a BVP among the fixtures (Bratu has none)
+    'cable_bpcont *': None, 'const cable_bpcont *': None,
 }
 
 # Valid values of string arguments, by argument name, then by function.

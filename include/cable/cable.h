@@ -16,6 +16,7 @@
 #include "cable/cable_cont.h"         /* the continuation handle and driver */
 #include "cable/cable_stability.h"    /* the Morse index of a variational problem's solution */
 #include "cable/cable_fold.h"         /* fold continuation (ISW = 2): the extended problem */
+#include "cable/cable_bpcont.h"       /* branch-point continuation (ISW = 2 at a BP): the extended problem */
 #include "cable/cable_aufile.h"       /* b./s./d. files: writer and readers */
 #include "cable/cable_plugin.h"       /* problems from shared objects */
 #include "cable/cable_autoeq.h"       /* AUTO equation files (NAME.f90, NAME.f, NAME.c) */
