@@ -56,6 +56,12 @@ static const case_t cases[] = {
   {"bratu_iplt", "bratu.auto", "bratu", {"bratu.f90", "c.bratu", "bratu.auto", NULL}},
   {"bratu_dat", "dat.auto", "bratudat", {"bratu.f90", "bratu.dat", "c.bratudat", "dat.auto"}},
   {"numbering", "numbering.auto", "numbering", {"elastica.f", "c.elastica", "c.numb6", "numbering.auto", NULL}},
+  /* declarations AUTO accepts (doc/auto-users.md, "What is checked"): a
+     COMPLEX(KIND(1.0D0)) state, implicitly typed stubs, the legacy
+     three-argument STPNT */
+  {"complex_f90", "elasz.auto", "elasz", {"elasz.f90", "c.elasz", "elasz.auto", NULL}},
+  {"implicit_f", "bratuimp.auto", "bratuimp", {"bratuimp.f", "c.bratuimp", "bratuimp.auto", NULL}},
+  {"stpnt3_f", "gelf.auto", "gelf", {"gelf.f", "c.gelf", "gelf.auto", NULL}},
 };
 
 static char cable_bin[3 * PATH_MAX], root[PATH_MAX];
