@@ -30,6 +30,9 @@ static void usage(FILE *out)
         "  atlas SWEEP.toml [--workers N | --scheduler ADDRESS] [--check] [--retry-failed]\n"
         "                     an atlas of cable knots and links on Dask (python3 -m\n"
         "                     cable.atlas; doc/atlas.md)\n"
+        "  info e=PROBLEM     a problem's parameters, components, keys, their defaults and\n"
+        "                     the recommended constants (an equation file PROBLEM.f90,\n"
+        "                     .f or .c in the current directory counts, as for run)\n"
         "  table b.NAME       the branch table of a b-file\n"
         "  list s.NAME        the labelled solutions of an s-file\n"
         "  analyze s.NAME LABEL...\n"
@@ -154,6 +157,15 @@ int main(int argc, char **argv)
       return 2;
     }
     return replay(argv[2]);
+  }
+  if (strcmp(cmd, "info") == 0) {
+    const char *e = argc == 3 ? argv[2] : NULL;
+    if (e && strncmp(e, "e=", 2) == 0) e += 2;
+    if (!e || !e[0]) {
+      fprintf(stderr, "cable: usage: cable info e=PROBLEM\n");
+      return 2;
+    }
+    return report(cable_cmd_info(e, stdout, &err), &err);
   }
   if (strcmp(cmd, "table") == 0) {
     if (argc != 3) {

@@ -151,6 +151,20 @@ static int find_problem(cable_session *r, const char *e, const cable_constants *
   return 0;
 }
 
+int cable_session_info(cable_session *r, const char *e, FILE *out, cable_error *err)
+{
+  if (!r || !e || !out) return cable_error_set(err, CABLE_ERR_NULL, NULL, 0, NULL, "cable_session_info: NULL argument");
+  rp_problem p;
+  int rc = find_problem(r, e, NULL, 0, &p, err);
+  if (rc) return rc;
+  const char *src = NULL;
+  for (int k = 0; p.autoeq && k < r->nautoeq; k++)
+    if (strcmp(r->autoeq_name[k], e) == 0) src = cable_autoeq_source(r->autoeq[k]);
+  rc = rp_problem_info_write(p.pb, p.autoeq ? (src ? src : e) : NULL, out);
+  problem_release(r, &p);
+  return rc;
+}
+
 /* ---- run setup: constants, problem, start ----------------------------------------- */
 
 typedef struct rp_setup {
@@ -474,6 +488,19 @@ static int build_setup(cable_session *r, const cable_run_args *a, rp_setup *s, c
   int npar;
   rp_problem p;
   rc = problem_names(r, s->e, &p, &parnames, &npar, err);
+  /* A first run from nothing but keywords (no constants file, no start, no
+     earlier run or load whose constants the runner keeps) takes its
+     problem's recommended constants as defaults, under the keywords: the
+     braid problems' are the scenes' settings (cable_problem_recommended) */
+  const char *rec = cable_problem_recommended(s->e);
+  char cpath[1024];
+  if (a->name) rp_path(r, "c", a->name, cpath, sizeof cpath);
+  int cfile = a->c || (a->name && file_exists(cpath));
+  if (!rc && rec && !cfile && !a->sol_branch && a->nbranch == 0 && !a->s && !cfile_s[0] && !r->cur_e[0]) {
+    rc = cable_constants_parse_override_for(rec, p.pb, &s->c, &s->names, err);
+    if (!rc) fprintf(rp_log(r), "  %s: no constants file: the problem's recommended constants apply under the "
+                     "keywords (cable info e=%s)\n", s->e, s->e);
+  }
   for (int i = 0; i < a->nover && !rc; i++) {
     rc = cable_constants_parse_override_for(a->over[i], p.pb, &s->c, &s->names, err);
     if (rc && err && !err->file[0] && a->over_file) {
@@ -619,9 +646,31 @@ static void log_branch(const cable_session *r, const rp_branch *b, int status, c
   fprintf(f, "\n");
 }
 
+/* A switch (ISW < 0) at a double branch point of the flat braid_knot or
+ * braid_link: the full formulation has a two-dimensional kernel there and
+ * every direction in it is a rotated copy of the buckling pattern, so the
+ * switched run crawls along an almost free rotation (doc/knot72.md section
+ * 2: 40 steps moved T by 0.0018).  The S0-symmetric formulation has one
+ * direction left and follows the branch; say so instead of crawling. */
+static int refuse_double_switch(const rp_setup *s, cable_error *err)
+{
+  if (s->c.isw >= 0 || !s->start || s->start->bp_kind != CABLE_BP_DOUBLE) return 0;
+  const char *sym = strcmp(s->e, "braid_knot") == 0 ? "braid_knot_sym" : strcmp(s->e, "braid_link") == 0 ? "braid_link_sym" : NULL;
+  if (!sym) return 0;
+  return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, "ISW",
+                         "label %d (%s = %.7g) is a double branch point: %s cannot follow a branch from it (every "
+                         "direction of its two-dimensional kernel is a rotation of the buckling pattern, and the "
+                         "switch crawls along it); switch in the S0-symmetric formulation, where the branch point "
+                         "is simple: run(bp, e='%s', ICP=[... 'eps13' ...], ISW=-1, ISP=0) (its recommended "
+                         "constants: cable info e=%s; runs/knot72/c.knot72sym; doc/knot72.md sections 2-4)",
+                         s->start->lab, s->names.par[0][0] ? s->names.par[0] : "PAR(1)", s->start->par[0], s->e, sym, sym);
+}
+
 static int engine_run(cable_session *r, rp_setup *s, rp_branch **out, cable_error *err)
 {
   *out = NULL;
+  int rc0 = refuse_double_switch(s, err);
+  if (rc0) return rc0;
   rp_problem prob;
   int rc = find_problem(r, s->e, &s->c, s->start == NULL, &prob, err);
   if (rc) return rc;
@@ -725,9 +774,10 @@ static int engine_run(cable_session *r, rp_setup *s, rp_branch **out, cable_erro
   int next = s->mlab + 1;
   st = cable_cont_run(cc, &sink, ibr, s->mlab + 1, &next);
   char why[512], end_note[600];
-  snprintf(why, sizeof why, "%s", st < 0 ? cable_cont_error(cc) : "");
+  /* an error's message, or the closed loop's (it names the point the branch returned to) */
+  snprintf(why, sizeof why, "%s", st < 0 || st == CABLE_END_LOOP ? cable_cont_error(cc) : "");
   snprintf(end_note, sizeof end_note, "branch %d ended: %s: %s", ibr, cable_status_message(st), why);
-  if (!col.rc && st < 0) col.rc = rp_branch_set_end_note(col.b, end_note);
+  if (!col.rc && (st < 0 || st == CABLE_END_LOOP)) col.rc = rp_branch_set_end_note(col.b, end_note);
   cable_cont_free(cc);
   cable_fold_free(fold);
   problem_release(r, &prob);

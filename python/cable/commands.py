@@ -209,6 +209,15 @@ class Runner:
         br, _ = _branches(x, 'relabel')
         return Result(self.session.transform(br, True))
 
+    def info(self, e):
+        """A problem's parameters, components, keys with their defaults and the
+        constants it recommends (`cable info e=NAME`); printed, and returned as
+        text.  An equation file NAME.f90, .f or .c in the run directory counts,
+        as for run(e=NAME)."""
+        text = self.session.info(e)
+        print(text, end='')
+        return text
+
     def pr(self, parameter=None):
         """pr(): print the runner's constants (what the next run without a
         start and without c= uses) as a constants file; pr('NTST'): return
@@ -325,7 +334,7 @@ class Runner:
             'cd': (), 'auto': (), 'wait': (), 'pr': ('printconstant', 'pc'), 'analyze': (), 'plot': (),
             'sl': ('solutionget',), 'ch': ('changeconstant', 'cc'),
             'render': (), 'compare': (),
-            'overlap_free': (), 'branch_table': (),
+            'overlap_free': (), 'branch_table': (), 'info': (),
         }
         ns = {}
         for name, aliases in cmds.items():
