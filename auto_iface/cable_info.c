@@ -7,8 +7,13 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "braid_model.h"
+#include "braid_problems.h"
+#include "braid_start.h"
 #include "cable/cable_problem.h"
 #include "cable_session_impl.h"
+
+#define INFO_MAX_NDIM 64   /* a test problem's STPNT is asked only up to this size */
 
 static void write_key(const cable_problem_key *k, FILE *out)
 {
@@ -34,6 +39,31 @@ static void write_names(const char *prefix, const char *const *names, int n, FIL
   fprintf(out, "%s", n > 0 ? "\n" : "");
 }
 
+/* The parameter values a start from STPNT gives unless PAR={...} does (NAN:
+ * none, set by the geometry, or required): the braid problems' material
+ * (braid_start_params_init's defaults), a problem without prepare its
+ * STPNT's values at t = 0.  1 when any is known. */
+static int start_values(const cable_problem *pb, double *par, int npar)
+{
+  for (int k = 0; k < npar; k++) par[k] = (double)NAN;
+  /* braid_link_sym has no start from STPNT (braid_prepare) */
+  if (pb->name && braid_problem_find(pb->name) && strcmp(pb->name, "braid_link_sym") != 0 && npar >= BP_NPAR) {
+    braid_start_params sp;
+    braid_start_params_init(&sp, BRAID_START_TORUS, 0, 1, 0.0, 0.0, 0.0);
+    par[BP_T] = sp.torque;
+    par[BP_B1] = sp.b1;
+    par[BP_B2] = sp.b2;
+    par[BP_C1] = sp.c1;
+    par[BP_C2] = sp.c2;
+    par[BP_W01] = sp.w01;
+    par[BP_W02] = sp.w02;
+    return 1;
+  }
+  if (pb->prepare || !pb->stpnt || pb->ndim < 1 || pb->ndim > INFO_MAX_NDIM) return 0;
+  double u[INFO_MAX_NDIM];
+  return pb->stpnt(pb->ndim, 0.0, u, par, pb->params) == 0;
+}
+
 int rp_problem_info_write(const cable_problem *pb, const char *source, FILE *out)
 {
   fprintf(out, "problem %s: %s\n", pb->name ? pb->name : "?", pb->description ? pb->description : "");
@@ -50,6 +80,20 @@ int rp_problem_info_write(const cable_problem *pb, const char *source, FILE *out
   write_names("PAR", pb->parnames, pb->npar, out);
   fprintf(out, "components (sol['name'] or sol['U(i)'], THU, unames):\n");
   write_names("U", pb->unames, pb->ndim, out);
+  double par[CABLE_NAMES_MAX];
+  int npar = pb->npar < CABLE_NAMES_MAX ? pb->npar : CABLE_NAMES_MAX, any = 0;
+  if (npar > 0 && start_values(pb, par, npar)) {
+    fprintf(out, "start values (what a start from STPNT gives unless PAR={...} does):\n ");
+    for (int k = 0; k < npar; k++)
+      if (!isnan(par[k])) {
+        fprintf(out, "%s %s = %.10g", any ? "," : "", pb->parnames && pb->parnames[k] ? pb->parnames[k] : "?", par[k]);
+        any = 1;
+      }
+    fprintf(out, "%s\n", any ? "" : " none");
+    if (pb->name && braid_problem_find(pb->name) && strcmp(pb->name, "braid_link_sym") != 0)
+      fprintf(out, "  the geometry comes from TORUS, HAND and PAR={'Delta': ..., '%s': ...}, which a start needs\n",
+              strncmp(pb->name, "braid_knot", 10) == 0 ? "Ltot" : "L");
+  }
   fprintf(out, "keys (the problem's own constants, KEY=VALUE in a constants file or a run's keywords):\n");
   if (pb->nkeys == 0 || !pb->keys) fprintf(out, "  none\n");
   for (int k = 0; k < pb->nkeys && pb->keys; k++) write_key(&pb->keys[k], out);

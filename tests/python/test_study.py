@@ -36,7 +36,9 @@ def test_info_lists_names_keys_and_recommended_constants(work, monkeypatch):
     monkeypatch.setenv('CABLE_CACHE_DIR', str(work / 'cache'))
     text = cable.Runner().info('braid_knot')
     for word in ('problem braid_knot', 'NDIM=21, NBC=24, NINT=0', '1 T', '5 Delta', '15 eps13', '16 F',
-                 '18 x1', '21 sigma', 'TORUS', 'HAND', "'left' = -1", 'NTST=30, NCOL=7', 'DSMAX=20.0', 'NSV=2'):
+                 '18 x1', '21 sigma', 'TORUS', 'HAND', "'left' = -1", 'NTST=30, NCOL=7', 'DSMAX=20.0', 'NSV=2',
+                 # the material a start takes unless PAR gives it: B = 1, C = B/(1 + nu), nu = 0.3
+                 'B1 = 1, B2 = 1, C1 = 0.7692307692, C2 = 0.7692307692', "PAR={'Delta': ..., 'Ltot': ...}"):
         assert word in text, word
     # the command line says the same
     p = subprocess.run([os.path.join(BUILD, 'cable'), 'info', 'e=braid_knot'], capture_output=True, text=True,
