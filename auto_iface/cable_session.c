@@ -648,29 +648,29 @@ static void log_branch(const cable_session *r, const rp_branch *b, int status, c
 
 /* A switch (ISW < 0) at a double branch point of the flat braid_knot or
  * braid_link: the full formulation has a two-dimensional kernel there and
- * every direction in it is a rotated copy of the buckling pattern, so the
- * switched run crawls along an almost free rotation (doc/knot72.md section
- * 2: 40 steps moved T by 0.0018).  The S0-symmetric formulation has one
- * direction left and follows the branch; say so instead of crawling. */
-static int refuse_double_switch(const rp_setup *s, cable_error *err)
+ * almost every direction in it is a rotated copy of the buckling pattern, so
+ * the switched run crawls along an almost free rotation (doc/knot72.md
+ * section 2: 40 steps moved T by 0.0018).  The S0-symmetric formulation has
+ * one direction left and follows the branch.  The run goes ahead (the
+ * engine's switch at a double BP, BPDIR/BPANGLE, is a tool of its own,
+ * tests/python/test_link_scenes.py), with a note that says what to do. */
+static void note_double_switch(cable_session *r, const rp_setup *s)
 {
-  if (s->c.isw >= 0 || !s->start || s->start->bp_kind != CABLE_BP_DOUBLE) return 0;
+  if (s->c.isw >= 0 || !s->start || s->start->bp_kind != CABLE_BP_DOUBLE) return;
   const char *sym = strcmp(s->e, "braid_knot") == 0 ? "braid_knot_sym" : strcmp(s->e, "braid_link") == 0 ? "braid_link_sym" : NULL;
-  if (!sym) return 0;
-  return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, "ISW",
-                         "label %d (%s = %.7g) is a double branch point: %s cannot follow a branch from it (every "
-                         "direction of its two-dimensional kernel is a rotation of the buckling pattern, and the "
-                         "switch crawls along it); switch in the S0-symmetric formulation, where the branch point "
-                         "is simple: run(bp, e='%s', ICP=[... 'eps13' ...], ISW=-1, ISP=0) (its recommended "
-                         "constants: cable info e=%s; runs/knot72/c.knot72sym; doc/knot72.md sections 2-4)",
-                         s->start->lab, s->names.par[0][0] ? s->names.par[0] : "PAR(1)", s->start->par[0], s->e, sym, sym);
+  if (!sym) return;
+  fprintf(rp_log(r), "  note: label %d (%s = %.7g) is a double branch point: %s cannot follow a branch from it "
+          "(almost every direction of its two-dimensional kernel is a rotation of the buckling pattern, and the "
+          "switch crawls along it); switch in the S0-symmetric formulation, where it is simple: run(bp, e='%s', "
+          "ICP=[... 'eps13' ...], ISW=-1, ISP=0) (cable info e=%s; runs/knot72/c.knot72sym; doc/knot72.md "
+          "sections 2-4)\n", s->start->lab, s->names.par[0][0] ? s->names.par[0] : "PAR(1)", s->start->par[0], s->e,
+          sym, sym);
 }
 
 static int engine_run(cable_session *r, rp_setup *s, rp_branch **out, cable_error *err)
 {
   *out = NULL;
-  int rc0 = refuse_double_switch(s, err);
-  if (rc0) return rc0;
+  note_double_switch(r, s);
   rp_problem prob;
   int rc = find_problem(r, s->e, &s->c, s->start == NULL, &prob, err);
   if (rc) return rc;
