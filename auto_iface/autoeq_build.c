@@ -24,17 +24,18 @@
 
 #define AUTOEQ_SRC_MAX (16L << 20)   /* an equation file larger than this is refused */
 #define AUTOEQ_EXEC_FAILED 127       /* the child's exit status when exec fails */
-#define AUTOEQ_CACHE_TAG "cable-autoeq-1"   /* bump when the build recipe changes */
+#define AUTOEQ_CACHE_TAG "cable-autoeq-2"   /* bump when the build recipe changes */
 
 const char *const autoeq_routine_name[AE_NROUTINES] = {"FUNC", "STPNT", "BCND", "ICND", "FOPT", "PVLS"};
 
 /* AUTO's argument lists: 'i' INTEGER, 'd' DOUBLE PRECISION (all by reference). */
-static const char *const auto_args[AE_NROUTINES] = {"idididdd", "iddd", "idiidddid", "idiidddddid", "idididdd",
-                                                    "idd"};
-static const char *const auto_sig[AE_NROUTINES] = {
+const char *const autoeq_auto_args[AE_NROUTINES] = {"idididdd", "iddd", "idiidddid", "idiidddddid", "idididdd", "idd"};
+const char *const autoeq_auto_sig[AE_NROUTINES] = {
   "FUNC(NDIM,U,ICP,PAR,IJAC,F,DFDU,DFDP)", "STPNT(NDIM,U,PAR,T)", "BCND(NDIM,PAR,ICP,NBC,U0,U1,FB,IJAC,DBC)",
   "ICND(NDIM,PAR,ICP,NINT,U,UOLD,UDOT,UPOLD,FI,IJAC,DINT)", "FOPT(NDIM,U,ICP,PAR,IJAC,FS,DFDU,DFDP)",
   "PVLS(NDIM,U,PAR)"};
+
+#define AUTOEQ_MAX_PROCS 512   /* procedure statements remembered per file */
 
 /* snprintf for paths: -1 when the result does not fit. */
 static int fmt_path(char *out, size_t len, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
@@ -45,6 +46,13 @@ static int fmt_path(char *out, size_t len, const char *fmt, ...)
   int n = vsnprintf(out, len, fmt, ap);
   va_end(ap);
   return n < 0 || (size_t)n >= len ? -1 : 0;
+}
+
+/* Free-form Fortran (.f90) as opposed to fixed form (.f). */
+static int has_f90_suffix(const char *path)
+{
+  size_t n = strlen(path);
+  return n > 4 && strcmp(path + n - 4, ".f90") == 0;
 }
 
 static uint64_t fnv1a(uint64_t h, const void *p, size_t n)
@@ -154,10 +162,40 @@ static int run_tool(char *const argv[], const char *out, const char *log)
   return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
 }
 
-/* The 1-based line of each SUBROUTINE NAME in a Fortran source (0: none). */
-static void definition_lines(const char *src, int *lines)
+/* A Fortran comment line: '!' first, or (fixed form) C, c or * in column 1. */
+static int fortran_comment(const char *line, size_t n, int fixed)
+{
+  if (fixed && n > 0 && (line[0] == 'c' || line[0] == 'C' || line[0] == '*')) return 1;
+  size_t i = 0;
+  while (i < n && (line[i] == ' ' || line[i] == '\t')) i++;
+  return i < n && line[i] == '!';
+}
+
+/* Whether a (lower-case, non-comment) line opens a procedure: the word
+ * "subroutine" or "function" before its first '(' (prefixes such as
+ * "double precision function" or "recursive subroutine" allowed), not an END
+ * statement. */
+static int opens_procedure(const char *low)
+{
+  while (*low == ' ' || *low == '\t') low++;
+  if (strncmp(low, "end", 3) == 0 && !isalnum((unsigned char)low[3]) && low[3] != '_') return 0;
+  const char *paren = strchr(low, '(');
+  const char *const words[] = {"subroutine", "function"};
+  for (int w = 0; w < 2; w++)
+    for (const char *q = strstr(low, words[w]); q && (!paren || q < paren); q = strstr(q + 1, words[w])) {
+      size_t len = strlen(words[w]);
+      int before = q == low || q[-1] == ' ' || q[-1] == '\t' || q[-1] == ')';
+      if (before && (q[len] == ' ' || q[len] == '\t')) return 1;
+    }
+  return 0;
+}
+
+/* The 1-based line of each SUBROUTINE NAME in a Fortran source (0: none), and
+ * the lines of every procedure statement (procs, *nprocs of them, ascending). */
+static void definition_lines(const char *src, int fixed, int *lines, int *procs, int *nprocs)
 {
   int line = 1;
+  *nprocs = 0;
   for (const char *p = src; *p; line++) {
     const char *eol = strchr(p, '\n');
     size_t n = eol ? (size_t)(eol - p) : strlen(p);
@@ -165,6 +203,7 @@ static void definition_lines(const char *src, int *lines)
     size_t k = 0;
     for (size_t i = 0; i < n && k + 1 < sizeof low; i++) low[k++] = (char)tolower((unsigned char)p[i]);
     low[k] = '\0';
+    if (!fortran_comment(p, n, fixed) && opens_procedure(low) && *nprocs < AUTOEQ_MAX_PROCS) procs[(*nprocs)++] = line;
     const char *q = low;
     while (*q == ' ' || *q == '\t') q++;
     if (strncmp(q, "subroutine", 10) == 0 && (q[10] == ' ' || q[10] == '\t')) {
@@ -235,16 +274,34 @@ static int check_getp_codes(const cable_autoeq *m, const char *src, cable_error 
   return 0;
 }
 
-/* Checks gfortran's prototypes of the file's external procedures against
- * AUTO's argument lists; fills m->nargs (-1 absent, 0 a dummy). */
-static int check_fortran_prototypes(cable_autoeq *m, const char *proto, cable_error *err)
+/* The type letter of one C parameter of gfortran's prototypes (autoeq_impl.h). */
+static char proto_type(const char *a)
 {
-  for (int r = 0; r < AE_NROUTINES; r++) m->nargs[r] = -1;
+  if (strncmp(a, "const ", 6) == 0) a += 6;
+  const struct {
+    const char *c;
+    char t;
+  } types[] = {{"int *", 'i'}, {"double *", 'd'}, {"__GFORTRAN_DOUBLE_COMPLEX *", 'z'}, {"float *", 'r'},
+               {"__GFORTRAN_FLOAT_COMPLEX *", 'c'}};
+  for (size_t i = 0; i < sizeof types / sizeof types[0]; i++)
+    if (strncmp(a, types[i].c, strlen(types[i].c)) == 0) return types[i].t;
+  return '?';
+}
+
+/* Reads gfortran's prototypes of the file's external procedures: the number,
+ * types and names of each routine's arguments (m->nargs: -1 absent, 0 a
+ * dummy).  Whether they fit AUTO's is decided per run, for the routines the
+ * run calls (autoeq_check.c); here only a FUNC is required. */
+static int read_fortran_prototypes(cable_autoeq *m, const char *proto, cable_error *err)
+{
+  for (int r = 0; r < AE_NROUTINES; r++) {
+    m->nargs[r] = -1;
+    m->argtype[r][0] = '\0';
+  }
   FILE *f = fopen(proto, "r");
   if (!f) return cable_error_set(err, CABLE_ERR_IO, proto, 0, "", "cannot read the compiler's prototypes");
   char line[2048];
-  int rc = 0;
-  while (!rc && fgets(line, sizeof line, f)) {
+  while (fgets(line, sizeof line, f)) {
     if (strncmp(line, "void ", 5) != 0) continue;
     char *open = strstr(line, "_ ("), *close = strrchr(line, ')');
     if (!open || !close) continue;
@@ -258,32 +315,59 @@ static int check_fortran_prototypes(cable_autoeq *m, const char *proto, cable_er
     int n = 0;
     if (strcmp(args, "") != 0 && strcmp(args, "void") != 0) {
       char *save = NULL;
-      for (char *a = strtok_r(args, ",", &save); a && !rc; a = strtok_r(NULL, ",", &save), n++) {
+      for (char *a = strtok_r(args, ",", &save); a; a = strtok_r(NULL, ",", &save), n++) {
         while (*a == ' ') a++;
-        if (strncmp(a, "const ", 6) == 0) a += 6;
-        char type = strncmp(a, "int *", 5) == 0 ? 'i' : strncmp(a, "double *", 8) == 0 ? 'd' : '?';
+        if (n >= AUTOEQ_MAX_ARGS) continue;
         const char *argname = strrchr(a, '*') ? strrchr(a, '*') + 1 : a;
-        if (n >= (int)strlen(auto_args[r])) continue;   /* counted; reported below */
-        if (type != auto_args[r][n])
-          rc = cable_error_set(err, CABLE_ERR_PLUGIN, m->src, m->def_line[r], autoeq_routine_name[r],
-                               "argument %d (%s) is %s, AUTO passes %s: AUTO calls %s", n + 1, argname,
-                               type == 'i' ? "INTEGER" : type == 'd' ? "DOUBLE PRECISION" : "of another type",
-                               auto_args[r][n] == 'i' ? "an INTEGER" : "DOUBLE PRECISION", auto_sig[r]);
+        m->argtype[r][n] = proto_type(a);
+        m->argtype[r][n + 1] = '\0';
+        snprintf(m->argname[r][n], sizeof m->argname[r][n], "%s", argname);
       }
     }
-    if (!rc && n != 0 && n != (int)strlen(auto_args[r]))
-      rc = cable_error_set(err, CABLE_ERR_PLUGIN, m->src, m->def_line[r], autoeq_routine_name[r],
-                           "has %d arguments, AUTO passes %d: AUTO calls %s", n, (int)strlen(auto_args[r]),
-                           auto_sig[r]);
     m->nargs[r] = n;
   }
   fclose(f);
-  if (!rc && m->nargs[AE_FUNC] <= 0)
-    rc = cable_error_set(err, CABLE_ERR_PLUGIN, m->src, m->def_line[AE_FUNC], "FUNC",
-                         m->nargs[AE_FUNC] < 0 ? "the equation file does not define SUBROUTINE %s"
-                                               : "has no arguments: AUTO calls %s",
-                         auto_sig[AE_FUNC]);
-  return rc;
+  if (m->nargs[AE_FUNC] <= 0)
+    return cable_error_set(err, CABLE_ERR_PLUGIN, m->src, m->def_line[AE_FUNC], "FUNC",
+                           m->nargs[AE_FUNC] < 0 ? "the equation file does not define SUBROUTINE %s"
+                                                 : "has no arguments: AUTO calls %s",
+                           autoeq_auto_sig[AE_FUNC]);
+  return 0;
+}
+
+/* gfortran's -Wunused-dummy-argument warnings ("FILE:LINE:COL:" ... "Unused
+ * dummy argument 'name'"), each at the procedure statement that names the
+ * argument: marks the arguments of the six routines that are never used. */
+static void read_unused_arguments(cable_autoeq *m, const char *log, const int *procs, int nprocs)
+{
+  for (int r = 0; r < AE_NROUTINES; r++) m->unused[r] = 0;
+  FILE *f = fopen(log, "r");
+  if (!f) return;
+  char line[1024];
+  size_t sl = strlen(m->src);
+  int lno = 0;
+  while (fgets(line, sizeof line, f)) {
+    if (strncmp(line, m->src, sl) == 0 && line[sl] == ':' && isdigit((unsigned char)line[sl + 1])) {
+      lno = atoi(line + sl + 1);
+      continue;
+    }
+    const char *w = strstr(line, "Unused dummy argument ");
+    if (!w || !lno) continue;
+    w += strlen("Unused dummy argument ");
+    while (*w && !isalnum((unsigned char)*w) && *w != '_') w++;   /* the opening quote, ASCII or UTF-8 */
+    char name[AUTOEQ_ARGNAME];
+    size_t k = 0;
+    while ((isalnum((unsigned char)*w) || *w == '_') && k + 1 < sizeof name) name[k++] = (char)tolower((unsigned char)*w++);
+    name[k] = '\0';
+    int start = 0;   /* the procedure statement at or before the warning */
+    for (int i = 0; i < nprocs && procs[i] <= lno; i++) start = procs[i];
+    for (int r = 0; r < AE_NROUTINES; r++) {
+      if (!start || m->def_line[r] != start) continue;
+      for (int a = 0; a < m->nargs[r] && a < AUTOEQ_MAX_ARGS; a++)
+        if (strcasecmp(m->argname[r][a], name) == 0) m->unused[r] |= 1UL << a;
+    }
+  }
+  fclose(f);
 }
 
 /* The first compiler error about the user's file, as file:line: message. */
@@ -345,20 +429,32 @@ static void remove_tree(const char *dir)
   rmdir(dir);
 }
 
+/* The cache's record of the checks' facts, one line per routine:
+ * NAME nargs line types unused-mask names (types and names "-" when empty). */
 static int read_sig(cable_autoeq *m, const char *path)
 {
   FILE *f = fopen(path, "r");
   if (!f) return -1;
   int got = 0;
-  char name[16];
-  int n, l;
-  while (fscanf(f, "%15s %d %d", name, &n, &l) == 3)
-    for (int r = 0; r < AE_NROUTINES; r++)
-      if (strcmp(name, autoeq_routine_name[r]) == 0) {
-        m->nargs[r] = n;
-        m->def_line[r] = l;
-        got++;
-      }
+  char line[4096];
+  while (fgets(line, sizeof line, f)) {
+    char name[16], types[AUTOEQ_MAX_ARGS + 1], names[800];
+    int n, l;
+    unsigned long mask;
+    if (sscanf(line, "%15s %d %d %24s %lu %799s", name, &n, &l, types, &mask, names) != 6) continue;
+    for (int r = 0; r < AE_NROUTINES; r++) {
+      if (strcmp(name, autoeq_routine_name[r]) != 0) continue;
+      m->nargs[r] = n;
+      m->def_line[r] = l;
+      m->unused[r] = mask;
+      memcpy(m->argtype[r], strcmp(types, "-") == 0 ? "" : types, strcmp(types, "-") == 0 ? 1 : strlen(types) + 1);
+      char *save = NULL;
+      int a = 0;
+      for (char *t = strtok_r(names, ",", &save); t && a < AUTOEQ_MAX_ARGS; t = strtok_r(NULL, ",", &save), a++)
+        snprintf(m->argname[r][a], sizeof m->argname[r][a], "%s", strcmp(t, "-") == 0 ? "" : t);
+      got++;
+    }
+  }
   fclose(f);
   return got == AE_NROUTINES ? 0 : -1;
 }
@@ -367,7 +463,13 @@ static int write_sig(const cable_autoeq *m, const char *path)
 {
   FILE *f = fopen(path, "w");
   if (!f) return -1;
-  for (int r = 0; r < AE_NROUTINES; r++) fprintf(f, "%s %d %d\n", autoeq_routine_name[r], m->nargs[r], m->def_line[r]);
+  for (int r = 0; r < AE_NROUTINES; r++) {
+    fprintf(f, "%s %d %d %s %lu ", autoeq_routine_name[r], m->nargs[r], m->def_line[r],
+            m->argtype[r][0] ? m->argtype[r] : "-", m->unused[r]);
+    int na = m->nargs[r] < AUTOEQ_MAX_ARGS ? m->nargs[r] : AUTOEQ_MAX_ARGS;
+    for (int a = 0; a < na; a++) fprintf(f, "%s%s", a ? "," : "", m->argname[r][a][0] ? m->argname[r][a] : "-");
+    fprintf(f, "%s\n", na > 0 ? "" : "-");
+  }
   return fclose(f);
 }
 
@@ -376,8 +478,13 @@ int autoeq_build(cable_autoeq *m, cable_error *err)
   size_t n;
   char *src = read_all(m->src, &n, err);
   if (!src) return err->status;
-  for (int r = 0; r < AE_NROUTINES; r++) m->def_line[r] = 0;
-  if (m->lang == AUTOEQ_FORTRAN) definition_lines(src, m->def_line);
+  int procs[AUTOEQ_MAX_PROCS], nprocs = 0;
+  for (int r = 0; r < AE_NROUTINES; r++) {
+    m->def_line[r] = 0;
+    m->unused[r] = 0;
+    m->argtype[r][0] = '\0';
+  }
+  if (m->lang == AUTOEQ_FORTRAN) definition_lines(src, !has_f90_suffix(m->src), m->def_line, procs, &nprocs);
   if (check_getp_codes(m, src, err)) {
     free(src);
     return err->status;
@@ -417,16 +524,17 @@ int autoeq_build(cable_autoeq *m, cable_error *err)
       rc = cable_error_set(err, CABLE_ERR_IO, p, 0, "", "cannot write: %s", strerror(errno));
   }
   /* argv strings must be writable (execvp's prototype) */
-  char *src_arg = m->src, ccb[256], a_proto[] = "-fc-prototypes-external", a_syntax[] = "-fsyntax-only",
+  char *src_arg = m->src, ccb[256], a_proto[] = "-fc-prototypes-external", a_syntax[] = "-fsyntax-only", a_unused[] = "-Wunused-dummy-argument",
        a_legacy[] = "-std=legacy", a_o2[] = "-O2", a_pic[] = "-fPIC", a_shared[] = "-shared", a_o[] = "-o",
        a_defs[] = "-Wl,-z,defs", a_lm[] = "-lm", modj[AUTOEQ_PATH_MAX + 128];
   snprintf(ccb, sizeof ccb, "%s", cc);
   fmt_path(modj, sizeof modj, "-J%s", tmp);   /* Fortran .mod files go to the build directory */
   int st_tool = 0;
   if (!rc && m->lang == AUTOEQ_FORTRAN) {
-    char *argv[] = {ccb, a_proto, a_syntax, a_legacy, modj, src_arg, NULL};
+    char *argv[] = {ccb, a_proto, a_syntax, a_unused, a_legacy, modj, src_arg, NULL};
     st_tool = run_tool(argv, proto, log);
-    if (st_tool == 0) rc = check_fortran_prototypes(m, proto, err);
+    if (st_tool == 0) rc = read_fortran_prototypes(m, proto, err);
+    if (st_tool == 0 && !rc) read_unused_arguments(m, log, procs, nprocs);
   }
   if (!rc && st_tool == 0) {
     if (m->lang == AUTOEQ_FORTRAN) {
@@ -435,7 +543,10 @@ int autoeq_build(cable_autoeq *m, cable_error *err)
     } else {
       char *argv[] = {ccb, a_o2, a_pic, a_shared, inc, src_arg, shim, a_o, mod, a_defs, a_lm, NULL};
       st_tool = run_tool(argv, NULL, log);
-      for (int r = 0; r < AE_NROUTINES; r++) m->nargs[r] = (int)strlen(auto_args[r]);
+      for (int r = 0; r < AE_NROUTINES; r++) {   /* auto_f2c.h's prototypes made them AUTO's */
+        m->nargs[r] = (int)strlen(autoeq_auto_args[r]);
+        snprintf(m->argtype[r], sizeof m->argtype[r], "%s", autoeq_auto_args[r]);
+      }
     }
   }
   if (!rc && st_tool == AUTOEQ_EXEC_FAILED) {

@@ -9,6 +9,8 @@
 
 #define AUTOEQ_PATH_MAX 1024
 #define AUTOEQ_MAX_ICP (CABLE_MAX_ICP + 8)
+#define AUTOEQ_MAX_ARGS 24     /* arguments of one routine recorded for the check */
+#define AUTOEQ_ARGNAME 32
 
 /* The files of auto_iface/auto_compat, embedded at build time (the Makefile
  * generates the table from the files themselves). */
@@ -64,6 +66,14 @@ struct cable_autoeq {
   int nargs[AE_NROUTINES];       /* arguments of each routine (Fortran: from the
                                     compiler; -1 absent, 0 a dummy without arguments) */
   int def_line[AE_NROUTINES];    /* line of each routine's definition (0 unknown) */
+  /* Fortran: each argument's type by position as the compiler declares it
+     ('i' INTEGER, 'd' DOUBLE PRECISION, 'z' COMPLEX(KIND(1.0D0)), 'r' REAL,
+     'c' COMPLEX, '?' another), whether the routine ever refers to it (bit k
+     of unused: argument k+1 is never used), and its name.  Checked per run
+     against the routines the run calls (autoeq_check.c). */
+  char argtype[AE_NROUTINES][AUTOEQ_MAX_ARGS + 1];
+  unsigned long unused[AE_NROUTINES];
+  char argname[AE_NROUTINES][AUTOEQ_MAX_ARGS][AUTOEQ_ARGNAME];
   void *handle;
   int runs;                      /* problems made for runs from this opening of the module */
   /* the routines, one set used */
@@ -93,6 +103,14 @@ struct cable_autoeq {
 /* Fills m->so and m->nargs/def_line (building when the cache lacks the
  * module).  autoeq_build.c */
 int autoeq_build(cable_autoeq *m, cable_error *err);
+/* AUTO's argument lists ('i' INTEGER, 'd' DOUBLE PRECISION, by position)
+ * and its calls, for messages. autoeq_build.c */
+extern const char *const autoeq_auto_args[AE_NROUTINES];
+extern const char *const autoeq_auto_sig[AE_NROUTINES];
+/* Refuses a run whose called routines AUTO itself could not run (a used
+ * argument of another type or beyond AUTO's list, an output the run takes
+ * that the routine does not have or never sets). autoeq_check.c */
+int autoeq_check_called(const cable_autoeq *m, const cable_constants *c, cable_error *err);
 /* Resolves the routines of the loaded module. autoeq_shim.c */
 int autoeq_bind(cable_autoeq *m, cable_error *err);
 /* Fills m->pb for the constants. autoeq_shim.c */

@@ -244,6 +244,7 @@ int autoeq_make_problem(cable_autoeq *m, const cable_constants *c, cable_error *
   snprintf(why, sizeof why, "NINT=%d", c->nint);
   if (!rc && c->nint > 0) rc = need(m, AE_ICND, why, err);
   if (!rc && c->irs == 0 && !c->irs_name[0] && !m->dat) rc = need(m, AE_STPNT, "the run starts from STPNT (IRS=0)", err);
+  if (!rc) rc = autoeq_check_called(m, c, err);
   if (rc) return rc;
   m->ndim = c->ndim;
   m->nbc = c->nbc;

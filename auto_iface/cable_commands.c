@@ -30,6 +30,19 @@ static void unquote(const char *v, char *out, size_t len)
   else snprintf(out, len, "%s", v);
 }
 
+int cable_cmd_info(const char *e, FILE *out, cable_error *err)
+{
+  cable_session_options o;
+  cable_session_options_init(&o);
+  o.dir = ".";
+  o.log = stderr;
+  cable_session *r = cable_session_alloc(&o);
+  if (!r) return cable_error_set(err, CABLE_ERR_ALLOC, NULL, 0, NULL, "out of memory");
+  int rc = cable_session_info(r, e, out, err);
+  cable_session_free(r);
+  return rc;
+}
+
 #define CLI_MAX_ARGS 256   /* arguments of one `cable run` */
 
 /* Each KEY=VALUE is what a constants file line would say (bare words are

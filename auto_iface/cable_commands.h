@@ -10,6 +10,8 @@
 /* cable run KEY=VALUE ...: one run(...) of a session in the current directory.
  * interrupt (NULL: none) is asked after every point, as the session's. */
 int cable_cmd_run(int argc, char **argv, int (*interrupt)(void *ctx), void *ctx, cable_error *err);
+/* cable info e=PROBLEM (a session in the current directory) */
+int cable_cmd_info(const char *e, FILE *out, cable_error *err);
 /* cable table b.NAME */
 int cable_cmd_table(const char *bfile, FILE *out, cable_error *err);
 /* cable list s.NAME (error estimates from d.NAME when present) */

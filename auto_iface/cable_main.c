@@ -35,6 +35,9 @@ static void usage(FILE *out)
         "                     one offline HTML page of a run directory's b./s. files or\n"
         "                     an atlas: the diagram beside the 3-D knot (python3 -m\n"
         "                     cable.webview; doc/view.md)\n"
+        "  info e=PROBLEM     a problem's parameters, components, keys, their defaults and\n"
+        "                     the recommended constants (an equation file PROBLEM.f90,\n"
+        "                     .f or .c in the current directory counts, as for run)\n"
         "  table b.NAME       the branch table of a b-file\n"
         "  list s.NAME        the labelled solutions of an s-file\n"
         "  analyze s.NAME LABEL...\n"
@@ -208,6 +211,15 @@ int main(int argc, char **argv)
       return 2;
     }
     return replay(argv[2]);
+  }
+  if (strcmp(cmd, "info") == 0) {
+    const char *e = argc == 3 ? argv[2] : NULL;
+    if (e && strncmp(e, "e=", 2) == 0) e += 2;
+    if (!e || !e[0]) {
+      fprintf(stderr, "cable: usage: cable info e=PROBLEM\n");
+      return 2;
+    }
+    return report(cable_cmd_info(e, stdout, &err), &err);
   }
   if (strcmp(cmd, "table") == 0) {
     if (argc != 3) {

@@ -191,6 +191,20 @@ static int find_problem(cable_session *r, const char *e, const cable_constants *
   return 0;
 }
 
+int cable_session_info(cable_session *r, const char *e, FILE *out, cable_error *err)
+{
+  if (!r || !e || !out) return cable_error_set(err, CABLE_ERR_NULL, NULL, 0, NULL, "cable_session_info: NULL argument");
+  rp_problem p;
+  int rc = find_problem(r, e, NULL, 0, &p, err);
+  if (rc) return rc;
+  const char *src = NULL;
+  for (int k = 0; p.autoeq && k < r->nautoeq; k++)
+    if (strcmp(r->autoeq_name[k], e) == 0) src = cable_autoeq_source(r->autoeq[k]);
+  rc = rp_problem_info_write(p.pb, p.autoeq ? (src ? src : e) : NULL, out);
+  problem_release(r, &p);
+  return rc;
+}
+
 /* ---- run setup: constants, problem, start ----------------------------------------- */
 
 typedef struct rp_setup {
@@ -520,6 +534,19 @@ static int build_setup(cable_session *r, const cable_run_args *a, rp_setup *s, c
   int npar;
   rp_problem p;
   rc = problem_names(r, s->e, &p, &parnames, &npar, err);
+  /* A first run from nothing but keywords (no constants file, no start, no
+     earlier run or load whose constants the runner keeps) takes its
+     problem's recommended constants as defaults, under the keywords: the
+     braid problems' are the scenes' settings (cable_problem_recommended) */
+  const char *rec = cable_problem_recommended(s->e);
+  char cpath[1024];
+  if (a->name) rp_path(r, "c", a->name, cpath, sizeof cpath);
+  int cfile = a->c || (a->name && file_exists(cpath));
+  if (!rc && rec && !cfile && !a->sol_branch && a->nbranch == 0 && !a->s && !cfile_s[0] && !r->cur_e[0]) {
+    rc = cable_constants_parse_override_for(rec, p.pb, &s->c, &s->names, err);
+    if (!rc) fprintf(rp_log(r), "  %s: no constants file: the problem's recommended constants apply under the "
+                     "keywords (cable info e=%s)\n", s->e, s->e);
+  }
   for (int i = 0; i < a->nover && !rc; i++) {
     rc = cable_constants_parse_override_for(a->over[i], p.pb, &s->c, &s->names, err);
     if (rc && err && !err->file[0] && a->over_file) {
@@ -728,6 +755,27 @@ static void guard_where(rp_guard *g, const collector *c, const char *e, const ch
   rp_guard_set_where(g, text);
 }
 
+/* A switch (ISW < 0) at a double branch point of the flat braid_knot or
+ * braid_link: the full formulation has a two-dimensional kernel there and
+ * almost every direction in it is a rotated copy of the buckling pattern, so
+ * the switched run crawls along an almost free rotation (doc/knot72.md
+ * section 2: 40 steps moved T by 0.0018).  The S0-symmetric formulation has
+ * one direction left and follows the branch.  The run goes ahead (the
+ * engine's switch at a double BP, BPDIR/BPANGLE, is a tool of its own,
+ * tests/python/test_link_scenes.py), with a note that says what to do. */
+static void note_double_switch(cable_session *r, const rp_setup *s)
+{
+  if (s->c.isw >= 0 || !s->start || s->start->bp_kind != CABLE_BP_DOUBLE) return;
+  const char *sym = strcmp(s->e, "braid_knot") == 0 ? "braid_knot_sym" : strcmp(s->e, "braid_link") == 0 ? "braid_link_sym" : NULL;
+  if (!sym) return;
+  fprintf(rp_log(r), "  note: label %d (%s = %.7g) is a double branch point: %s cannot follow a branch from it "
+          "(almost every direction of its two-dimensional kernel is a rotation of the buckling pattern, and the "
+          "switch crawls along it); switch in the S0-symmetric formulation, where it is simple: run(bp, e='%s', "
+          "ICP=[... 'eps13' ...], ISW=-1, ISP=0) (cable info e=%s; runs/knot72/c.knot72sym; doc/knot72.md "
+          "sections 2-4)\n", s->start->lab, s->names.par[0][0] ? s->names.par[0] : "PAR(1)", s->start->par[0], s->e,
+          sym, sym);
+}
+
 /* One run; out_name (NULL: none) gets its b./s./d. files as it goes
  * (out_append: AUTO's ap=).  An interrupted run returns
  * CABLE_ERR_INTERRUPTED with its branch in *out. */
@@ -745,6 +793,7 @@ static int engine_run(cable_session *r, rp_setup *s, const char *out_name, int o
                            "(IPS=4); write IPS = 4 in the constants file (or give IPS=4)",
                            s->c.ips, o->line ? "" : " (not set: AUTO's default)");
   }
+  note_double_switch(r, s);
   rp_problem prob;
   int rc = find_problem(r, s->e, &s->c, s->start == NULL, &prob, err);
   if (rc) return rc;
@@ -930,7 +979,8 @@ static int engine_run(cable_session *r, rp_setup *s, const char *out_name, int o
   int next = s->mlab + 1;
   st = cable_cont_run(cc, &sink, ibr, s->mlab + 1, &next);
   char why[512], end_note[600], fatal[1200] = "";
-  snprintf(why, sizeof why, "%s", st < 0 ? cable_cont_error(cc) : "");
+  /* an error's message, or the closed loop's (it names the point the branch returned to) */
+  snprintf(why, sizeof why, "%s", st < 0 || st == CABLE_END_LOOP ? cable_cont_error(cc) : "");
   if (guard && guard->fatal) {
     /* doc/plugins.md: a negative return is fatal; the run ends with what it has */
     snprintf(fatal, sizeof fatal, "the %s routine of %s returned %d (fatal)", guard->fatal_routine, guard->origin,
@@ -941,7 +991,7 @@ static int engine_run(cable_session *r, rp_setup *s, const char *out_name, int o
     snprintf(why, sizeof why, "stopped after PT %d (a signal, or KeyboardInterrupt); the points before are complete",
              col.b->npt > 0 ? col.b->pts[col.b->npt - 1].pt.pt : 0);
   snprintf(end_note, sizeof end_note, "branch %d ended: %s: %s", ibr, cable_status_message(st), why);
-  if (!col.rc && st < 0) col.rc = rp_branch_set_end_note(col.b, end_note);
+  if (!col.rc && (st < 0 || st == CABLE_END_LOOP)) col.rc = rp_branch_set_end_note(col.b, end_note);
   cable_cont_free(cc);
   cable_fold_free(fold);
   cable_bpcont_free(bpc);

@@ -151,4 +151,8 @@ int rp_bp_kind_from_note(int itp, const char *note);
 int rp_result_merge(const rp_result *in, rp_result **out);
 int rp_result_relabel(const rp_result *in, rp_result **out);
 
+/* The text of `cable info e=NAME` for a problem (cable_info.c); source: the
+ * AUTO equation file it was found as, or NULL. */
+int rp_problem_info_write(const cable_problem *pb, const char *source, FILE *out);
+
 #endif

@@ -756,7 +756,9 @@ static int apply_thl(pctx *x, const key_desc *d, const stmt *s)
 }
 
 /* PAR={'Delta': 0.005, 4: 1.98889}: starting values that override STPNT or
- * the restart solution (AUTO-07p's PAR constant). */
+ * the restart solution (AUTO-07p's PAR constant).  As in AUTO, a later PAR
+ * (a keyword over a constants file's, or a second statement) updates the
+ * entries it names and keeps the others. */
 static int apply_par(pctx *x, const key_desc *d, const stmt *s)
 {
   (void)d;
@@ -765,10 +767,14 @@ static int apply_par(pctx *x, const key_desc *d, const stmt *s)
   int st = par_real_dict(x, s, "{'T': 0.0, 5: 0.01}", CABLE_MAX_THL, idx, v, &n);
   if (st) return st;
   for (int k = 0; k < n; k++) {
-    x->c.par_override[k].index = idx[k];
-    x->c.par_override[k].value = v[k];
+    int j = 0;
+    while (j < x->c.npar_override && x->c.par_override[j].index != idx[k]) j++;
+    if (j == CABLE_MAX_THL)
+      return perr(x, CABLE_ERR_INPUT, s->line, s->key, "more than %d parameters given start values", CABLE_MAX_THL);
+    x->c.par_override[j].index = idx[k];
+    x->c.par_override[j].value = v[k];
+    if (j == x->c.npar_override) x->c.npar_override++;
   }
-  x->c.npar_override = n;
   return 0;
 }
 

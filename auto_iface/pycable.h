@@ -38,6 +38,7 @@ PyObject *pyc_constants_dict(const cable_constants *c, const cable_names *names,
 PyObject *pyc_analyze(PyObject *mod, PyObject *args);
 PyObject *pyc_passages(PyObject *mod, PyObject *args);
 PyObject *pyc_tube_dmin(PyObject *mod, PyObject *args);
+PyObject *pyc_curves(PyObject *mod, PyObject *args);
 PyObject *pyc_plot(PyObject *mod, PyObject *args);
 PyObject *pyc_render(PyObject *mod, PyObject *args);
 PyObject *pyc_strands(PyObject *mod, PyObject *args);

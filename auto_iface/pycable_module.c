@@ -71,6 +71,8 @@ static PyMethodDef module_methods[] = {
      "passages(branch, i, j) -> (count, net, tau_first): self-passages of the braid axis"},
     {"tube_dmin", (PyCFunction)(void (*)(void))pyc_tube_dmin, METH_VARARGS,
      "tube_dmin(branch, i) -> closest approach of non-adjacent strand parts / Delta"},
+    {"curves", (PyCFunction)(void (*)(void))pyc_curves, METH_VARARGS,
+     "curves(branch, i) -> dict of numpy arrays at the stored points: strand1, strand2, contact (n x 3), p1, p2, sigma"},
     {"plot", (PyCFunction)(void (*)(void))pyc_plot, METH_VARARGS,
      "plot(out, bfiles, x, y, marks, title): bifurcation diagram of b-files"},
     {"bfile", (PyCFunction)(void (*)(void))pyc_bfile, METH_VARARGS,

@@ -12,6 +12,9 @@
  * refused with RuntimeError.  Separate runners run at the same time. */
 #include "pycable.h"
 
+#include <stdio.h>
+#include <stdlib.h>
+
 typedef struct pyc_session {
   PyObject_HEAD
   cable_session *s;
@@ -372,7 +375,27 @@ static PyObject *session_constants(PyObject *obj, PyObject *noargs)
   return d;
 }
 
+/* info(e) -> str: the problem's parameters, components, keys and
+ * recommended constants (cable_session_info, `cable info e=NAME`) */
+static PyObject *session_info(PyObject *obj, PyObject *args)
+{
+  const char *e;
+  if (!PyArg_ParseTuple(args, "s", &e)) return NULL;
+  char *text = NULL;
+  size_t len = 0;
+  FILE *f = open_memstream(&text, &len);
+  if (!f) return PyErr_NoMemory();
+  cable_error err;
+  cable_error_clear(&err);
+  int rc = cable_session_info(((pyc_session *)obj)->s, e, f, &err);
+  fclose(f);
+  PyObject *out = rc ? pyc_raise(rc, &err) : PyUnicode_FromStringAndSize(text, (Py_ssize_t)len);
+  free(text);
+  return out;
+}
+
 static PyMethodDef session_methods[] = {
+    {"info", session_info, METH_VARARGS, "info(e) -> str: the problem's parameters, components, keys, recommended constants"},
     {"run", session_run, METH_VARARGS, "run(start, sol, name, e, c, s, sv, ap, overrides) -> Branch"},
     {"load", session_load, METH_VARARGS, "load(start, sol, name, e, c, s, sv, ap, overrides) -> Branch or None (no solution)"},
     {"save", session_save, METH_VARARGS, "save(branches, sol, name, append)"},

@@ -72,6 +72,7 @@ void cable_cont_free(cable_cont *cc)
 {
   if (!cc) return;
   cont_counts_report(cc);
+  cont_loop_free(cc);
   colloc_newton_free(cc->nw);
   colloc_system_free(cc->sys);
   colloc_jac_free(cc->J);
@@ -419,7 +420,7 @@ static int first_point(cable_cont *cc)
     cc->ended = 1;
     return cc->end_status = rc;
   }
-  return CABLE_SUCCESS;
+  return cont_loop_start(cc, cc->loop.start_lab);
 }
 
 /* After a point is accepted: end the branch at NMX, outside RL0..RL1 or
@@ -431,6 +432,7 @@ static void check_limits(cable_cont *cc)
   int end = 0;
   if (cc->uz_stop) end = CABLE_END_UZSTOP;
   else if (p0 < cc->c.rl0 || p0 > cc->c.rl1 || m < cc->c.a0 || m > cc->c.a1) end = CABLE_END_BOUNDS;
+  else if (cont_loop_closed(cc)) end = CABLE_END_LOOP;   /* before NMX: the reason that says more */
   else if (cc->c.nmx > 0 && cc->npt >= cc->c.nmx) end = CABLE_END_NMX;
   if (!end) return;
   if (end != CABLE_END_UZSTOP && cc->itp == CABLE_TY_NONE) {

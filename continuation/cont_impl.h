@@ -33,6 +33,16 @@ typedef struct cont_counts {
   long locate_evals, locates;   /* the same in sign-change locations */
 } cont_counts;
 
+/* Closed-loop detection (cont_loop.c): summaries of the start and of the
+ * previous point, the largest distance from the start so far. */
+typedef struct cont_loop {
+  double *z0, *zp, *z;          /* [m]: free parameters, U(0), U(1), IPLT's measure, of the
+                                   start, the previous point and the new one */
+  int m;
+  double dmax;                  /* largest distance of a point from the start */
+  int start_lab;                /* the start's label in its restart data (0: STPNT) */
+} cont_loop;
+
 struct cable_cont {
   const cable_problem *pb;      /* not owned */
   cable_constants c;            /* copy of the constants */
@@ -106,6 +116,7 @@ struct cable_cont {
   int gate_valid;               /* gate_v, gate_u, gate_sv belong to x */
   long gate_skipped, gate_run;  /* pencil tests skipped and run on this branch */
   cont_counts cnt;              /* work counters of the run */
+  cont_loop loop;               /* closed-loop detection */
 };
 
 /* cont_tangent.c */
@@ -169,6 +180,12 @@ void cont_counts_report(const cable_cont *cc);
 
 /* cont_mesh.c */
 int cont_adapt_mesh(cable_cont *cc);
+/* Closed loops (cont_loop.c): record the start (after the first point is
+ * stored); after each accepted point, 1 when the step from the previous
+ * point passed through the start again (cc->err then names it). */
+int cont_loop_start(cable_cont *cc, int start_lab);
+int cont_loop_closed(cable_cont *cc);
+void cont_loop_free(cable_cont *cc);
 double cont_error_estimate(const cable_cont *cc, const double *x);
 int cont_load_solution(cable_cont *cc, const cable_solution *s);
 /* CABLE_SUCCESS, or CABLE_ERR_CALLBACK when PVLS returned a negative

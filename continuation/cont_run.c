@@ -53,9 +53,11 @@ int cable_cont_set_start(cable_cont *cc, const cable_solution *start)
       }
     }
     cc->restart = 0;
+    cc->loop.start_lab = 0;
   } else {
     if ((rc = cont_load_solution(cc, start)) != CABLE_SUCCESS) return rc;
     cc->restart = 1;
+    cc->loop.start_lab = start->lab;
     if (cc->c.isw == -1) {
       if (start->itp % 10 != CABLE_TY_BP) {
         cont_set_error(cc, "ISW=-1 needs a branch point (BP) to start from; label %d has type %d",

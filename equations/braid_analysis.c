@@ -65,6 +65,31 @@ int braid_pressure_at(const cable_solution *sol, double t, double *p1, double *p
   return CABLE_SUCCESS;
 }
 
+int braid_solution_curves(const cable_solution *sol, double *r1, double *r2, double *c, double *p1, double *p2,
+                          double *sigma)
+{
+  int rc = braid_geometry_check(sol);
+  if (rc != CABLE_SUCCESS) return rc;
+  double delta = sol->par[BP_DELTA];
+  int hint = -1;
+  for (int k = 0; k < cable_solution_npts(sol); k++) {
+    braid_point p;
+    rc = braid_point_eval(sol, sol->t[k], &hint, &p);
+    double q1, q2, sg;
+    if (rc == CABLE_SUCCESS) rc = braid_pressure_at(sol, sol->t[k], &q1, &q2, &sg);
+    if (rc != CABLE_SUCCESS) return rc;
+    for (int j = 0; j < 3; j++) {
+      if (r1) r1[3 * k + j] = p.r1[j];
+      if (r2) r2[3 * k + j] = p.r1[j] + delta * p.d1[j];
+      if (c) c[3 * k + j] = p.c[j];
+    }
+    if (p1) p1[k] = q1;
+    if (p2) p2[k] = q2;
+    if (sigma) sigma[k] = sg;
+  }
+  return CABLE_SUCCESS;
+}
+
 static int negative(double p)
 {
   return p < 0;

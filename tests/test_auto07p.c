@@ -63,6 +63,12 @@ static const case_t cases[] = {
   /* ISW=2 at a BP: the starting data and the curve of branch points from
      them both ways (doc/fold-continuation.md, "Branch-point continuation") */
   {"bpcont", "bpcont.auto", "el", {"el.f90", "c.el", "bpcont.auto", NULL}},
+  /* declarations AUTO accepts (doc/auto-users.md, "What is checked"): a
+     COMPLEX(KIND(1.0D0)) state, implicitly typed stubs, the legacy
+     three-argument STPNT */
+  {"complex_f90", "elasz.auto", "elasz", {"elasz.f90", "c.elasz", "elasz.auto", NULL}},
+  {"implicit_f", "bratuimp.auto", "bratuimp", {"bratuimp.f", "c.bratuimp", "bratuimp.auto", NULL}},
+  {"stpnt3_f", "gelf.auto", "gelf", {"gelf.f", "c.gelf", "gelf.auto", NULL}},
 };
 
 static char cable_bin[3 * PATH_MAX], root[PATH_MAX];

@@ -20,6 +20,9 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_sf_ellint.h>
+
 #include "cable/cable_aufile.h"
 #include "cable/cable_autoeq.h"
 #include "cable/cable_status.h"
@@ -610,6 +613,133 @@ static void static_storage_per_run(void)
   if (log) fclose(log);
 }
 
+
+/* Declarations AUTO accepts (issue 26 item 1; autoeq_check.c): the rule is
+ * "refuse only what AUTO itself cannot run, in the routines the run calls".
+ *
+ * complex_f90/elasz.f90 declares the state COMPLEX(KIND(1.0D0)) U(NDIM/2):
+ * the elastica theta'' + P sin theta = 0, theta'(0) = theta'(1) = 0, with the
+ * centre line z = x + i y, z' = exp(i theta), z(0) = 0.  Closed forms: the
+ * straight rod branches at P = (n pi)^2; on the first buckled branch theta
+ * goes from theta0 to -theta0 over half a period, so sqrt(P) = 2 K(k) with
+ * k = sin(theta0/2), and the end of the rod is at x(1) = 2 E(k)/K(k) - 1,
+ * y(1) = 0 (the classical elastica; K, E the complete elliptic integrals).
+ * NTST=20, NCOL=4 collocation is accurate to about 1e-10 in these values
+ * (h^8), so 1e-8.  implicit_f/bratuimp.f has implicitly typed FOPT, ICND and
+ * PVLS stubs (REAL arguments); stpnt3_f/gelf.f the legacy STPNT(NDIM,U,PAR):
+ * Bratu's problem on [-1, 1] folded at its centre, fold at lambda* / 4.  All
+ * three were refused before ("argument 2 (u) is of another type", "has 3
+ * arguments, AUTO passes 4"); test_auto07p compares them with auto-07p. */
+static void auto_declarations(void)
+{
+  cable_error err;
+  char buf[1200], what[200];
+  const char *fz[] = {"elasz.f90", "c.elasz", "elasz.auto", NULL};
+  stage("complex_f90", fz);
+  int rc = replay("complex_f90", "elasz", "elasz", "elasz", &err);
+  test_report(rc == 0, "elasz.f90 (COMPLEX(KIND(1.0D0)) state): runs (%s)",
+              rc ? cable_error_format(&err, buf, sizeof buf) : "ok");
+  {   /* elasz.auto's second run: the buckled branch from BP1 (label 3) */
+    cable_session_options o;
+    cable_session_options_init(&o);
+    o.dir = TMP "/complex_f90";
+    FILE *log = fopen(TMP "/log.txt", "a");
+    o.log = log;
+    cable_session *r = cable_session_alloc(&o);
+    const char *over[] = {"IRS=3", "ISW=-1", "DS=0.05", "DSMAX=0.2", "NMX=80", "UZR={1: [10.0, 12.0]}",
+                          "UZSTOP={1: 14.0}"};
+    cable_run_args a;
+    memset(&a, 0, sizeof a);
+    a.e = "elasz";
+    a.c = "elasz";
+    a.s = "elasz";
+    a.ap = "elasz";
+    a.nover = (int)(sizeof over / sizeof over[0]);
+    a.over = over;
+    cable_branch *b = NULL;
+    cable_error_clear(&err);
+    rc = r ? cable_session_run(r, &a, &b, &err) : CABLE_ERR_ALLOC;
+    test_report(rc == 0, "elasz.f90: the switch at BP1 runs (%s)", rc ? cable_error_format(&err, buf, sizeof buf) : "ok");
+    cable_branch_decref(b);
+    cable_session_free(r);
+    if (log) fclose(log);
+  }
+  cable_bfile *bf = cable_bfile_read(TMP "/complex_f90/b.elasz", &err);
+  cable_sfile *sf = cable_sfile_read(TMP "/complex_f90/s.elasz", &err);
+  if (test_true("b.elasz and s.elasz were written", bf != NULL && sf != NULL)) {
+    const cable_bfile_branch *br = &bf->branch[0];
+    test_rel("elasz.f90: first BP at P = pi^2", col(br, "PAR(1)", row_of(br, 6, 0)), PI * PI, 1e-8);
+    test_rel("elasz.f90: second BP at P = (2 pi)^2", col(br, "PAR(1)", row_of(br, 6, 1)), 4 * PI * PI, 1e-8);
+    /* the straight rod: x(1) + i y(1) = 1 at the start */
+    const cable_solution *s0 = cable_sfile_find_label(sf, 1);
+    if (test_true("elasz: the start is stored", s0 != NULL)) {
+      size_t last = (size_t)(cable_solution_npts(s0) - 1) * (size_t)s0->ndim;
+      test_abs("elasz: straight rod, x(1) = 1", s0->u[last + 2], 1.0, 1e-10);
+    }
+    /* the buckled branch at its UZ P = 10 and 12 */
+    for (int lab = 7; lab <= 8; lab++) {
+      const cable_solution *s = cable_sfile_find_label(sf, lab);
+      if (!test_true("elasz: a UZ of the buckled branch is stored", s != NULL)) continue;
+      double P = s->par[0], theta0 = fabs(s->u[0]);
+      double k = sin(theta0 / 2);
+      gsl_mode_t mode = GSL_PREC_DOUBLE;
+      double K = gsl_sf_ellint_Kcomp(k, mode), E = gsl_sf_ellint_Ecomp(k, mode);
+      size_t last = (size_t)(cable_solution_npts(s) - 1) * (size_t)s->ndim;
+      snprintf(what, sizeof what, "elasz: buckled at P = %.6g: sqrt(P) = 2 K(sin(theta0/2))", P);
+      test_rel(what, 2 * K, sqrt(P), 1e-8);
+      snprintf(what, sizeof what, "elasz: buckled at P = %.6g: x(1) = 2 E/K - 1 (through z' = exp(i theta))", P);
+      test_rel(what, s->u[last + 2], 2 * E / K - 1, 1e-8);
+      snprintf(what, sizeof what, "elasz: buckled at P = %.6g: y(1) = 0", P);
+      test_abs(what, s->u[last + 3], 0.0, 1e-9);
+    }
+  }
+  cable_bfile_free(bf);
+  cable_sfile_free(sf);
+
+  const char *fi[] = {"bratuimp.f", "c.bratuimp", "bratuimp.auto", NULL};
+  stage("implicit_f", fi);
+  rc = replay("implicit_f", "bratuimp", "bratuimp", "bratuimp", &err);
+  test_report(rc == 0, "bratuimp.f (implicitly typed FOPT, ICND, PVLS stubs): runs (%s)",
+              rc ? cable_error_format(&err, buf, sizeof buf) : "ok");
+  bf = cable_bfile_read(TMP "/implicit_f/b.bratuimp", &err);
+  if (test_true("b.bratuimp was written", bf != NULL)) {
+    const cable_bfile_branch *br = &bf->branch[0];
+    double s = fold_s();
+    test_rel("bratuimp.f: the fold at lambda* = 8 s^2/cosh^2 s", col(br, "PAR(1)", row_of(br, 5, 0)),
+             8 * s * s / (cosh(s) * cosh(s)), 1e-8);
+  }
+  cable_bfile_free(bf);
+  /* the same file with NINT=1: ICND is called now and never sets FI */
+  const char *nint1[] = {"NINT=1", "ICP=[1, 2]"};
+  rc = replay_over("implicit_f", "bratuimp", "bratuimp", "bratuimp_nint", 2, nint1, &err);
+  cable_error_format(&err, buf, sizeof buf);
+  test_report(rc == CABLE_ERR_PLUGIN && strstr(buf, "bratuimp.f:32:") && strstr(buf, "ICND: never sets fi (argument 9), but NINT=1"),
+              "bratuimp.f with NINT=1: the ICND stub is called and refused: %s", buf);
+
+  const char *fg[] = {"gelf.f", "c.gelf", "gelf.auto", NULL};
+  stage("stpnt3_f", fg);
+  rc = replay("stpnt3_f", "gelf", "gelf", "gelf", &err);
+  test_report(rc == 0, "gelf.f (STPNT(NDIM,U,PAR)): runs (%s)", rc ? cable_error_format(&err, buf, sizeof buf) : "ok");
+  bf = cable_bfile_read(TMP "/stpnt3_f/b.gelf", &err);
+  if (test_true("b.gelf was written", bf != NULL)) {
+    const cable_bfile_branch *br = &bf->branch[0];
+    double s = fold_s();
+    test_rel("gelf.f: the fold at lambda*/4", col(br, "PAR(1)", row_of(br, 5, 0)), 2 * s * s / (cosh(s) * cosh(s)), 1e-8);
+  }
+  cable_bfile_free(bf);
+
+  /* a FUNC without DFDP: AUTO runs it with JAC=0 (it never reads DFDP), not
+     with JAC=1 */
+  const char *fw[] = {"wrongsig.f90", "c.wrongsig", NULL};
+  stage("bad", fw);
+  rc = replay("bad", "wrongsig", "wrongsig", "wrongsig", &err);
+  test_report(rc == 0, "wrongsig.f90 (FUNC without DFDP) with JAC=0: runs (%s)",
+              rc ? cable_error_format(&err, buf, sizeof buf) : "ok");
+  unlink(TMP "/bad/b.wrongsig");
+  unlink(TMP "/bad/s.wrongsig");
+  unlink(TMP "/bad/d.wrongsig");
+}
+
 static void bad_file(const char *name, const char *src, int line, const char *needle)
 {
   bad_run(name, NULL, src, CABLE_ERR_PLUGIN, line, needle);
@@ -635,9 +765,12 @@ int main(void)
   cache();
   bad_file("syntax", "syntax.f90", 8, "array reference");
   bad_file("nofunc", "nofunc.f90", 0, "does not define SUBROUTINE FUNC");
-  bad_file("wrongsig", "wrongsig.f90", 2, "has 7 arguments, AUTO passes 8");
+  auto_declarations();
+  bad_run("wrongsigjac", "wrongsig", "wrongsig.f90", CABLE_ERR_PLUGIN, 2,
+          "FUNC: has 7 arguments, but the run takes DFDP (argument 8) from it (JAC=1)");
+  bad_file("implicitfunc", "implicitfunc.f", 5, "FUNC: argument 2 (u) is REAL (single precision");
   bad_file("wrongsigc", "wrongsigc.c", 5, "conflicting types for");
-  bad_file("toomany", "toomany.f90", 6, "has 9 arguments, AUTO passes 8");
+  bad_file("toomany", "toomany.f90", 6, "has 9 arguments, AUTO passes 8, and uses argument 9 (extra)");
   test_true("a Fortran MODULE leaves no .mod file in the working or the run directory",
             !exists("bratu_consts.mod") && !exists(TMP "/bad/bratu_consts.mod"));
   bad_file("nopvls", "nopvls.c", 0, "pvls: the equation file does not define it");

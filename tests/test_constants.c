@@ -347,8 +347,35 @@ static void test_problem_keys(void)
                 !cable_constants_key_known_for(cable_problem_builtin("bratu"), "TORUS"));
 }
 
+/* AUTO's PAR: a keyword PAR={...} over a constants file's PAR updates the
+ * entries it names and keeps the others (before: it replaced the whole list,
+ * so PAR={'L': 0.5} over a file's {'T': 1.5, 'L2': 2.5, 5: 3.5} lost T, L2
+ * and PAR(5)). */
+static void test_par_update(void)
+{
+  cable_constants c;
+  cable_names n;
+  cable_error e;
+  cable_constants_init(&c);
+  int st = cable_constants_parse_string("c.par", "NDIM=2\nPAR = {'T': 1.5, 'L2': 2.5, 5: 3.5}\n", &c, &n,
+                                        problem_parnames, 20, &e);
+  test_true("c.par with PAR = {'T': 1.5, 'L2': 2.5, 5: 3.5} parses", st == 0 && c.npar_override == 3);
+  st = cable_constants_parse_override("PAR={'L': 0.5, 'L2': -1.0}", &c, &n, problem_parnames, 20, &e);
+  double want[6] = {1.5, 0.5, -1.0, NAN, 3.5, NAN};   /* by index: T, L, L2, -, PAR(5) */
+  int found[6] = {0};
+  for (int k = 0; k < c.npar_override; k++)
+    if (c.par_override[k].index >= 0 && c.par_override[k].index < 6) {
+      found[c.par_override[k].index]++;
+      test_abs("PAR override: the entry's value", c.par_override[k].value, want[c.par_override[k].index], 0.0);
+    }
+  test_true("PAR={'L': 0.5, 'L2': -1.0} over the file's PAR: 4 entries, each once (T and PAR(5) kept, L added, "
+            "L2 updated)",
+            st == 0 && c.npar_override == 4 && found[0] == 1 && found[1] == 1 && found[2] == 1 && found[4] == 1);
+}
+
 int main(void)
 {
+  test_par_update();
   test_every_key();
   test_bad_cases();
   test_names();

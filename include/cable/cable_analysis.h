@@ -103,6 +103,16 @@ CABLE_API double braid_first_integral_drift(const cable_solution *sol);
  * CABLE_ERR_NONFINITE at a singular state. */
 CABLE_API int braid_pressure_at(const cable_solution *sol, double t, double *p1, double *p2, double *sigma);
 
+/* The geometry along a braid solution at its stored points t_k (k = 0 ..
+ * NTST*NCOL): strand 1 r1, strand 2 r2 = r1 + Delta d1 and the contact curve
+ * c = r1 + (Delta/2) d1 ([3 npts] each, x y z per point), the contact
+ * pressures p1 (on strand 1 per unit length of strand 1), p2 (on strand 2 per
+ * unit length of strand 2) and sigma, the arclength of strand 2 ([npts]
+ * each).  Any output may be NULL.  0 or a cable_status (< 0) when sol is not
+ * a braid solution. */
+CABLE_API int braid_solution_curves(const cable_solution *sol, double *r1, double *r2, double *c, double *p1,
+                                    double *p2, double *sigma);
+
 /* Where p1 and p2 change sign (out->psign1, out->psign2) and their ranges:
  * node values are scanned for sign changes (p >= 0 counts as non-negative);
  * each one is refined by bisection on braid_pressure_at.  Two sign changes

@@ -158,6 +158,11 @@ typedef const cable_problem *cable_problem_entry_fn(void);
 CABLE_API const cable_problem *cable_problem_builtin(const char *name);
 /* The i-th built-in problem's name (0-based), NULL past the last. */
 CABLE_API const char *cable_problem_builtin_name(int i);
+/* The constants a built-in problem recommends, as constants text
+ * ("NTST=30, NCOL=7, ..."): the settings its scenes use.  A run with no
+ * constants file, no start and no earlier run in the session takes them
+ * as its defaults (doc/scripts.md); NULL when the problem has none. */
+CABLE_API const char *cable_problem_recommended(const char *name);
 
 /* What a front end calls before a run: pb's prepare, or *instance = pb when
  * it has none.  0, or a negative status with err (CABLE_ERR_NULL for a NULL

@@ -118,6 +118,13 @@ typedef struct cable_run_args {
  * sol_index outside sol_branch CABLE_ERR_RANGE, and a solution together with
  * a result CABLE_ERR_INPUT; *out is NULL then. */
 CABLE_API int cable_session_run(cable_session *s, const cable_run_args *a, cable_branch **out, cable_error *err);
+/* What a study needs to know about problem e (as a run's e= finds it: a
+ * built-in, an AUTO equation file in the session's directory, a plug-in):
+ * dimensions, parameters, components, keys and their defaults, the
+ * recommended constants, as text on out (`cable info e=NAME`, Python's
+ * info('NAME')).  0, or a negative status with err (an unknown problem). */
+CABLE_API int cable_session_info(cable_session *s, const char *e, FILE *out, cable_error *err);
+
 /* AUTO's load: the start a run with the same arguments would use, as a
  * one-solution branch, and the runner state of that run.  A name without IRS
  * gives the file's last solution.  When that run would start from STPNT

@@ -11,6 +11,7 @@
   X(CABLE_END_BOUNDS,       2, "a parameter or norm limit (RL0, RL1, A0, A1) was reached") \
   X(CABLE_END_UZSTOP,       3, "a user zero with UZSTOP was reached") \
   X(CABLE_END_STOP,         4, "a STOP condition was met") \
+  X(CABLE_END_LOOP,         5, "the branch closed on itself (a closed loop)") \
   X(CABLE_ERR_ALLOC,       -1, "out of memory") \
   X(CABLE_ERR_INPUT,       -2, "invalid input") \
   X(CABLE_ERR_NEWTON,      -3, "Newton iteration did not converge") \

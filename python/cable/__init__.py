@@ -43,7 +43,7 @@ def _delegate(name):
 
 for _n in ('run', 'r', 'load', 'ld', 'loadbd', 'bd', 'save', 'sv', 'merge', 'mb', 'relabel', 'rl', 'clean', 'cl',
            'delete', 'dl', 'copy', 'cp', 'append', 'ap', 'cd', 'wait', 'pr', 'printconstant', 'pc', 'analyze', 'plot', 'render', 'compare',
-           'overlap_free', 'branch_table'):
+           'overlap_free', 'branch_table', 'info'):
     globals()[_n] = _delegate(_n)
 del _n
 

@@ -187,7 +187,7 @@ COMMANDS = {
     'plot': ('pl', 'p2', 'commandPlotter'),
     'sl': ('solutionget', 'commandParseSolutionFile'), 'ch': ('changeconstant', 'cc', 'commandRunnerConfigFort2'),
     'render': (), 'compare': (),
-    'overlap_free': (), 'branch_table': (),
+    'overlap_free': (), 'branch_table': (), 'info': (),
 }
 
 
@@ -324,6 +324,15 @@ class Runner:
         """relabel(r): labels 1, 2, ...; relabel('A') rewrites the files A;
         relabel('A', 'B') writes A's relabelled into B; relabel(): the last run's."""
         return self._transform('relabel', True, name1, name2)
+
+    def info(self, e):
+        """A problem's parameters, components, keys with their defaults and the
+        constants it recommends (`cable info e=NAME`); printed, and returned as
+        text.  An equation file NAME.f90, .f or .c in the run directory counts,
+        as for run(e=NAME)."""
+        text = self.session.info(e)
+        print(text, end='')
+        return text
 
     def pr(self, parameter=None):
         """pr(): print the runner's constants (what the next run without a

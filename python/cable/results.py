@@ -10,11 +10,18 @@ import re
 
 import numpy as np
 
-from ._cable import Branch, CableError
+from ._cable import Branch, CableError, curves as _curves
 from .constants import Constants
 
 _SPEC = re.compile(r'^([A-Z][A-Z])(\d*)$')
 _TYPES = ('BP', 'LP', 'UZ', 'EP', 'MX', 'RG')
+
+
+# a braid solution's geometry by name: sol['x2'] is strand 2's x, sol['xc'] the
+# contact curve's, sol['p1'] the contact pressure (Solution.strand2, .contact, .pressure)
+_GEOMETRY_KEYS = {'x2': ('strand2', 0), 'y2': ('strand2', 1), 'z2': ('strand2', 2),
+                  'xc': ('contact', 0), 'yc': ('contact', 1), 'zc': ('contact', 2),
+                  'p1': ('p1', None), 'p2': ('p2', None)}
 
 
 class Parameters:
@@ -74,13 +81,15 @@ class Parameters:
 class Solution:
     """One labelled solution of a branch (AUTO's parseS.AUTOSolution)."""
 
-    __slots__ = ('_br', '_i', '_lab', '_ty', '_ibr', '_pt', '_par', '_note', '_kind', '_data', '_mbr', '_mlab')
+    __slots__ = ('_br', '_i', '_lab', '_ty', '_ibr', '_pt', '_par', '_note', '_kind', '_data', '_mbr', '_mlab',
+                 '_curv')
 
     def __init__(self, branch, index, info, mbr=0, mlab=0):
         self._br = branch
         self._i = index
         self._lab, self._ty, self._ibr, self._pt, self._par, self._note, self._kind = info
         self._data = None
+        self._curv = None
         # AUTO's _mbr, _mlab: the largest branch number and label of the
         # result this solution was taken from; a run from it numbers on after
         # them (AUTO's NEWLAB), as AUTO's r1('UZ2') does
@@ -146,6 +155,44 @@ class Solution:
     def coordnames(self):
         return [n if n else 'U(%d)' % (k + 1) for k, n in enumerate(self._br.unames)]
 
+    # --- a braid solution's geometry, at the stored points (t = sol['t']) -----------
+    def _geometry(self):
+        if self._curv is None:
+            self._curv = _curves(self._br, self._i)
+        return self._curv
+
+    @property
+    def strand1(self):
+        """Strand 1's centre line, shape (NTST*NCOL+1, 3): x1, y1, z1 at sol['t']."""
+        return self._geometry()['strand1'].copy()
+
+    @property
+    def strand2(self):
+        """Strand 2's centre line r2 = r1 + Delta d1, shape (NTST*NCOL+1, 3), at the same points
+        (strand 2's own arclength there is sol.sigma)."""
+        return self._geometry()['strand2'].copy()
+
+    @property
+    def contact(self):
+        """The contact curve (the braid axis) c = (r1 + r2)/2, shape (NTST*NCOL+1, 3)."""
+        return self._geometry()['contact'].copy()
+
+    @property
+    def pressure(self):
+        """The contact pressure along the contact curve: the force on strand 1 per unit length of
+        strand 1 (p1), one value per point of sol['t'] (doc/braid-equations.md)."""
+        return self._geometry()['p1'].copy()
+
+    @property
+    def pressure2(self):
+        """The contact force on strand 2 per unit length of strand 2 (p2 = p1 / sigma')."""
+        return self._geometry()['p2'].copy()
+
+    @property
+    def sigma(self):
+        """Strand 2's arclength at the points of sol['t'] (sigma(0) = 0, sigma(1) = L2)."""
+        return self._geometry()['sigma'].copy()
+
     @property
     def data(self):
         """Everything stored: LAB, BR, PT, TY, par, t, u, NTST, NCOL, icp, err."""
@@ -171,6 +218,10 @@ class Solution:
             return self._full()[key.lower()]
         if key == 'data':
             return self.data
+        if key in _GEOMETRY_KEYS and key not in self._br.unames and key not in self._br.parnames:
+            which, col = _GEOMETRY_KEYS[key]
+            g = self._geometry()[which]
+            return g[:, col].copy() if col is not None else g.copy()
         if isinstance(key, str):
             m = re.match(r'^U\((\d+)\)$', key)
             names = self._br.unames
@@ -182,7 +233,7 @@ class Solution:
             if key in names:
                 return self._full()['u'][:, names.index(key)].copy()
         raise CableError('%s: no such parameter or component (names: the problem\'s parameters, PAR(k), '
-                         'U(k), t, LAB, BR, PT, TY)' % (key,))
+                         'U(k), t, LAB, BR, PT, TY; a braid solution also x2, y2, z2, xc, yc, zc, p1, p2)' % (key,))
 
     def __contains__(self, key):
         try:
