@@ -68,6 +68,7 @@ int braid_pressure_at(const cable_solution *sol, double t, double *p1, double *p
 int braid_solution_curves(const cable_solution *sol, double *r1, double *r2, double *c, double *p1, double *p2,
                           double *sigma)
 {
+  if (!sol) return CABLE_ERR_NULL;
   int rc = braid_geometry_check(sol);
   if (rc != CABLE_SUCCESS) return rc;
   double delta = sol->par[BP_DELTA];

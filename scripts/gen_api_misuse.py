@@ -53,6 +53,7 @@ FIXTURE = {
     'const braid_analysis *const *': 'f->bas',
     'tube_distance_result *': '&f->tube', 'axis_passages *': '&f->ap',
     'cable_strands *': '&f->strands', 'cable_stab_result *': '&f->stab',
+    'FILE *': 'f->devnull',
     'const plot_annotation *': 'f->marks', 'const render_options *': '&f->ropt',
     # no valid module at hand without a compiler run or a plug-in file
     'cable_plugin *': None, 'const cable_plugin *': None,
@@ -118,6 +119,8 @@ OPTIONAL = {
     'cable_aufile_checkpoint': {'err'}, 'cable_aufile_close': {'err'},
     'cable_sfile_read': {'err'}, 'cable_sfile_find': {'err'}, 'cable_sfile_resolve_irs': {'err'},
     'cable_bfile_read': {'err'}, 'cable_stability_index': {'err'},
+    'cable_session_info': {'err'},
+    'braid_solution_curves': {'r1', 'r2', 'c', 'p1', 'p2', 'sigma'},
     'cable_autoeq_find': {'dir'}, 'cable_autoeq_open': {'err'},
     'cable_autoeq_problem': {'c', 'dat', 'err'},
     'cable_constants_parse_file': {'names', 'parnames', 'err'},
