@@ -8,6 +8,7 @@
 #include "cable/cable_status.h"
 
 #include "colloc_basis.h"
+#include "solution_mesh.h"
 
 cable_solution *cable_solution_alloc(int ndim, int ntst, int ncol, int npar, int nfpr)
 {
@@ -99,4 +100,18 @@ double cable_solution_measure(const cable_solution *s, int iplt, double l2)
     }
   }
   return sq ? sqrt(sum) : sum;
+}
+
+void solution_mesh_resample(const cable_solution *s, int ntst, double *mesh)
+{
+  int ntold = s->ntst, nc = s->ncol;
+  for (int j = 0; j <= ntst; j++) {
+    double q = (double)j * ntold / ntst;
+    int a = (int)q;
+    if (a >= ntold) a = ntold - 1;
+    double w = q - a;
+    mesh[j] = (1 - w) * s->t[a * nc] + w * s->t[(a + 1) * nc];
+  }
+  mesh[0] = 0.0;
+  mesh[ntst] = 1.0;
 }

@@ -13,6 +13,7 @@
 #include "cable/cable_fold.h"
 #include "cable/cable_status.h"
 #include "constants_check.h"
+#include "solution_mesh.h"
 
 struct cable_bpcont {
   cable_problem pb;             /* the extended problem; params = this struct */
@@ -363,17 +364,7 @@ const cable_solution *cable_bpcont_start(const cable_bpcont *f) { return f ? f->
 void cable_bpcont_mesh(const cable_bpcont *f, int ntst, double *mesh)
 {
   if (!f || !mesh || ntst < 1) return;
-  const cable_solution *s = f->start;
-  int ntold = s->ntst, nc = s->ncol;
-  for (int j = 0; j <= ntst; j++) {
-    double q = (double)j * ntold / ntst;
-    int a = (int)q;
-    if (a >= ntold) a = ntold - 1;
-    double w = q - a;
-    mesh[j] = (1 - w) * s->t[a * nc] + w * s->t[(a + 1) * nc];
-  }
-  mesh[0] = 0.0;
-  mesh[ntst] = 1.0;
+  solution_mesh_resample(f->start, ntst, mesh);
 }
 
 #define FAIL(st, ...)                  \

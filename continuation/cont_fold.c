@@ -10,6 +10,7 @@
 
 #include "cable/cable_status.h"
 #include "constants_check.h"
+#include "solution_mesh.h"
 
 struct cable_fold {
   cable_problem pb;             /* the extended problem; params = this struct */
@@ -261,17 +262,7 @@ void cable_fold_free(cable_fold *f)
 void cable_fold_mesh(const cable_fold *f, int ntst, double *mesh)
 {
   if (!f || !mesh || ntst < 1) return;
-  const cable_solution *s = f->start;
-  int ntold = s->ntst, nc = s->ncol;
-  for (int j = 0; j <= ntst; j++) {
-    double q = (double)j * ntold / ntst;
-    int a = (int)q;
-    if (a >= ntold) a = ntold - 1;
-    double w = q - a;
-    mesh[j] = (1 - w) * s->t[a * nc] + w * s->t[(a + 1) * nc];
-  }
-  mesh[0] = 0.0;
-  mesh[ntst] = 1.0;
+  solution_mesh_resample(f->start, ntst, mesh);
 }
 
 const cable_problem *cable_fold_problem(const cable_fold *f) { return f ? &f->pb : NULL; }

@@ -12,6 +12,7 @@
 #include <string.h>
 
 #include "cont_impl.h"
+#include "solution_mesh.h"
 
 /* The monitor is floored at this fraction of its maximum so that smooth parts
  * keep some resolution and the mesh ratio stays bounded. */
@@ -173,15 +174,7 @@ int cont_load_solution(cable_cont *cc, const cable_solution *src)
   }
   int nt = s->ntst, ntold = src->ntst, ncold = src->ncol;
   /* new mesh: the old mesh's density, resampled to NTST intervals */
-  for (int j = 0; j <= nt; j++) {
-    double q = (double)j * ntold / nt;
-    int a = (int)q;
-    if (a >= ntold) a = ntold - 1;
-    double f = q - a;
-    s->mesh[j] = (1 - f) * src->t[a * ncold] + f * src->t[(a + 1) * ncold];
-  }
-  s->mesh[0] = 0.0;
-  s->mesh[nt] = 1.0;
+  solution_mesh_resample(src, nt, s->mesh);
   remap(s, src->t, src->u, cc->x, ntold, ncold);
   int np = src->npar < cc->npar ? src->npar : cc->npar;
   for (int k = 0; k < np; k++) s->par[k] = src->par[k];
