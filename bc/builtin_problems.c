@@ -39,18 +39,20 @@ const char *cable_problem_builtin_name(int i)
  * c.link62mode): the flat branches' (from STPNT, double branch points found
  * by the singular-value test NSV=2) and the symmetric formulations' (switched
  * at a branch point, ISW=-1).  Measured (doc/scripts.md): DS, DSMAX and NTST,
- * NCOL are what make a keywords-only flat branch as fast as the scene's. */
+ * NCOL are what make a keywords-only flat branch as fast as the scene's.
+ * IPS=4: they are boundary-value problems (a run that leaves IPS at AUTO's
+ * default 1 is refused, cable_session.c). */
 static const struct {
   const char *name, *text;
 } recommended[] = {
-  {"braid_knot", "ICP=['T', 'L', 'L2', 'eps21', 'F', 'h', 'Ham'], NTST=30, NCOL=7, IAD=3, JAC=1, ISP=2, ILP=0, "
+  {"braid_knot", "IPS=4, ICP=['T', 'L', 'L2', 'eps21', 'F', 'h', 'Ham'], NTST=30, NCOL=7, IAD=3, JAC=1, ISP=2, ILP=0, "
                  "NSV=2, DS=5.0, DSMIN=1e-6, DSMAX=20.0, EPSL=1e-7, EPSU=1e-7, EPSS=1e-7"},
-  {"braid_knot_sym", "ICP=['T', 'L', 'L2', 'eps21', 'eps13', 'F', 'h', 'Ham'], NTST=30, NCOL=7, IAD=3, JAC=1, "
+  {"braid_knot_sym", "IPS=4, ICP=['T', 'L', 'L2', 'eps21', 'eps13', 'F', 'h', 'Ham'], NTST=30, NCOL=7, IAD=3, JAC=1, "
                      "ISW=-1, ISP=0, ILP=0, DS=0.05, DSMIN=1e-6, DSMAX=10.0, PREDICTOR=2, EPSL=1e-7, EPSU=1e-7, "
                      "EPSS=1e-7"},
-  {"braid_link", "ICP=['T', 'F', 'h', 'Ham', 'Phi', 'Lk', 'pmin', 'dmin'], NTST=100, NCOL=4, IAD=3, JAC=1, ISP=2, "
+  {"braid_link", "IPS=4, ICP=['T', 'F', 'h', 'Ham', 'Phi', 'Lk', 'pmin', 'dmin'], NTST=100, NCOL=4, IAD=3, JAC=1, ISP=2, "
                  "ILP=0, NSV=2, DS=1.0, DSMIN=1e-6, DSMAX=1.0, EPSL=1e-7, EPSU=1e-7, EPSS=1e-7"},
-  {"braid_link_sym", "ICP=['T', 'eps13', 'F', 'h', 'Ham', 'Phi', 'Lk', 'pmin', 'dmin'], NTST=100, NCOL=4, IAD=3, "
+  {"braid_link_sym", "IPS=4, ICP=['T', 'eps13', 'F', 'h', 'Ham', 'Phi', 'Lk', 'pmin', 'dmin'], NTST=100, NCOL=4, IAD=3, "
                      "JAC=1, ISW=-1, ISP=0, ILP=0, DS=0.05, DSMIN=1e-6, DSMAX=2.0, EPSL=1e-7, EPSU=1e-7, EPSS=1e-7"},
 };
 
