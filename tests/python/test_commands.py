@@ -409,9 +409,12 @@ def test_problem_keys_and_prepare(work):
     tests/test_script.c)."""
     rn = cable.Runner()
     cases = [
-        (dict(e='braid_knot'), "<no constants file>: IPS: IPS=1 (not set: AUTO's default) is a problem type "
+        # no constants file and no recommended constants (bratu): AUTO's IPS=1, refused
+        (dict(e='bratu'), "<no constants file>: IPS: IPS=1 (not set: AUTO's default) is a problem type "
                                "cable does not solve: cable solves boundary-value problems (IPS=4); write IPS = 4 "
                                "in the constants file (or give IPS=4)"),
+        # a braid problem's first run from keywords takes its recommended constants (IPS=4 among them)
+        (dict(e='braid_knot'), "PAR: a braid start needs the strand distance: PAR={'Delta': ...}"),
         (dict(e='braid_knot', IPS=4), "PAR: a braid start needs the strand distance: PAR={'Delta': ...}"),
         (dict(e='braid_link_sym', IPS=4), "e: 'braid_link_sym' has no start from STPNT: restart from a stored "
                                    "solution (run(sol) or IRS with s=)"),
