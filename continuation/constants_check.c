@@ -1,6 +1,7 @@
 /* Counts, indices and strings of a cable_constants struct (constants_check.h). */
 #include "constants_check.h"
 
+#include <stdio.h>
 #include <string.h>
 
 #include "cable/cable_status.h"
@@ -65,4 +66,16 @@ int cable_constants_consistent(const cable_constants *c, int npar, cable_error *
   for (int k = 0; k < c->npkey; k++)
     if ((rc = string_ok("problem key", c->pkey[k].name, sizeof c->pkey[k].name, err))) return rc;
   return 0;
+}
+
+int cable_ext_alloc_check(const char *fn, const cable_problem *pb, const cable_constants *c, char *msg, size_t len)
+{
+  if (!pb || !c) {
+    snprintf(msg, len, "%s: %s is NULL", fn, !pb ? "the problem" : "the constants");
+    return CABLE_ERR_NULL;
+  }
+  cable_error cerr;
+  int st = cable_constants_consistent(c, c->npar > pb->npar ? c->npar : pb->npar, &cerr);
+  if (st) snprintf(msg, len, "%s", cerr.msg);
+  return st;
 }

@@ -7,6 +7,7 @@
 
 #include "cable/cable_constants.h"
 #include "cable/cable_error.h"
+#include "cable/cable_problem.h"
 
 /* 0, or CABLE_ERR_SIZE (a count beyond its array or negative, a string that
  * fills its array without a terminating NUL) or CABLE_ERR_RANGE (a parameter
@@ -15,5 +16,10 @@
  * npar: the parameter slots of the run (the larger of NPAR and the problem's;
  * at most CABLE_NAMES_MAX is used). */
 int cable_constants_consistent(const cable_constants *c, int npar, cable_error *err);
+
+/* The common arguments of an extended problem's alloc (cable_fold_alloc,
+ * cable_bpcont_alloc): pb and c given, c consistent for pb's parameters.
+ * 0, or CABLE_ERR_NULL or the consistency status with msg (fn names the call). */
+int cable_ext_alloc_check(const char *fn, const cable_problem *pb, const cable_constants *c, char *msg, size_t len);
 
 #endif

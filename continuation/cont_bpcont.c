@@ -386,16 +386,7 @@ cable_bpcont *cable_bpcont_alloc(const cable_problem *pb, const cable_constants 
     msg = dummy_msg;
     len = sizeof dummy_msg;
   }
-  if (!pb || !c) {
-    *status = CABLE_ERR_NULL;
-    snprintf(msg, len, "cable_bpcont_alloc: %s is NULL", !pb ? "the problem" : "the constants");
-    return NULL;
-  }
-  cable_error cerr;
-  if ((*status = cable_constants_consistent(c, c->npar > pb->npar ? c->npar : pb->npar, &cerr)) != 0) {
-    snprintf(msg, len, "%s", cerr.msg);
-    return NULL;
-  }
+  if ((*status = cable_ext_alloc_check("cable_bpcont_alloc", pb, c, msg, len)) != 0) return NULL;
   cable_bpcont *f = calloc(1, sizeof *f);
   if (!f) {
     *status = CABLE_ERR_ALLOC;
