@@ -1,12 +1,7 @@
 """AUTO-07p's module AUTOCommands under its own name: scripts written for AUTO
 that `import AUTOCommands` or `from AUTOCommands import *` get cable's commands (the
-module runner's, cable.runner()).  Inside `cable replay` the top-level
-names AUTOclui and AUTOCommands are the script's own runner's commands
-(cable.script).  What AUTO has and cable not: doc/scripts.md."""
-from . import _delegate as _delegate_fn
-from .commands import command_names as _names
-
-__all__ = _names()
-for _n in __all__:
-    globals()[_n] = _delegate_fn(_n)
-del _n
+module runner's, cable.runner()), the same as AUTOclui's.  Inside `cable replay`
+the top-level names AUTOclui and AUTOCommands are the script's own runner's
+commands (cable.script).  What AUTO has and cable not: doc/scripts.md."""
+from .AUTOclui import *  # noqa: F401,F403 (the same commands)
+from .AUTOclui import __all__  # noqa: F401
