@@ -7,26 +7,34 @@ MODE    ?= release
 PYTHON  ?= /usr/bin/python3
 BUILD   := build/$(MODE)
 
-# Layers, lowest first.  Each folder is compiled with the public headers
-# (include/) and the folders of its own and lower layers only, so an upward
-# #include does not compile (doc/api.md has the picture; tests/test_layers.c
-# checks the sources too).
-LAYERS  := continuation equations bc graphics auto_iface
-MODULES := $(LAYERS)
+# Layers, lowest first (doc/api.md has the picture).  Each folder is
+# compiled with the public headers (include/) and the folders of its own and
+# lower layers only, so an upward #include does not compile
+# (tests/test_layers.c checks the sources too).  continuation/base is the
+# ground floor every layer may use; the command line (auto_iface/cli) is a
+# program over the library, the Python extension (auto_iface/python) sees the
+# public headers only: neither is part of libcable.
+LIB_LAYERS := continuation/base continuation equations bc graphics \
+              auto_iface/files auto_iface/autoeq auto_iface/session
+LAYERS  := $(LIB_LAYERS) auto_iface/cli
 WARN    := -Wall -Wextra -Werror -Wshadow -Wpointer-arith -Wcast-align \
            -Wstrict-prototypes -Wmissing-prototypes -Wwrite-strings \
            -Wundef -Wformat=2 -Wvla -Wdouble-promotion -Wnull-dereference
 CSTD    := -std=c11 -D_POSIX_C_SOURCE=200809L
 SYSINCS := -I/usr/include/suitesparse
 PUBINC  := -Iinclude
-INCS_continuation := $(PUBINC) -Icontinuation
-INCS_equations    := $(INCS_continuation) -Iequations
-INCS_bc           := $(INCS_equations) -Ibc
-INCS_graphics     := $(INCS_bc) -Igraphics
-INCS_auto_iface   := $(INCS_graphics) -Iauto_iface
-INCS_tests        := $(INCS_auto_iface) -Itests
-# the folder's include path: the first path component of the source
-layer_incs = $(INCS_$(firstword $(subst /, ,$(1)))) $(SYSINCS)
+INCS_continuation/base  := $(PUBINC) -Icontinuation/base
+INCS_continuation       := $(INCS_continuation/base) -Icontinuation
+INCS_equations          := $(INCS_continuation) -Iequations
+INCS_bc                 := $(INCS_equations) -Ibc
+INCS_graphics           := $(INCS_bc) -Igraphics
+INCS_auto_iface/files   := $(INCS_graphics) -Iauto_iface/files
+INCS_auto_iface/autoeq  := $(INCS_auto_iface/files) -Iauto_iface/autoeq
+INCS_auto_iface/session := $(INCS_auto_iface/autoeq) -Iauto_iface/session
+INCS_auto_iface/cli     := $(INCS_auto_iface/session) -Iauto_iface/cli
+INCS_tests              := $(INCS_auto_iface/cli) -Itests
+# the folder's include path: the source's folder (tests/: the tests')
+layer_incs = $(INCS_$(patsubst %/,%,$(dir $(1)))) $(SYSINCS)
 OPT_release := -O2 -g
 OPT_asan    := -O1 -g -fno-omit-frame-pointer -fsanitize=address,undefined -fno-sanitize-recover=all
 OPT_fuzz    := -O1 -g -fsanitize=fuzzer-no-link,address,undefined
@@ -40,21 +48,23 @@ LIBS_PRE  := -lsundials_kinsol -lsundials_sunlinsolklu -lsundials_sunmatrixspars
 LIBS_POST := -lcairo -ldl -lpthread -lm
 LIBS    := $(LIBS_PRE) -llapacke -llapack -lblas $(LIBS_POST)
 # libcable.so and the Python extension carry a private OpenBLAS (static, its
-# symbols hidden), set to one thread when loaded (continuation/blas_private.c):
+# symbols hidden), set to one thread when loaded (continuation/base/blas_private.c):
 # a host's own threaded BLAS (numpy's) then neither slows cable down nor is
 # changed by it.  The cable program and the tests use the shared BLAS.
 MULTIARCH := $(shell dpkg-architecture -qDEB_HOST_MULTIARCH 2>/dev/null || echo x86_64-linux-gnu)
-PRIVBLAS_OBJ := $(BUILD)/continuation/blas_private.o
+PRIVBLAS_OBJ := $(BUILD)/continuation/base/blas_private.o
 LIBS_PRIVBLAS := -Wl,--exclude-libs,liblapacke.a:libopenblas.a $(LIBS_PRE) /usr/lib/$(MULTIARCH)/liblapacke.a \
                  /usr/lib/$(MULTIARCH)/openblas-pthread/libopenblas.a -lgfortran $(LIBS_POST)
 
-PY_SRCS  := $(wildcard auto_iface/pycable_*.c)
-LIB_SRCS := $(filter-out auto_iface/cable_main.c continuation/blas_private.c $(PY_SRCS),$(wildcard $(addsuffix /*.c,$(MODULES))))
+PY_SRCS  := $(wildcard auto_iface/python/*.c)
+CLI_SRCS := $(wildcard auto_iface/cli/*.c)
+CLI_OBJS := $(CLI_SRCS:%.c=$(BUILD)/%.o)
+LIB_SRCS := $(filter-out continuation/base/blas_private.c,$(wildcard $(addsuffix /*.c,$(LIB_LAYERS))))
 LIB_OBJS := $(LIB_SRCS:%.c=$(BUILD)/%.o)
 GEN_OBJS := $(BUILD)/gen/autoeq_compat_text.o
-# auto_iface/auto_compat: the files cable writes next to an AUTO equation file it
-# compiles (auto_iface/autoeq_build.c), embedded as C strings
-COMPAT_FILES := $(sort $(wildcard auto_iface/auto_compat/*))
+# auto_iface/autoeq/auto_compat: the files cable writes next to an AUTO equation
+# file it compiles (auto_iface/autoeq/autoeq_build.c), embedded as C strings
+COMPAT_FILES := $(sort $(wildcard auto_iface/autoeq/auto_compat/*))
 TEST_SRCS := $(wildcard tests/test_*.c)
 TEST_BINS := $(TEST_SRCS:tests/%.c=$(BUILD)/tests/%)
 BENCH_SRCS := $(wildcard tests/bench_*.c)
@@ -72,7 +82,7 @@ PREFIX   ?= /usr/local
 DEPS_OK  := build/.deps-ok
 
 # The Python package: python/cable/*.py and the extension cable._cable
-# (auto_iface/pycable_*.c, the public API only, linked with libcable.a), put
+# (auto_iface/python/*.c, the public API only, linked with libcable.a), put
 # together in $(BUILD)/python where `cable replay` and the tests find it.
 PY_INC   = $(shell $(PYTHON) -c "import sysconfig; print(sysconfig.get_paths()['include'])")
 NP_INC   = $(shell $(PYTHON) -c "import numpy; print(numpy.get_include())")
@@ -98,9 +108,9 @@ $(LIB_OBJS): $(BUILD)/%.o: %.c | $(DEPS_OK)
 # The extension sees the public headers and its own folder only.
 $(PY_OBJS): $(BUILD)/%.o: %.c | $(DEPS_OK)
 	@mkdir -p $(dir $@)
-	$(CC) $(CFLAGS) $(PUBINC) -Iauto_iface -isystem $(PY_INC) -isystem $(NP_INC) -c $< -o $@
+	$(CC) $(CFLAGS) $(PUBINC) -Iauto_iface/python -isystem $(PY_INC) -isystem $(NP_INC) -c $< -o $@
 
-$(BUILD)/auto_iface/cable_main.o: EXTRA_DEFS := -DCABLE_PYTHON='"$(PYTHON)"'
+$(BUILD)/auto_iface/cli/cable_main.o: EXTRA_DEFS := -DCABLE_PYTHON='"$(PYTHON)"'
 
 $(BUILD)/%.o: %.c | $(DEPS_OK)
 	@mkdir -p $(dir $@)
@@ -120,7 +130,7 @@ $(BUILD)/gen/autoeq_compat_text.c: $(COMPAT_FILES) Makefile
 	 } > $@.tmp && mv $@.tmp $@
 
 $(GEN_OBJS): $(BUILD)/gen/%.o: $(BUILD)/gen/%.c | $(DEPS_OK)
-	$(CC) $(CFLAGS) $(LIBFLAGS) $(INCS_auto_iface) $(SYSINCS) -c $< -o $@
+	$(CC) $(CFLAGS) $(LIBFLAGS) $(INCS_auto_iface/autoeq) $(SYSINCS) -c $< -o $@
 
 # The static library serves the test programs (they reach private functions);
 # programs and plug-ins outside the tree use libcable.so.
@@ -144,7 +154,9 @@ $(PYPKG)/%.py: python/cable/%.py
 
 python: $(PY_SO) $(PY_FILES)
 
-$(BUILD)/cable: $(BUILD)/auto_iface/cable_main.o $(LIBCABLE)
+# The command line: a program over the library (linked with the static
+# archive, as the tests are); libcable carries no command.
+$(BUILD)/cable: $(CLI_OBJS) $(LIBCABLE)
 	$(CC) $(LDFLAGS) -rdynamic $^ $(LIBS) -o $@
 
 cable: $(BUILD)/cable
@@ -248,4 +260,4 @@ help:
 	@echo "make fuzz       fuzz the parsers (libFuzzer, 10 minutes)"
 
 .PRECIOUS: $(BUILD)/%.o $(BUILD)/tests/%.o
--include $(LIB_OBJS:.o=.d) $(GEN_OBJS:.o=.d) $(PY_OBJS:.o=.d) $(TEST_BINS:=.d) $(API_BINS:=.d) $(BENCH_BINS:=.d) $(PLUGINS:.so=.d) $(BUILD)/auto_iface/cable_main.d
+-include $(LIB_OBJS:.o=.d) $(GEN_OBJS:.o=.d) $(PY_OBJS:.o=.d) $(TEST_BINS:=.d) $(API_BINS:=.d) $(BENCH_BINS:=.d) $(PLUGINS:.so=.d) $(CLI_OBJS:.o=.d)

@@ -39,11 +39,11 @@ CC=clang-14
 FLAGS=(-std=c11 -D_POSIX_C_SOURCE=200809L -g -O1 -fno-omit-frame-pointer
        -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined
        -Wall -Wextra -Werror -Wshadow -Wstrict-prototypes -Wmissing-prototypes -Wvla
-       -Iinclude -Icontinuation -Iauto_iface -Iequations)
-common=(continuation/cable_error.c continuation/cable_status.c)
-srcs_constants=(auto_iface/constants_parse.c auto_iface/names.c continuation/cable_constants.c
-                auto_iface/aufile_read.c continuation/cable_solution.c continuation/cable_problem.c)
-srcs_sfile=(auto_iface/aufile_read.c auto_iface/names.c continuation/cable_constants.c
+       -Iinclude -Icontinuation/base -Icontinuation -Iequations -Iauto_iface/files)
+common=(continuation/base/cable_error.c continuation/base/cable_status.c)
+srcs_constants=(auto_iface/files/constants_parse.c auto_iface/files/names.c continuation/cable_constants.c
+                auto_iface/files/aufile_read.c continuation/cable_solution.c continuation/cable_problem.c)
+srcs_sfile=(auto_iface/files/aufile_read.c auto_iface/files/names.c continuation/cable_constants.c
             continuation/cable_solution.c continuation/cable_problem.c)
 # inputs longer than this are cut: real constants files are a few
 # kB; s-files are larger, and a few solutions of a small NTST cover the reader
