@@ -1,8 +1,11 @@
 /* The layer rule (doc/api.md): a folder includes only the public headers
  * (include/cable/), its own headers and those of the layers below it:
  *
- *   continuation < equations < bc < graphics < auto_iface
+ *   continuation/base < continuation < equations < bc < graphics
+ *     < auto_iface/files < auto_iface/autoeq < auto_iface/session < auto_iface/cli
  *
+ * (continuation/base: the ground floor every layer may use; the Python
+ * extension, auto_iface/python, sees the public headers only.)
  * The Makefile gives each folder exactly those include paths, so an upward
  * include does not compile; this test reads the sources as well, so that the
  * rule also holds for headers no .c file includes yet.  Public headers
@@ -15,7 +18,9 @@
 
 #include "harness.h"
 
-static const char *const layers[] = {"continuation", "equations", "bc", "graphics", "auto_iface"};
+static const char *const layers[] = {"continuation/base", "continuation",   "equations",
+                                     "bc",                "graphics",       "auto_iface/files",
+                                     "auto_iface/autoeq", "auto_iface/session", "auto_iface/cli"};
 #define NLAYERS ((int)(sizeof layers / sizeof layers[0]))
 
 static int file_exists(const char *dir, const char *name)
@@ -123,6 +128,21 @@ static void check_unique_names(void)
     }
     closedir(d);
   }
+  /* the extension's folder as well: its headers share the include space of
+     the tests */
+  for (int a = 0; a < NLAYERS; a++) {
+    DIR *d = opendir(layers[a]);
+    if (!d) continue;
+    struct dirent *e;
+    while ((e = readdir(d)) != NULL) {
+      size_t n = strlen(e->d_name);
+      if (n >= 3 && strcmp(e->d_name + n - 2, ".h") == 0 && file_exists("auto_iface/python", e->d_name)) {
+        test_report(0, "header %s is in both %s/ and auto_iface/python/", e->d_name, layers[a]);
+        dup++;
+      }
+    }
+    closedir(d);
+  }
   test_true("private header names are unique across the layers", dup == 0);
 }
 
@@ -140,6 +160,17 @@ int main(void)
     test_true(what, bad == 0 && nfiles > before);
   }
   int before = nfiles;
+  test_true("the Python extension (auto_iface/python) includes only public headers and its own",
+            check_dir("auto_iface/python", -2, &nfiles) == 0 && nfiles > before);
+  before = nfiles;
+  test_true("the files written next to an equation file (auto_iface/autoeq/auto_compat) include only their own",
+            check_dir("auto_iface/autoeq/auto_compat", -2, &nfiles) == 0 && nfiles > before);
+  /* a source file straight in auto_iface/ would belong to no layer (and the
+     Makefile would not build it) */
+  before = nfiles;
+  int loose = check_dir("auto_iface", -2, &nfiles);
+  test_int("no source file lies in auto_iface/ outside its sub-folders", nfiles - before + loose, 0);
+  before = nfiles;
   test_true("test plug-ins include only public headers",
             check_dir("tests/plugins", -2, &nfiles) == 0 && nfiles > before);
   before = nfiles;
@@ -147,17 +178,31 @@ int main(void)
   if (nfiles > before) test_true("API tests include only public headers", bad == 0);
   check_unique_names();
 
-  /* The checker itself must see a violation: an engine file (level 0)
-   * that includes the graphics layer's plot.h. */
+  /* The checker itself must see a violation: a ground-floor file (level 0)
+   * that includes the graphics layer's plot.h, and one that includes the
+   * engine's cont_impl.h (the floor just above). */
   mkdir("tests/tmp", 0755);
   mkdir("tests/tmp/layers", 0755);
   FILE *f = fopen("tests/tmp/layers/planted.c", "w");
   int planted = -1;
   if (f) {
-    fputs("#include \"plot.h\"\n#include \"cable/cable_status.h\"\n", f);
+    fputs("#include \"plot.h\"\n#include \"cable/cable_status.h\"\n#include \"cont_impl.h\"\n", f);
     fclose(f);
     planted = check_file("tests/tmp/layers", "planted.c", 0, 0);
   }
-  test_int("a planted upward include is reported", planted, 1);
+  test_int("two planted upward includes of a ground-floor file are reported", planted, 2);
+  /* and between the sub-folders of auto_iface: a file of the AUTO files'
+     layer that includes the session's private header */
+  int files_level = -1;
+  for (int k = 0; k < NLAYERS; k++)
+    if (strcmp(layers[k], "auto_iface/files") == 0) files_level = k;
+  f = fopen("tests/tmp/layers/planted_files.c", "w");
+  planted = -1;
+  if (f) {
+    fputs("#include \"cable_session_impl.h\"\n#include \"atomic_file.h\"\n", f);
+    fclose(f);
+    planted = check_file("tests/tmp/layers", "planted_files.c", files_level, 0);
+  }
+  test_int("a planted include of auto_iface/session from auto_iface/files is reported", planted, 1);
   return test_summary();
 }
