@@ -6,7 +6,7 @@
 #ifndef CABLE_PLOT_H
 #define CABLE_PLOT_H
 
-#include "cable/cable_pictures.h"   /* the public option types */
+#include "cable/cable_graphics.h"   /* the public option types */
 
 typedef struct {
   const char *name;   /* legend entry; NULL -> "branch <index+1>" */

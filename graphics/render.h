@@ -6,7 +6,7 @@
 #ifndef CABLE_RENDER_H
 #define CABLE_RENDER_H
 
-#include "cable/cable_pictures.h"   /* the public option types */
+#include "cable/cable_graphics.h"   /* the public option types */
 
 typedef struct {
   int n;                 /* centreline points, >= 2 */

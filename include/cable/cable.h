@@ -21,6 +21,7 @@
 #include "cable/cable_plugin.h"       /* problems from shared objects */
 #include "cable/cable_autoeq.h"       /* AUTO equation files (NAME.f90, NAME.f, NAME.c) */
 #include "cable/cable_analysis.h"     /* analysis of braid solutions */
+#include "cable/cable_graphics.h"     /* the option types of the pictures */
 #include "cable/cable_pictures.h"     /* bifurcation diagrams and 3-D pictures */
 #include "cable/cable_session.h"      /* AUTO's runner: runs, results, files (the Python package) */
 #include "cable/cable_version.h"

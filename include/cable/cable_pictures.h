@@ -7,33 +7,8 @@
 
 #include "cable/cable_api.h"
 #include "cable/cable_error.h"
+#include "cable/cable_graphics.h"   /* the option types: plot marks, render options */
 #include "cable/cable_solution.h"
-
-/* Extra marks at arbitrary data points, e.g. Fig. 12.2's "(a)".."(d)". */
-typedef struct {
-  double x, y;
-  const char *text;   /* NULL -> no text */
-  int filled;         /* 1: filled black circle, 0: open circle */
-} plot_annotation;
-
-enum {
-  RENDER_COLORMAP_NONE = 0,       /* one colour per tube (render_tube.rgb) */
-  RENDER_COLORMAP_SEQUENTIAL = 1, /* viridis over [min, max] of the scalars */
-  RENDER_COLORMAP_DIVERGING = 2   /* blue-white-red over [-m, m], m = max |scalar| */
-};
-
-typedef struct {
-  int width, height;     /* pixels; <= 0 -> 600 */
-  double view_dir[3];    /* direction the camera looks along; zero -> the
-                            direction of least extent of the centreline points
-                            (the knot is seen "from above") */
-  double up[3];          /* picture's up direction; zero (or parallel to the
-                            view) -> world z, or world y when looking along z */
-  int colormap;          /* RENDER_COLORMAP_*: colour tubes that have a scalar
-                            and draw a colour bar on the right */
-  double thicken;        /* draw radius * thicken; <= 0 -> automatic: thin
-                            tubes are widened to RENDER_MIN_RADIUS_PX pixels */
-} render_options;
 
 /* Diagram of the branches of b-files (dir/bfiles[i]; dir may be NULL): x and
  * y are column headings (NULL: the principal parameter, and F when present,
