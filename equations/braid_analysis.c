@@ -12,6 +12,7 @@
 #include "braid_state.h"
 #include "cable/cable_status.h"
 #include "curve_interp.h"
+#include "ribbon.h"
 
 static double wrap_2pi(double a)
 {

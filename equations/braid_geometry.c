@@ -183,34 +183,3 @@ int braid_contact_curvature(const cable_solution *sol, int n, double *kappa, dou
   if (kappa_max) *kappa_max = kmax;
   return CABLE_SUCCESS;
 }
-
-int braid_topology_compute(const cable_solution *sol, int nsamples, braid_topology *out)
-{
-  if (!out || nsamples < 0) return CABLE_ERR_INPUT;
-  braid_ribbon rb;
-  int rc = braid_ribbon_compute(sol, 0, &rb);
-  if (rc != CABLE_SUCCESS) return rc;
-  out->lk = rb.lk;
-  out->tw = rb.tw;
-  out->wr = rb.wr;
-  out->wr_err = rb.wr_err;
-  out->resolved = rb.resolved;
-  out->closure = rb.closure;
-  out->lk_defect = rb.lk_defect;
-  int n = nsamples > 0 ? nsamples : BRAID_TOPOLOGY_SAMPLES;
-  if (n < 3) return CABLE_ERR_INPUT;
-  /* n + 1 samples uniform in t; the last repeats the first on a closed axis */
-  braid_curves *bc = braid_curves_alloc(n + 1);
-  if (!bc) return CABLE_ERR_ALLOC;
-  rc = braid_curves_from_solution(sol, bc);
-  if (rc == CABLE_SUCCESS) rc = knot_type_identify(bc->c, n, &out->axis);
-  braid_curves_free(bc);
-  if (rc != CABLE_SUCCESS) return rc;
-  /* writhe of the minimal diagram: torus knots' minimal diagrams are closed
-   * positive (right-handed) or negative braids, so it is handedness x
-   * crossing number; the unknot's and the amphichiral figure-eight's are 0 */
-  const knot_type_result *k = &out->axis;
-  if (k->crossing_number < 0 || (k->torus_p > 0 && k->handedness == 0)) out->lk_in_tube = NAN;
-  else out->lk_in_tube = out->lk - (double)(k->handedness * k->crossing_number);
-  return CABLE_SUCCESS;
-}

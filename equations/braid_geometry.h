@@ -55,10 +55,4 @@ double braid_point_contact_curvature(const braid_point *p);
  * t, both ends included) and its maximum (either pointer may be NULL). */
 int braid_contact_curvature(const cable_solution *sol, int n, double *kappa, double *kappa_max);
 
-
-/* nsamples: polygon vertices for the knot type of the axis (0: default
- * BRAID_TOPOLOGY_SAMPLES). */
-#define BRAID_TOPOLOGY_SAMPLES 2000
-int braid_topology_compute(const cable_solution *sol, int nsamples, braid_topology *out);
-
 #endif
