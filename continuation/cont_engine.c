@@ -55,14 +55,6 @@ typedef struct {
   int unresolved;                 /* still two separate crossings after the last split */
 } pencil_result;
 
-void cont_set_error(cable_cont *cc, const char *fmt, ...)
-{
-  va_list ap;
-  va_start(ap, fmt);
-  vsnprintf(cc->err, sizeof cc->err, fmt, ap);
-  va_end(ap);
-}
-
 const char *cable_cont_error(const cable_cont *cc)
 {
   return cc ? cc->err : "no continuation handle (NULL)";
@@ -213,50 +205,6 @@ fail:
   return NULL;
 }
 
-/* A converged point whose stored nodes leave FUNC's domain is rejected like
- * a failed corrector (recoverable: the step is halved), or ends the run when
- * FUNC says the failure is fatal. */
-static int check_nodes(cable_cont *cc, const double *x)
-{
-  int node = 0;
-  int st = colloc_system_check_nodes(cc->sys, x, &node);
-  if (st == 0) return CABLE_SUCCESS;
-  const colloc_system *s = cc->sys;
-  int j = node / s->ncol, k = node % s->ncol;
-  double t = j < s->ntst ? s->mesh[j] + (s->mesh[j + 1] - s->mesh[j]) * k / s->ncol : s->mesh[s->ntst];
-  snprintf(cc->rejected, sizeof cc->rejected,
-           "FUNC rejects the converged solution at t = %.6g (node %d, status %d)", t, node, st);
-  return st < 0 ? CABLE_ERR_CALLBACK : CABLE_ERR_RECOVERABLE;
-}
-
-/* Predictor x0 + ds xdot0, then Newton on the collocation system closed by the
- * pseudo-arclength equation <x - x0, xdot0> = ds. */
-int cont_correct(cable_cont *cc, const double *x0, const double *xdot0, double ds, double *x)
-{
-  for (int i = 0; i < cc->n; i++) x[i] = x0[i] + ds * xdot0[i];
-  return cont_correct_from(cc, x0, xdot0, ds, x);
-}
-
-/* Newton from the initial guess in x instead of the linear predictor (the
- * locating iterations start from the interpolant of the bracket's ends). */
-int cont_correct_from(cable_cont *cc, const double *x0, const double *xdot0, double ds, double *x)
-{
-  colloc_system *s = cc->sys;
-  size_t n = (size_t)cc->n;
-  memcpy(s->x0, x0, n * sizeof *x0);
-  memcpy(s->xdot0, xdot0, n * sizeof *xdot0);
-  s->ds = ds;
-  s->closing = COLLOC_CLOSE_ARCLENGTH;
-  int rc = colloc_newton_solve(cc->nw, x);
-  cc->newton_iters = colloc_newton_iterations(cc->nw);
-  cc->cnt.correct++;
-  cc->cnt.newton_iters += cc->newton_iters;
-  cc->cnt.newton_fact += colloc_newton_setups(cc->nw);
-  cc->rejected[0] = '\0';
-  if (rc == CABLE_SUCCESS) rc = check_nodes(cc, x);
-  return rc;
-}
-
 static double principal(const cable_cont *cc, const double *x)
 {
   return x[cc->n - cc->nfpr];
@@ -306,7 +254,7 @@ static int first_point(cable_cont *cc)
     s->fixpar = 0;
     cc->newton_iters = colloc_newton_iterations(cc->nw);
     cc->rejected[0] = '\0';
-    if (rc == CABLE_SUCCESS) rc = check_nodes(cc, cc->x);
+    if (rc == CABLE_SUCCESS) rc = cont_check_nodes(cc, cc->x);
     if (rc != CABLE_SUCCESS) {
       cont_set_error(cc, "the starting solution did not converge (%s; %s)", cable_status_message(rc),
                      cc->rejected[0] ? cc->rejected : colloc_newton_message(cc->nw));
@@ -332,7 +280,7 @@ static int first_point(cable_cont *cc)
       rc = colloc_newton_solve(cc->nw, cc->x);
       cc->newton_iters = colloc_newton_iterations(cc->nw);
       cc->rejected[0] = '\0';
-      if (rc == CABLE_SUCCESS) rc = check_nodes(cc, cc->x);
+      if (rc == CABLE_SUCCESS) rc = cont_check_nodes(cc, cc->x);
     }
     if (rc != CABLE_SUCCESS) {
       cont_set_error(cc, "the restart with the parameters PAR changed did not converge (%s; %s)",

@@ -3,6 +3,9 @@
 #ifndef CABLE_CONT_IMPL_H
 #define CABLE_CONT_IMPL_H
 
+#include <stdarg.h>
+#include <stdio.h>
+
 #include "abd_solver.h"
 #include "cable/cable_cont.h"
 #include "colloc_jac.h"
@@ -131,7 +134,6 @@ void cont_normalize(cable_cont *cc, double *v);
 int cont_smallest_sv(cable_cont *cc, int k, double *sv, double *vecs);
 
 /* cont_special.c */
-void cont_tests_fill(cable_cont *cc, const double *x, const double *xdot, cont_tests *tf);
 int cont_find_event(const cable_cont *cc, const cont_tests *a, const cont_tests *b, int *which);
 /* The branch-point test function's value (the one whose sign change is a BP):
  * the signed smallest singular value; 0 when ISP and NSV are both 0. */
@@ -196,10 +198,23 @@ int cont_store_solution(cable_cont *cc, int itp, int lab);
 /* cont_switch.c: the direction of the bifurcating branch at a BP start */
 int cont_switch_direction(cable_cont *cc);
 
-/* cont_engine.c */
+/* cont_correct.c: the corrector and the test functions at one point */
 int cont_correct(cable_cont *cc, const double *x0, const double *xdot0, double ds, double *x);
 /* the same corrector from the initial guess x (on the hyperplane of ds) */
 int cont_correct_from(cable_cont *cc, const double *x0, const double *xdot0, double ds, double *x);
-void cont_set_error(cable_cont *cc, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+/* CABLE_SUCCESS, or the status of a converged point whose nodes FUNC rejects
+ * (cc->rejected says where) */
+int cont_check_nodes(cable_cont *cc, const double *x);
+void cont_tests_fill(cable_cont *cc, const double *x, const double *xdot, cont_tests *tf);
+
+/* The handle's error text (cable_cont_error); every part of the engine sets
+ * it, so it lives here rather than in one of them. */
+__attribute__((format(printf, 2, 3))) static inline void cont_set_error(cable_cont *cc, const char *fmt, ...)
+{
+  va_list ap;
+  va_start(ap, fmt);
+  vsnprintf(cc->err, sizeof cc->err, fmt, ap);
+  va_end(ap);
+}
 
 #endif

@@ -41,52 +41,6 @@
  * (cont_check_dip below; locate() when the corrector fails inside a bracket) */
 #define CONT_SV_ZERO_REL 1.0e-2
 
-static double param_value(const cable_cont *cc, const double *x, int k)
-{
-  const double *p = x + (cc->n - cc->nfpr);
-  for (int q = 0; q < cc->nfpr; q++)
-    if (cc->sys->icp[q] == k) return p[q];
-  return cc->sys->par[k];
-}
-
-/* PVLS at the point x into cc->pvsol->par (its other parameters are the
- * run's); 0 on success. */
-static int pvls_at(cable_cont *cc, const double *x)
-{
-  cable_solution *sol = cc->pvsol;
-  const colloc_system *s = cc->sys;
-  int npts = s->ntst * s->ncol + 1;
-  if (sol->ntst != s->ntst) return 1; /* the mesh size is fixed for a run: not usable, not PVLS's failure */
-  colloc_system_times(s, sol->t);
-  memcpy(sol->u, x, (size_t)npts * (size_t)cc->ndim * sizeof *sol->u);
-  memcpy(sol->par, s->par, (size_t)cc->npar * sizeof *sol->par);
-  const double *p = x + (cc->n - cc->nfpr);
-  for (int q = 0; q < cc->nfpr; q++) {
-    sol->par[s->icp[q]] = p[q];
-    sol->icp[q] = s->icp[q];
-  }
-  sol->pvls_icp = cc->c.icp;
-  sol->pvls_nicp = cc->c.nicp;
-  sol->err_est = -1.0;
-  return cc->pb->pvls(sol, sol->par, cc->pb->params);
-}
-
-void cont_tests_fill(cable_cont *cc, const double *x, const double *xdot, cont_tests *tf)
-{
-  tf->lp = xdot[cc->n - cc->nfpr];
-  int pvst = cc->pvsol && cc->c.nuzr > 0 ? pvls_at(cc, x) : 1;
-  int pv = pvst == 0;
-  if (pvst < 0 && !cc->pvls_fatal) cc->pvls_fatal = pvst;   /* fatal: reported when the point is stored */
-  for (int k = 0; k < cc->c.nuzr; k++) {
-    int j = cc->c.uzr[k].par;
-    double v = param_value(cc, x, j);
-    int free_par = 0;
-    for (int q = 0; q < cc->nfpr; q++) free_par |= cc->sys->icp[q] == j;
-    if (pv && !free_par) v = cc->pvsol->par[j];
-    tf->uz[k] = v - cc->c.uzr[k].value;
-  }
-}
-
 static double bp_test(const cont_tests *t) { return t->det_sign * (t->sv1 > 0 ? t->sv1 : 1.0); }
 
 double cont_bp_value(const cable_cont *cc, const cont_tests *t)
