@@ -17,11 +17,8 @@
 #include <sys/stat.h>
 
 #include "harness.h"
+#include "layer_dirs.h"
 
-static const char *const layers[] = {"continuation/base", "continuation",   "equations",
-                                     "bc",                "graphics",       "auto_iface/files",
-                                     "auto_iface/autoeq", "auto_iface/session", "auto_iface/cli"};
-#define NLAYERS ((int)(sizeof layers / sizeof layers[0]))
 
 static int file_exists(const char *dir, const char *name)
 {
@@ -38,7 +35,7 @@ static int is_source(const char *name)
 }
 
 /* Checks every `#include "X"` of one file.  level: the file's layer (0 ..
- * NLAYERS-1), -1 for a public header, -2 for a folder that sees only the
+ * NLAYER_DIRS-1), -1 for a public header, -2 for a folder that sees only the
  * public headers and itself.  Returns the number of violations (each
  * printed as a FAIL line when report is 1, as a note otherwise). */
 static int check_file(const char *dir, const char *name, int level, int report)
@@ -77,8 +74,8 @@ static int check_file(const char *dir, const char *name, int level, int report)
       why = "only public headers are visible here";
     } else {
       int found = -1;
-      for (int k = 0; k < NLAYERS; k++)
-        if (file_exists(layers[k], inc)) found = k;
+      for (int k = 0; k < NLAYER_DIRS; k++)
+        if (file_exists(layer_dirs[k], inc)) found = k;
       if (found < 0) why = "not found in any layer";
       else if (found > level) why = "upward include (a higher layer's header)";
     }
@@ -113,16 +110,16 @@ static int check_dir(const char *dir, int level, int *nfiles)
 static void check_unique_names(void)
 {
   int dup = 0;
-  for (int a = 0; a < NLAYERS; a++) {
-    DIR *d = opendir(layers[a]);
+  for (int a = 0; a < NLAYER_DIRS; a++) {
+    DIR *d = opendir(layer_dirs[a]);
     if (!d) continue;
     struct dirent *e;
     while ((e = readdir(d)) != NULL) {
       size_t n = strlen(e->d_name);
       if (n < 3 || strcmp(e->d_name + n - 2, ".h") != 0) continue;
-      for (int b = a + 1; b < NLAYERS; b++)
-        if (file_exists(layers[b], e->d_name)) {
-          test_report(0, "header %s is in both %s/ and %s/", e->d_name, layers[a], layers[b]);
+      for (int b = a + 1; b < NLAYER_DIRS; b++)
+        if (file_exists(layer_dirs[b], e->d_name)) {
+          test_report(0, "header %s is in both %s/ and %s/", e->d_name, layer_dirs[a], layer_dirs[b]);
           dup++;
         }
     }
@@ -130,14 +127,14 @@ static void check_unique_names(void)
   }
   /* the extension's folder as well: its headers share the include space of
      the tests */
-  for (int a = 0; a < NLAYERS; a++) {
-    DIR *d = opendir(layers[a]);
+  for (int a = 0; a < NLAYER_DIRS; a++) {
+    DIR *d = opendir(layer_dirs[a]);
     if (!d) continue;
     struct dirent *e;
     while ((e = readdir(d)) != NULL) {
       size_t n = strlen(e->d_name);
       if (n >= 3 && strcmp(e->d_name + n - 2, ".h") == 0 && file_exists("auto_iface/python", e->d_name)) {
-        test_report(0, "header %s is in both %s/ and auto_iface/python/", e->d_name, layers[a]);
+        test_report(0, "header %s is in both %s/ and auto_iface/python/", e->d_name, layer_dirs[a]);
         dup++;
       }
     }
@@ -151,11 +148,11 @@ int main(void)
   int nfiles = 0;
   test_true("public headers include only public headers",
             check_dir("include/cable", -1, &nfiles) == 0 && nfiles > 10);
-  for (int k = 0; k < NLAYERS; k++) {
+  for (int k = 0; k < NLAYER_DIRS; k++) {
     int before = nfiles;
-    int bad = check_dir(layers[k], k, &nfiles);
+    int bad = check_dir(layer_dirs[k], k, &nfiles);
     char what[160];
-    snprintf(what, sizeof what, "%s/ (%d files) includes only its own, lower and public headers", layers[k],
+    snprintf(what, sizeof what, "%s/ (%d files) includes only its own, lower and public headers", layer_dirs[k],
              nfiles - before);
     test_true(what, bad == 0 && nfiles > before);
   }
@@ -193,9 +190,7 @@ int main(void)
   test_int("two planted upward includes of a ground-floor file are reported", planted, 2);
   /* and between the sub-folders of auto_iface: a file of the AUTO files'
      layer that includes the session's private header */
-  int files_level = -1;
-  for (int k = 0; k < NLAYERS; k++)
-    if (strcmp(layers[k], "auto_iface/files") == 0) files_level = k;
+  int files_level = layer_index("auto_iface/files");
   f = fopen("tests/tmp/layers/planted_files.c", "w");
   planted = -1;
   if (f) {
