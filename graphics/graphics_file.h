@@ -1,4 +1,4 @@
-/* Pictures written through the one atomic-file module (continuation/atomic_file.h):
+/* Pictures written through the one atomic-file module (continuation/base/atomic_file.h):
  * everything goes to a temporary file in the destination's directory, renamed
  * over the destination only when the whole file was written, so a reader
  * never sees a half-written picture and a failed call leaves an existing

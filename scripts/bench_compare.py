@@ -283,7 +283,7 @@ def main():
     print()
 
     # ---- the same equation file through cable ---------------------------------
-    if os.path.exists(os.path.join(ROOT, "auto_iface", "auto_compat")):
+    if os.path.exists(os.path.join(ROOT, "auto_iface", "autoeq", "auto_compat")):
         tag = "c_autofile_60"
         shutil.copy(os.path.join(ROOT, "tests", "auto07p", "knot72auto.c"), B.work)
         with open(os.path.join(B.work, "c.knot72auto"), "w") as fh:

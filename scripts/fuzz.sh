@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Fuzz cable's input parsers (run scripts are Python: CPython parses them) with libFuzzer (clang-14), ASan and UBSan:
-#   constants  cable_constants_parse_string (+ parse_override)   auto_iface/constants_parse.h
-#   sfile      cable_sfile_read on a temporary file               auto_iface/aufile.h
+#   constants  cable_constants_parse_string (+ parse_override)   auto_iface/files/constants_parse.c
+#   sfile      cable_sfile_read on a temporary file               auto_iface/files/aufile_read.c
 # Usage: scripts/fuzz.sh [TARGET ...]       (default: both, one after the other)
 # Env:   FUZZ_SECONDS  total fuzzing time, shared equally by the targets (default 600)
 #        FUZZ_JOBS     1 (default): sequential; N > 1: N targets at once (same share each)

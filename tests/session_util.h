@@ -1,4 +1,4 @@
-/* Runs for the C tests on a session (auto_iface/cable_session.h), written as
+/* Runs for the C tests on a session (cable/cable_session.h, auto_iface/session/), written as
  * `cable run` argument lines: "e=braid_knot c=pvls NMX=3 sv=pvls".  Words are
  * separated by blanks outside brackets and quotes; e, c, s, sv, ap name
  * files, every other KEY=VALUE is a constants-file override.  The Python

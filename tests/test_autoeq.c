@@ -1,4 +1,4 @@
-/* AUTO-format equation files (auto_iface/autoeq.h) run through e='NAME':
+/* AUTO-format equation files (cable/cable_autoeq.h, auto_iface/autoeq/) run through e='NAME':
  * Fortran (free and fixed form) and C files written for these tests, for
  * problems with closed-form answers; the build cache; and bad files, which
  * must give a clear error and no output files.

@@ -1,6 +1,6 @@
 /* One, two and three threads give the same results, bit for bit (issue 17):
  * the structured solver's per-interval stages run on a thread team
- * (NTHREADS, continuation/cable_team.h) and every reduction runs in interval
+ * (NTHREADS, continuation/base/cable_team.h) and every reduction runs in interval
  * order, so nothing may depend on the team size.  Checked on the flat (7,2)
  * braid knot through its first (double) branch point with the branch-point
  * tests on (ISP=2, NSV=2: determinant, singular values, the pencil test and

@@ -12,7 +12,7 @@
 #define AUTOEQ_MAX_ARGS 24     /* arguments of one routine recorded for the check */
 #define AUTOEQ_ARGNAME 32
 
-/* The files of auto_iface/auto_compat, embedded at build time (the Makefile
+/* The files of auto_iface/autoeq/auto_compat, embedded at build time (the Makefile
  * generates the table from the files themselves). */
 typedef struct cable_autoeq_compat_file {
   const char *name;

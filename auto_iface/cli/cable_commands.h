@@ -1,4 +1,4 @@
-/* The `cable` subcommands (auto_iface/cable_main.c dispatches to these).
+/* The `cable` subcommands (auto_iface/cli/cable_main.c dispatches to these).
  * Each returns 0 or a negative cable_status with err filled. */
 #ifndef CABLE_COMMANDS_H
 #define CABLE_COMMANDS_H

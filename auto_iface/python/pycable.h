@@ -1,4 +1,4 @@
-/* Internals of the extension module cable._cable (auto_iface/pycable_*.c).
+/* Internals of the extension module cable._cable (auto_iface/python/pycable_*.c).
  * It uses libcable's public API only (include/cable/). */
 #ifndef CABLE_PYCABLE_H
 #define CABLE_PYCABLE_H

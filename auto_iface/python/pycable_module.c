@@ -84,7 +84,7 @@ static PyMethodDef module_methods[] = {
     {NULL, NULL, 0, NULL}};
 
 static struct PyModuleDef module_def = {PyModuleDef_HEAD_INIT, "cable._cable",
-                                        "The C side of the cable package (auto_iface/pycable_*.c).", -1,
+                                        "The C side of the cable package (auto_iface/python/pycable_*.c).", -1,
                                         module_methods, NULL, NULL, NULL, NULL};
 
 PyMODINIT_FUNC PyInit__cable(void);

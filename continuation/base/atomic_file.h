@@ -36,7 +36,7 @@ int cable_atomic_checkpoint(cable_atomic_file *af, cable_error *err);
 /* A complete copy of what has been written so far, at dest (created or
  * truncated), followed by the text trailer (NULL: none), synced to disk when
  * sync is non-zero.  Writing continues afterwards.  For publishers that
- * place the copy themselves (auto_iface/live_files.c).  0 or a negative
+ * place the copy themselves (auto_iface/files/live_files.c).  0 or a negative
  * status. */
 int cable_atomic_copy(cable_atomic_file *af, const char *dest, const char *trailer, int sync, cable_error *err);
 

@@ -10,7 +10,7 @@
  *   cable_sink sink = cable_aufile_sink(w);
  *   cable_cont_run(cc, &sink, ...);
  *   cable_aufile_close(w, &err);     // renames the files into place
- * All files are written atomically (continuation/atomic_file.h): nothing
+ * All files are written atomically (continuation/base/atomic_file.h): nothing
  * appears under the final names before close or a checkpoint. */
 #ifndef CABLE_AUFILE_H
 #define CABLE_AUFILE_H

@@ -1,5 +1,5 @@
 /* A session of AUTO-07p's runner on cable's engine: what the Python package
- * (python/cable, its C side auto_iface/pycable_*.c) and `cable run` use;
+ * (python/cable, its C side auto_iface/python/pycable_*.c) and `cable run` use;
  * everything a script can do goes through it.
  *
  *   run             constants (c=NAME reads c.NAME; KEY=VALUE overrides, as in

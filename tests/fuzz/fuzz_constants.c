@@ -1,4 +1,4 @@
-/* libFuzzer target: the constants-file parser (auto_iface/constants_parse.h).
+/* libFuzzer target: the constants-file parser (auto_iface/files/constants_parse.c).
  * The input is the text of a c. file; the first half of it is also tried as a
  * KEY=VALUE override on the parsed constants, the path `cable run KEY=VALUE`
  * and script keywords take.  Built by scripts/fuzz.sh. */

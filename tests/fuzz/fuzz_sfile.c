@@ -1,4 +1,4 @@
-/* libFuzzer target: the s-file reader (auto_iface/aufile.h: cable_sfile_read)
+/* libFuzzer target: the s-file reader (auto_iface/files/aufile_read.c: cable_sfile_read)
  * through its only entry point, a path: each input is written to one
  * temporary file per process, then read and, when it parses, queried the way
  * restarts do (labels, AUTO's 'BP1' / '-1' specs, IRS resolution, err_est).

@@ -6,7 +6,7 @@ kernel, and a Dask worker),
 with the environment's OPENBLAS_NUM_THREADS removed as a user's shell has
 it: the CPU time of the run inside Python may exceed the program's by at most
 20 %.  Before libcable.so and the extension carried their own one-thread BLAS
-(continuation/blas_private.c) the threaded OpenBLAS shared with numpy spun
+(continuation/base/blas_private.c) the threaded OpenBLAS shared with numpy spun
 its threads: 6.4 s of CPU against 1.6 s on this run (2 cores).  CPU times
 are taken as the best of three runs each, interleaved, so that a burst of
 load on the shared machine hits both sides alike.  The host's own BLAS keeps

@@ -64,7 +64,7 @@ static user_icnd_t icnd;
 static user_fopt_t fopt;
 static user_pvls_t pvls;
 
-/* What cable's loader looks up (auto_iface/autoeq_load.c). */
+/* What cable's loader looks up (auto_iface/autoeq/autoeq_load.c). */
 typedef struct cable_auto_user_table {
   int version;   /* 1 */
   user_func_t *func;

@@ -2,7 +2,7 @@
  * AUTO-style PVLS.  AUTO's GETP(CODE, IC, U) receives PVLS's own U, so the
  * GETP shim compiled into the equation module (cable_getp.c) finds this
  * header just before U and calls back into cable: no global state.
- * Shared, byte for byte, by cable (auto_iface/autoeq_shim.c) and every
+ * Shared, byte for byte, by cable (auto_iface/autoeq/autoeq_shim.c) and every
  * module it builds; bump CABLE_GETP_MAGIC when the layout changes. */
 #ifndef CABLE_GETP_H
 #define CABLE_GETP_H
