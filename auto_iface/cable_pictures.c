@@ -65,7 +65,7 @@ static void plot_caption(const char *title, const char *x, const char *y, const 
 }
 
 int cable_plot_files(const char *dir, const char *const *bfiles, int nfiles, const char *xcol, const char *ycol,
-                     const plot_annotation *marks, int nmarks, const char *title, const char *out,
+                     const cable_plot_annotation *marks, int nmarks, const char *title, const char *out,
                      cable_error *err)
 {
   static const char *const plot_suffixes[2] = {".png", ".svg"};
@@ -265,11 +265,11 @@ void cable_strands_free(cable_strands *st)
 #define RENDER_PROFILE_REACH 1.7
 
 /* The PNG's caption: what the picture shows, in one line. */
-static void picture_caption(const cable_solution *s, const render_options *o, double pmax, char *buf, size_t n)
+static void picture_caption(const cable_solution *s, const cable_render_options *o, double pmax, char *buf, size_t n)
 {
-  braid_analysis *a = malloc(sizeof *a);
+  cable_braid_analysis *a = malloc(sizeof *a);
   char topo[160] = "";
-  if (a && braid_analysis_compute(s, a) == 0)
+  if (a && cable_braid_analysis_compute(s, a) == 0)
     snprintf(topo, sizeof topo, ", Lk = %.4g, braid axis: %s, tubes %s", a->topo.lk, a->topo.axis.name,
              a->tube.noverlap > 0 ? "overlap" : "do not overlap");
   free(a);
@@ -278,10 +278,10 @@ static void picture_caption(const cable_solution *s, const render_options *o, do
            "contact pressure (max |p| = %.6g) along the contact curve: white on strand 1, black on strand 2, "
            "dark red where negative",
            s->lab, s->par[BP_T], s->par[BP_F], s->par[BP_DELTA], topo,
-           o && o->colormap != RENDER_COLORMAP_NONE ? " (coloured by contact pressure)" : "", pmax);
+           o && o->colormap != CABLE_RENDER_COLORMAP_NONE ? " (coloured by contact pressure)" : "", pmax);
 }
 
-int cable_render_solution(const cable_solution *s, const render_options *o, const char *out, const char *vtp,
+int cable_render_solution(const cable_solution *s, const cable_render_options *o, const char *out, const char *vtp,
                           const char *ply, cable_error *err)
 {
   static const char *const png[1] = {".png"}, *const vtk[1] = {".vtp"}, *const plyx[1] = {".ply"};
@@ -346,7 +346,7 @@ int cable_cmd_render(int argc, char **argv, cable_error *err)
 {
   if (argc < 2) return cable_error_set(err, CABLE_ERR_INPUT, "<command line>", 0, "", "usage: cable render s.NAME LABEL [options]");
   const char *out = "knot.png", *vtp = NULL, *ply = NULL;
-  render_options o;
+  cable_render_options o;
   memset(&o, 0, sizeof o);
   int rc = 0;
   for (int i = 2; i < argc && !rc; i++) {
@@ -357,7 +357,7 @@ int cable_cmd_render(int argc, char **argv, cable_error *err)
     else if ((v = option(argv[i], "size"))) o.width = o.height = atoi(v);
     else if ((v = option(argv[i], "thicken"))) o.thicken = atof(v);
     else if ((v = option(argv[i], "color"))) {
-      if (strcmp(v, "pressure") == 0) o.colormap = RENDER_COLORMAP_DIVERGING;
+      if (strcmp(v, "pressure") == 0) o.colormap = CABLE_RENDER_COLORMAP_DIVERGING;
       else rc = cable_error_set(err, CABLE_ERR_INPUT, "<command line>", 0, argv[i], "color=pressure is the only colour map");
     } else if ((v = option(argv[i], "view"))) {
       if (sscanf(v, "%lf,%lf,%lf", &o.view_dir[0], &o.view_dir[1], &o.view_dir[2]) != 3)

@@ -12,7 +12,7 @@
 #define CABLE_BRAID_GEOMETRY_H
 
 #include "cable/cable_solution.h"
-#include "cable/cable_analysis.h"   /* braid_topology */
+#include "cable/cable_analysis.h"   /* cable_braid_topology */
 #include "knot_type.h"
 
 typedef struct braid_curves {
@@ -59,6 +59,6 @@ int braid_contact_curvature(const cable_solution *sol, int n, double *kappa, dou
 /* nsamples: polygon vertices for the knot type of the axis (0: default
  * BRAID_TOPOLOGY_SAMPLES). */
 #define BRAID_TOPOLOGY_SAMPLES 2000
-int braid_topology_compute(const cable_solution *sol, int nsamples, braid_topology *out);
+int braid_topology_compute(const cable_solution *sol, int nsamples, cable_braid_topology *out);
 
 #endif

@@ -14,12 +14,12 @@ typedef struct {
   double x, y;
   const char *text;   /* NULL -> no text */
   int filled;         /* 1: filled black circle, 0: open circle */
-} plot_annotation;
+} cable_plot_annotation;
 
 enum {
-  RENDER_COLORMAP_NONE = 0,       /* one colour per tube (render_tube.rgb) */
-  RENDER_COLORMAP_SEQUENTIAL = 1, /* viridis over [min, max] of the scalars */
-  RENDER_COLORMAP_DIVERGING = 2   /* blue-white-red over [-m, m], m = max |scalar| */
+  CABLE_RENDER_COLORMAP_NONE = 0,       /* one colour per tube (render_tube.rgb) */
+  CABLE_RENDER_COLORMAP_SEQUENTIAL = 1, /* viridis over [min, max] of the scalars */
+  CABLE_RENDER_COLORMAP_DIVERGING = 2   /* blue-white-red over [-m, m], m = max |scalar| */
 };
 
 typedef struct {
@@ -33,7 +33,7 @@ typedef struct {
                             and draw a colour bar on the right */
   double thicken;        /* draw radius * thicken; <= 0 -> automatic: thin
                             tubes are widened to RENDER_MIN_RADIUS_PX pixels */
-} render_options;
+} cable_render_options;
 
 /* Diagram of the branches of b-files (dir/bfiles[i]; dir may be NULL): x and
  * y are column headings (NULL: the principal parameter, and F when present,
@@ -41,15 +41,15 @@ typedef struct {
  * SVG, .png PNG, any other is refused (CABLE_ERR_INPUT, nothing written).
  * Regular output points (RG) are not labelled. */
 CABLE_API int cable_plot_files(const char *dir, const char *const *bfiles, int nfiles, const char *x, const char *y,
-                     const plot_annotation *marks, int nmarks, const char *title, const char *out,
+                     const cable_plot_annotation *marks, int nmarks, const char *title, const char *out,
                      cable_error *err);
 
 /* Picture (out, PNG; NULL: none) and exports (vtp, ply; NULL: none) of a
  * braid solution: both strands as tubes, the contact-pressure profiles along
  * the contact curve (white: strand 1, black: strand 2).  The names must end
  * in .png, .vtp and .ply (CABLE_ERR_INPUT before anything is written). */
-CABLE_API int cable_render_solution(const cable_solution *s, const render_options *o, const char *out, const char *vtp,
-                          const char *ply, cable_error *err);
+CABLE_API int cable_render_solution(const cable_solution *s, const cable_render_options *o, const char *out,
+                                    const char *vtp, const char *ply, cable_error *err);
 
 /* The strands of a braid solution at its mesh points, as the pictures and
  * the HTML view (cable view) draw them: centre lines r1, r2 = r1 + Delta d1

@@ -39,14 +39,14 @@ typedef struct fx {
   cable_fold *fold;              /* the fold problem at the LP */
   cable_sink sink;               /* no callbacks */
   cable_aufile_options aopt;
-  braid_analysis ba;
-  const braid_analysis *bas[1];
-  tube_distance_result tube;
-  axis_passages ap;
+  cable_braid_analysis ba;
+  const cable_braid_analysis *bas[1];
+  cable_tube_distance_result tube;
+  cable_axis_passages ap;
   cable_strands strands;          /* cable_solution_strands' output */
   cable_stab_result stab;
-  plot_annotation marks[1];
-  render_options ropt;
+  cable_plot_annotation marks[1];
+  cable_render_options ropt;
   char buf[2048];
   int i;
   double d[1024];
