@@ -992,6 +992,7 @@ static int engine_run(cable_session *r, rp_setup *s, const char *out_name, int o
              col.b->npt > 0 ? col.b->pts[col.b->npt - 1].pt.pt : 0);
   snprintf(end_note, sizeof end_note, "branch %d ended: %s: %s", ibr, cable_status_message(st), why);
   if (!col.rc && (st < 0 || st == CABLE_END_LOOP)) col.rc = rp_branch_set_end_note(col.b, end_note);
+  col.b->end_status = st;
   cable_cont_free(cc);
   cable_fold_free(fold);
   cable_bpcont_free(bpc);

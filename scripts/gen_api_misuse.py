@@ -108,7 +108,7 @@ RESULT = {
     'cable_label_spec_parse': 'neg', 'cable_plugin_path': 'nonnull',
     'cable_problem_validate': 'neg', 'cable_branch_number': 'zero', 'cable_branch_npoints': 'zero',
     'cable_branch_nsolutions': 'zero', 'cable_solution_measure': 'any',
-    'cable_autoeq_find': 'neg',
+    'cable_autoeq_find': 'neg', 'cable_bp_kind_code': 'zero', 'cable_branch_end_status': 'zero',
 }
 
 # Arguments that may be NULL (documented): the call must survive, its result

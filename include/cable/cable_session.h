@@ -182,7 +182,14 @@ CABLE_API const char *cable_branch_solution_note(const cable_branch *b, int i);
 CABLE_API const cable_names *cable_branch_names(const cable_branch *b);
 CABLE_API const cable_constants *cable_branch_constants(const cable_branch *b);
 CABLE_API const char *cable_branch_problem(const cable_branch *b);
-/* Why the branch ended abnormally (the d-file's note), NULL: a normal end. */
+/* Why the branch ended abnormally (the d-file's note, for people), NULL: a
+ * normal end. */
 CABLE_API const char *cable_branch_end_note(const cable_branch *b);
+/* How the run that computed b ended, for programs: its status (enum
+ * cable_status: CABLE_END_NMX, CABLE_END_BOUNDS, ... > 0 a normal end, < 0
+ * the error, CABLE_ERR_INTERRUPTED a stopped run); 0 for a branch no run of
+ * this process computed (read from files, or two runs joined by merge) and
+ * for a NULL branch. */
+CABLE_API int cable_branch_end_status(const cable_branch *b);
 
 #endif

@@ -12,6 +12,17 @@
  * too (double) or not (a pair of simple BPs in one step). */
 enum cable_bp_kind { CABLE_BP_UNKNOWN = 0, CABLE_BP_SIMPLE = 1, CABLE_BP_DOUBLE = 2, CABLE_BP_PAIR = 3 };
 
+/* "simple", "double", "pair"; "" for CABLE_BP_UNKNOWN or another value (the
+ * word the d-file's BP record and the Python package use). */
+CABLE_API const char *cable_bp_kind_name(int kind);
+/* The kind of a name cable_bp_kind_name gives; CABLE_BP_UNKNOWN for any
+ * other (and NULL). */
+CABLE_API int cable_bp_kind_code(const char *name);
+/* The multiplicity of a BP of that kind: the singular values that vanish
+ * there, 1 for a simple BP and for each of a pair, 2 for a double one; 0
+ * for CABLE_BP_UNKNOWN. */
+CABLE_API int cable_bp_multiplicity(int kind);
+
 typedef struct cable_solution {
   int ndim, ntst, ncol;
   int npar;        /* length of par[] (AUTO's NPAR) */
