@@ -191,7 +191,7 @@ static int find_problem(cable_session *r, const char *e, const cable_constants *
   return 0;
 }
 
-int cable_session_info(cable_session *r, const char *e, FILE *out, cable_error *err)
+int rp_session_info(cable_session *r, const char *e, FILE *out, cable_error *err)
 {
   if (!r || !e || !out) return cable_error_set(err, CABLE_ERR_NULL, NULL, 0, NULL, "cable_session_info: NULL argument");
   rp_problem p;
@@ -919,8 +919,10 @@ static int engine_run(cable_session *r, rp_setup *s, const char *out_name, int o
   }
   if (st == 0) st = cable_cont_set_start(cc, start);
   if (st) {
-    const char *why = cable_cont_error(cc)[0] ? cable_cont_error(cc) : cable_status_message(st);
-    cable_error_set(err, st, NULL, 0, strncmp(why, "PAR sets", 8) == 0 ? "PAR" : NULL, "%s", why);
+    /* the engine's report: its message and the key it is about (PAR) */
+    cable_error why;
+    cable_cont_last_error(cc, &why);
+    cable_error_set(err, st, NULL, 0, why.key, "%s", why.msg[0] ? why.msg : cable_status_message(st));
     cable_cont_free(cc);
     cable_fold_free(fold);
     cable_bpcont_free(bpc);
@@ -1113,7 +1115,7 @@ static void remember(cable_session *r, rp_setup *s)
   }
 }
 
-int cable_session_run(cable_session *r, const cable_run_args *a, cable_branch **out, cable_error *err)
+int rp_session_run(cable_session *r, const cable_run_args *a, cable_branch **out, cable_error *err)
 {
   if (out) *out = NULL;
   if (!r || !a || !out) return null_arg("cable_session_run", !r ? "the session" : !a ? "the arguments" : "out", err);
@@ -1147,8 +1149,8 @@ int cable_session_run(cable_session *r, const cable_run_args *a, cable_branch **
 
 /* ---- files: save, load, merge, relabel ------------------------------------------------ */
 
-int cable_session_save(cable_session *r, cable_branch *const *branches, int n, int sol_index, const char *name,
-                       int append, cable_error *err)
+int rp_session_save(cable_session *r, cable_branch *const *branches, int n, int sol_index, const char *name,
+                    int append, cable_error *err)
 {
   if (!r || !name) return null_arg("cable_session_save", !r ? "the session" : "the name", err);
   int rc = check_branch_list("cable_session_save", branches, n, err);
@@ -1218,7 +1220,7 @@ static int result_to_list(rp_result *res, cable_branch ***out, int *n, cable_err
   return 0;
 }
 
-int cable_session_loadbd(cable_session *r, const char *name, cable_branch ***out, int *n, cable_error *err)
+int rp_session_loadbd(cable_session *r, const char *name, cable_branch ***out, int *n, cable_error *err)
 {
   if (out) *out = NULL;
   if (n) *n = 0;
@@ -1229,7 +1231,7 @@ int cable_session_loadbd(cable_session *r, const char *name, cable_branch ***out
   return rc ? rc : result_to_list(res, out, n, err);
 }
 
-int cable_session_load(cable_session *r, const cable_run_args *a, cable_branch **out, cable_error *err)
+int rp_session_load(cable_session *r, const cable_run_args *a, cable_branch **out, cable_error *err)
 {
   if (out) *out = NULL;
   if (!r || !a || !out) return null_arg("cable_session_load", !r ? "the session" : !a ? "the arguments" : "out", err);
@@ -1274,8 +1276,8 @@ int cable_session_load(cable_session *r, const cable_run_args *a, cable_branch *
   return rc;
 }
 
-int cable_session_transform(cable_session *r, cable_branch *const *in, int n, int relabel, cable_branch ***out,
-                            int *nout, cable_error *err)
+int rp_session_transform(cable_session *r, cable_branch *const *in, int n, int relabel, cable_branch ***out,
+                         int *nout, cable_error *err)
 {
   if (out) *out = NULL;
   if (nout) *nout = 0;
@@ -1289,7 +1291,7 @@ int cable_session_transform(cable_session *r, cable_branch *const *in, int n, in
   return result_to_list(res, out, nout, err);
 }
 
-int cable_session_transform_files(cable_session *r, const char *name, int relabel, cable_error *err)
+int rp_session_transform_files(cable_session *r, const char *name, int relabel, cable_error *err)
 {
   if (!r || !name) return null_arg("cable_session_transform_files", !r ? "the session" : "the name", err);
   rp_result *res = NULL, *t = NULL;

@@ -158,4 +158,16 @@ int rp_result_relabel(const rp_result *in, rp_result **out);
  * AUTO equation file it was found as, or NULL. */
 int rp_problem_info_write(const cable_problem *pb, const char *source, FILE *out);
 
+/* ---- the public calls' bodies (cable_session.c); the public entry points
+ * (cable_session_errors.c) report their errors to the session's handler ---- */
+int rp_session_run(cable_session *r, const cable_run_args *a, cable_branch **out, cable_error *err);
+int rp_session_info(cable_session *r, const char *e, FILE *out, cable_error *err);
+int rp_session_load(cable_session *r, const cable_run_args *a, cable_branch **out, cable_error *err);
+int rp_session_save(cable_session *r, cable_branch *const *branches, int n, int sol_index, const char *name,
+                    int append, cable_error *err);
+int rp_session_loadbd(cable_session *r, const char *name, cable_branch ***out, int *n, cable_error *err);
+int rp_session_transform(cable_session *r, cable_branch *const *in, int n, int relabel, cable_branch ***out,
+                         int *nout, cable_error *err);
+int rp_session_transform_files(cable_session *r, const char *name, int relabel, cable_error *err);
+
 #endif

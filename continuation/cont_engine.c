@@ -61,6 +61,18 @@ void cont_set_error(cable_cont *cc, const char *fmt, ...)
   va_start(ap, fmt);
   vsnprintf(cc->err, sizeof cc->err, fmt, ap);
   va_end(ap);
+  cc->err_key[0] = '\0';
+  cc->nerr++;
+}
+
+void cont_set_error_key(cable_cont *cc, const char *key, const char *fmt, ...)
+{
+  va_list ap;
+  va_start(ap, fmt);
+  vsnprintf(cc->err, sizeof cc->err, fmt, ap);
+  va_end(ap);
+  snprintf(cc->err_key, sizeof cc->err_key, "%s", key);
+  cc->nerr++;
 }
 
 const char *cable_cont_error(const cable_cont *cc)
@@ -556,7 +568,7 @@ static void pencil_note(cable_cont *cc, const pencil_result *pr)
   }
 }
 
-int cable_cont_step(cable_cont *cc)
+int cont_step(cable_cont *cc)
 {
   if (!cc) return CABLE_ERR_NULL;
   if (cc->ended) return cc->end_status;

@@ -101,6 +101,11 @@ struct cable_cont {
   cable_solution *pvsol;        /* scratch for PVLS at trial points: UZR on a parameter
                                    that PVLS computes (NULL when no UZR needs it) */
   char err[512];                /* last error message */
+  char err_key[64];             /* the key it is about ("PAR"), "" none */
+  int err_status;               /* the status the last error was returned with (cont_errors.c) */
+  long nerr;                    /* messages set so far: a call that sets none has no message of its own */
+  cable_error_handler on_error; /* cable_cont_set_error_handler; NULL: none */
+  void *on_error_ctx;
   char rejected[200];           /* why the last corrected point was rejected ("" none) */
   /* pencil test (cont_pencil.c): branch points inside one step */
   abd_solver *tan_abd;          /* factorisation behind the last tangent (not owned) */
@@ -201,5 +206,14 @@ int cont_correct(cable_cont *cc, const double *x0, const double *xdot0, double d
 /* the same corrector from the initial guess x (on the hyperplane of ds) */
 int cont_correct_from(cable_cont *cc, const double *x0, const double *xdot0, double ds, double *x);
 void cont_set_error(cable_cont *cc, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+/* the same, about a constants key (cable_cont_last_error's key) */
+void cont_set_error_key(cable_cont *cc, const char *key, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
+
+/* The public calls' bodies (cont_engine.c, cont_run.c); the public entry
+ * points (cont_errors.c) report their errors to the handle's handler. */
+int cont_step(cable_cont *cc);
+int cont_set_start(cable_cont *cc, const cable_solution *start);
+int cont_set_mesh(cable_cont *cc, const double *mesh);
+int cont_run(cable_cont *cc, const cable_sink *sink, int ibr, int first_label, int *next_label);
 
 #endif

@@ -46,7 +46,9 @@ FIXTURE = {
     'cable_solution *': 'f->sol', 'const cable_solution *': 'f->sol',
     'cable_sfile *': 'f->sf', 'const cable_sfile *': 'f->sf',
     'cable_bfile *': 'f->bf', 'const cable_bfile_branch *': '&f->bf->branch[0]',
-    'cable_cont *': 'f->cc', 'const cable_cont *': 'f->cc',
+    'cable_cont *': 'f->cc', 'const cable_cont *': 'f->cc', 'cable_cont **': '&f->cc_out',
+    'cable_session **': '&f->session_out', 'void *': 'f',
+    'cable_solution **': '&f->sol_out', 'cable_fold **': '&f->fold_out', 'cable_bpcont **': '&f->bpc_out',
     'const cable_sink *': '&f->sink',
     'cable_fold *': 'f->fold', 'const cable_fold *': 'f->fold',
     'cable_braid_analysis *': '&f->ba', 'const cable_braid_analysis *': '&f->ba',
@@ -91,7 +93,7 @@ INT = {
     'npar_max': '36', 'err_par': '-1', 'from_stpnt': '1', 'ibr': '1', 'first_label': '1',
     'iplt': '0', 'itp': '6', 'nbc': '0', 'nint': '0',
 }
-INT_FOR = {('cable_braid_tube_distance_solution', 'n'): '0'}
+INT_FOR = {('cable_braid_tube_distance_solution', 'n'): '0', ('cable_solution_create', 'nfpr'): '1'}
 
 # What a NULL argument gives, by function: 'status' (CABLE_ERR_NULL, the
 # default for int), 'neg' (a documented negative value), 'null' (the default
@@ -142,7 +144,9 @@ OPTIONAL = {
     'cable_plugin_open': {'err'}, 'cable_plugin_open_npar': {'err'},
     'cable_problem_validate': {'origin', 'err'},
     'cable_problem_prepare': {'err'},
-    'cable_session_alloc': {'opt'},
+    'cable_session_alloc': {'opt'}, 'cable_session_create': {'opt', 'err'},
+    'cable_cont_create': {'err'}, 'cable_solution_create': {'err'}, 'cable_fold_create': {'err'},
+    'cable_bpcont_create': {'err'}, 'cable_cont_set_error_handler': {'ctx'},
     'cable_session_run': {'err'}, 'cable_session_load': {'err'}, 'cable_session_save': {'err'},
     'cable_session_loadbd': {'err'}, 'cable_session_transform': {'err'},
     'cable_session_transform_files': {'err'},

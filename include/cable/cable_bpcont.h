@@ -23,6 +23,7 @@
 
 #include "cable/cable_api.h"
 #include "cable/cable_constants.h"
+#include "cable/cable_error.h"
 #include "cable/cable_problem.h"
 #include "cable/cable_solution.h"
 
@@ -36,6 +37,9 @@ typedef struct cable_bpcont cable_bpcont;
  * BP, too few ICP entries). */
 CABLE_API cable_bpcont *cable_bpcont_alloc(const cable_problem *pb, const cable_constants *c,
                                            const cable_solution *start, int *status, char *msg, size_t len);
+/* The same, status-returning (as cable_fold_create). */
+CABLE_API int cable_bpcont_create(const cable_problem *pb, const cable_constants *c, const cable_solution *start,
+                                  cable_bpcont **out, cable_error *err);
 CABLE_API void cable_bpcont_free(cable_bpcont *f);   /* NULL is a no-op */
 CABLE_API const cable_problem *cable_bpcont_problem(const cable_bpcont *f);
 CABLE_API const cable_constants *cable_bpcont_constants(const cable_bpcont *f);

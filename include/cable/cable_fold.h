@@ -28,6 +28,7 @@
 
 #include "cable/cable_api.h"
 #include "cable/cable_constants.h"
+#include "cable/cable_error.h"
 #include "cable/cable_problem.h"
 #include "cable/cable_solution.h"
 
@@ -63,6 +64,11 @@ typedef struct cable_fold cable_fold;
  * constants; status and msg may be NULL: not wanted). */
 CABLE_API cable_fold *cable_fold_alloc(const cable_problem *pb, const cable_constants *c, const cable_solution *start,
                                        int *status, char *msg, size_t len);
+/* The same, status-returning: *out the fold problem and 0, or *out NULL
+ * and the status with its message in err (may be NULL); CABLE_ERR_NULL for
+ * a NULL problem, constants, start or out. */
+CABLE_API int cable_fold_create(const cable_problem *pb, const cable_constants *c, const cable_solution *start,
+                                cable_fold **out, cable_error *err);
 CABLE_API void cable_fold_free(cable_fold *f);   /* NULL is a no-op */
 
 /* The extended problem and the constants of its run (ICP with the w slots

@@ -5,6 +5,7 @@
 #define CABLE_SOLUTION_H
 
 #include "cable/cable_api.h"
+#include "cable/cable_error.h"
 
 /* How the branch-point detector found a BP (cont_special.c): the
  * determinant changed sign (one singular value crossed zero: simple), or
@@ -61,6 +62,11 @@ typedef struct cable_solution {
  * is out of range (ndim, ntst, ncol, npar < 1 or nfpr < 0) or memory ran
  * out; nothing is left allocated then. */
 CABLE_API cable_solution *cable_solution_alloc(int ndim, int ntst, int ncol, int npar, int nfpr);
+/* The same, status-returning: *out the solution and 0, or *out NULL and
+ * CABLE_ERR_RANGE (a size out of range, named in err), CABLE_ERR_ALLOC or
+ * CABLE_ERR_NULL (out NULL); err may be NULL. */
+CABLE_API int cable_solution_create(int ndim, int ntst, int ncol, int npar, int nfpr, cable_solution **out,
+                                    cable_error *err);
 CABLE_API void cable_solution_free(cable_solution *s);            /* NULL is a no-op */
 /* Copies the values of src into dst, which must have the same sizes.
  * CABLE_SUCCESS, CABLE_ERR_NULL (a NULL solution or array) or
