@@ -850,26 +850,26 @@ static int engine_run(cable_session *r, rp_setup *s, const char *out_name, int o
               ((s->start->ndim == pb->ndim && cable_type_base(s->start->itp) == 6) ||
                (s->start->ndim == 2 * pb->ndim && abs(s->start->itp) / 10 == CABLE_BPCONT_ITPST));
   if (at_bp) {
-    char msg[400];
-    bpc = cable_bpcont_alloc(pb, &s->c, s->start, &st, msg, sizeof msg);
+    st = cable_bpcont_create(pb, &s->c, s->start, &bpc, err);
     int curve_restart = s->start->ndim == 2 * pb->ndim;
-    if (bpc && !curve_restart) st = cable_bpcont_starting_data(bpc, msg, sizeof msg);
-    if (!bpc || st) {
+    if (!st && !curve_restart) st = cable_bpcont_starting_data(bpc, err);
+    if (st) {
       cable_bpcont_free(bpc);
       problem_release(r, &prob);
-      return cable_error_set(err, st, NULL, 0, "ISW", "%s", msg);
+      if (err) snprintf(err->key, sizeof err->key, "ISW");
+      return st;
     }
     if (!curve_restart) fprintf(rp_log(r), "  Generating starting data : Restart at EP label below :\n");
     pb = cable_bpcont_problem(bpc);
     crun = cable_bpcont_constants(bpc);
     start = curve_restart ? cable_bpcont_start(bpc) : NULL;
   } else if (s->c.isw == 2) {
-    char msg[400];
-    fold = cable_fold_alloc(pb, &s->c, s->start, &st, msg, sizeof msg);
-    if (!fold) {
+    st = cable_fold_create(pb, &s->c, s->start, &fold, err);
+    if (st) {
       problem_release(r, &prob);
       free(guard);
-      return cable_error_set(err, st, NULL, 0, "ISW", "%s", msg);
+      if (err) snprintf(err->key, sizeof err->key, "ISW");
+      return st;
     }
     /* a point of a fold curve (NDIM = 2n) restarts the curve as it is
        stored, with its direction (run(r2) after a fold run goes on, as in
@@ -878,11 +878,12 @@ static int engine_run(cable_session *r, rp_setup *s, const char *out_name, int o
        through the extended problem's STPNT, and the next run from that EP
        follows the curve (doc/fold-continuation.md, "AUTO's runs") */
     int curve_restart = s->start && s->start->ndim == 2 * pb->ndim;
-    if (!curve_restart && (st = cable_fold_starting_data(fold, msg, sizeof msg)) != 0) {
+    if (!curve_restart && (st = cable_fold_starting_data(fold, err)) != 0) {
       cable_fold_free(fold);
       cable_bpcont_free(bpc);
       problem_release(r, &prob);
-      return cable_error_set(err, st, NULL, 0, "ISW", "%s", msg);
+      if (err) snprintf(err->key, sizeof err->key, "ISW");
+      return st;
     }
     if (!curve_restart) fprintf(rp_log(r), "  Generating starting data : Restart at EP label below :\n");
     pb = cable_fold_problem(fold);

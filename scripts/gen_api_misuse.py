@@ -146,7 +146,7 @@ OPTIONAL = {
     'cable_problem_prepare': {'err'},
     'cable_session_alloc': {'opt'}, 'cable_session_create': {'opt', 'err'},
     'cable_cont_create': {'err'}, 'cable_solution_create': {'err'}, 'cable_fold_create': {'err'},
-    'cable_bpcont_create': {'err'}, 'cable_cont_set_error_handler': {'ctx'},
+    'cable_bpcont_create': {'err'}, 'cable_fold_starting_data': {'err'}, 'cable_bpcont_starting_data': {'err'}, 'cable_cont_set_error_handler': {'ctx'},
     'cable_session_run': {'err'}, 'cable_session_load': {'err'}, 'cable_session_save': {'err'},
     'cable_session_loadbd': {'err'}, 'cable_session_transform': {'err'},
     'cable_session_transform_files': {'err'},

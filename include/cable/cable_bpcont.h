@@ -46,8 +46,9 @@ CABLE_API const cable_constants *cable_bpcont_constants(const cable_bpcont *f);
 /* AUTO's first run at a BP (cable_fold_starting_data's counterpart): five
  * steps along the adjoint's norm a (free in place of q, which is fixed and
  * printed) from a = CABLE_FOLD_START_NORM, ISW = -2, ILP = ISP = 0; its EP
- * (type 69) restarts the curve.  0, or CABLE_ERR_INPUT with msg. */
-CABLE_API int cable_bpcont_starting_data(cable_bpcont *f, char *msg, size_t len);
+ * (type 69) restarts the curve.  0, or CABLE_ERR_INPUT with the reason in
+ * err (may be NULL). */
+CABLE_API int cable_bpcont_starting_data(cable_bpcont *f, cable_error *err);
 /* f's copy of its start: a curve point restarts from it as stored */
 CABLE_API const cable_solution *cable_bpcont_start(const cable_bpcont *f);
 /* the BP's mesh resampled to ntst intervals (as cable_fold_mesh) */
