@@ -76,7 +76,9 @@ PLUGIN_SRCS := $(wildcard tests/plugins/*.c)
 PLUGINS  := $(PLUGIN_SRCS:tests/plugins/%.c=$(BUILD)/plugins/%.so)
 LIBCABLE := $(BUILD)/libcable.a
 LIBSO    := $(BUILD)/libcable.so
-SONAME   := libcable.so.0
+# the library's ABI: bumped when exported names or caller-allocated structs
+# change (1: the cable_ prefix on every name, cable_session_options.on_error)
+SONAME   := libcable.so.1
 VERSION  := $(shell sed -n 's/^\#define CABLE_VERSION "\(.*\)"/\1/p' include/cable/cable_version.h)
 PREFIX   ?= /usr/local
 DEPS_OK  := build/.deps-ok

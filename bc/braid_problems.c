@@ -65,7 +65,7 @@ int braid_pvls(const cable_solution *sol, double *par, void *params)
   /* the spread of the first integrals over the mesh points (cheap: no
      geometry; negative when a mesh point leaves the model's domain); the
      run log reports its worst value per branch */
-  par[BP_DRIFT] = braid_first_integral_drift(sol);
+  par[BP_DRIFT] = cable_braid_first_integral_drift(sol);
   /* The geometric columns cost a pressure sweep (pmin), a tube-distance
    * search (dmin) or the writhe double integral (Lk, Tw, Wr): only when the
    * run prints them.  A quantity that cannot be computed (e.g. Lk of a braid
@@ -79,8 +79,8 @@ int braid_pvls(const cable_solution *sol, double *par, void *params)
     if (e != 0) rc = 1;
   }
   if (requested(sol, BP_DMIN)) {
-    tube_distance_result td;
-    int e = braid_tube_distance_solution(sol, 0, &td);
+    cable_tube_distance_result td;
+    int e = cable_braid_tube_distance_solution(sol, 0, &td);
     par[BP_DMIN] = e == 0 && isfinite(td.dmin) ? td.dmin : 0.0;
     if (par[BP_DMIN] == 0.0) rc = 1;
   }

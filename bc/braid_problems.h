@@ -32,11 +32,11 @@ int braid_problem_instance(const char *name, const braid_start_params *sp, cable
  *  always (cheap): F = |F|, FM = F.M, h, Ham (the Hamiltonian), at t = 0
  *    (they are first integrals); qnorm = |q(1)|^2 - 1; T1, T2 = the strand
  *    torques at t = 1 (first integrals: T and -T); err = sol->err_est when
- *    known; drift = braid_first_integral_drift (the max relative spread of
+ *    known; drift = cable_braid_first_integral_drift (the max relative spread of
  *    |F|^2, F.M, h and Ham over the mesh points; < 0 when a mesh point is
  *    outside the model's domain);
  *  only when the run prints them (sol->pvls_icp lists the slot, or is NULL):
- *    pmin (braid_contact_pressure_min), dmin (braid_tube_distance_solution),
+ *    pmin (braid_contact_pressure_min), dmin (cable_braid_tube_distance_solution),
  *    Lk, Tw, Wr and Wrerr, the writhe's error estimate (braid_ribbon_compute;
  *    any one of the four computes all).
  * Returns 0; 1 (recoverable) when a requested geometric column could not be

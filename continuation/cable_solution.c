@@ -115,3 +115,32 @@ void solution_mesh_resample(const cable_solution *s, int ntst, double *mesh)
   mesh[0] = 0.0;
   mesh[ntst] = 1.0;
 }
+
+/* ---------------------------------------------------------------- BP kinds */
+
+static const char *const k_bp_kind_names[] = {"", "simple", "double", "pair"};
+#define BP_KIND_COUNT ((int)(sizeof k_bp_kind_names / sizeof k_bp_kind_names[0]))
+
+const char *cable_bp_kind_name(int kind)
+{
+  return kind > CABLE_BP_UNKNOWN && kind < BP_KIND_COUNT ? k_bp_kind_names[kind] : "";
+}
+
+int cable_bp_kind_code(const char *name)
+{
+  for (int k = CABLE_BP_UNKNOWN + 1; name && k < BP_KIND_COUNT; k++)
+    if (strcmp(name, k_bp_kind_names[k]) == 0) return k;
+  return CABLE_BP_UNKNOWN;
+}
+
+int cable_bp_multiplicity(int kind)
+{
+  /* a double BP: sigma_1 and sigma_2 vanish (cont_special.c's dip test); a
+     simple one (det changes sign) and each BP of a pair: sigma_1 only */
+  switch (kind) {
+  case CABLE_BP_SIMPLE:
+  case CABLE_BP_PAIR: return 1;
+  case CABLE_BP_DOUBLE: return 2;
+  default: return 0;
+  }
+}

@@ -325,9 +325,8 @@ void cable_bpcont_free(cable_bpcont *f)
 const cable_problem *cable_bpcont_problem(const cable_bpcont *f) { return f ? &f->pb : NULL; }
 const cable_constants *cable_bpcont_constants(const cable_bpcont *f) { return f ? &f->c : NULL; }
 
-int cable_bpcont_starting_data(cable_bpcont *f, char *msg, size_t len)
+static int starting_data(cable_bpcont *f, char *msg, size_t len)
 {
-  if (!f || !msg) return CABLE_ERR_NULL;
   if (f->start_ext) {
     snprintf(msg, len, "ISW=2: label %d is already a point of a curve of branch points", f->start->lab);
     return CABLE_ERR_INPUT;
@@ -467,4 +466,12 @@ cable_bpcont *cable_bpcont_alloc(const cable_problem *pb, const cable_constants 
   f->c.nicp = m;
   *status = CABLE_SUCCESS;
   return f;
+}
+
+int cable_bpcont_starting_data(cable_bpcont *f, cable_error *err)
+{
+  if (!f) return cable_error_set(err, CABLE_ERR_NULL, NULL, 0, NULL, "cable_bpcont_starting_data: the handle is NULL");
+  char msg[512] = "";
+  int rc = starting_data(f, msg, sizeof msg);
+  return rc ? cable_error_set(err, rc, NULL, 0, NULL, "%s", msg[0] ? msg : cable_status_message(rc)) : rc;
 }

@@ -504,7 +504,7 @@ static void pencil_note(cable_cont *cc, const pencil_result *pr)
   }
 }
 
-int cable_cont_step(cable_cont *cc)
+int cont_step(cable_cont *cc)
 {
   if (!cc) return CABLE_ERR_NULL;
   if (cc->ended) return cc->end_status;

@@ -439,9 +439,8 @@ cable_fold *cable_fold_alloc(const cable_problem *pb, const cable_constants *c, 
   return f;
 }
 
-int cable_fold_starting_data(cable_fold *f, char *msg, size_t len)
+static int starting_data(cable_fold *f, char *msg, size_t len)
 {
-  if (!f || !msg) return CABLE_ERR_NULL;
   if (f->start_ext) {
     snprintf(msg, len, "ISW=2: label %d is already a point of a fold curve (it restarts the curve)", f->start->lab);
     return CABLE_ERR_INPUT;
@@ -475,3 +474,11 @@ int cable_fold_starting_data(cable_fold *f, char *msg, size_t len)
 }
 
 const cable_solution *cable_fold_start(const cable_fold *f) { return f ? f->start : NULL; }
+
+int cable_fold_starting_data(cable_fold *f, cable_error *err)
+{
+  if (!f) return cable_error_set(err, CABLE_ERR_NULL, NULL, 0, NULL, "cable_fold_starting_data: the handle is NULL");
+  char msg[512] = "";
+  int rc = starting_data(f, msg, sizeof msg);
+  return rc ? cable_error_set(err, rc, NULL, 0, NULL, "%s", msg[0] ? msg : cable_status_message(rc)) : rc;
+}

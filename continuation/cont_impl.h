@@ -104,6 +104,11 @@ struct cable_cont {
   cable_solution *pvsol;        /* scratch for PVLS at trial points: UZR on a parameter
                                    that PVLS computes (NULL when no UZR needs it) */
   char err[512];                /* last error message */
+  char err_key[64];             /* the key it is about ("PAR"), "" none */
+  int err_status;               /* the status the last error was returned with (cont_errors.c) */
+  long nerr;                    /* messages set so far: a call that sets none has no message of its own */
+  cable_error_handler on_error; /* cable_cont_set_error_handler; NULL: none */
+  void *on_error_ctx;
   char rejected[200];           /* why the last corrected point was rejected ("" none) */
   /* pencil test (cont_pencil.c): branch points inside one step */
   abd_solver *tan_abd;          /* factorisation behind the last tangent (not owned) */
@@ -215,6 +220,26 @@ __attribute__((format(printf, 2, 3))) static inline void cont_set_error(cable_co
   va_start(ap, fmt);
   vsnprintf(cc->err, sizeof cc->err, fmt, ap);
   va_end(ap);
+  cc->err_key[0] = '\0';
+  cc->nerr++;
 }
+
+/* the same, about a constants key (cable_cont_last_error's key) */
+__attribute__((format(printf, 3, 4))) static inline void cont_set_error_key(cable_cont *cc, const char *key, const char *fmt, ...)
+{
+  va_list ap;
+  va_start(ap, fmt);
+  vsnprintf(cc->err, sizeof cc->err, fmt, ap);
+  va_end(ap);
+  snprintf(cc->err_key, sizeof cc->err_key, "%s", key);
+  cc->nerr++;
+}
+
+/* The public calls' bodies (cont_engine.c, cont_run.c); the public entry
+ * points (cont_errors.c) report their errors to the handle's handler. */
+int cont_step(cable_cont *cc);
+int cont_set_start(cable_cont *cc, const cable_solution *start);
+int cont_set_mesh(cable_cont *cc, const double *mesh);
+int cont_run(cable_cont *cc, const cable_sink *sink, int ibr, int first_label, int *next_label);
 
 #endif

@@ -282,5 +282,7 @@ int cont_store_solution(cable_cont *cc, int itp, int lab)
   pt->det_sign = cc->tf.det_sign;
   pt->sv1 = cc->tf.sv1;
   pt->sv2 = cc->tf.sv2;
+  pt->bp_kind = sol->bp_kind;
+  pt->bp_mult = cable_bp_multiplicity(sol->bp_kind);
   return CABLE_SUCCESS;
 }

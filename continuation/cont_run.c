@@ -8,7 +8,7 @@
 #include "cable/cable_stability.h"
 #include "cont_impl.h"
 
-int cable_cont_set_mesh(cable_cont *cc, const double *mesh)
+int cont_set_mesh(cable_cont *cc, const double *mesh)
 {
   if (!cc || !mesh) return CABLE_ERR_NULL;
   if (cc->ended) return cc->end_status;
@@ -29,7 +29,7 @@ int cable_cont_set_mesh(cable_cont *cc, const double *mesh)
   return CABLE_SUCCESS;
 }
 
-int cable_cont_set_start(cable_cont *cc, const cable_solution *start)
+int cont_set_start(cable_cont *cc, const cable_solution *start)
 {
   if (!cc) return CABLE_ERR_NULL;
   if (cc->ended) return cc->end_status;
@@ -79,9 +79,10 @@ int cable_cont_set_start(cable_cont *cc, const cable_solution *start)
     double v = cc->c.par_override[k].value;
     if (start && s->par[i] != v) {
       if (cc->switch_pending) {
-        cont_set_error(cc, "PAR sets PAR(%d) = %.10g, but the branch point (label %d) has PAR(%d) = %.10g: a switch "
-                       "(ISW=-1) starts at the stored branch point; leave PAR(%d) out of PAR",
-                       i + 1, v, start->lab, i + 1, s->par[i], i + 1);
+        cont_set_error_key(cc, "PAR",
+                           "PAR sets PAR(%d) = %.10g, but the branch point (label %d) has PAR(%d) = %.10g: a "
+                           "switch (ISW=-1) starts at the stored branch point; leave PAR(%d) out of PAR",
+                           i + 1, v, start->lab, i + 1, s->par[i], i + 1);
         cc->switch_pending = 0;
         return CABLE_ERR_INPUT;
       }
@@ -187,7 +188,7 @@ static int stop_reached(const cable_cont *cc, int *seen)
   return 0;
 }
 
-int cable_cont_run(cable_cont *cc, const cable_sink *sink, int ibr, int first_label, int *next_label)
+int cont_run(cable_cont *cc, const cable_sink *sink, int ibr, int first_label, int *next_label)
 {
   if (next_label) *next_label = first_label;
   if (!cc) return CABLE_ERR_NULL;
@@ -197,7 +198,7 @@ int cable_cont_run(cable_cont *cc, const cable_sink *sink, int ibr, int first_la
   }
   int lab = first_label, rc;
   int seen[sizeof cc->c.stop_on / sizeof cc->c.stop_on[0]] = {0};
-  while ((rc = cable_cont_step(cc)) == CABLE_SUCCESS) {
+  while ((rc = cont_step(cc)) == CABLE_SUCCESS) {
     if (emit(cc, sink, ibr, &lab)) {
       rc = CABLE_ERR_INTERRUPTED;   /* the caller stopped the run (its files stay as they were) */
       break;

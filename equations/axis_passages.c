@@ -149,7 +149,7 @@ static void swept_box(const double *a, const double *b, int n, int i, double *lo
 }
 
 int curve_passages(const double *a, const double *b, const double *pos, int n, double period, double window,
-                   axis_passages *out)
+                   cable_axis_passages *out)
 {
   if (!a || !b || !pos || !out || n < 4 || !(window > 0) || !(period > 0)) return CABLE_ERR_INPUT;
   for (int k = 0; k < 3 * n; k++)
@@ -198,7 +198,7 @@ static int axis_samples(const cable_solution *s, int n, braid_curves *bc)
   return gap <= TUBE_CLOSURE_TOL * len ? CABLE_SUCCESS : CABLE_ERR_INPUT;
 }
 
-int braid_axis_passages(const cable_solution *a, const cable_solution *b, axis_passages *out)
+int cable_braid_axis_passages(const cable_solution *a, const cable_solution *b, cable_axis_passages *out)
 {
   if (!a || !b || !out) return CABLE_ERR_NULL;
   int rc = braid_geometry_check(a);

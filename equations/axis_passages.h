@@ -26,7 +26,7 @@
 #ifndef CABLE_AXIS_PASSAGES_H
 #define CABLE_AXIS_PASSAGES_H
 
-#include "cable/cable_analysis.h"   /* axis_passages, braid_axis_passages */
+#include "cable/cable_analysis.h"   /* cable_axis_passages, cable_braid_axis_passages */
 #include "cable/cable_solution.h"
 
 /* Two shapes a, b [3n] of one closed curve (point n-1 joins point 0; do not
@@ -34,7 +34,7 @@
  * [0, period)) along it.  0 or CABLE_ERR_INPUT (n < 4, window or period not
  * positive, a non-finite coordinate). */
 int curve_passages(const double *a, const double *b, const double *pos, int n, double period, double window,
-                   axis_passages *out);
+                   cable_axis_passages *out);
 
 /* Samples of the braid axis per Delta of length: a segment of Delta/2 keeps
  * the polyline within h^2 kappa / 8 = Delta/32 of the axis (kappa <= 1/Delta),

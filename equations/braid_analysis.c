@@ -27,7 +27,7 @@ static double spread(double lo, double hi, double scale)
   return (hi - lo) / (scale > 0 ? scale : 1.0);
 }
 
-double braid_first_integral_drift(const cable_solution *sol)
+double cable_braid_first_integral_drift(const cable_solution *sol)
 {
   if (!sol || !sol->u || !sol->par || sol->ntst < 1 || sol->ncol < 1 || sol->ndim != BR_NDIM ||
       sol->npar <= BP_EPS13)
@@ -52,7 +52,7 @@ double braid_first_integral_drift(const cable_solution *sol)
   return drift;
 }
 
-int braid_pressure_at(const cable_solution *sol, double t, double *p1, double *p2, double *sigma)
+int cable_braid_pressure_at(const cable_solution *sol, double t, double *p1, double *p2, double *sigma)
 {
   if (!sol || !p1 || !p2) return CABLE_ERR_NULL;
   if (sol->ndim != BR_NDIM || sol->npar <= BP_W02 || curve_interp_check(sol) != 0 || !(t >= 0 && t <= 1))
@@ -66,7 +66,7 @@ int braid_pressure_at(const cable_solution *sol, double t, double *p1, double *p
   return CABLE_SUCCESS;
 }
 
-int braid_solution_curves(const cable_solution *sol, double *r1, double *r2, double *c, double *p1, double *p2,
+int cable_braid_solution_curves(const cable_solution *sol, double *r1, double *r2, double *c, double *p1, double *p2,
                           double *sigma)
 {
   if (!sol) return CABLE_ERR_NULL;
@@ -78,7 +78,7 @@ int braid_solution_curves(const cable_solution *sol, double *r1, double *r2, dou
     braid_point p;
     rc = braid_point_eval(sol, sol->t[k], &hint, &p);
     double q1, q2, sg;
-    if (rc == CABLE_SUCCESS) rc = braid_pressure_at(sol, sol->t[k], &q1, &q2, &sg);
+    if (rc == CABLE_SUCCESS) rc = cable_braid_pressure_at(sol, sol->t[k], &q1, &q2, &sg);
     if (rc != CABLE_SUCCESS) return rc;
     for (int j = 0; j < 3; j++) {
       if (r1) r1[3 * k + j] = p.r1[j];
@@ -102,13 +102,13 @@ static int negative(double p)
 static int refine_sign_change(const cable_solution *sol, int which, double ta, double tb, double *t)
 {
   double pa1, pa2;
-  int rc = braid_pressure_at(sol, ta, &pa1, &pa2, NULL);
+  int rc = cable_braid_pressure_at(sol, ta, &pa1, &pa2, NULL);
   int neg_a = negative(which == 1 ? pa1 : pa2);
   /* each halving gains one bit: 64 halvings take any mesh interval below
-     BRAID_PSIGN_TTOL; the bound only guards against a non-shrinking interval */
-  for (int it = 0; !rc && it < 64 && tb - ta > BRAID_PSIGN_TTOL; it++) {
+     CABLE_BRAID_PSIGN_TTOL; the bound only guards against a non-shrinking interval */
+  for (int it = 0; !rc && it < 64 && tb - ta > CABLE_BRAID_PSIGN_TTOL; it++) {
     double tm = 0.5 * (ta + tb), q1, q2;
-    rc = braid_pressure_at(sol, tm, &q1, &q2, NULL);
+    rc = cable_braid_pressure_at(sol, tm, &q1, &q2, NULL);
     if (negative(which == 1 ? q1 : q2) == neg_a) ta = tm;
     else tb = tm;
   }
@@ -116,12 +116,12 @@ static int refine_sign_change(const cable_solution *sol, int which, double ta, d
   return rc;
 }
 
-static int record_sign_change(const cable_solution *sol, int which, double ta, double tb, braid_psign *ps)
+static int record_sign_change(const cable_solution *sol, int which, double ta, double tb, cable_braid_psign *ps)
 {
-  if (ps->n < BRAID_PSIGN_MAX) {
+  if (ps->n < CABLE_BRAID_PSIGN_MAX) {
     double t, p1, p2, sigma;
     int rc = refine_sign_change(sol, which, ta, tb, &t);
-    if (!rc) rc = braid_pressure_at(sol, t, &p1, &p2, &sigma);
+    if (!rc) rc = cable_braid_pressure_at(sol, t, &p1, &p2, &sigma);
     if (rc) return rc;
     ps->s[ps->n] = t * sol->par[BP_L];
     ps->sigma[ps->n] = sigma;
@@ -130,7 +130,7 @@ static int record_sign_change(const cable_solution *sol, int which, double ta, d
   return CABLE_SUCCESS;
 }
 
-int braid_pressure_signs(const cable_solution *sol, braid_analysis *out)
+int cable_braid_pressure_signs(const cable_solution *sol, cable_braid_analysis *out)
 {
   if (!sol || !out) return CABLE_ERR_NULL;
   if (sol->ndim != BR_NDIM || sol->npar <= BP_W02 || curve_interp_check(sol) != 0) return CABLE_ERR_INPUT;
@@ -160,18 +160,18 @@ int braid_pressure_signs(const cable_solution *sol, braid_analysis *out)
   return CABLE_SUCCESS;
 }
 
-int braid_analysis_compute(const cable_solution *sol, braid_analysis *out)
+int cable_braid_analysis_compute(const cable_solution *sol, cable_braid_analysis *out)
 {
   if (!sol || !out) return CABLE_ERR_NULL;
   memset(out, 0, sizeof *out);
   if (sol->ndim != BR_NDIM || sol->npar <= BP_EPS13 || curve_interp_check(sol) != 0) return CABLE_ERR_INPUT;
   int rc = braid_topology_compute(sol, 0, &out->topo);
   if (rc) return rc;
-  rc = braid_tube_distance_solution(sol, 0, &out->tube);
+  rc = cable_braid_tube_distance_solution(sol, 0, &out->tube);
   if (rc) return rc;
-  rc = braid_pressure_signs(sol, out);
+  rc = cable_braid_pressure_signs(sol, out);
   if (rc) return rc;
-  out->drift = braid_first_integral_drift(sol);
+  out->drift = cable_braid_first_integral_drift(sol);
   if (out->drift < 0) return CABLE_ERR_NONFINITE;
   int npts = cable_solution_npts(sol);
   const double *u0 = sol->u, *u1 = sol->u + (size_t)(npts - 1) * BR_NDIM;
@@ -184,13 +184,13 @@ int braid_analysis_compute(const cable_solution *sol, braid_analysis *out)
   return CABLE_SUCCESS;
 }
 
-int braid_axis_same_type(const braid_analysis *a, const braid_analysis *b)
+int cable_braid_axis_same_type(const cable_braid_analysis *a, const cable_braid_analysis *b)
 {
   if (!a || !b) return 0;
   return strcmp(a->topo.axis.name, b->topo.axis.name) == 0 && a->topo.axis.handedness == b->topo.axis.handedness;
 }
 
-int braid_branch_settled(const braid_analysis *const *a, int n, int *first)
+int cable_braid_branch_settled(const cable_braid_analysis *const *a, int n, int *first)
 {
   if (!a || n <= 0) {
     if (first) *first = -1;
@@ -204,7 +204,7 @@ int braid_branch_settled(const braid_analysis *const *a, int n, int *first)
   if (last < 0) return -1;
   for (int i = last - 1; i >= 0; i--) {
     if (!a[i]) continue;
-    if (!braid_axis_same_type(a[i], a[last])) break;
+    if (!cable_braid_axis_same_type(a[i], a[last])) break;
     *first = i;
   }
   for (int i = *first; i <= last; i++)

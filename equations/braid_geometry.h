@@ -12,7 +12,7 @@
 #define CABLE_BRAID_GEOMETRY_H
 
 #include "cable/cable_solution.h"
-#include "cable/cable_analysis.h"   /* braid_topology */
+#include "cable/cable_analysis.h"   /* cable_braid_topology */
 #include "knot_type.h"
 
 typedef struct braid_curves {

@@ -44,7 +44,7 @@ typedef struct kt_diagram {
 
 typedef struct kt_invariants {
   int deg;
-  long alex[KNOT_TYPE_MAX_DEGREE + 1];
+  long alex[CABLE_KNOT_TYPE_MAX_DEGREE + 1];
   long det;
   int signature;
 } kt_invariants;
@@ -384,7 +384,7 @@ static int alexander(const kt_code *g, kt_invariants *inv)
   /* lift: Garner on the first two primes (|value| < p0 p1 / 2 < 2^61), then
    * every further prime must agree; with the primes' product above
    * 2 * 4^m + 2^63 agreement certifies the value */
-  long coef[KNOT_TYPE_MAX_DEGREE + 2];
+  long coef[CABLE_KNOT_TYPE_MAX_DEGREE + 2];
   int lo = -1, hi = -1;
   uint64_t p0 = kt_primes[0], p1 = kt_primes[1];
   uint64_t i01 = inv_mod(p0 % p1, p1);
@@ -403,7 +403,7 @@ static int alexander(const kt_code *g, kt_invariants *inv)
       if (lo < 0) lo = i;
       hi = i;
     }
-    if (lo >= 0 && i - lo > KNOT_TYPE_MAX_DEGREE) { rc = CABLE_ERR_UNSUPPORTED; goto done; }
+    if (lo >= 0 && i - lo > CABLE_KNOT_TYPE_MAX_DEGREE) { rc = CABLE_ERR_UNSUPPORTED; goto done; }
     if (lo >= 0) coef[i - lo] = v;
   }
   if (lo < 0) { rc = CABLE_ERR_INPUT; goto done; }      /* Delta = 0: not a knot diagram */
@@ -594,7 +594,7 @@ static int same_poly(const long *a, int da, const long *b, int db)
   return 1;
 }
 
-static void identify(const kt_invariants *inv, knot_type_result *out)
+static void identify(const kt_invariants *inv, cable_knot_type_result *out)
 {
   out->torus_p = out->torus_q = 0;
   out->handedness = 0;
@@ -611,12 +611,12 @@ static void identify(const kt_invariants *inv, knot_type_result *out)
     out->crossing_number = 4;
     return;
   }
-  long tp[KNOT_TYPE_MAX_DEGREE + 1];
+  long tp[CABLE_KNOT_TYPE_MAX_DEGREE + 1];
   for (int q = 2; (q - 1) * (q - 1) < inv->deg + 1 || q == 2; q++) {
     if ((q - 1) == 0 || inv->deg % (q - 1) != 0) continue;
     int p = inv->deg / (q - 1) + 1;
     if (p <= q || gcd_int(p, q) != 1) continue;
-    int d = knot_type_torus_alexander(p, q, tp, KNOT_TYPE_MAX_DEGREE);
+    int d = knot_type_torus_alexander(p, q, tp, CABLE_KNOT_TYPE_MAX_DEGREE);
     if (d < 0 || !same_poly(inv->alex, inv->deg, tp, d)) continue;
     out->torus_p = p;
     out->torus_q = q;
@@ -640,7 +640,7 @@ static int invariants_of(const kt_diagram *d, kt_invariants *inv)
   return rc;
 }
 
-static int check_input(const double *xyz, int n, const knot_type_result *out)
+static int check_input(const double *xyz, int n, const cable_knot_type_result *out)
 {
   if (!xyz || !out || n < 3) return CABLE_ERR_INPUT;
   for (long i = 0; i < 3L * n; i++)
@@ -654,7 +654,7 @@ typedef struct kt_diagram_info {
 } kt_diagram_info;
 
 static void fill_result(const kt_invariants *inv, const kt_diagram_info *d, int nagree,
-                        knot_type_result *out)
+                        cable_knot_type_result *out)
 {
   memset(out, 0, sizeof *out);
   out->alex_degree = inv->deg;
@@ -669,7 +669,7 @@ static void fill_result(const kt_invariants *inv, const kt_diagram_info *d, int 
   identify(inv, out);
 }
 
-int knot_type_identify_dir(const double *xyz, int n, const double dir[3], knot_type_result *out)
+int knot_type_identify_dir(const double *xyz, int n, const double dir[3], cable_knot_type_result *out)
 {
   int rc = check_input(xyz, n, out);
   if (rc != CABLE_SUCCESS) return rc;
@@ -708,7 +708,7 @@ static int same_invariants(const kt_invariants *a, const kt_invariants *b)
   return a->signature == b->signature && same_poly(a->alex, a->deg, b->alex, b->deg);
 }
 
-int knot_type_identify(const double *xyz, int n, knot_type_result *out)
+int knot_type_identify(const double *xyz, int n, cable_knot_type_result *out)
 {
   int rc = check_input(xyz, n, out);
   if (rc != CABLE_SUCCESS) return rc;

@@ -25,7 +25,7 @@
 #ifndef CABLE_KNOT_TYPE_H
 #define CABLE_KNOT_TYPE_H
 
-#include "cable/cable_analysis.h"   /* knot_type_result */
+#include "cable/cable_analysis.h"   /* cable_knot_type_result */
 
 /* Projections with more crossings are refused (the exact determinant costs
  * O(c^4) per prime); smooth curves of the knots named here need far fewer. */
@@ -39,10 +39,10 @@
  * (nearly) intersects itself), CABLE_ERR_NONFINITE, CABLE_ERR_ALLOC or
  * CABLE_ERR_UNSUPPORTED (too many crossings, polynomial out of range, or
  * projections that disagree). */
-int knot_type_identify(const double *xyz, int n, knot_type_result *out);
+int knot_type_identify(const double *xyz, int n, cable_knot_type_result *out);
 /* The same for one given projection direction (need not be normalised);
  * CABLE_ERR_INPUT when that projection is degenerate. */
-int knot_type_identify_dir(const double *xyz, int n, const double dir[3], knot_type_result *out);
+int knot_type_identify_dir(const double *xyz, int n, const double dir[3], cable_knot_type_result *out);
 
 /* Alexander polynomial of the torus knot T(p,q) (p, q >= 1 coprime) in the
  * normalisation above; returns its degree (p-1)(q-1), or -1 if it exceeds maxdeg. */

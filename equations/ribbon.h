@@ -27,7 +27,7 @@
 #ifndef CABLE_RIBBON_H
 #define CABLE_RIBBON_H
 
-#include "cable/cable_analysis.h"   /* braid_topology */
+#include "cable/cable_analysis.h"   /* cable_braid_topology */
 #include "cable/cable_solution.h"
 
 /* The normal handed to the twist routines must satisfy |d.T| <= RIBBON_PERP_TOL |d|:
@@ -155,6 +155,6 @@ int braid_ribbon_lk(const cable_solution *sol, double *lk, double *tw, double *w
  * type of its axis (braid_curves, knot_type_identify).  nsamples: polygon
  * vertices for the knot type of the axis (0: default BRAID_TOPOLOGY_SAMPLES). */
 #define BRAID_TOPOLOGY_SAMPLES 2000
-int braid_topology_compute(const cable_solution *sol, int nsamples, braid_topology *out);
+int braid_topology_compute(const cable_solution *sol, int nsamples, cable_braid_topology *out);
 
 #endif

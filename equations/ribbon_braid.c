@@ -455,7 +455,7 @@ int braid_ribbon_lk(const cable_solution *sol, double *lk, double *tw, double *w
   return CABLE_SUCCESS;
 }
 
-int braid_topology_compute(const cable_solution *sol, int nsamples, braid_topology *out)
+int braid_topology_compute(const cable_solution *sol, int nsamples, cable_braid_topology *out)
 {
   if (!out || nsamples < 0) return CABLE_ERR_INPUT;
   braid_ribbon rb;
@@ -480,7 +480,7 @@ int braid_topology_compute(const cable_solution *sol, int nsamples, braid_topolo
   /* writhe of the minimal diagram: torus knots' minimal diagrams are closed
    * positive (right-handed) or negative braids, so it is handedness x
    * crossing number; the unknot's and the amphichiral figure-eight's are 0 */
-  const knot_type_result *k = &out->axis;
+  const cable_knot_type_result *k = &out->axis;
   if (k->crossing_number < 0 || (k->torus_p > 0 && k->handedness == 0)) out->lk_in_tube = NAN;
   else out->lk_in_tube = out->lk - (double)(k->handedness * k->crossing_number);
   return CABLE_SUCCESS;

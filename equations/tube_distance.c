@@ -226,7 +226,7 @@ static double seg_s(const braid_curves *bc, int seg, double u)
   return bc->s[seg] + u * (bc->s[seg + 1] - bc->s[seg]);
 }
 
-int braid_tube_distance(const braid_curves *bc, tube_distance_result *out)
+int braid_tube_distance(const braid_curves *bc, cable_tube_distance_result *out)
 {
   if (!bc || !out || bc->n < 2 || !(bc->Delta > 0) || !bc->s || !bc->r1 || !bc->r2 || !bc->c)
     return CABLE_ERR_INPUT;
@@ -273,7 +273,7 @@ int braid_tube_distance(const braid_curves *bc, tube_distance_result *out)
     if (!f1[i] && !f2[i]) { i++; continue; }
     int j = i;
     while (j < n - 1 && (f1[j] || f2[j])) j++;
-    if (out->noverlap < TUBE_MAX_INTERVALS) {
+    if (out->noverlap < CABLE_TUBE_MAX_INTERVALS) {
       out->overlap[out->noverlap][0] = bc->s[i];
       out->overlap[out->noverlap][1] = bc->s[j];
     }
@@ -296,7 +296,7 @@ done:
 /* Smallest sample count of the solution variant. */
 #define TUBE_MIN_SAMPLES 1001
 
-int braid_tube_distance_solution(const cable_solution *sol, int n, tube_distance_result *out)
+int cable_braid_tube_distance_solution(const cable_solution *sol, int n, cable_tube_distance_result *out)
 {
   if (!sol || !out) return CABLE_ERR_NULL;
   if (n < 0 || n == 1) return CABLE_ERR_INPUT;

@@ -16,7 +16,7 @@
 #define CABLE_TUBE_DISTANCE_H
 
 #include "braid_geometry.h"
-#include "cable/cable_analysis.h"   /* tube_distance_result */
+#include "cable/cable_analysis.h"   /* cable_tube_distance_result */
 
 typedef struct tube_polyline {
   int n;                        /* vertices, n >= 2 (n - 1 segments) */
@@ -65,14 +65,14 @@ int tube_polylines_distance(tube_workspace *w, int ncurve, const tube_polyline *
 
 /* Uses braid_curves' samples (bc->n points; their spacing must be below
  * pi Delta).  Returns 0, CABLE_ERR_INPUT, CABLE_ERR_NONFINITE or CABLE_ERR_ALLOC. */
-int braid_tube_distance(const braid_curves *bc, tube_distance_result *out);
+int braid_tube_distance(const braid_curves *bc, cable_tube_distance_result *out);
 
 /* Samples per Delta of strand length for the solution variant.  Chords of
  * the sampled strands deviate from the curves by h^2 kappa / 8; strands wound
  * about each other have kappa <= 2/Delta, so h = Delta/10 bounds the error
  * of dmin by Delta/400 (0.25 %). */
 #define TUBE_SAMPLES_PER_DELTA 10
-/* braid_tube_distance_solution: in cable/cable_analysis.h (public). */
+/* cable_braid_tube_distance_solution: in cable/cable_analysis.h (public). */
 
 /* Along a branch sampled at n points with torque t[i] and tube distance d[i]
  * (in units of Delta): the stretches where d > 1 (tubes apart), as [from, to]

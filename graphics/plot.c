@@ -70,7 +70,7 @@ static double plot_py(const plot_frame *f, double y)
   return f->top + f->ph - (y - f->ty.lo) / (f->ty.hi - f->ty.lo) * f->ph;
 }
 
-static int plot_validate(const plot_branch *b, int nb, const plot_annotation *an, int na,
+static int plot_validate(const plot_branch *b, int nb, const cable_plot_annotation *an, int na,
                          const plot_options *opt, const char *path)
 {
   if (b == NULL || nb < 1 || opt == NULL || path == NULL || path[0] == '\0') return CABLE_ERR_INPUT;
@@ -84,7 +84,7 @@ static int plot_validate(const plot_branch *b, int nb, const plot_annotation *an
 
 /* Data range over every finite point and annotation; CABLE_ERR_INPUT when
  * there is none. */
-static int plot_range(const plot_branch *b, int nb, const plot_annotation *an, int na,
+static int plot_range(const plot_branch *b, int nb, const cable_plot_annotation *an, int na,
                       double lo[2], double hi[2])
 {
   lo[0] = lo[1] = INFINITY;
@@ -347,7 +347,7 @@ static int plot_mark_add(plot_mark *marks, int n, int cap, const plot_frame *f, 
 /* Draws the markers, then their texts; *boxes (may be NULL when out of
  * memory) receives the texts' boxes for the legend to keep clear of; returns
  * their number. */
-static int plot_markers(cairo_t *cr, const plot_branch *b, int nb, const plot_annotation *an, int na,
+static int plot_markers(cairo_t *cr, const plot_branch *b, int nb, const cable_plot_annotation *an, int na,
                         const plot_frame *f, plot_box **boxes)
 {
   char buf[32];
@@ -417,7 +417,7 @@ static long plot_hidden(const plot_branch *b, int nb, const plot_box *boxes, int
 /* The marker shapes the diagram shows, for the legend's key: [0] branch
  * points, [1] folds; [2] (open circles) stays 0: they carry their label or
  * text beside them and need no key. */
-static void plot_shapes_used(const plot_branch *b, int nb, const plot_annotation *an, int na, int used[3])
+static void plot_shapes_used(const plot_branch *b, int nb, const cable_plot_annotation *an, int na, int used[3])
 {
   used[0] = used[1] = used[2] = 0;
   for (int i = 0; i < nb; i++)
@@ -432,7 +432,7 @@ static void plot_shapes_used(const plot_branch *b, int nb, const plot_annotation
 
 static const char *const plot_shape_names[3] = {"branch point", "fold", "labelled point"};
 
-static void plot_legend(cairo_t *cr, const plot_branch *b, int nb, const plot_annotation *an, int na,
+static void plot_legend(cairo_t *cr, const plot_branch *b, int nb, const cable_plot_annotation *an, int na,
                         const plot_box *boxes, int nbox, const plot_frame *f)
 {
   char buf[32];
@@ -490,7 +490,7 @@ static void plot_legend(cairo_t *cr, const plot_branch *b, int nb, const plot_an
   }
 }
 
-static void plot_draw(cairo_t *cr, const plot_branch *b, int nb, const plot_annotation *an,
+static void plot_draw(cairo_t *cr, const plot_branch *b, int nb, const cable_plot_annotation *an,
                       int na, const plot_options *opt, int w, int h, const plot_frame *f)
 {
   cairo_set_source_rgb(cr, 1, 1, 1);
@@ -504,13 +504,13 @@ static void plot_draw(cairo_t *cr, const plot_branch *b, int nb, const plot_anno
 }
 
 int plot_bifurcation_annotated(const plot_branch *branches, int nbranch,
-                               const plot_annotation *annot, int nannot,
+                               const cable_plot_annotation *annot, int nannot,
                                const plot_options *opt, const char *path)
 {
   return plot_bifurcation_captioned(branches, nbranch, annot, nannot, opt, NULL, path);
 }
 
-int plot_bifurcation_captioned(const plot_branch *branches, int nbranch, const plot_annotation *annot, int nannot,
+int plot_bifurcation_captioned(const plot_branch *branches, int nbranch, const cable_plot_annotation *annot, int nannot,
                                const plot_options *opt, const char *caption, const char *path)
 {
   int st = plot_validate(branches, nbranch, annot, nannot, opt, path);

@@ -45,12 +45,12 @@ int plot_bifurcation(const plot_branch *branches, int nbranch, const plot_option
                      const char *path);
 /* The same with extra marks (annot may be NULL when nannot == 0). */
 int plot_bifurcation_annotated(const plot_branch *branches, int nbranch,
-                               const plot_annotation *annot, int nannot,
+                               const cable_plot_annotation *annot, int nannot,
                                const plot_options *opt, const char *path);
 
 /* The same with a caption: one line (no newline, at most 2000 bytes) that a
  * PNG carries in a tEXt chunk with the keyword "Description" (an SVG: none). */
-int plot_bifurcation_captioned(const plot_branch *branches, int nbranch, const plot_annotation *annot, int nannot,
+int plot_bifurcation_captioned(const plot_branch *branches, int nbranch, const cable_plot_annotation *annot, int nannot,
                                const plot_options *opt, const char *caption, const char *path);
 /* The colour of branch i (a fixed palette, repeated after 10 branches). */
 void plot_branch_color(int i, double rgb[3]);

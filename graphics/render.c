@@ -36,11 +36,11 @@ static const double render_background[3] = {1.0, 1.0, 1.0};
 #define RENDER_OUTLINE_LUMA 0.5
 
 static int render_validate(const render_tube *tubes, int ntube, const render_profile *prof,
-                           int nprof, const render_options *opt, const char *path)
+                           int nprof, const cable_render_options *opt, const char *path)
 {
   if (tubes == NULL || ntube < 1 || path == NULL || path[0] == '\0') return CABLE_ERR_INPUT;
   if (nprof < 0 || (nprof > 0 && prof == NULL)) return CABLE_ERR_INPUT;
-  if (opt && (opt->colormap < RENDER_COLORMAP_NONE || opt->colormap > RENDER_COLORMAP_DIVERGING ||
+  if (opt && (opt->colormap < CABLE_RENDER_COLORMAP_NONE || opt->colormap > CABLE_RENDER_COLORMAP_DIVERGING ||
               !isfinite(opt->thicken)))
     return CABLE_ERR_INPUT;
   for (int k = 0; k < ntube; k++) {
@@ -83,7 +83,7 @@ static int render_scalar_range(const render_tube *tubes, int ntube, double *vmin
 
 typedef struct {
   const render_camera *cam;
-  int map;              /* colour map in use, or RENDER_COLORMAP_NONE */
+  int map;              /* colour map in use, or CABLE_RENDER_COLORMAP_NONE */
   double lo, hi;        /* scalar range of the map */
   double max_radius;    /* largest drawn radius (world units) */
 } render_ctx;
@@ -103,7 +103,7 @@ static int render_tube_draw(render_zbuf *zb, const render_ctx *c, const render_t
   }
   int st = tube_mesh_build(m, t->xyz, t->scalar, radius);
   if (st == CABLE_SUCCESS) {
-    int mapped = c->map != RENDER_COLORMAP_NONE && t->scalar != NULL;
+    int mapped = c->map != CABLE_RENDER_COLORMAP_NONE && t->scalar != NULL;
     for (int i = 0; i < m->nv; i++) {
       double x, y, z;
       const double *n = m->normal + 3 * i;
@@ -202,21 +202,21 @@ static void render_resolve(const render_zbuf *zb, cairo_surface_t *s)
 }
 
 int render_tubes_png(const render_tube *tubes, int ntube, const render_profile *profiles,
-                     int nprof, const render_options *opt, const char *path)
+                     int nprof, const cable_render_options *opt, const char *path)
 {
   return render_tubes_png_text(tubes, ntube, profiles, nprof, opt, NULL, path);
 }
 
 int render_tubes_png_text(const render_tube *tubes, int ntube, const render_profile *profiles, int nprof,
-                          const render_options *opt, const render_text *text, const char *path)
+                          const cable_render_options *opt, const render_text *text, const char *path)
 {
   int st = render_validate(tubes, ntube, profiles, nprof, opt, path);
   if (st != CABLE_SUCCESS) return st;
   render_camera cam;
   if ((st = render_camera_fit(tubes, ntube, opt, &cam)) != CABLE_SUCCESS) return st;
-  render_ctx c = {&cam, RENDER_COLORMAP_NONE, 0, 1, 0};
+  render_ctx c = {&cam, CABLE_RENDER_COLORMAP_NONE, 0, 1, 0};
   double vmin, vmax;
-  if (opt && opt->colormap != RENDER_COLORMAP_NONE && render_scalar_range(tubes, ntube, &vmin, &vmax)) {
+  if (opt && opt->colormap != CABLE_RENDER_COLORMAP_NONE && render_scalar_range(tubes, ntube, &vmin, &vmax)) {
     c.map = opt->colormap;
     render_colormap_range(c.map, vmin, vmax, &c.lo, &c.hi);
   }
@@ -235,7 +235,7 @@ int render_tubes_png_text(const render_tube *tubes, int ntube, const render_prof
   cairo_surface_t *s = cairo_image_surface_create(CAIRO_FORMAT_RGB24, cam.width, cam.height);
   if (cairo_surface_status(s) == CAIRO_STATUS_SUCCESS) {
     render_resolve(zb, s);
-    if (c.map != RENDER_COLORMAP_NONE) {
+    if (c.map != CABLE_RENDER_COLORMAP_NONE) {
       cairo_t *cr = cairo_create(s);
       render_colorbar_draw(cr, c.map, c.lo, c.hi, cam.plot_width, cam.width, cam.height,
                            text ? text->colorbar_title : NULL);

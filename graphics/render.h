@@ -64,7 +64,7 @@ typedef struct {
 
 /* Fit the view: the drawn tubes fill the picture (left of the colour bar)
  * less a margin.  CABLE_SUCCESS or CABLE_ERR_INPUT. */
-int render_camera_fit(const render_tube *tubes, int ntube, const render_options *opt,
+int render_camera_fit(const render_tube *tubes, int ntube, const cable_render_options *opt,
                       render_camera *cam);
 /* Image position (x right, y down, pixels) and depth (world length along
  * the view direction; larger is farther) of world point p. */
@@ -77,7 +77,7 @@ void render_camera_project(const render_camera *cam, const double p[3], double *
  * bad sizes), CABLE_ERR_IO (path not writable; nothing is left behind) or
  * CABLE_ERR_ALLOC. */
 int render_tubes_png(const render_tube *tubes, int ntube, const render_profile *profiles,
-                     int nprof, const render_options *opt, const char *path);
+                     int nprof, const cable_render_options *opt, const char *path);
 
 /* Texts of a picture: the colour bar's title (drawn above the bar when a
  * colour map is on) and a one-line caption that the PNG carries in a tEXt
@@ -90,6 +90,6 @@ typedef struct {
 
 /* render_tubes_png with texts (text NULL: none). */
 int render_tubes_png_text(const render_tube *tubes, int ntube, const render_profile *profiles, int nprof,
-                          const render_options *opt, const render_text *text, const char *path);
+                          const cable_render_options *opt, const render_text *text, const char *path);
 
 #endif

@@ -61,7 +61,7 @@ static int render_default_view(const render_tube *tubes, int ntube, double view[
   return st;
 }
 
-static int render_basis(const render_tube *tubes, int ntube, const render_options *opt,
+static int render_basis(const render_tube *tubes, int ntube, const cable_render_options *opt,
                         render_camera *cam)
 {
   double *v = cam->view, *u = cam->up;
@@ -85,7 +85,7 @@ static int render_basis(const render_tube *tubes, int ntube, const render_option
   return CABLE_SUCCESS;
 }
 
-int render_camera_fit(const render_tube *tubes, int ntube, const render_options *opt,
+int render_camera_fit(const render_tube *tubes, int ntube, const cable_render_options *opt,
                       render_camera *cam)
 {
   if (tubes == NULL || ntube < 1 || cam == NULL) return CABLE_ERR_INPUT;
@@ -118,7 +118,7 @@ int render_camera_fit(const render_tube *tubes, int ntube, const render_options 
   double cx = 0.5 * (lo[0] + hi[0]), cy = 0.5 * (lo[1] + hi[1]);
   for (int a = 0; a < 3; a++) cam->centre[a] = cx * cam->right[a] + cy * cam->up[a];
 
-  int bar = opt && opt->colormap != RENDER_COLORMAP_NONE && has_scalar;
+  int bar = opt && opt->colormap != CABLE_RENDER_COLORMAP_NONE && has_scalar;
   cam->plot_width = cam->width - (bar ? render_colorbar_width(cam->width, cam->height) : 0);
   double aw = cam->plot_width - 2.0 * RENDER_MARGIN * cam->width;
   double ah = cam->height * (1.0 - 2.0 * RENDER_MARGIN);

@@ -41,13 +41,13 @@ static void render_table(const double (*tab)[3], int n, double u, double rgb[3])
 
 void render_colormap_eval(int map, double u, double rgb[3])
 {
-  if (map == RENDER_COLORMAP_DIVERGING) render_table(render_coolwarm, 5, u, rgb);
+  if (map == CABLE_RENDER_COLORMAP_DIVERGING) render_table(render_coolwarm, 5, u, rgb);
   else render_table(render_viridis, 9, u, rgb);
 }
 
 void render_colormap_range(int map, double vmin, double vmax, double *lo, double *hi)
 {
-  if (map == RENDER_COLORMAP_DIVERGING) {
+  if (map == CABLE_RENDER_COLORMAP_DIVERGING) {
     double m = fmax(fabs(vmin), fabs(vmax));
     *lo = -m, *hi = m;
   } else {

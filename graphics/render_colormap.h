@@ -4,8 +4,8 @@
 
 #include <cairo/cairo.h>
 
-/* Colour of u in [0, 1] (clamped) for map RENDER_COLORMAP_SEQUENTIAL or
- * RENDER_COLORMAP_DIVERGING. */
+/* Colour of u in [0, 1] (clamped) for map CABLE_RENDER_COLORMAP_SEQUENTIAL or
+ * CABLE_RENDER_COLORMAP_DIVERGING. */
 void render_colormap_eval(int map, double u, double rgb[3]);
 /* The range mapped to [0, 1]: [min, max] (sequential) or [-m, m] with
  * m = max |value| (diverging); widened when it has zero width. */

@@ -46,15 +46,17 @@ FIXTURE = {
     'cable_solution *': 'f->sol', 'const cable_solution *': 'f->sol',
     'cable_sfile *': 'f->sf', 'const cable_sfile *': 'f->sf',
     'cable_bfile *': 'f->bf', 'const cable_bfile_branch *': '&f->bf->branch[0]',
-    'cable_cont *': 'f->cc', 'const cable_cont *': 'f->cc',
+    'cable_cont *': 'f->cc', 'const cable_cont *': 'f->cc', 'cable_cont **': '&f->cc_out',
+    'cable_session **': '&f->session_out', 'void *': 'f',
+    'cable_solution **': '&f->sol_out', 'cable_fold **': '&f->fold_out', 'cable_bpcont **': '&f->bpc_out',
     'const cable_sink *': '&f->sink',
     'cable_fold *': 'f->fold', 'const cable_fold *': 'f->fold',
-    'braid_analysis *': '&f->ba', 'const braid_analysis *': '&f->ba',
-    'const braid_analysis *const *': 'f->bas',
-    'tube_distance_result *': '&f->tube', 'axis_passages *': '&f->ap',
+    'cable_braid_analysis *': '&f->ba', 'const cable_braid_analysis *': '&f->ba',
+    'const cable_braid_analysis *const *': 'f->bas',
+    'cable_tube_distance_result *': '&f->tube', 'cable_axis_passages *': '&f->ap',
     'cable_strands *': '&f->strands', 'cable_stab_result *': '&f->stab',
     'FILE *': 'f->devnull',
-    'const plot_annotation *': 'f->marks', 'const render_options *': '&f->ropt',
+    'const cable_plot_annotation *': 'f->marks', 'const cable_render_options *': '&f->ropt',
     # no valid module at hand without a compiler run or a plug-in file
     'cable_plugin *': None, 'const cable_plugin *': None,
     'cable_autoeq *': None, 'const cable_autoeq *': None,
@@ -91,14 +93,14 @@ INT = {
     'npar_max': '36', 'err_par': '-1', 'from_stpnt': '1', 'ibr': '1', 'first_label': '1',
     'iplt': '0', 'itp': '6', 'nbc': '0', 'nint': '0',
 }
-INT_FOR = {('braid_tube_distance_solution', 'n'): '0'}
+INT_FOR = {('cable_braid_tube_distance_solution', 'n'): '0', ('cable_solution_create', 'nfpr'): '1'}
 
 # What a NULL argument gives, by function: 'status' (CABLE_ERR_NULL, the
 # default for int), 'neg' (a documented negative value), 'null' (the default
 # for pointers), 'nonnull' (a message or ""), 'zero', 'nonpos', 'nan' (the
 # default for double), 'any' (void functions: nothing to check but survival).
 RESULT = {
-    'braid_first_integral_drift': 'neg', 'braid_axis_same_type': 'zero', 'braid_branch_settled': 'neg',
+    'cable_braid_first_integral_drift': 'neg', 'cable_braid_axis_same_type': 'zero', 'cable_braid_branch_settled': 'neg',
     'cable_aufile_last_label': 'nonpos', 'cable_aufile_last_branch': 'nonpos',
     'cable_aufile_parse_double': 'neg', 'cable_sfile_count': 'zero',
     'cable_autoeq_was_built': 'zero', 'cable_constants_key_known': 'zero',
@@ -108,19 +110,19 @@ RESULT = {
     'cable_label_spec_parse': 'neg', 'cable_plugin_path': 'nonnull',
     'cable_problem_validate': 'neg', 'cable_branch_number': 'zero', 'cable_branch_npoints': 'zero',
     'cable_branch_nsolutions': 'zero', 'cable_solution_measure': 'any',
-    'cable_autoeq_find': 'neg',
+    'cable_autoeq_find': 'neg', 'cable_bp_kind_code': 'zero', 'cable_branch_end_status': 'zero',
 }
 
 # Arguments that may be NULL (documented): the call must survive, its result
 # is not checked.
 OPTIONAL = {
-    'braid_pressure_at': {'sigma'},
+    'cable_braid_pressure_at': {'sigma'},
     'cable_aufile_open': {'dir', 'names', 'opt', 'err'},
     'cable_aufile_checkpoint': {'err'}, 'cable_aufile_close': {'err'},
     'cable_sfile_read': {'err'}, 'cable_sfile_find': {'err'}, 'cable_sfile_resolve_irs': {'err'},
     'cable_bfile_read': {'err'}, 'cable_stability_index': {'err'},
     'cable_session_info': {'err'},
-    'braid_solution_curves': {'r1', 'r2', 'c', 'p1', 'p2', 'sigma'},
+    'cable_braid_solution_curves': {'r1', 'r2', 'c', 'p1', 'p2', 'sigma'},
     'cable_autoeq_find': {'dir'}, 'cable_autoeq_open': {'err'},
     'cable_autoeq_problem': {'c', 'dat', 'err'},
     'cable_constants_parse_file': {'names', 'parnames', 'err'},
@@ -142,7 +144,9 @@ OPTIONAL = {
     'cable_plugin_open': {'err'}, 'cable_plugin_open_npar': {'err'},
     'cable_problem_validate': {'origin', 'err'},
     'cable_problem_prepare': {'err'},
-    'cable_session_alloc': {'opt'},
+    'cable_session_alloc': {'opt'}, 'cable_session_create': {'opt', 'err'},
+    'cable_cont_create': {'err'}, 'cable_solution_create': {'err'}, 'cable_fold_create': {'err'},
+    'cable_bpcont_create': {'err'}, 'cable_fold_starting_data': {'err'}, 'cable_bpcont_starting_data': {'err'}, 'cable_cont_set_error_handler': {'ctx'},
     'cable_session_run': {'err'}, 'cable_session_load': {'err'}, 'cable_session_save': {'err'},
     'cable_session_loadbd': {'err'}, 'cable_session_transform': {'err'},
     'cable_session_transform_files': {'err'},

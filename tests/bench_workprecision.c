@@ -6,7 +6,7 @@
  * For NTST x NCOL on a grid: the run time (median of REPEATS scene runs)
  * against the errors in F at (a) and in T at BP1, both measured against a
  * Richardson-extrapolated reference from the two finest meshes.  Also the
- * cost of computing derived quantities (braid_analysis_compute) at every
+ * cost of computing derived quantities (cable_braid_analysis_compute) at every
  * accepted point instead of only at labelled ones.
  *
  * Usage: bench_workprecision IMGDIR [quick]
@@ -79,8 +79,8 @@ static int analyse_solution(void *ctx, const cable_point *pt, const cable_soluti
 {
   (void)pt;
   analysis_ctx *a = ctx;
-  braid_analysis an;
-  int rc = braid_analysis_compute(sol, &an);
+  cable_braid_analysis an;
+  int rc = cable_braid_analysis_compute(sol, &an);
   if (rc == 0) {
     a->count++;
     a->checksum += an.topo.lk;
@@ -377,7 +377,7 @@ int main(int argc, char **argv)
   double t_plain = scene_time(&sc, ntst0, ncol0, NULL, n, &r0, &c1);
   double t_every = scene_time(&sc, ntst0, ncol0, &every, n, &r1, &c2);
   printf("\nDerived quantities (NTST = %d, NCOL = %d, median of %d): the scene takes %.2f s as the engine runs it "
-         "(analysis only for labelled solutions, on request) and %.2f s with braid_analysis_compute at every one of "
+         "(analysis only for labelled solutions, on request) and %.2f s with cable_braid_analysis_compute at every one of "
          "its %d accepted points (%d analyses in %d runs): ratio %.1f, %.3f s per analysis against %.4f s per "
          "continuation step.\n",
          ntst0, ncol0, n, t_plain, t_every, r1.steps, actx.count, n, t_every / t_plain,

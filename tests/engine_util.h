@@ -15,6 +15,7 @@
 typedef struct {
   int n;
   int itp[MEMRUN_MAX], lab[MEMRUN_MAX], newton[MEMRUN_MAX];
+  int bp_kind[MEMRUN_MAX], bp_mult[MEMRUN_MAX];   /* the points' structured BP fields */
   double par[MEMRUN_MAX][MEMRUN_NPAR];
   double l2[MEMRUN_MAX];
   int nsol;
@@ -56,6 +57,8 @@ static inline int memrun_point(void *ctx, const cable_point *pt)
   r->itp[r->n] = pt->itp;
   r->lab[r->n] = pt->lab;
   r->newton[r->n] = pt->newton_iters;
+  r->bp_kind[r->n] = pt->bp_kind;
+  r->bp_mult[r->n] = pt->bp_mult;
   r->l2[r->n] = pt->l2norm;
   for (int k = 0; k < MEMRUN_NPAR && k < pt->npar; k++) r->par[r->n][k] = pt->par[k];
   r->n++;

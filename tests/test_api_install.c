@@ -69,7 +69,7 @@ int main(int argc, char **argv)
            mode, prefix);
   test_int("make install PREFIX=<temporary prefix>", sh(cmd), 0);
   const char *const installed[] = {"include/cable/cable.h", "include/cable/cable_cont.h", "lib/libcable.so",
-                                   "lib/libcable.so.0", "lib/pkgconfig/cable.pc", "bin/cable"};
+                                   "lib/libcable.so.1", "lib/pkgconfig/cable.pc", "bin/cable"};
   for (size_t i = 0; i < sizeof installed / sizeof installed[0]; i++) {
     char w[300];
     snprintf(path, sizeof path, "%s/%s", prefix, installed[i]);

@@ -36,7 +36,7 @@ static void test_curve(int trefoil, double eps, double rot, double *xyz, double 
 static void test_curve_passages(void)
 {
   static double a[3 * NCURVE], b[3 * NCURVE], c[3 * NCURVE], pos[NCURVE];
-  axis_passages ap, back;
+  cable_axis_passages ap, back;
   /* window 0.05 of the period: the crossing parts are half a period apart */
   test_curve(0, 0.1, 0, a, pos);
   test_curve(0, -0.1, 0, b, pos);

@@ -118,7 +118,7 @@ int main(void)
     int st = 0;
     char msg[400];
     cable_bpcont *f = cable_bpcont_alloc(&pb, &cb, bp, &st, msg, sizeof msg);
-    int rc = f ? cable_bpcont_starting_data(f, msg, sizeof msg) : -1;
+    int rc = f ? cable_bpcont_starting_data(f, NULL) : -1;
     test_true("AUTO's runs: the starting data are set up", rc == 0);
     cable_solution *ep = NULL;
     if (rc == 0) {

@@ -1,4 +1,4 @@
-/* braid_analysis_compute on converged braid solutions whose answers are known
+/* cable_braid_analysis_compute on converged braid solutions whose answers are known
  * without the code under test:
  *  - the flat (7,2) knot presses its strands together at T = 2: pmin > 0,
  *    no sign change;
@@ -7,7 +7,7 @@
  *  - the flat (6,2) link at T = 17.5, whose contact pressure changes sign:
  *    the positions must have the solution's symmetries (S0 and the 3-fold
  *    rotation) and agree between the two strands' independent pressures;
- *  - braid_branch_settled on made-up branches, and the error paths.
+ *  - cable_braid_branch_settled on made-up branches, and the error paths.
  * The scene functions analyze() and branch_table() are tested through the
  * Python package (tests/python/test_scenes.py). */
 #include <math.h>
@@ -63,8 +63,8 @@ static cable_solution *flat_at(const char *name, int p, int hand, double delta, 
  * non-negative pressure for all its knots). */
 static void check_flat_knot(const cable_solution *knot)
 {
-  braid_analysis *a = malloc(sizeof *a);
-  int rc = braid_analysis_compute(knot, a);
+  cable_braid_analysis *a = malloc(sizeof *a);
+  int rc = cable_braid_analysis_compute(knot, a);
   test_int("flat (7,2) knot: analysed", rc, 0);
   if (!rc) {
     char what[160];
@@ -88,8 +88,8 @@ static void check_flat_knot(const cable_solution *knot)
  * two discrete problems on the same uniform mesh are mirror images too). */
 static void check_mirror_closure(const cable_solution *right, const cable_solution *left)
 {
-  braid_analysis *a = malloc(sizeof *a), *b = malloc(sizeof *b);
-  int rc = braid_analysis_compute(right, a) || braid_analysis_compute(left, b);
+  cable_braid_analysis *a = malloc(sizeof *a), *b = malloc(sizeof *b);
+  int rc = cable_braid_analysis_compute(right, a) || cable_braid_analysis_compute(left, b);
   test_int("right- and left-handed (7,2) knots: analysed", rc, 0);
   if (!rc) {
     char what[160];
@@ -130,8 +130,8 @@ static void check_flat_link(memrun *r)
   cable_solution *s = flat_at("braid_link", 6, -1, LINK_DELTA, 1.0, T, icp, 1, 42, r);
   test_true("flat (6,2) link reaches T = 17.5", s != NULL);
   if (!s) return;
-  braid_analysis *a = malloc(sizeof *a);
-  int rc = braid_analysis_compute(s, a);
+  cable_braid_analysis *a = malloc(sizeof *a);
+  int rc = cable_braid_analysis_compute(s, a);
   test_int("flat (6,2) link at T = 17.5: analysed", rc, 0);
   if (!rc) {
     double L = s->par[BP_L];
@@ -147,7 +147,7 @@ static void check_flat_link(memrun *r)
        7e-13 and 1e6 below the node spacing 1/168, all that node values
        alone would resolve */
     double sym = 0, rot = 0, two = 0;
-    for (int i = 0; i < n && n <= BRAID_PSIGN_MAX; i++) {
+    for (int i = 0; i < n && n <= CABLE_BRAID_PSIGN_MAX; i++) {
       sym = fmax(sym, nearest(L - a->psign1.s[i], a->psign1.s, n, L));
       rot = fmax(rot, nearest(a->psign1.s[i] + L / 3, a->psign1.s, n, L));
       if (a->psign2.n == n) two = fmax(two, fabs(a->psign2.s[i] - a->psign1.s[i]));
@@ -164,9 +164,9 @@ static void check_flat_link(memrun *r)
     /* and they are zeros: |p| there against its range, with the slope
        |p'| <= ~1e4 L times the bisection width 1e-12 */
     double pz = 0;
-    for (int i = 0; i < n && n <= BRAID_PSIGN_MAX; i++) {
+    for (int i = 0; i < n && n <= CABLE_BRAID_PSIGN_MAX; i++) {
       double p1, p2;
-      if (braid_pressure_at(s, a->psign1.s[i] / L, &p1, &p2, NULL) == 0) pz = fmax(pz, fabs(p1));
+      if (cable_braid_pressure_at(s, a->psign1.s[i] / L, &p1, &p2, NULL) == 0) pz = fmax(pz, fabs(p1));
       else pz = HUGE_VAL;
     }
     snprintf(what, sizeof what, "flat link: p1 vanishes at its sign changes, worst |p1| = %.2e (range %.4g)", pz,
@@ -188,7 +188,7 @@ static void check_flat_link(memrun *r)
 }
 
 /* Made-up analyses: only the axis type and dmin matter. */
-static void fake(braid_analysis *a, const char *name, int hand, double dmin)
+static void fake(cable_braid_analysis *a, const char *name, int hand, double dmin)
 {
   memset(a, 0, sizeof *a);
   snprintf(a->topo.axis.name, sizeof a->topo.axis.name, "%s", name);
@@ -199,8 +199,8 @@ static void fake(braid_analysis *a, const char *name, int hand, double dmin)
 static void check_settled(void)
 {
   enum { N = 8 };
-  braid_analysis *x = malloc(N * sizeof *x);
-  const braid_analysis *a[N];
+  cable_braid_analysis *x = malloc(N * sizeof *x);
+  const cable_braid_analysis *a[N];
   /* unknot, then a passage (overlap), then the right trefoil: overlapping,
      then free, then overlapping again */
   fake(&x[0], "unknot", 0, 2.0);
@@ -212,39 +212,39 @@ static void check_settled(void)
   fake(&x[6], "trefoil", 1, 1.5);
   fake(&x[7], "trefoil", 1, 0.8);
   for (int i = 0; i < N; i++) a[i] = &x[i];
-  int first, rep = braid_branch_settled(a, N, &first);
+  int first, rep = cable_braid_branch_settled(a, N, &first);
   test_int("settled: the final stretch starts after the left trefoil", first, 3);
   test_int("settled: reported point is its first with dmin > 1", rep, 5);
   a[4] = NULL;   /* not analysable: skipped, the stretch goes on */
-  rep = braid_branch_settled(a, N, &first);
+  rep = cable_braid_branch_settled(a, N, &first);
   test_true("settled: an unanalysable solution inside the stretch is skipped", first == 3 && rep == 5);
   a[7] = NULL;   /* the last one unanalysable: the final type is the previous one's */
-  rep = braid_branch_settled(a, N, &first);
+  rep = cable_braid_branch_settled(a, N, &first);
   test_true("settled: an unanalysable last solution is skipped", first == 3 && rep == 5);
   for (int i = 0; i < N; i++) a[i] = &x[i];
   fake(&x[5], "trefoil", 1, 1.0);   /* dmin = 1 exactly: touching, not free */
   fake(&x[6], "trefoil", 1, 0.95);
-  rep = braid_branch_settled(a, N, &first);
+  rep = cable_braid_branch_settled(a, N, &first);
   test_true("settled: no overlap-free solution in the stretch: -1", first == 3 && rep == -1);
   fake(&x[0], "unknot", 0, 3.0);
-  rep = braid_branch_settled(a, 1, &first);
+  rep = cable_braid_branch_settled(a, 1, &first);
   test_true("settled: a one-solution branch", first == 0 && rep == 0);
   for (int i = 0; i < N; i++) a[i] = NULL;
-  rep = braid_branch_settled(a, N, &first);
+  rep = cable_braid_branch_settled(a, N, &first);
   test_true("settled: nothing analysable: -1, first -1", first == -1 && rep == -1);
   free(x);
 }
 
 static void check_errors(const cable_solution *knot)
 {
-  braid_analysis *a = malloc(sizeof *a);
+  cable_braid_analysis *a = malloc(sizeof *a);
   cable_solution *s = cable_solution_clone(knot);
   s->ndim = 3;
-  test_int("not a braid solution (ndim 3): CABLE_ERR_INPUT", braid_analysis_compute(s, a), CABLE_ERR_INPUT);
-  test_int("pressure signs of a non-braid solution: CABLE_ERR_INPUT", braid_pressure_signs(s, a), CABLE_ERR_INPUT);
+  test_int("not a braid solution (ndim 3): CABLE_ERR_INPUT", cable_braid_analysis_compute(s, a), CABLE_ERR_INPUT);
+  test_int("pressure signs of a non-braid solution: CABLE_ERR_INPUT", cable_braid_pressure_signs(s, a), CABLE_ERR_INPUT);
   s->ndim = knot->ndim;
   s->u[BR_ETA] = NAN;
-  test_true("a NaN state is refused", braid_pressure_signs(s, a) < 0);
+  test_true("a NaN state is refused", cable_braid_pressure_signs(s, a) < 0);
   cable_solution_free(s);
   free(a);
 }

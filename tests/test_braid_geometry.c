@@ -264,7 +264,7 @@ static void check_curves(void)
   double *poly = malloc(6 * (size_t)(n - 1) * sizeof *poly);
   memcpy(poly, bc->r1, 3 * (size_t)(n - 1) * sizeof *poly);
   memcpy(poly + 3 * (n - 1), bc->r2, 3 * (size_t)(n - 1) * sizeof *poly);
-  knot_type_result kt;
+  cable_knot_type_result kt;
   int rc = knot_type_identify(poly, 2 * (n - 1), &kt);
   test_true("strands of the Lk = 3.5 braid form torus(7,2)", rc == 0 && strcmp(kt.name, "torus(7,2)") == 0);
   test_int("... right-handed", kt.handedness, 1);
@@ -409,7 +409,7 @@ static void check_braid_ribbon(void)
       test_abs("trefoil braid: Tw (ntst=128, ncol=6)", br.tw, ex.tw, 1e-7);
       test_abs("trefoil braid: Wr", br.wr, ex.wr, 1e-7);
       test_abs("trefoil braid: Lk = 12.5", br.lk, 12.5, 1e-7);
-      braid_topology top;
+      cable_braid_topology top;
       test_int("topology", braid_topology_compute(sol, 0, &top), CABLE_SUCCESS);
       test_true("axis is a trefoil", strcmp(top.axis.name, "trefoil") == 0);
       test_int("axis right-handed", top.axis.handedness, 1);
@@ -420,7 +420,7 @@ static void check_braid_ribbon(void)
   }
   test_true("trefoil braid: Lk error decreases at least 2^4 when h halves", e[1] <= e[0] / 16 || e[1] < 1e-11);
   sol = build_solution(&(ribbon_def){0, 1.0, 0, 3.5, 0, 0, 1}, delta, 32, 6, NULL);
-  braid_topology top;
+  cable_braid_topology top;
   braid_topology_compute(sol, 500, &top);
   test_true("circular axis is the unknot", strcmp(top.axis.name, "unknot") == 0);
   test_abs("... Lk inside the tube = Lk", top.lk_in_tube, top.lk, 0);
@@ -471,15 +471,15 @@ static void check_tube_solution(void)
 {
   ribbon_def rd = {0, 1.0, 0, 3.5, 0, 0, 1};
   cable_solution *sol = build_solution(&rd, 0.05, 80, 5, NULL);
-  tube_distance_result r;
-  test_int("tube distance of a solution", braid_tube_distance_solution(sol, 0, &r), CABLE_SUCCESS);
+  cable_tube_distance_result r;
+  test_int("tube distance of a solution", cable_braid_tube_distance_solution(sol, 0, &r), CABLE_SUCCESS);
   printf("     (7,2) braid, Delta = 0.05: dmin %.4f, axis dmin %.4f, kappa max %.8f\n", r.dmin, r.axis_dmin,
          r.axis_kappa_max);
   test_int("no overlap", r.noverlap, 0);
   test_true("dmin above the window-edge bound pi - 1", r.dmin > M_PI - 1);
   test_abs("contact curvature max = 1/R (ntst=80, see above)", r.axis_kappa_max, 1.0, 1e-5);
-  test_int("tube distance: n = 1 refused", braid_tube_distance_solution(sol, 1, &r), CABLE_ERR_INPUT);
-  test_int("tube distance: NULL output", braid_tube_distance_solution(sol, 0, NULL), CABLE_ERR_NULL);
+  test_int("tube distance: n = 1 refused", cable_braid_tube_distance_solution(sol, 1, &r), CABLE_ERR_INPUT);
+  test_int("tube distance: NULL output", cable_braid_tube_distance_solution(sol, 0, NULL), CABLE_ERR_NULL);
   cable_solution_free(sol);
 }
 
@@ -523,7 +523,7 @@ static void check_errors(void)
   cable_solution *small = cable_solution_alloc(10, 4, 4, BP_NPAR, 1);
   test_int("curves: ndim < BR_NDIM", braid_curves_from_solution(small, bc), CABLE_ERR_INPUT);
   test_int("curvature: ndim < BR_NDIM", braid_contact_curvature(small, 10, NULL, NULL), CABLE_ERR_INPUT);
-  braid_topology top;
+  cable_braid_topology top;
   test_int("topology: ndim < BR_NDIM", braid_topology_compute(small, 0, &top), CABLE_ERR_INPUT);
   cable_solution_free(small);
   braid_curves_free(bc);

@@ -5,7 +5,7 @@
  *    the first integrals are constant along the braid;
  *  - the flat left-handed (6,2) link: Lk = -3, an integer;
  *  - the PVLS columns Lk, Tw, Wr, pmin, dmin and err of a run that prints
- *    them, read back from the b-file, agree with braid_analysis on the
+ *    them, read back from the b-file, agree with cable_braid_analysis on the
  *    stored solutions (from STPNT and on a restart), and a run that does not
  *    print them leaves them uncomputed; both runs note their start's
  *    residual in the d-file;
@@ -77,7 +77,7 @@ static const double *bcol(const cable_bfile *b, int br, const char *name)
   return b && br < b->nbranch ? cable_bfile_column(&b->branch[br], name) : NULL;
 }
 
-/* Every labelled row of branch br against braid_analysis on the s-file's
+/* Every labelled row of branch br against cable_braid_analysis on the s-file's
  * solution of that label. */
 static void check_pvls_rows(const char *what, const cable_bfile *b, int br, const cable_sfile *s)
 {
@@ -119,8 +119,8 @@ static void check_pvls_rows(const char *what, const cable_bfile *b, int br, cons
   for (int i = 0; i < bb->nrow; i++) {
     if (bb->lab[i] <= 0) continue;
     const cable_solution *sol = cable_sfile_find_label(s, bb->lab[i]);
-    braid_analysis a;
-    if (!sol || braid_analysis_compute(sol, &a) != 0) {
+    cable_braid_analysis a;
+    if (!sol || cable_braid_analysis_compute(sol, &a) != 0) {
       snprintf(t, sizeof t, "%s: label %d analysed", what, bb->lab[i]);
       test_true(t, 0);
       continue;
@@ -509,7 +509,7 @@ int main(void)
        the mesh points, O(h^(2 NCOL)) = O(h^8): halving h must shrink the drift
        by at least 2^6 (asymptotic rate 2^8, with slack for coarse meshes) */
     cable_solution *fine = flat_at("braid_knot", 7, +1, delta, ltot, 2.0, knot_icp, 4, 80);
-    double d40 = braid_first_integral_drift(right), d80 = fine ? braid_first_integral_drift(fine) : 1.0;
+    double d40 = cable_braid_first_integral_drift(right), d80 = fine ? cable_braid_first_integral_drift(fine) : 1.0;
     char what[128];
     snprintf(what, sizeof what, "first-integral drift converges like h^8: %.3g (NTST=40) -> %.3g (NTST=80)", d40, d80);
     test_true(what, d40 > 0 && d80 >= 0 && d80 * 64 <= d40);
@@ -526,7 +526,7 @@ int main(void)
     double lk, tw, wr;
     if (braid_ribbon_lk(link, &lk, &tw, &wr) == 0) test_abs("left-handed (6,2) link: Lk = -3", lk, -3.0, 1e-6);
     else test_true("link Lk computed", 0);
-    test_le("first-integral drift along the link at NTST=40 (mesh points)", braid_first_integral_drift(link), 1e-7);
+    test_le("first-integral drift along the link at NTST=40 (mesh points)", cable_braid_first_integral_drift(link), 1e-7);
   }
   cable_solution_free(link);
   return test_summary();

@@ -44,6 +44,21 @@ static void test_bratu_fold(memrun *r)
   memrun_free(r);
 }
 
+/* The structured BP fields of a run's BP points: how many BPs there are,
+ * and how many of them carry the given kind and multiplicity (the engine
+ * says what it found in fields, the note is for people). */
+static int memrun_bp_fields(const memrun *r, int kind, int mult, int *nbp)
+{
+  int n = 0;
+  *nbp = 0;
+  for (int i = 0; i < r->n; i++) {
+    if (cable_type_base(r->itp[i]) != CABLE_TY_BP) continue;
+    (*nbp)++;
+    n += r->bp_kind[i] == kind && r->bp_mult[i] == mult;
+  }
+  return n;
+}
+
 static void test_elastica(memrun *r)
 {
   cable_constants c;
@@ -51,6 +66,8 @@ static void test_elastica(memrun *r)
   memrun_run(cable_testproblem_elastica(), &c, NULL, r);
   test_true("elastica trivial branch ends at RL1", r->status == CABLE_END_BOUNDS);
   test_int("elastica: three branch points below lambda = 100", memrun_count(r, CABLE_TY_BP), 3);
+  int nbp, nfields = memrun_bp_fields(r, CABLE_BP_SIMPLE, 1, &nbp);
+  test_int("elastica: every BP point says kind simple, multiplicity 1 (det changes sign)", nfields, nbp);
   cable_solution *bp1 = NULL;
   for (int n = 1; n <= 3; n++) {
     const cable_solution *bp = memrun_find(r, CABLE_TY_BP, n - 1);
@@ -422,6 +439,9 @@ static void test_double_bp(memrun *r)
   memrun_run(&pb, &c, NULL, r);
   test_true("double elastica: branch ends at RL1", r->status == CABLE_END_BOUNDS);
   test_int("double elastica: two double branch points below lambda = 45", memrun_count(r, CABLE_TY_BP), 2);
+  int nbp, nfields = memrun_bp_fields(r, CABLE_BP_DOUBLE, 2, &nbp);
+  test_true("double elastica: every BP point says kind double, multiplicity 2 (the point's fields)",
+            nbp == 2 && nfields == 2);
   for (int n = 1; n <= 2; n++) {
     const cable_solution *bp = memrun_find(r, CABLE_TY_BP, n - 1);
     char what[80];

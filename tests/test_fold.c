@@ -298,8 +298,10 @@ static void test_auto_runs(const cable_problem *pb, const cable_solution *lp, do
   int st = 0;
   char msg[300] = "", what[600];
   cable_fold *f = cable_fold_alloc(pb, &c, lp, &st, msg, sizeof msg);
-  int rc = f ? cable_fold_starting_data(f, msg, sizeof msg) : -1;
-  snprintf(what, sizeof what, "AUTO's runs: the starting-data problem is set up (%s)", rc ? msg : "ok");
+  cable_error serr;
+  cable_error_clear(&serr);
+  int rc = f ? cable_fold_starting_data(f, &serr) : -1;
+  snprintf(what, sizeof what, "AUTO's runs: the starting-data problem is set up (%s)", rc ? (f ? serr.msg : msg) : "ok");
   if (!test_true(what, rc == 0)) {
     cable_fold_free(f);
     return;
@@ -340,8 +342,9 @@ static void test_auto_runs(const cable_problem *pb, const cable_solution *lp, do
   f = cable_fold_alloc(pb, &c, ep, &st, msg, sizeof msg);
   test_true("AUTO's runs: the fold curve from the EP is set up", f != NULL);
   if (f) {
-    test_int("  restarting from the EP is not starting data again", cable_fold_starting_data(f, msg, sizeof msg),
+    test_int("  restarting from the EP is not starting data again", cable_fold_starting_data(f, &serr),
              CABLE_ERR_INPUT);
+    test_true("  with the reason in err", serr.status == CABLE_ERR_INPUT && strstr(serr.msg, "already a point") != NULL);
     memrun_run(cable_fold_problem(f), cable_fold_constants(f), cable_fold_start(f), &r);
     snprintf(what, sizeof what, "  the curve runs to RL1 = 6 (%d points; %s)", r.n, r.err);
     test_true(what, r.status == CABLE_END_BOUNDS && r.n > 5);

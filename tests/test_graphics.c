@@ -637,7 +637,7 @@ static void test_plot(void)
   test_true("plot: filled branch-point circles add >= 4 x 20 dark px", ndark - ndark2 >= 80);
 
   o.format = PLOT_FORMAT_SVG;
-  plot_annotation an[2] = {{-2.10752, 171.5, "(a)", 0}, {-9.89105, 368.075, "(b)", 0}};
+  cable_plot_annotation an[2] = {{-2.10752, 171.5, "(a)", 0}, {-9.89105, 368.075, "(b)", 0}};
   test_int("plot: SVG written", plot_bifurcation_annotated(b, 2, an, 2, &o, svg), CABLE_SUCCESS);
   char *text = slurp(svg, NULL);
   xml_doc *d = calloc(1, sizeof *d);
@@ -710,7 +710,7 @@ static long diff_bbox(cairo_surface_t *a, cairo_surface_t *b, int box[4])
   return n;
 }
 
-static cairo_surface_t *plot_to_surface(const plot_branch *b, int nb, const plot_annotation *an, int na,
+static cairo_surface_t *plot_to_surface(const plot_branch *b, int nb, const cable_plot_annotation *an, int na,
                                         const char *path)
 {
   plot_options o = {"T", "F", NULL, 400, 300, PLOT_FORMAT_PNG};
@@ -755,7 +755,7 @@ static void test_plot_labels(void)
   double x[11], y[11];
   for (int i = 0; i < 11; i++) x[i] = i, y[i] = 100 + 10 * i;
   plot_branch b = {"line", 11, x, y, NULL, NULL, NULL};
-  plot_annotation bare = {10, 200, NULL, 0}, text = {10, 200, "(a) mirrored", 0};
+  cable_plot_annotation bare = {10, 200, NULL, 0}, text = {10, 200, "(a) mirrored", 0};
   cairo_surface_t *s0 = plot_to_surface(&b, 1, NULL, 0, OUTDIR "/lab0.png");
   cairo_surface_t *s1 = plot_to_surface(&b, 1, &bare, 1, OUTDIR "/lab1.png");
   cairo_surface_t *s2 = plot_to_surface(&b, 1, &text, 1, OUTDIR "/lab2.png");
@@ -924,7 +924,7 @@ static void test_render_knot(void)
   torus72_strand(0, N, R, a, s0);
   torus72_strand(1, N, R, a, s1);
   render_tube tubes[2] = {{N, s0, NULL, a, {0.85, 0.12, 0.10}, 0}, {N, s1, NULL, a, {0.10, 0.25, 0.85}, 0}};
-  render_options o = {SIZE, SIZE, {0, 0, 0}, {0, 0, 0}, RENDER_COLORMAP_NONE, 2.0};
+  cable_render_options o = {SIZE, SIZE, {0, 0, 0}, {0, 0, 0}, CABLE_RENDER_COLORMAP_NONE, 2.0};
   const char *png = OUTDIR "/knot72.png";
   test_int("render: (7,2) knot", render_tubes_png(tubes, 2, NULL, 0, &o, png), CABLE_SUCCESS);
   check_png_header("render", png, SIZE, SIZE);
@@ -964,7 +964,7 @@ static void test_render_knot(void)
   double *p0 = malloc(sizeof(double) * N), *p1 = malloc(sizeof(double) * N);
   for (int i = 0; i < N; i++) p0[i] = cos(2 * PI * i / (N - 1)), p1[i] = 0.5 * p0[i];
   tubes[0].scalar = p0, tubes[1].scalar = p1;
-  o.colormap = RENDER_COLORMAP_DIVERGING;
+  o.colormap = CABLE_RENDER_COLORMAP_DIVERGING;
   o.width = 300;
   test_int("render: colour map", render_tubes_png(tubes, 2, NULL, 0, &o, OUTDIR "/knot_cmap.png"), CABLE_SUCCESS);
   render_camera_fit(tubes, 2, &o, &cam);
@@ -987,7 +987,7 @@ static void test_render_depth(void)
   /* tube A (red) along x at z = +0.2, tube B (blue) along y at z = -0.2 */
   double a[6] = {-1, 0, 0.2, 1, 0, 0.2}, b[6] = {0, -1, -0.2, 0, 1, -0.2};
   render_tube t[2] = {{2, a, NULL, 0.1, {0.9, 0.1, 0.1}, 0}, {2, b, NULL, 0.1, {0.1, 0.2, 0.9}, 0}};
-  render_options o = {SIZE, SIZE, {0, 0, -1}, {0, 1, 0}, 0, 1.0};
+  cable_render_options o = {SIZE, SIZE, {0, 0, -1}, {0, 1, 0}, 0, 1.0};
   const char *png = OUTDIR "/cross.png";
   int cpx[3], apx[3], bpx[3];
   for (int view = 0; view < 2; view++) {
@@ -1061,7 +1061,7 @@ static void test_render_errors(void)
 {
   double a[6] = {-1, 0, 0.2, 1, 0, 0.2};
   render_tube t = {2, a, NULL, 0.1, {0.9, 0.1, 0.1}, 0};
-  render_options o = {SIZE, SIZE, {0, 0, 0}, {0, 0, 0}, 0, 1.0};
+  cable_render_options o = {SIZE, SIZE, {0, 0, 0}, {0, 0, 0}, 0, 1.0};
   const char *png = OUTDIR "/err.png";
   test_int("render error: unwritable path", render_tubes_png(&t, 1, NULL, 0, &o, OUTDIR "/no/such/dir/x.png"), CABLE_ERR_IO);
   test_int("render error: NULL tubes", render_tubes_png(NULL, 1, NULL, 0, &o, png), CABLE_ERR_INPUT);
@@ -1342,7 +1342,7 @@ static void test_render_toward_title(void)
     v[i] = 1, sc[i] = i;
   }
   render_tube t = {NT, a, NULL, 0.05, {0.5, 0.5, 0.5}, 0};
-  render_options o = {SIZE, SIZE, {0, 0, -1}, {0, 1, 0}, 0, 1.0};
+  cable_render_options o = {SIZE, SIZE, {0, 0, -1}, {0, 1, 0}, 0, 1.0};
   double rows[2] = {0, 0};
   for (int k = 0; k < 2; k++) {
     render_profile p = {a, v, NT, {0, 1, 0}, {0, 1, 0}, 0.3, k == 0 ? up : down};
@@ -1372,7 +1372,7 @@ static void test_render_toward_title(void)
   test_true("render toward: towards -y the profile is drawn below the tube", fabs(rows[1] - (yc + off)) < 1.5);
 
   render_tube ts = {NT, a, sc, 0.05, {0.5, 0.5, 0.5}, 0};
-  o.colormap = 1;   /* RENDER_COLORMAP_SEQUENTIAL */
+  o.colormap = 1;   /* CABLE_RENDER_COLORMAP_SEQUENTIAL */
   render_text title = {"caption", "contact pressure"};
   test_int("render title: without", render_tubes_png(&ts, 1, NULL, 0, &o, OUTDIR "/bar0.png"), CABLE_SUCCESS);
   test_int("render title: with", render_tubes_png_text(&ts, 1, NULL, 0, &o, &title, OUTDIR "/bar1.png"),

@@ -67,7 +67,7 @@ static void random_rotate(gsl_rng *rng, int n, double *xyz)
   }
 }
 
-static int poly_is(const knot_type_result *r, const long *c, int deg)
+static int poly_is(const cable_knot_type_result *r, const long *c, int deg)
 {
   if (r->alex_degree != deg) return 0;
   for (int i = 0; i <= deg; i++)
@@ -85,12 +85,12 @@ static void check_torus(const torus_case *tc, double hand, int n, gsl_rng *rng, 
 {
   char what[200];
   double *xyz = malloc(3 * (size_t)n * sizeof *xyz);
-  long poly[KNOT_TYPE_MAX_DEGREE + 1];
-  int deg = knot_type_torus_alexander(tc->p, tc->q, poly, KNOT_TYPE_MAX_DEGREE);
+  long poly[CABLE_KNOT_TYPE_MAX_DEGREE + 1];
+  int deg = knot_type_torus_alexander(tc->p, tc->q, poly, CABLE_KNOT_TYPE_MAX_DEGREE);
   for (int rot = 0; rot <= nrot; rot++) {
     torus_curve(tc->p, tc->q, hand, n, xyz);
     if (rot > 0) random_rotate(rng, n, xyz);
-    knot_type_result r;
+    cable_knot_type_result r;
     int rc = knot_type_identify(xyz, n, &r);
     const char *hs = hand > 0 ? "right" : "left";
     snprintf(what, sizeof what, "T(%d,%d) %s, rotation %d: identified as %s (got %s, %d crossings, %d projections agree)",
@@ -117,7 +117,7 @@ static void check_torus(const torus_case *tc, double hand, int n, gsl_rng *rng, 
 
 static void check_polynomials(void)
 {
-  long c[KNOT_TYPE_MAX_DEGREE + 1];
+  long c[CABLE_KNOT_TYPE_MAX_DEGREE + 1];
   /* expanded by hand / sympy: (t^pq - 1)(t - 1)/((t^p - 1)(t^q - 1)) */
   static const long t32[] = {1, -1, 1}, t52[] = {1, -1, 1, -1, 1}, t43[] = {1, -1, 0, 1, 0, -1, 1};
   static const long t54[] = {1, -1, 0, 0, 1, 0, -1, 0, 1, 0, 0, -1, 1};
@@ -125,7 +125,7 @@ static void check_polynomials(void)
   struct { int p, q; const long *c; int deg; } tab[] = {
     {3, 2, t32, 2}, {2, 3, t32, 2}, {5, 2, t52, 4}, {4, 3, t43, 6}, {5, 4, t54, 12}, {5, 3, t53, 8}};
   for (size_t i = 0; i < sizeof tab / sizeof tab[0]; i++) {
-    int d = knot_type_torus_alexander(tab[i].p, tab[i].q, c, KNOT_TYPE_MAX_DEGREE);
+    int d = knot_type_torus_alexander(tab[i].p, tab[i].q, c, CABLE_KNOT_TYPE_MAX_DEGREE);
     int ok = d == tab[i].deg;
     for (int k = 0; ok && k <= d; k++) ok = c[k] == tab[i].c[k];
     char what[80];
@@ -146,7 +146,7 @@ static void check_figure_eight(gsl_rng *rng)
   for (int rot = 0; rot <= 3; rot++) {
     figure_eight(n, xyz);
     if (rot > 0) random_rotate(rng, n, xyz);
-    knot_type_result r;
+    cable_knot_type_result r;
     int rc = knot_type_identify(xyz, n, &r);
     char what[160];
     snprintf(what, sizeof what, "figure-eight, rotation %d: identified (got %s, %d crossings)", rot,
@@ -167,7 +167,7 @@ static void check_unknots(void)
   int n = 1000;
   double *xyz = malloc(3 * (size_t)n * sizeof *xyz);
   static const long one[] = {1};
-  knot_type_result r;
+  cable_knot_type_result r;
   char what[160];
   /* side views of the wobbly circle */
   wobbly_circle(n, xyz);
@@ -198,7 +198,7 @@ static void check_unknots(void)
 static void check_errors(void)
 {
   double tri[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
-  knot_type_result r;
+  cable_knot_type_result r;
   test_int("n < 3", knot_type_identify(tri, 2, &r), CABLE_ERR_INPUT);
   test_int("NULL coordinates", knot_type_identify(NULL, 3, &r), CABLE_ERR_INPUT);
   test_int("NULL result", knot_type_identify(tri, 3, NULL), CABLE_ERR_INPUT);

@@ -97,7 +97,7 @@ int main(void)
   if (st == 0) st = cable_cont_step(cc);
   test_int("flat knot converged", st, 0);
   if (st == 0) {
-    render_options o;
+    cable_render_options o;
     memset(&o, 0, sizeof o);
     o.width = o.height = 200;
     test_int("render a braid solution", cable_render_solution(cable_cont_solution(cc), &o,
@@ -109,7 +109,7 @@ int main(void)
     test_true("render: PLY file", file_size("tests/tmp/pictures/knot.ply") > 10000);
     /* the strands cable view stores: r2 = r1 + Delta d1 with |d1| = 1, a
        knot (closed 0), radius Delta/2; the pressures at the nodes span the
-       range the analysis (braid_analysis_compute) reports for each strand */
+       range the analysis (cable_braid_analysis_compute) reports for each strand */
     cable_strands cs;
     const cable_solution *sol = cable_cont_solution(cc);
     test_int("strands of a braid solution", cable_solution_strands(sol, &cs), 0);
@@ -120,8 +120,8 @@ int main(void)
       dd = fmax(dd, fabs(sqrt(d2) - 2 * cs.radius));
       lo1 = fmin(lo1, cs.p1[k]), hi1 = fmax(hi1, cs.p1[k]), lo2 = fmin(lo2, cs.p2[k]), hi2 = fmax(hi2, cs.p2[k]);
     }
-    braid_analysis *ba = malloc(sizeof *ba);
-    int arc = ba ? braid_analysis_compute(sol, ba) : -1;
+    cable_braid_analysis *ba = malloc(sizeof *ba);
+    int arc = ba ? cable_braid_analysis_compute(sol, ba) : -1;
     printf("     strands: n %d, | |r2 - r1| - Delta | <= %.2e, p1 %.8g..%.8g (analysis %.8g..%.8g), "
            "p2 %.8g..%.8g (analysis %.8g..%.8g)\n", cs.n, dd, lo1, hi1, arc ? (double)NAN : ba->pmin1, arc ? (double)NAN : ba->pmax1,
            lo2, hi2, arc ? (double)NAN : ba->pmin2, arc ? (double)NAN : ba->pmax2);

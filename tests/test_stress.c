@@ -7,7 +7,7 @@
  *
  * Every case runs the engine through cable_cont_run with the real output
  * writer (b./s./d. files in a temporary directory) behind a sink that also
- * measures the first-integral drift (braid_first_integral_drift, mesh points)
+ * measures the first-integral drift (cable_braid_first_integral_drift, mesh points)
  * of every accepted point.  Every case has an expected end status (the
  * measured one, doc/stress.md): reaching its target (UZSTOP; for perturbed
  * starts the same solution as the clean reference), a normal end (NMX) or a
@@ -146,7 +146,7 @@ static int stress_point(void *ctx, const cable_point *pt)
     gap_pt = fmin(gap_pt, 1.0 - sol->par[BP_DELTA] * sol->u[j * sol->ndim + BR_W3]);
   }
   s->eta_max = fmax(s->eta_max, eta_pt);
-  double d = braid_first_integral_drift(sol);
+  double d = cable_braid_first_integral_drift(sol);
   /* a restart reports its stored start as point 1 without correcting it
      (AUTO does the same): a perturbed start's drift is the noise's, kept apart */
   if (pt->pt == 1 && pt->newton_iters == 0) {

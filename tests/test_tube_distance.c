@@ -75,7 +75,7 @@ static void check_peanut(void)
   double delta = 0.02;
   int n = 4001;                       /* th = pi/2, 3pi/2 are samples */
   braid_curves *bc = peanut(n, 1.5 * delta, delta);
-  tube_distance_result r;
+  cable_tube_distance_result r;
   test_int("peanut 2g = 3 Delta: status", braid_tube_distance(bc, &r), CABLE_SUCCESS);
   test_abs("peanut 2g = 3 Delta: dmin = (2g - Delta)/Delta = 2", r.dmin, 2.0, TOL_EXACT);
   test_abs("peanut 2g = 3 Delta: axis dmin = 2g/Delta = 3", r.axis_dmin, 3.0, TOL_EXACT);
@@ -224,7 +224,7 @@ static void check_circle_braid(int n)
     }
     bc->s[i] = R * th;                      /* a stand-in: the strand speed is not 1 here */
   }
-  tube_distance_result r;
+  cable_tube_distance_result r;
   double t0 = now();
   test_int("circle braid: status", braid_tube_distance(bc, &r), CABLE_SUCCESS);
   double dt = now() - t0;
@@ -267,7 +267,7 @@ static void check_errors(void)
   tube_workspace_free(w);
   tube_workspace_free(NULL);
   braid_curves *bc = peanut(41, 0.03, 0.02);
-  tube_distance_result r;
+  cable_tube_distance_result r;
   test_int("braid: samples coarser than pi Delta", braid_tube_distance(bc, &r), CABLE_ERR_INPUT);
   bc->Delta = 0;
   test_int("braid: Delta = 0", braid_tube_distance(bc, &r), CABLE_ERR_INPUT);

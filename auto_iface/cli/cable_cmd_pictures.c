@@ -43,7 +43,7 @@ int cable_cmd_render(int argc, char **argv, cable_error *err)
 {
   if (argc < 2) return cable_error_set(err, CABLE_ERR_INPUT, "<command line>", 0, "", "usage: cable render s.NAME LABEL [options]");
   const char *out = "knot.png", *vtp = NULL, *ply = NULL;
-  render_options o;
+  cable_render_options o;
   memset(&o, 0, sizeof o);
   int rc = 0;
   for (int i = 2; i < argc && !rc; i++) {
@@ -54,7 +54,7 @@ int cable_cmd_render(int argc, char **argv, cable_error *err)
     else if ((v = option(argv[i], "size"))) o.width = o.height = atoi(v);
     else if ((v = option(argv[i], "thicken"))) o.thicken = atof(v);
     else if ((v = option(argv[i], "color"))) {
-      if (strcmp(v, "pressure") == 0) o.colormap = RENDER_COLORMAP_DIVERGING;
+      if (strcmp(v, "pressure") == 0) o.colormap = CABLE_RENDER_COLORMAP_DIVERGING;
       else rc = cable_error_set(err, CABLE_ERR_INPUT, "<command line>", 0, argv[i], "color=pressure is the only colour map");
     } else if ((v = option(argv[i], "view"))) {
       if (sscanf(v, "%lf,%lf,%lf", &o.view_dir[0], &o.view_dir[1], &o.view_dir[2]) != 3)

@@ -237,7 +237,7 @@ static void print_psign(FILE *out, const char *what, const double *x, int n)
 {
   if (n <= 0) return;
   fprintf(out, "    sign changes of %s", what);
-  for (int i = 0; i < n && i < BRAID_PSIGN_MAX; i++) fprintf(out, " %.6f", x[i]);
+  for (int i = 0; i < n && i < CABLE_BRAID_PSIGN_MAX; i++) fprintf(out, " %.6f", x[i]);
   fputc('\n', out);
 }
 
@@ -252,14 +252,14 @@ int cable_cmd_analyze(const char *sfile, int nlab, char **labels, FILE *out, cab
       rc = err->status ? err->status : CABLE_ERR_NOTFOUND;
       break;
     }
-    braid_analysis a;
-    rc = braid_analysis_compute(x, &a);
+    cable_braid_analysis a;
+    rc = cable_braid_analysis_compute(x, &a);
     if (rc) {
       cable_error_set(err, rc, sfile, 0, labels[i], "label %d is not a closed braid solution (%s)", x->lab,
                       cable_status_message(rc));
       break;
     }
-    const knot_type_result *k = &a.topo.axis;
+    const cable_knot_type_result *k = &a.topo.axis;
     fprintf(out, "label %d (%s): T = %.10g  F = %.10g  L = %.10g  L2 = %.10g\n", x->lab, cable_type_name(x->itp),
             x->par[BP_T], x->par[BP_F], x->par[BP_L], x->par[BP_L2]);
     fprintf(out, "  Lk = %.8f  Tw = %.8f  Wr = %.8f  (%s; Lk - nearest %s = %.1e)\n", a.topo.lk, a.topo.tw, a.topo.wr,

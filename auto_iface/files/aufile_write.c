@@ -567,6 +567,10 @@ static int point_cb(void *ctx, const cable_point *pt)
           pt->err_est >= 0 ? fmt_es2(e4, pt->err_est, 14, 5) : "       unknown", pt->det_sign,
           fmt_es2(e5, pt->sv1, 14, 5), fmt_es2(e6, pt->sv2, 14, 5));
   if (pt->note && pt->note[0]) fprintf(d, " NOTE: %s\n", pt->note);
+  /* the BP's kind as a record a program reads back (cable_session_dnotes.c),
+     apart from the note, which is for people */
+  if (cable_type_base(pt->itp) == CABLE_TY_BP && pt->bp_kind != CABLE_BP_UNKNOWN)
+    fprintf(d, " BP: kind=%s multiplicity=%d\n", cable_bp_kind_name(pt->bp_kind), pt->bp_mult);
   if (pt->lab != 0) {
     /* AUTO's screen line for labelled points (parseD finds the label here) */
     char h[BCOL + 1];

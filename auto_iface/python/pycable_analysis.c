@@ -32,9 +32,9 @@ static int set_list(PyObject *d, const char *key, const double *x, int n)
   return rc;
 }
 
-static int psign_stored(const braid_psign *p)
+static int psign_stored(const cable_braid_psign *p)
 {
-  return p->n < BRAID_PSIGN_MAX ? p->n : BRAID_PSIGN_MAX;
+  return p->n < CABLE_BRAID_PSIGN_MAX ? p->n : CABLE_BRAID_PSIGN_MAX;
 }
 
 /* analyze(branch, i) -> dict of derived quantities (doc/scripts.md) */
@@ -46,11 +46,11 @@ PyObject *pyc_analyze(PyObject *mod, PyObject *args)
   if (!PyArg_ParseTuple(args, "Oi", &br, &i)) return NULL;
   const cable_solution *s = pyc_solution_arg(br, i);
   if (!s) return NULL;
-  braid_analysis *a = PyMem_Malloc(sizeof *a);
+  cable_braid_analysis *a = PyMem_Malloc(sizeof *a);
   if (!a) return PyErr_NoMemory();
   int rc;
   Py_BEGIN_ALLOW_THREADS
-  rc = braid_analysis_compute(s, a);
+  rc = cable_braid_analysis_compute(s, a);
   Py_END_ALLOW_THREADS
   if (rc) {
     PyMem_Free(a);
@@ -59,10 +59,10 @@ PyObject *pyc_analyze(PyObject *mod, PyObject *args)
                     cable_status_message(rc));
     return pyc_raise(rc, &err);
   }
-  const knot_type_result *k = &a->topo.axis;
+  const cable_knot_type_result *k = &a->topo.axis;
   PyObject *d = PyDict_New();
   PyObject *ov = d ? PyList_New(0) : NULL;
-  int n = a->tube.noverlap < TUBE_MAX_INTERVALS ? a->tube.noverlap : TUBE_MAX_INTERVALS;
+  int n = a->tube.noverlap < CABLE_TUBE_MAX_INTERVALS ? a->tube.noverlap : CABLE_TUBE_MAX_INTERVALS;
   for (int j = 0; ov && j < n; j++) {
     PyObject *iv = Py_BuildValue("[dd]", a->tube.overlap[j][0], a->tube.overlap[j][1]);
     if (!iv || PyList_Append(ov, iv) < 0) Py_CLEAR(ov);
@@ -103,10 +103,10 @@ PyObject *pyc_passages(PyObject *mod, PyObject *args)
   if (!PyArg_ParseTuple(args, "OiOi", &b1, &i, &b2, &j)) return NULL;
   const cable_solution *s1 = pyc_solution_arg(b1, i), *s2 = s1 ? pyc_solution_arg(b2, j) : NULL;
   if (!s2) return NULL;
-  axis_passages ap;
+  cable_axis_passages ap;
   int rc;
   Py_BEGIN_ALLOW_THREADS
-  rc = braid_axis_passages(s1, s2, &ap);
+  rc = cable_braid_axis_passages(s1, s2, &ap);
   Py_END_ALLOW_THREADS
   if (rc) {
     cable_error err;
@@ -126,10 +126,10 @@ PyObject *pyc_tube_dmin(PyObject *mod, PyObject *args)
   if (!PyArg_ParseTuple(args, "Oi", &b, &i)) return NULL;
   const cable_solution *s = pyc_solution_arg(b, i);
   if (!s) return NULL;
-  tube_distance_result td;
+  cable_tube_distance_result td;
   int rc;
   Py_BEGIN_ALLOW_THREADS
-  rc = braid_tube_distance_solution(s, 0, &td);
+  rc = cable_braid_tube_distance_solution(s, 0, &td);
   Py_END_ALLOW_THREADS
   if (rc) {
     cable_error err;
@@ -246,7 +246,7 @@ PyObject *pyc_plot(PyObject *mod, PyObject *args)
     goto done;
   }
   const char *bf[PLOT_MAX_FILES];
-  plot_annotation ann[PLOT_MAX_MARKS];
+  cable_plot_annotation ann[PLOT_MAX_MARKS];
   for (Py_ssize_t k = 0; k < nf; k++)
     if (!(bf[k] = PyUnicode_AsUTF8(PySequence_Fast_GET_ITEM(ff, k)))) goto done;
   for (Py_ssize_t k = 0; k < nm; k++) {
@@ -281,12 +281,12 @@ PyObject *pyc_render(PyObject *mod, PyObject *args)
   if (!PyArg_ParseTuple(args, "OizOidpzz", &b, &i, &out, &view, &size, &thicken, &pressure, &vtp, &ply)) return NULL;
   const cable_solution *s = pyc_solution_arg(b, i);
   if (!s) return NULL;
-  render_options o;
+  cable_render_options o;
   memset(&o, 0, sizeof o);
   if (view != Py_None && !PyArg_ParseTuple(view, "ddd", &o.view_dir[0], &o.view_dir[1], &o.view_dir[2])) return NULL;
   o.width = o.height = size;
   o.thicken = thicken;
-  if (pressure) o.colormap = RENDER_COLORMAP_DIVERGING;
+  if (pressure) o.colormap = CABLE_RENDER_COLORMAP_DIVERGING;
   cable_error err;
   cable_error_clear(&err);
   int rc;

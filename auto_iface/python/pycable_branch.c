@@ -174,8 +174,7 @@ static PyObject *branch_labels(PyObject *self, PyObject *unused)
   PyObject *out = PyList_New(n);
   for (int i = 0; out && i < n; i++) {
     const cable_solution *s = cable_branch_solution(b, i);
-    static const char *const kinds[] = {"", "simple", "double", "pair"};
-    const char *kind = s->bp_kind >= CABLE_BP_UNKNOWN && s->bp_kind <= CABLE_BP_PAIR ? kinds[s->bp_kind] : "";
+    const char *kind = cable_bp_kind_name(s->bp_kind);
     PyObject *par = array1(s->par, s->npar);
     PyObject *t = par ? Py_BuildValue("(isiiNzs)", s->lab, cable_type_name(s->itp), s->ibr, s->ntot, par,
                                       cable_branch_solution_note(b, i), kind)
@@ -240,6 +239,11 @@ static PyObject *branch_get_str(PyObject *self, void *closure)
 {
   const cable_branch *b = ((pyc_branch *)self)->b;
   if (strcmp(closure, "e") == 0) return PyUnicode_FromString(cable_branch_problem(b));
+  if (strcmp(closure, "end_status") == 0) {
+    int st = cable_branch_end_status(b);
+    if (st) return PyUnicode_FromString(cable_status_name(st));
+    Py_RETURN_NONE;
+  }
   if (cable_branch_end_note(b)) return PyUnicode_FromString(cable_branch_end_note(b));
   Py_RETURN_NONE;
 }
@@ -269,7 +273,8 @@ static PyMethodDef branch_methods[] = {
     {"labels", branch_labels, METH_NOARGS, "[(LAB, TY, BR, PT, par), ...] of the labelled solutions"},
     {NULL, NULL, 0, NULL}};
 
-static char k_ibr[] = "ibr", k_npt[] = "npt", k_nsol[] = "nsol", k_e[] = "e", k_end[] = "end";
+static char k_ibr[] = "ibr", k_npt[] = "npt", k_nsol[] = "nsol", k_e[] = "e", k_end[] = "end",
+            k_end_status[] = "end_status";
 
 static PyGetSetDef branch_getset[] = {
     {"ibr", branch_get_int, NULL, "branch number", k_ibr},
@@ -277,6 +282,9 @@ static PyGetSetDef branch_getset[] = {
     {"nsol", branch_get_int, NULL, "number of labelled solutions", k_nsol},
     {"e", branch_get_str, NULL, "the problem's name", k_e},
     {"end_note", branch_get_str, NULL, "why the branch ended abnormally (None: normal end)", k_end},
+    {"end_status", branch_get_str, NULL,
+     "how the run ended, the status's name ('CABLE_END_NMX', 'CABLE_ERR_DSMIN', ...); None: not a run's",
+     k_end_status},
     {"parnames", branch_get_parnames, NULL, "names of PAR(1), PAR(2), ... ('' unnamed)", NULL},
     {"unames", branch_get_unames, NULL, "names of U(1), U(2), ... ('' unnamed)", NULL},
     {"icp", branch_get_icp, NULL, "the run's ICP list (1-based)", NULL},

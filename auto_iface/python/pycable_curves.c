@@ -1,6 +1,6 @@
 /* curves(branch, i): the geometry of a braid solution along its stored
  * points, as numpy arrays for the Python package (Solution.strand2,
- * .contact, .pressure, ...; braid_solution_curves), at the solution's own
+ * .contact, .pressure, ...; cable_braid_solution_curves), at the solution's own
  * t_k, so that they line up with sol['t'] and the components. */
 #include "pycable.h"
 
@@ -33,7 +33,7 @@ PyObject *pyc_curves(PyObject *mod, PyObject *args)
     double *p[CV_N];
     for (int k = 0; k < CV_N; k++) p[k] = PyArray_DATA((PyArrayObject *)a[k]);
     Py_BEGIN_ALLOW_THREADS
-    rc = braid_solution_curves(s, p[CV_R1], p[CV_R2], p[CV_C], p[CV_P1], p[CV_P2], p[CV_SIGMA]);
+    rc = cable_braid_solution_curves(s, p[CV_R1], p[CV_R2], p[CV_C], p[CV_P1], p[CV_P2], p[CV_SIGMA]);
     Py_END_ALLOW_THREADS
   }
   for (int k = 0; k < CV_N && d && !rc; k++)

@@ -57,7 +57,7 @@ static void plot_caption(const char *title, const char *x, const char *y, const 
 }
 
 int cable_plot_files(const char *dir, const char *const *bfiles, int nfiles, const char *xcol, const char *ycol,
-                     const plot_annotation *marks, int nmarks, const char *title, const char *out,
+                     const cable_plot_annotation *marks, int nmarks, const char *title, const char *out,
                      cable_error *err)
 {
   static const char *const plot_suffixes[2] = {".png", ".svg"};
@@ -235,11 +235,11 @@ void cable_strands_free(cable_strands *st)
 #define RENDER_PROFILE_REACH 1.7
 
 /* The PNG's caption: what the picture shows, in one line. */
-static void picture_caption(const cable_solution *s, const render_options *o, double pmax, char *buf, size_t n)
+static void picture_caption(const cable_solution *s, const cable_render_options *o, double pmax, char *buf, size_t n)
 {
-  braid_analysis *a = malloc(sizeof *a);
+  cable_braid_analysis *a = malloc(sizeof *a);
   char topo[160] = "";
-  if (a && braid_analysis_compute(s, a) == 0)
+  if (a && cable_braid_analysis_compute(s, a) == 0)
     snprintf(topo, sizeof topo, ", Lk = %.4g, braid axis: %s, tubes %s", a->topo.lk, a->topo.axis.name,
              a->tube.noverlap > 0 ? "overlap" : "do not overlap");
   free(a);
@@ -248,10 +248,10 @@ static void picture_caption(const cable_solution *s, const render_options *o, do
            "contact pressure (max |p| = %.6g) along the contact curve: white on strand 1, black on strand 2, "
            "dark red where negative",
            s->lab, s->par[BP_T], s->par[BP_F], s->par[BP_DELTA], topo,
-           o && o->colormap != RENDER_COLORMAP_NONE ? " (coloured by contact pressure)" : "", pmax);
+           o && o->colormap != CABLE_RENDER_COLORMAP_NONE ? " (coloured by contact pressure)" : "", pmax);
 }
 
-int cable_render_solution(const cable_solution *s, const render_options *o, const char *out, const char *vtp,
+int cable_render_solution(const cable_solution *s, const cable_render_options *o, const char *out, const char *vtp,
                           const char *ply, cable_error *err)
 {
   static const char *const png[1] = {".png"}, *const vtk[1] = {".vtp"}, *const plyx[1] = {".ply"};

@@ -191,7 +191,7 @@ static int find_problem(cable_session *r, const char *e, const cable_constants *
   return 0;
 }
 
-int cable_session_info(cable_session *r, const char *e, FILE *out, cable_error *err)
+int rp_session_info(cable_session *r, const char *e, FILE *out, cable_error *err)
 {
   if (!r || !e || !out) return cable_error_set(err, CABLE_ERR_NULL, NULL, 0, NULL, "cable_session_info: NULL argument");
   rp_problem p;
@@ -850,26 +850,26 @@ static int engine_run(cable_session *r, rp_setup *s, const char *out_name, int o
               ((s->start->ndim == pb->ndim && cable_type_base(s->start->itp) == 6) ||
                (s->start->ndim == 2 * pb->ndim && abs(s->start->itp) / 10 == CABLE_BPCONT_ITPST));
   if (at_bp) {
-    char msg[400];
-    bpc = cable_bpcont_alloc(pb, &s->c, s->start, &st, msg, sizeof msg);
+    st = cable_bpcont_create(pb, &s->c, s->start, &bpc, err);
     int curve_restart = s->start->ndim == 2 * pb->ndim;
-    if (bpc && !curve_restart) st = cable_bpcont_starting_data(bpc, msg, sizeof msg);
-    if (!bpc || st) {
+    if (!st && !curve_restart) st = cable_bpcont_starting_data(bpc, err);
+    if (st) {
       cable_bpcont_free(bpc);
       problem_release(r, &prob);
-      return cable_error_set(err, st, NULL, 0, "ISW", "%s", msg);
+      if (err) snprintf(err->key, sizeof err->key, "ISW");
+      return st;
     }
     if (!curve_restart) fprintf(rp_log(r), "  Generating starting data : Restart at EP label below :\n");
     pb = cable_bpcont_problem(bpc);
     crun = cable_bpcont_constants(bpc);
     start = curve_restart ? cable_bpcont_start(bpc) : NULL;
   } else if (s->c.isw == 2) {
-    char msg[400];
-    fold = cable_fold_alloc(pb, &s->c, s->start, &st, msg, sizeof msg);
-    if (!fold) {
+    st = cable_fold_create(pb, &s->c, s->start, &fold, err);
+    if (st) {
       problem_release(r, &prob);
       free(guard);
-      return cable_error_set(err, st, NULL, 0, "ISW", "%s", msg);
+      if (err) snprintf(err->key, sizeof err->key, "ISW");
+      return st;
     }
     /* a point of a fold curve (NDIM = 2n) restarts the curve as it is
        stored, with its direction (run(r2) after a fold run goes on, as in
@@ -878,11 +878,12 @@ static int engine_run(cable_session *r, rp_setup *s, const char *out_name, int o
        through the extended problem's STPNT, and the next run from that EP
        follows the curve (doc/fold-continuation.md, "AUTO's runs") */
     int curve_restart = s->start && s->start->ndim == 2 * pb->ndim;
-    if (!curve_restart && (st = cable_fold_starting_data(fold, msg, sizeof msg)) != 0) {
+    if (!curve_restart && (st = cable_fold_starting_data(fold, err)) != 0) {
       cable_fold_free(fold);
       cable_bpcont_free(bpc);
       problem_release(r, &prob);
-      return cable_error_set(err, st, NULL, 0, "ISW", "%s", msg);
+      if (err) snprintf(err->key, sizeof err->key, "ISW");
+      return st;
     }
     if (!curve_restart) fprintf(rp_log(r), "  Generating starting data : Restart at EP label below :\n");
     pb = cable_fold_problem(fold);
@@ -919,8 +920,10 @@ static int engine_run(cable_session *r, rp_setup *s, const char *out_name, int o
   }
   if (st == 0) st = cable_cont_set_start(cc, start);
   if (st) {
-    const char *why = cable_cont_error(cc)[0] ? cable_cont_error(cc) : cable_status_message(st);
-    cable_error_set(err, st, NULL, 0, strncmp(why, "PAR sets", 8) == 0 ? "PAR" : NULL, "%s", why);
+    /* the engine's report: its message and the key it is about (PAR) */
+    cable_error why;
+    cable_cont_last_error(cc, &why);
+    cable_error_set(err, st, NULL, 0, why.key, "%s", why.msg[0] ? why.msg : cable_status_message(st));
     cable_cont_free(cc);
     cable_fold_free(fold);
     cable_bpcont_free(bpc);
@@ -992,6 +995,7 @@ static int engine_run(cable_session *r, rp_setup *s, const char *out_name, int o
              col.b->npt > 0 ? col.b->pts[col.b->npt - 1].pt.pt : 0);
   snprintf(end_note, sizeof end_note, "branch %d ended: %s: %s", ibr, cable_status_message(st), why);
   if (!col.rc && (st < 0 || st == CABLE_END_LOOP)) col.rc = rp_branch_set_end_note(col.b, end_note);
+  col.b->end_status = st;
   cable_cont_free(cc);
   cable_fold_free(fold);
   cable_bpcont_free(bpc);
@@ -1112,7 +1116,7 @@ static void remember(cable_session *r, rp_setup *s)
   }
 }
 
-int cable_session_run(cable_session *r, const cable_run_args *a, cable_branch **out, cable_error *err)
+int rp_session_run(cable_session *r, const cable_run_args *a, cable_branch **out, cable_error *err)
 {
   if (out) *out = NULL;
   if (!r || !a || !out) return null_arg("cable_session_run", !r ? "the session" : !a ? "the arguments" : "out", err);
@@ -1146,8 +1150,8 @@ int cable_session_run(cable_session *r, const cable_run_args *a, cable_branch **
 
 /* ---- files: save, load, merge, relabel ------------------------------------------------ */
 
-int cable_session_save(cable_session *r, cable_branch *const *branches, int n, int sol_index, const char *name,
-                       int append, cable_error *err)
+int rp_session_save(cable_session *r, cable_branch *const *branches, int n, int sol_index, const char *name,
+                    int append, cable_error *err)
 {
   if (!r || !name) return null_arg("cable_session_save", !r ? "the session" : "the name", err);
   int rc = check_branch_list("cable_session_save", branches, n, err);
@@ -1217,7 +1221,7 @@ static int result_to_list(rp_result *res, cable_branch ***out, int *n, cable_err
   return 0;
 }
 
-int cable_session_loadbd(cable_session *r, const char *name, cable_branch ***out, int *n, cable_error *err)
+int rp_session_loadbd(cable_session *r, const char *name, cable_branch ***out, int *n, cable_error *err)
 {
   if (out) *out = NULL;
   if (n) *n = 0;
@@ -1228,7 +1232,7 @@ int cable_session_loadbd(cable_session *r, const char *name, cable_branch ***out
   return rc ? rc : result_to_list(res, out, n, err);
 }
 
-int cable_session_load(cable_session *r, const cable_run_args *a, cable_branch **out, cable_error *err)
+int rp_session_load(cable_session *r, const cable_run_args *a, cable_branch **out, cable_error *err)
 {
   if (out) *out = NULL;
   if (!r || !a || !out) return null_arg("cable_session_load", !r ? "the session" : !a ? "the arguments" : "out", err);
@@ -1273,8 +1277,8 @@ int cable_session_load(cable_session *r, const cable_run_args *a, cable_branch *
   return rc;
 }
 
-int cable_session_transform(cable_session *r, cable_branch *const *in, int n, int relabel, cable_branch ***out,
-                            int *nout, cable_error *err)
+int rp_session_transform(cable_session *r, cable_branch *const *in, int n, int relabel, cable_branch ***out,
+                         int *nout, cable_error *err)
 {
   if (out) *out = NULL;
   if (nout) *nout = 0;
@@ -1288,7 +1292,7 @@ int cable_session_transform(cable_session *r, cable_branch *const *in, int n, in
   return result_to_list(res, out, nout, err);
 }
 
-int cable_session_transform_files(cable_session *r, const char *name, int relabel, cable_error *err)
+int rp_session_transform_files(cable_session *r, const char *name, int relabel, cable_error *err)
 {
   if (!r || !name) return null_arg("cable_session_transform_files", !r ? "the session" : "the name", err);
   rp_result *res = NULL, *t = NULL;

@@ -31,6 +31,7 @@ typedef struct cable_branch {
   int nsol, capsol;
   cable_solution **sol;
   char *end_note;   /* why the branch ended abnormally (d-file), NULL: normal end */
+  int end_status;   /* the run's end (enum cable_status: > 0 normal, < 0 error); 0: not a run's */
   /* a fold run (ISW=2): c holds the extended problem's constants (its files'
      headers), c_user the run's own (original NDIM, NBC, NINT, ICP, ISW=2),
      which a restart from the branch takes, as AUTO's run(r2) does */
@@ -129,12 +130,13 @@ int rp_branch_from_rows(const cable_bfile_branch *bb, const cable_solution *cons
 
 /* ---- d-file notes (cable_session_dnotes.c) ------------------------------------------- */
 
-/* The engine's NOTE of each labelled point of a d-file, by label. */
+/* The engine's NOTE and BP record of each labelled point of a d-file, by label. */
 typedef struct rp_dnotes {
   int found;   /* the d-file exists */
   int n;
   int *lab;
   char **note;
+  int *bp_kind;   /* enum cable_bp_kind from the point's BP record; CABLE_BP_UNKNOWN: none */
 } rp_dnotes;
 
 /* Reads path (a missing file gives no notes); 0 or CABLE_ERR_ALLOC. */
@@ -142,9 +144,10 @@ int rp_dnotes_read(const char *path, rp_dnotes *d);
 void rp_dnotes_free(rp_dnotes *d);
 /* The note of the nth (0, 1, ...) labelled point with label lab, NULL: none. */
 const char *rp_dnotes_find(const rp_dnotes *d, int lab, int nth);
-/* A BP's kind (enum cable_bp_kind) from its d-file note; CABLE_BP_UNKNOWN
- * when itp is no BP. */
-int rp_bp_kind_from_note(int itp, const char *note);
+/* The kind (enum cable_bp_kind) the BP record of the nth labelled point with
+ * label lab gives; CABLE_BP_UNKNOWN when itp is no BP or the point has no
+ * record (a d-file of AUTO's or of a cable before the records). */
+int rp_dnotes_bp_kind(const rp_dnotes *d, int itp, int lab, int nth);
 
 /* AUTO's merge: a branch that starts where the previous one started (the two
  * directions from one start) is joined to it; relabel: labels 1, 2, ... */
@@ -154,5 +157,17 @@ int rp_result_relabel(const rp_result *in, rp_result **out);
 /* The text of `cable info e=NAME` for a problem (cable_info.c); source: the
  * AUTO equation file it was found as, or NULL. */
 int rp_problem_info_write(const cable_problem *pb, const char *source, FILE *out);
+
+/* ---- the public calls' bodies (cable_session.c); the public entry points
+ * (cable_session_errors.c) report their errors to the session's handler ---- */
+int rp_session_run(cable_session *r, const cable_run_args *a, cable_branch **out, cable_error *err);
+int rp_session_info(cable_session *r, const char *e, FILE *out, cable_error *err);
+int rp_session_load(cable_session *r, const cable_run_args *a, cable_branch **out, cable_error *err);
+int rp_session_save(cable_session *r, cable_branch *const *branches, int n, int sol_index, const char *name,
+                    int append, cable_error *err);
+int rp_session_loadbd(cable_session *r, const char *name, cable_branch ***out, int *n, cable_error *err);
+int rp_session_transform(cable_session *r, cable_branch *const *in, int n, int relabel, cable_branch ***out,
+                         int *nout, cable_error *err);
+int rp_session_transform_files(cable_session *r, const char *name, int relabel, cable_error *err);
 
 #endif

@@ -84,6 +84,18 @@ static int point_copy(rp_point *dst, const cable_point *pt)
   return 0;
 }
 
+/* Solution q's BP kind read back from a d-file, on the solution and on its
+ * point (the branch is still being built). */
+static void branch_set_bp_kind(rp_branch *b, int q, int kind)
+{
+  b->sol[q]->bp_kind = kind;
+  for (int k = 0; k < b->npt; k++)
+    if (b->pts[k].sol == q) {
+      b->pts[k].pt.bp_kind = kind;
+      b->pts[k].pt.bp_mult = cable_bp_multiplicity(kind);
+    }
+}
+
 int rp_branch_add(rp_branch *b, const cable_point *pt, const cable_solution *sol)
 {
   if (b->npt == b->cappt) {
@@ -120,6 +132,7 @@ rp_branch *rp_branch_copy(const rp_branch *b)
   if (!n) return NULL;
   n->has_c_user = b->has_c_user;
   n->c_user = b->c_user;
+  n->end_status = b->end_status;
   for (int i = 0; i < b->npt; i++) {
     const rp_point *p = &b->pts[i];
     if (rp_branch_add(n, &p->pt, p->sol >= 0 ? b->sol[p->sol] : NULL)) {
@@ -264,14 +277,17 @@ static int assign_runs(const cable_sfile *sf, const cable_bfile *bf, int *run, d
   return 0;
 }
 
-/* The d-file's note on each solution of sf (its nth label lab: the nth such line). */
-static void solution_notes(const cable_sfile *sf, const rp_dnotes *dn, const char **notes)
+/* The d-file's note and BP kind on each solution of sf (its nth label lab:
+ * the nth such line). */
+static void solution_notes(const cable_sfile *sf, const rp_dnotes *dn, const char **notes, int *kinds)
 {
   int n = cable_sfile_count(sf);
   for (int i = 0; i < n; i++) {
-    int nth = 0, lab = cable_sfile_get(sf, i)->lab;
+    const cable_solution *s = cable_sfile_get(sf, i);
+    int nth = 0, lab = s->lab;
     for (int q = 0; q < i; q++) nth += cable_sfile_get(sf, q)->lab == lab;
     notes[i] = rp_dnotes_find(dn, lab, nth);
+    kinds[i] = rp_dnotes_bp_kind(dn, s->itp, lab, nth);
   }
 }
 
@@ -284,10 +300,11 @@ static int read_rows(const cable_sfile *sf, const cable_bfile *bf, const rp_dnot
   for (int j = 0; j < bf->nbranch; j++) nbr += bf->branch[j].nrow > 0;
   const cable_solution **sols = malloc((size_t)(n > 0 ? n : 1) * sizeof *sols);
   const char **notes = malloc((size_t)(n > 0 ? n : 1) * sizeof *notes);
+  int *kinds = malloc((size_t)(n > 0 ? n : 1) * sizeof *kinds);
   rp_result *res = rp_result_alloc(nbr);
-  if (!sols || !notes || !res) rc = CABLE_ERR_ALLOC;
+  if (!sols || !notes || !kinds || !res) rc = CABLE_ERR_ALLOC;
   for (int i = 0; !rc && i < n; i++) sols[i] = cable_sfile_get(sf, i);
-  if (!rc) solution_notes(sf, dn, notes);
+  if (!rc) solution_notes(sf, dn, notes, kinds);
   int i = 0, k = 0;
   for (int j = 0; !rc && j < bf->nbranch; j++) {
     const cable_bfile_branch *bb = &bf->branch[j];
@@ -296,11 +313,12 @@ static int read_rows(const cable_sfile *sf, const cable_bfile *bf, const rp_dnot
     if (rc) break;
     rp_branch *b = res->br[k++];
     for (int q = 0; q < b->nsol; q++)
-      if (dn->found) b->sol[q]->bp_kind = rp_bp_kind_from_note(b->sol[q]->itp, notes[i + q]);
+      if (dn->found) branch_set_bp_kind(b, q, kinds[i + q]);
     i += b->nsol;
   }
   free(sols);
   free(notes);
+  free(kinds);
   if (rc) {
     rp_result_free(res);
     return rc;
@@ -383,7 +401,8 @@ int rp_result_read(const cable_session *r, const char *name, const cable_constan
     for (int q = 0; q < i; q++) nth += cable_sfile_get(sf, q)->lab == s->lab;
     pt.note = rp_dnotes_find(&dn, s->lab, nth);
     rc = rp_branch_add(res->br[k], &pt, s);
-    if (!rc && dn.found) res->br[k]->sol[res->br[k]->nsol - 1]->bp_kind = rp_bp_kind_from_note(s->itp, pt.note);
+    if (!rc && dn.found)
+      branch_set_bp_kind(res->br[k], res->br[k]->nsol - 1, rp_dnotes_bp_kind(&dn, s->itp, s->lab, nth));
   }
   free(run);
   free(l2);
@@ -521,6 +540,7 @@ const cable_names *cable_branch_names(const cable_branch *b) { return b ? &b->na
 const cable_constants *cable_branch_constants(const cable_branch *b) { return b ? &b->c : NULL; }
 const char *cable_branch_problem(const cable_branch *b) { return b ? b->e : NULL; }
 const char *cable_branch_end_note(const cable_branch *b) { return b ? b->end_note : NULL; }
+int cable_branch_end_status(const cable_branch *b) { return b ? b->end_status : 0; }
 
 const cable_point *cable_branch_point(const cable_branch *b, int i)
 {

@@ -23,6 +23,7 @@
 
 #include "cable/cable_api.h"
 #include "cable/cable_constants.h"
+#include "cable/cable_error.h"
 #include "cable/cable_problem.h"
 #include "cable/cable_solution.h"
 
@@ -36,14 +37,18 @@ typedef struct cable_bpcont cable_bpcont;
  * BP, too few ICP entries). */
 CABLE_API cable_bpcont *cable_bpcont_alloc(const cable_problem *pb, const cable_constants *c,
                                            const cable_solution *start, int *status, char *msg, size_t len);
+/* The same, status-returning (as cable_fold_create). */
+CABLE_API int cable_bpcont_create(const cable_problem *pb, const cable_constants *c, const cable_solution *start,
+                                  cable_bpcont **out, cable_error *err);
 CABLE_API void cable_bpcont_free(cable_bpcont *f);   /* NULL is a no-op */
 CABLE_API const cable_problem *cable_bpcont_problem(const cable_bpcont *f);
 CABLE_API const cable_constants *cable_bpcont_constants(const cable_bpcont *f);
 /* AUTO's first run at a BP (cable_fold_starting_data's counterpart): five
  * steps along the adjoint's norm a (free in place of q, which is fixed and
  * printed) from a = CABLE_FOLD_START_NORM, ISW = -2, ILP = ISP = 0; its EP
- * (type 69) restarts the curve.  0, or CABLE_ERR_INPUT with msg. */
-CABLE_API int cable_bpcont_starting_data(cable_bpcont *f, char *msg, size_t len);
+ * (type 69) restarts the curve.  0, or CABLE_ERR_INPUT with the reason in
+ * err (may be NULL). */
+CABLE_API int cable_bpcont_starting_data(cable_bpcont *f, cable_error *err);
 /* f's copy of its start: a curve point restarts from it as stored */
 CABLE_API const cable_solution *cable_bpcont_start(const cable_bpcont *f);
 /* the BP's mesh resampled to ntst intervals (as cable_fold_mesh) */

@@ -29,10 +29,14 @@ typedef struct cable_cont cable_cont;
  * constants filled by hand) with the reason in err (may be NULL). */
 CABLE_API int cable_cont_check(const cable_problem *pb, const cable_constants *c, cable_error *err);
 
-/* Check (as cable_cont_check) and allocate every workspace.  Returns a
- * usable handle, or NULL with *status (status may be NULL) set and nothing
- * left allocated; cable_cont_check gives the message.  The library changes
- * no process-wide setting (see cable_blas_single_thread). */
+/* Check (as cable_cont_check) and allocate every workspace: *out a usable
+ * handle, and 0; or *out NULL, nothing left allocated, and a status with
+ * the reason in err (may be NULL).  The library changes no process-wide
+ * setting (see cable_blas_single_thread). */
+CABLE_API int cable_cont_create(const cable_problem *pb, const cable_constants *c, cable_cont **out,
+                                cable_error *err);
+/* The same, older form: the handle or NULL with *status (status may be
+ * NULL); cable_cont_check gives the message. */
 CABLE_API cable_cont *cable_cont_alloc(const cable_problem *pb, const cable_constants *c, int *status);
 CABLE_API void cable_cont_free(cable_cont *cc);   /* NULL is a no-op */
 
@@ -72,6 +76,17 @@ CABLE_API void cable_cont_test_functions(const cable_cont *cc, int *det_sign, do
 
 /* Human-readable account of the last error (never NULL). */
 CABLE_API const char *cable_cont_error(const cable_cont *cc);
+/* The last error as a report (doc/api.md, One error channel): its status
+ * (0: none yet), the key it is about ("PAR" for a PAR override that moves a
+ * branch point's parameters, "" otherwise) and the message of
+ * cable_cont_error.  Returns that status; CABLE_ERR_NULL for a NULL handle
+ * or report. */
+CABLE_API int cable_cont_last_error(const cable_cont *cc, cable_error *out);
+/* Install (fn NULL: remove) the handle's error handler: every error status
+ * (< 0) that cable_cont_set_mesh, _set_start, _step or _run returns on cc is
+ * first reported to fn(report, ctx), with the report cable_cont_last_error
+ * gives.  0, or CABLE_ERR_NULL for a NULL handle. */
+CABLE_API int cable_cont_set_error_handler(cable_cont *cc, cable_error_handler fn, void *ctx);
 
 /* For applications: ask a threaded BLAS (OpenBLAS) for one thread.  The
  * structured solver works on blocks of a few dozen rows, where BLAS threads

@@ -16,6 +16,16 @@ typedef struct cable_error {
   char msg[512];
 } cable_error;
 
+/* An error handler, as GSL's gsl_error_handler_t and SUNDIALS'
+ * KINErrHandlerFn: told the full report of an error (status, file, line,
+ * key, message) before the call that met it returns its status.  It is
+ * installed per handle, never process-wide (the library keeps no global
+ * mutable state, doc/api.md, One error channel): cable_session_options's
+ * on_error for a session, cable_cont_set_error_handler for a continuation
+ * handle.  ctx is the pointer given with it.  It may not call back into the
+ * handle that reports. */
+typedef void (*cable_error_handler)(const cable_error *e, void *ctx);
+
 CABLE_API void cable_error_clear(cable_error *e);
 /* Fill e (when not NULL) and return status. */
 CABLE_API int cable_error_set(cable_error *e, int status, const char *file, int line, const char *key,

@@ -14,8 +14,9 @@
  * (central differences along that direction, step CABLE_FOLD_FD_STEP).  So
  * NDIM' = 2 NDIM, NBC' = 2 NBC, NINT' = 2 NINT + 1 and NFPR' = 2k.
  *
- *   cable_fold *f = cable_fold_alloc(pb, &c, lp_solution, &status, msg, len);
- *   cable_cont *cc = cable_cont_alloc(cable_fold_problem(f), cable_fold_constants(f), &st);
+ *   cable_fold *f; cable_cont *cc;
+ *   st = cable_fold_create(pb, &c, lp_solution, &f, &err);        // the reason in err
+ *   st = cable_cont_create(cable_fold_problem(f), cable_fold_constants(f), &cc, &err);
  *   cable_fold_mesh(f, NTST, mesh); cable_cont_set_mesh(cc, mesh);   // the LP's mesh
  *   cable_cont_set_start(cc, NULL);   // STPNT: the LP solution and its null vector
  *   ...
@@ -28,6 +29,7 @@
 
 #include "cable/cable_api.h"
 #include "cable/cable_constants.h"
+#include "cable/cable_error.h"
 #include "cable/cable_problem.h"
 #include "cable/cable_solution.h"
 
@@ -63,6 +65,11 @@ typedef struct cable_fold cable_fold;
  * constants; status and msg may be NULL: not wanted). */
 CABLE_API cable_fold *cable_fold_alloc(const cable_problem *pb, const cable_constants *c, const cable_solution *start,
                                        int *status, char *msg, size_t len);
+/* The same, status-returning: *out the fold problem and 0, or *out NULL
+ * and the status with its message in err (may be NULL); CABLE_ERR_NULL for
+ * a NULL problem, constants, start or out. */
+CABLE_API int cable_fold_create(const cable_problem *pb, const cable_constants *c, const cable_solution *start,
+                                cable_fold **out, cable_error *err);
 CABLE_API void cable_fold_free(cable_fold *f);   /* NULL is a no-op */
 
 /* The extended problem and the constants of its run (ICP with the w slots
@@ -78,8 +85,9 @@ CABLE_API void cable_fold_mesh(const cable_fold *f, int ntst, double *mesh);   /
  * free in place of q, which is fixed and printed) for CABLE_FOLD_START_STEPS
  * steps, ISW = -2, ILP = ISP = 0; its last point is the EP (type 59) a fold
  * curve restarts from.  Without this call the run from the LP follows the
- * fold curve itself with N = 1.  0, or CABLE_ERR_INPUT with msg. */
-CABLE_API int cable_fold_starting_data(cable_fold *f, char *msg, size_t len);
+ * fold curve itself with N = 1.  0, or CABLE_ERR_INPUT with the reason in
+ * err (may be NULL). */
+CABLE_API int cable_fold_starting_data(cable_fold *f, cable_error *err);
 /* f's copy of its start (a fold-curve point with the norm slot N filled in:
  * 1 for a point stored without it), to restart the curve from. */
 CABLE_API const cable_solution *cable_fold_start(const cable_fold *f);

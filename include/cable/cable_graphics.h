@@ -10,12 +10,12 @@ typedef struct {
   double x, y;
   const char *text;   /* NULL -> no text */
   int filled;         /* 1: filled black circle, 0: open circle */
-} plot_annotation;
+} cable_plot_annotation;
 
 enum {
-  RENDER_COLORMAP_NONE = 0,       /* one colour per tube (render_tube.rgb) */
-  RENDER_COLORMAP_SEQUENTIAL = 1, /* viridis over [min, max] of the scalars */
-  RENDER_COLORMAP_DIVERGING = 2   /* blue-white-red over [-m, m], m = max |scalar| */
+  CABLE_RENDER_COLORMAP_NONE = 0,       /* one colour per tube (render_tube.rgb) */
+  CABLE_RENDER_COLORMAP_SEQUENTIAL = 1, /* viridis over [min, max] of the scalars */
+  CABLE_RENDER_COLORMAP_DIVERGING = 2   /* blue-white-red over [-m, m], m = max |scalar| */
 };
 
 typedef struct {
@@ -29,6 +29,6 @@ typedef struct {
                             and draw a colour bar on the right */
   double thicken;        /* draw radius * thicken; <= 0 -> automatic: thin
                             tubes are widened to RENDER_MIN_RADIUS_PX pixels */
-} render_options;
+} cable_render_options;
 
 #endif

@@ -48,6 +48,13 @@ typedef struct cable_point {
                            -1: unstable or critical (index > 0 or a zero eigenvalue) */
   int stab_index, stab_nzero;
   double stab_sigma1;   /* the smallest eigenvalue of the second variation */
+  /* What the detector found at a branch point, for programs to read (the
+     note says the same for people; never parse it).  Last, so that the
+     fields above keep their offsets. */
+  int bp_kind;          /* enum cable_bp_kind (cable_solution.h); CABLE_BP_UNKNOWN (0): no BP, or
+                           a BP read from files that do not record it */
+  int bp_mult;          /* the multiplicity: singular values of the extended Newton matrix that
+                           vanish at the BP (cable_bp_multiplicity); 0 when bp_kind is unknown */
 } cable_point;
 
 typedef struct cable_sink {

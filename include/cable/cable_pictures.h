@@ -16,15 +16,15 @@
  * SVG, .png PNG, any other is refused (CABLE_ERR_INPUT, nothing written).
  * Regular output points (RG) are not labelled. */
 CABLE_API int cable_plot_files(const char *dir, const char *const *bfiles, int nfiles, const char *x, const char *y,
-                     const plot_annotation *marks, int nmarks, const char *title, const char *out,
+                     const cable_plot_annotation *marks, int nmarks, const char *title, const char *out,
                      cable_error *err);
 
 /* Picture (out, PNG; NULL: none) and exports (vtp, ply; NULL: none) of a
  * braid solution: both strands as tubes, the contact-pressure profiles along
  * the contact curve (white: strand 1, black: strand 2).  The names must end
  * in .png, .vtp and .ply (CABLE_ERR_INPUT before anything is written). */
-CABLE_API int cable_render_solution(const cable_solution *s, const render_options *o, const char *out, const char *vtp,
-                          const char *ply, cable_error *err);
+CABLE_API int cable_render_solution(const cable_solution *s, const cable_render_options *o, const char *out,
+                                    const char *vtp, const char *ply, cable_error *err);
 
 /* The strands of a braid solution at its mesh points, as the pictures and
  * the HTML view (cable view) draw them: centre lines r1, r2 = r1 + Delta d1

@@ -61,6 +61,14 @@ typedef struct cable_session_options {
    * (doc/failures.md). */
   int (*interrupt)(void *ctx);
   void *interrupt_ctx;
+  /* The session's error handler (NULL: none; doc/api.md, One error
+   * channel): every error status a call on the session returns (run, load,
+   * save, loadbd, transform, transform_files, info) is first reported to
+   * on_error(report, on_error_ctx) with the report the call's err gets, also
+   * when the caller passes err NULL.  Last, so that the fields above keep
+   * their offsets. */
+  cable_error_handler on_error;
+  void *on_error_ctx;
 } cable_session_options;
 
 CABLE_API void cable_session_options_init(cable_session_options *o);
@@ -68,7 +76,11 @@ CABLE_API void cable_session_options_init(cable_session_options *o);
 typedef struct cable_session cable_session;
 typedef struct cable_branch cable_branch;
 
-/* The options are copied (the FILE pointers and problems must outlive s). */
+/* *out a new session and 0 (opt NULL: the defaults of
+ * cable_session_options_init), or *out NULL and a status with err.  The
+ * options are copied (the FILE pointers and problems must outlive it). */
+CABLE_API int cable_session_create(const cable_session_options *opt, cable_session **out, cable_error *err);
+/* The same, older form: the session, or NULL when memory ran out. */
 CABLE_API cable_session *cable_session_alloc(const cable_session_options *opt);
 /* Frees the session: plug-ins it opened are closed.  NULL is a no-op.
  * Branches live on independently of the session. */
@@ -182,7 +194,14 @@ CABLE_API const char *cable_branch_solution_note(const cable_branch *b, int i);
 CABLE_API const cable_names *cable_branch_names(const cable_branch *b);
 CABLE_API const cable_constants *cable_branch_constants(const cable_branch *b);
 CABLE_API const char *cable_branch_problem(const cable_branch *b);
-/* Why the branch ended abnormally (the d-file's note), NULL: a normal end. */
+/* Why the branch ended abnormally (the d-file's note, for people), NULL: a
+ * normal end. */
 CABLE_API const char *cable_branch_end_note(const cable_branch *b);
+/* How the run that computed b ended, for programs: its status (enum
+ * cable_status: CABLE_END_NMX, CABLE_END_BOUNDS, ... > 0 a normal end, < 0
+ * the error, CABLE_ERR_INTERRUPTED a stopped run); 0 for a branch no run of
+ * this process computed (read from files, or two runs joined by merge) and
+ * for a NULL branch. */
+CABLE_API int cable_branch_end_status(const cable_branch *b);
 
 #endif

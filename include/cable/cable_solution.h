@@ -5,12 +5,24 @@
 #define CABLE_SOLUTION_H
 
 #include "cable/cable_api.h"
+#include "cable/cable_error.h"
 
 /* How the branch-point detector found a BP (cont_special.c): the
  * determinant changed sign (one singular value crossed zero: simple), or
  * sigma_1 dipped to zero without a sign change, with sigma_2 vanishing
  * too (double) or not (a pair of simple BPs in one step). */
 enum cable_bp_kind { CABLE_BP_UNKNOWN = 0, CABLE_BP_SIMPLE = 1, CABLE_BP_DOUBLE = 2, CABLE_BP_PAIR = 3 };
+
+/* "simple", "double", "pair"; "" for CABLE_BP_UNKNOWN or another value (the
+ * word the d-file's BP record and the Python package use). */
+CABLE_API const char *cable_bp_kind_name(int kind);
+/* The kind of a name cable_bp_kind_name gives; CABLE_BP_UNKNOWN for any
+ * other (and NULL). */
+CABLE_API int cable_bp_kind_code(const char *name);
+/* The multiplicity of a BP of that kind: the singular values that vanish
+ * there, 1 for a simple BP and for each of a pair, 2 for a double one; 0
+ * for CABLE_BP_UNKNOWN. */
+CABLE_API int cable_bp_multiplicity(int kind);
 
 typedef struct cable_solution {
   int ndim, ntst, ncol;
@@ -50,6 +62,11 @@ typedef struct cable_solution {
  * is out of range (ndim, ntst, ncol, npar < 1 or nfpr < 0) or memory ran
  * out; nothing is left allocated then. */
 CABLE_API cable_solution *cable_solution_alloc(int ndim, int ntst, int ncol, int npar, int nfpr);
+/* The same, status-returning: *out the solution and 0, or *out NULL and
+ * CABLE_ERR_RANGE (a size out of range, named in err), CABLE_ERR_ALLOC or
+ * CABLE_ERR_NULL (out NULL); err may be NULL. */
+CABLE_API int cable_solution_create(int ndim, int ntst, int ncol, int npar, int nfpr, cable_solution **out,
+                                    cable_error *err);
 CABLE_API void cable_solution_free(cable_solution *s);            /* NULL is a no-op */
 /* Copies the values of src into dst, which must have the same sizes.
  * CABLE_SUCCESS, CABLE_ERR_NULL (a NULL solution or array) or

@@ -100,9 +100,9 @@ class Solution:
         """A branch point's kind as the detector found it: 'simple' (the
         determinant changed sign), 'double' (two singular values vanished) or
         'pair' (two simple ones in one step); '' when this is not a BP.  A
-        solution read back from files (loadbd) has it from the d-file's note
-        on its label (the s-file, AUTO's format, has no place for it); ''
-        when the d-file is missing."""
+        solution read back from files (loadbd) has it from the d-file's BP
+        record on its label (the s-file, AUTO's format, has no place for it);
+        '' when the d-file or its record is missing."""
         return self._kind
 
     @property

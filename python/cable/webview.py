@@ -9,7 +9,7 @@ to the 3-D shapes of its solutions (doc/view.md).
 Every number the page shows is computed here by the C library: the rows of
 the b-files (cable_bfile_read), the strands and contact pressures of each
 labelled solution (cable_solution_strands) and its analysis (Lk, the braid
-axis's knot type, tube overlap: braid_analysis_compute).  The page embeds
+axis's knot type, tube overlap: cable_braid_analysis_compute).  The page embeds
 Debian's three.js (libjs-three) and works offline from the file.
 """
 import base64

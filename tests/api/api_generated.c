@@ -36,17 +36,22 @@ typedef struct fx {
   cable_sfile *sf;
   cable_bfile *bf;
   cable_cont *cc;                /* allocated, not started */
+  cable_cont *cc_out;            /* cable_cont_create's output, freed after each case */
+  cable_session *session_out;    /* cable_session_create's output, freed after each case */
+  cable_solution *sol_out;       /* cable_solution_create's, cable_fold_create's, cable_bpcont_create's */
+  cable_fold *fold_out;
+  cable_bpcont *bpc_out;
   cable_fold *fold;              /* the fold problem at the LP */
   cable_sink sink;               /* no callbacks */
   cable_aufile_options aopt;
-  braid_analysis ba;
-  const braid_analysis *bas[1];
-  tube_distance_result tube;
-  axis_passages ap;
+  cable_braid_analysis ba;
+  const cable_braid_analysis *bas[1];
+  cable_tube_distance_result tube;
+  cable_axis_passages ap;
   cable_strands strands;          /* cable_solution_strands' output */
   cable_stab_result stab;
-  plot_annotation marks[1];
-  render_options ropt;
+  cable_plot_annotation marks[1];
+  cable_render_options ropt;
   char buf[2048];
   int i;
   double d[1024];
@@ -92,6 +97,16 @@ static void fx_after(fx *f)
   if (f->pb_out && f->pb_out != f->pb) cable_problem_release(f->pb, f->pb_out);
   f->pb_out = NULL;
   cable_strands_free(&f->strands);
+  cable_cont_free(f->cc_out);
+  f->cc_out = NULL;
+  cable_session_free(f->session_out);
+  f->session_out = NULL;
+  cable_solution_free(f->sol_out);
+  f->sol_out = NULL;
+  cable_fold_free(f->fold_out);
+  f->fold_out = NULL;
+  cable_bpcont_free(f->bpc_out);
+  f->bpc_out = NULL;
 }
 
 /* A fresh writer for the functions that take one (discarded after the case). */

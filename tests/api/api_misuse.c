@@ -230,21 +230,21 @@ static void misuse_files(void)
 
 static void misuse_analysis_pictures(void)
 {
-  braid_analysis a;
+  cable_braid_analysis a;
   cable_error err;
   double p1, p2, sg;
-  api_check("braid_first_integral_drift(NULL) < 0", braid_first_integral_drift(NULL) < 0);
-  api_check("braid_pressure_at(NULL)", braid_pressure_at(NULL, 0.5, &p1, &p2, &sg) < 0);
-  api_check("braid_pressure_signs(NULL)", braid_pressure_signs(NULL, &a) < 0);
-  api_check("braid_analysis_compute(NULL)", braid_analysis_compute(NULL, &a) < 0);
+  api_check("cable_braid_first_integral_drift(NULL) < 0", cable_braid_first_integral_drift(NULL) < 0);
+  api_check("cable_braid_pressure_at(NULL)", cable_braid_pressure_at(NULL, 0.5, &p1, &p2, &sg) < 0);
+  api_check("cable_braid_pressure_signs(NULL)", cable_braid_pressure_signs(NULL, &a) < 0);
+  api_check("cable_braid_analysis_compute(NULL)", cable_braid_analysis_compute(NULL, &a) < 0);
   /* a solution of another problem (Bratu: NDIM 2) is not a braid */
   cable_solution *s = cable_solution_alloc(2, 5, 3, 36, 1);
-  api_check("braid_analysis_compute(a non-braid solution)", braid_analysis_compute(s, &a) < 0);
-  api_check("braid_analysis_compute(NULL out)", braid_analysis_compute(s, NULL) < 0);
-  api_check("braid_first_integral_drift(a non-braid solution) < 0", braid_first_integral_drift(s) < 0);
-  api_check_int("braid_axis_same_type(NULL, NULL)", braid_axis_same_type(NULL, NULL), 0);
+  api_check("cable_braid_analysis_compute(a non-braid solution)", cable_braid_analysis_compute(s, &a) < 0);
+  api_check("cable_braid_analysis_compute(NULL out)", cable_braid_analysis_compute(s, NULL) < 0);
+  api_check("cable_braid_first_integral_drift(a non-braid solution) < 0", cable_braid_first_integral_drift(s) < 0);
+  api_check_int("cable_braid_axis_same_type(NULL, NULL)", cable_braid_axis_same_type(NULL, NULL), 0);
   int first = 5;
-  api_check_int("braid_branch_settled(NULL, 0)", braid_branch_settled(NULL, 0, &first), -1);
+  api_check_int("cable_braid_branch_settled(NULL, 0)", cable_braid_branch_settled(NULL, 0, &first), -1);
   api_check("cable_plot_files(NULL files)",
             cable_plot_files(NULL, NULL, 1, NULL, NULL, NULL, 0, NULL, "tests/tmp/x.png", &err) < 0);
   api_check("cable_plot_files(NULL output)", cable_plot_files(NULL, NULL, 0, NULL, NULL, NULL, 0, NULL, NULL, &err) < 0);

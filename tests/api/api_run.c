@@ -68,7 +68,9 @@ int main(int argc, char **argv)
   st = cable_cont_check(pb, &c, &err);
   if (st) report("check", &err);
   api_check_int("the engine accepts problem and constants", st, CABLE_SUCCESS);
-  cable_cont *cc = cable_cont_alloc(pb, &c, &st);
+  cable_cont *cc = NULL;
+  st = cable_cont_create(pb, &c, &cc, &err);
+  if (st) report("create", &err);
   api_check("a continuation handle", cc != NULL && st == CABLE_SUCCESS);
   st = cable_cont_set_start(cc, NULL);
   api_check_int("start from STPNT", st, CABLE_SUCCESS);

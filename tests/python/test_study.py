@@ -171,5 +171,7 @@ def test_closed_loop_ends_with_a_note(work, monkeypatch, capfd):
     lam = r['PAR(1)']
     assert 30 < len(lam) < 100
     note = r[0].branches[0].end_note
+    # the end reason for programs is a field (the note is for people)
+    assert r[0].branches[0].end_status == 'CABLE_END_LOOP'
     assert note and 'closed on itself' in note and 'returned to its start (its first point, PAR(1) = 0)' in note
     assert "end: the branch closed on itself (a closed loop): closed loop: the branch returned" in capfd.readouterr().out
