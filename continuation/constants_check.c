@@ -79,3 +79,11 @@ int cable_ext_alloc_check(const char *fn, const cable_problem *pb, const cable_c
   if (st) snprintf(msg, len, "%s", cerr.msg);
   return st;
 }
+
+void cable_ext_icp_order(const cable_constants *c, int k, cable_constants *out)
+{
+  *out = *c;
+  if (k < 2 || c->nicp < k + 1) return;
+  out->icp[1] = c->icp[k];
+  for (int j = 1; j < k; j++) out->icp[j + 1] = c->icp[j];
+}

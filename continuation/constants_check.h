@@ -22,4 +22,10 @@ int cable_constants_consistent(const cable_constants *c, int npar, cable_error *
  * 0, or CABLE_ERR_NULL or the consistency status with msg (fn names the call). */
 int cable_ext_alloc_check(const char *fn, const cable_problem *pb, const cable_constants *c, char *msg, size_t len);
 
+/* out = c with the user's ICP in AUTO's order for ISW = 2, [p1, ..., pk, q,
+ * printed...], turned into the extended problems' internal order [p1, q,
+ * p2, ..., pk, printed...] (the engine converges a start at fixed ICP(2),
+ * cont_engine.c's start_fixpar).  k = 1: the same. */
+void cable_ext_icp_order(const cable_constants *c, int k, cable_constants *out);
+
 #endif

@@ -19,16 +19,16 @@ struct cable_bpcont {
   cable_problem pb;             /* the extended problem; params = this struct */
   cable_constants c;
   const cable_problem *orig;    /* not owned */
-  int n, k, nbc;                /* original NDIM, free parameters, NBC */
+  int n, k, nbc, nint;          /* original NDIM, free parameters, NBC, NINT */
   int npar0, npar;
   int p[CABLE_MAX_ICP];         /* the original free parameters p1..pk */
-  int sb, sps, sd, sa;          /* slots: b, psi*_1 (nbc of them), d_1 (k of them), the norm a */
+  int sb, sps, so, sd, sa;      /* slots: b, psi*_1 (nbc of them), omega_1 (nint), d_1 (k), the norm a */
   cable_solution *start;        /* owned copy of the BP */
   double a0;                    /* a at the start */
   int start_ext;                /* the start is a point of a curve of branch points (2 NDIM) */
   int nnode;                    /* the start's psi: on the BP's mesh nodes tnode[0..nnode-1] */
   double *tnode, *psi0;         /* psi0[m * n + i] */
-  double *pstar0, *d0;          /* psi* (nbc) and d (k) of the start */
+  double *pstar0, *om0, *d0;    /* psi* (nbc), omega (nint) and d (k) of the start */
 };
 
 static double fd_step(double xmax) { return CABLE_FOLD_FD_STEP * (1.0 + xmax); }
@@ -40,7 +40,30 @@ static double maxabs(const double *x, int n)
   return m;
 }
 
-/* FUNC': f(u, p) - b psi and -f_u^T psi (column i of f_u by central differences) */
+/* The original integral conditions' integrands g are evaluated as cable's
+ * FUNC' must (it has no UOLD): UOLD = u, UDOT = 0, UPOLD = f(u, p) (AUTO's
+ * FFBBP passes the previous point and f there).  Exact for conditions that
+ * do not read UOLD, UDOT or UPOLD; doc/fold-continuation.md. */
+/* column i of g_u (i < n) or of g_{p_l} (i = n + l), central differences, in gd[nint] */
+static int g_deriv(const cable_bpcont *f, const double *u, const double *par, const double *fu0, int i, double *gd)
+{
+  const cable_problem *o = f->orig;
+  double zero[CABLE_FOLD_MAXDIM] = {0}, up[CABLE_FOLD_MAXDIM], pp[CABLE_FOLD_MAXPAR];
+  double ga[CABLE_FOLD_MAXDIM], gb[CABLE_FOLD_MAXDIM];
+  int n = f->n, rc;
+  memcpy(up, u, (size_t)n * sizeof *up);
+  memcpy(pp, par, (size_t)f->npar * sizeof *pp);
+  double *x = i < n ? &up[i] : &pp[f->p[i - n]], x0 = *x, h = i < n ? fd_step(maxabs(u, n)) : fd_step(fabs(x0));
+  *x = x0 + h;
+  if ((rc = o->icnd(n, pp, f->p, f->nint, up, u, zero, fu0, 0, ga, NULL, o->params)) != 0) return rc;
+  *x = x0 - h;
+  if ((rc = o->icnd(n, pp, f->p, f->nint, up, u, zero, fu0, 0, gb, NULL, o->params)) != 0) return rc;
+  for (int j = 0; j < f->nint; j++) gd[j] = (ga[j] - gb[j]) / (2.0 * h);
+  return 0;
+}
+
+/* FUNC': f(u, p) - b psi and -f_u^T psi + g_u^T omega (column i of f_u and
+   g_u by central differences) */
 static int bp_func(int ndim, const double *U, const int *icp, const double *par, int ijac, double *F, double *dfdu,
                    double *dfdp, void *params)
 {
@@ -50,6 +73,8 @@ static int bp_func(int ndim, const double *U, const int *icp, const double *par,
   int n = f->n, rc;
   const double *u = U, *psi = U + n;
   if ((rc = o->func(n, u, f->p, par, 0, F, NULL, NULL, o->params)) != 0) return rc;
+  double fu0[CABLE_FOLD_MAXDIM], gd[CABLE_FOLD_MAXDIM];
+  memcpy(fu0, F, (size_t)n * sizeof *fu0);
   for (int i = 0; i < n; i++) F[i] -= par[f->sb] * psi[i];
   double h = fd_step(maxabs(u, n));
   double up[CABLE_FOLD_MAXDIM], fp[CABLE_FOLD_MAXDIM], fm[CABLE_FOLD_MAXDIM];
@@ -63,6 +88,10 @@ static int bp_func(int ndim, const double *U, const int *icp, const double *par,
     double s = 0;
     for (int m = 0; m < n; m++) s += psi[m] * (fp[m] - fm[m]);
     F[n + i] = -s / (2.0 * h);
+    if (f->nint > 0) {
+      if ((rc = g_deriv(f, u, par, fu0, i, gd)) != 0) return rc;
+      for (int j = 0; j < f->nint; j++) F[n + i] += gd[j] * par[f->so + j];
+    }
   }
   return 0;
 }
@@ -112,16 +141,25 @@ static int bp_bcnd(int ndim, const double *par, const int *icp, int nbc, const d
   return 0;
 }
 
-/* ICND': -d_j - psi . f_{p_j} and the normalisation |psi|^2 + |psi*|^2 - 1 */
+/* ICND': the original conditions g + b omega, -d_j - psi . f_{p_j} + omega .
+   g_{p_j} and the normalisation |psi|^2 + |psi*|^2 + |omega|^2 - a */
 static int bp_icnd(int ndim, const double *par, const int *icp, int nint, const double *U, const double *uold,
                    const double *udot, const double *upold, int ijac, double *fi, double *dint, void *params)
 {
-  (void)ndim; (void)icp; (void)nint; (void)uold; (void)udot; (void)upold; (void)ijac; (void)dint;
+  (void)ndim; (void)icp; (void)nint; (void)ijac; (void)dint;
   const cable_bpcont *f = params;
   const cable_problem *o = f->orig;
-  int n = f->n, rc;
+  int n = f->n, ni = f->nint, rc;
   const double *u = U, *psi = U + n;
-  double pp[CABLE_FOLD_MAXPAR], fp[CABLE_FOLD_MAXDIM], fm[CABLE_FOLD_MAXDIM];
+  double pp[CABLE_FOLD_MAXPAR], fp[CABLE_FOLD_MAXDIM], fm[CABLE_FOLD_MAXDIM], fu0[CABLE_FOLD_MAXDIM];
+  double gd[CABLE_FOLD_MAXDIM];
+  if (ni > 0) {
+    /* the user's conditions see the problem's own u, UOLD, UDOT, UPOLD
+       (the first n components of the extended ones, AUTO's ICNI call) */
+    if ((rc = o->icnd(n, par, f->p, ni, u, uold, udot, upold, 0, fi, NULL, o->params)) != 0) return rc;
+    for (int j = 0; j < ni; j++) fi[j] += par[f->sb] * par[f->so + j];
+    if ((rc = o->func(n, u, f->p, par, 0, fu0, NULL, NULL, o->params)) != 0) return rc;
+  }
   memcpy(pp, par, (size_t)f->npar * sizeof *pp);
   for (int l = 0; l < f->k; l++) {
     int q = f->p[l];
@@ -133,12 +171,16 @@ static int bp_icnd(int ndim, const double *par, const int *icp, int nint, const 
     pp[q] = par[q];
     double s = 0;
     for (int m = 0; m < n; m++) s += psi[m] * (fp[m] - fm[m]);
-    fi[l] = -par[f->sd + l] - s / (2.0 * hp);
+    fi[ni + l] = -par[f->sd + l] - s / (2.0 * hp);
+    if (ni > 0) {
+      if ((rc = g_deriv(f, u, par, fu0, n + l, gd)) != 0) return rc;
+      for (int j = 0; j < ni; j++) fi[ni + l] += gd[j] * par[f->so + j];
+    }
   }
   double norm = -par[f->sa];
   for (int i = 0; i < n; i++) norm += psi[i] * psi[i];
-  for (int i = 0; i < f->nbc; i++) norm += par[f->sps + i] * par[f->sps + i];
-  fi[f->k] = norm;
+  for (int i = 0; i < f->nbc + ni; i++) norm += par[f->sps + i] * par[f->sps + i];   /* psi*, omega */
+  fi[ni + f->k] = norm;
   return 0;
 }
 
@@ -169,6 +211,7 @@ static int bp_stpnt(int ndim, double t, double *U, double *par, void *params)
   double ta = f->tnode[m], tb = f->tnode[m + 1], w = tb > ta ? (t - ta) / (tb - ta) : 0.0;
   for (int i = 0; i < n; i++) U[n + i] = (1 - w) * f->psi0[m * n + i] + w * f->psi0[(m + 1) * n + i];
   for (int i = 0; i < f->nbc; i++) par[f->sps + i] = f->pstar0[i];
+  for (int i = 0; i < f->nint; i++) par[f->so + i] = f->om0[i];
   for (int l = 0; l < f->k; l++) par[f->sd + l] = f->d0[l];
   par[f->sb] = 0.0;
   par[f->sa] = f->a0;
@@ -176,27 +219,31 @@ static int bp_stpnt(int ndim, double t, double *U, double *par, void *params)
 }
 
 /* The adjoint null function at the BP, the start's psi: the adjoint BVP
- * (psi' = -f_u^T psi, its boundary rows, the d rows and their integrals)
+ * (psi' = -f_u^T psi + g_u^T omega, its boundary rows, the d rows and their
+ * integrals)
  * discretised by the trapezoidal rule on the BP's mesh nodes, an
  * overdetermined homogeneous system (one row more than unknowns) that has a
  * null vector at a branch point: its right singular vector of the smallest
  * singular value (O(h^2) accurate: a first guess the start's Newton refines
- * on the collocation mesh).  Normalised to int |psi|^2 + |psi*|^2 = a0. */
+ * on the collocation mesh).  Normalised to int |psi|^2 + |psi*|^2 + |omega|^2 = a0. */
 static int adjoint_start(cable_bpcont *f, char *msg, size_t len)
 {
   const cable_problem *o = f->orig;
   const cable_solution *s = f->start;
-  int n = f->n, nb = f->nbc, k = f->k, M = s->ntst, nc = s->ncol, rc;
-  int N = n * (M + 1) + nb + k, R = n * M + 2 * n + 2 * k;
+  int n = f->n, nb = f->nbc, ni = f->nint, k = f->k, M = s->ntst, nc = s->ncol, rc;
+  int N = n * (M + 1) + nb + ni + k, R = n * M + 2 * n + 2 * k;
   f->nnode = M + 1;
   f->tnode = calloc((size_t)(M + 1), sizeof *f->tnode);
   f->psi0 = calloc((size_t)(n * (M + 1)), sizeof *f->psi0);
   f->pstar0 = calloc((size_t)nb + 1, sizeof *f->pstar0);
+  f->om0 = calloc((size_t)ni + 1, sizeof *f->om0);
   f->d0 = calloc((size_t)k + 1, sizeof *f->d0);
   double *A = calloc((size_t)R * (size_t)N, sizeof *A), *S = calloc((size_t)N, sizeof *S);
   double *VT = calloc((size_t)N * (size_t)N, sizeof *VT), *sup = calloc((size_t)N, sizeof *sup);
   double *fu = calloc((size_t)(n * n) * (size_t)(M + 1), sizeof *fu), *fp = calloc((size_t)(n * k) * (size_t)(M + 1), sizeof *fp);
-  if (!f->tnode || !f->psi0 || !f->pstar0 || !f->d0 || !A || !S || !VT || !sup || !fu || !fp) {
+  /* g_u and g_p at the nodes: gx[(m * (n + k) + i) * ni + j], column i of g_j */
+  double *gx = calloc((size_t)(ni * (n + k)) * (size_t)(M + 1) + 1, sizeof *gx);
+  if (!f->tnode || !f->psi0 || !f->pstar0 || !f->om0 || !f->d0 || !A || !S || !VT || !sup || !fu || !fp || !gx) {
     rc = CABLE_ERR_ALLOC;
     snprintf(msg, len, "out of memory (the adjoint start: %d unknowns)", N);
     goto done;
@@ -228,9 +275,16 @@ static int adjoint_start(cable_bpcont *f, char *msg, size_t len)
       pp[q] = p0;
       for (int j = 0; j < n; j++) fp[(size_t)m * n * k + j * k + l] = (fa[j] - fb[j]) / (2 * hp);
     }
+    if (ni > 0) {
+      double f0[CABLE_FOLD_MAXDIM];
+      if ((rc = o->func(n, u, f->p, pp, 0, f0, NULL, NULL, o->params)) != 0) goto cb;
+      for (int i = 0; i < n + k; i++)
+        if ((rc = g_deriv(f, u, pp, f0, i, gx + ((size_t)m * (size_t)(n + k) + (size_t)i) * (size_t)ni)) != 0) goto cb;
+    }
   }
 #define AT(r, c) A[(size_t)(c) * (size_t)R + (size_t)(r)]
-  int pst = n * (M + 1), dd = pst + nb;
+  int pst = n * (M + 1), om = pst + nb, dd = om + ni;
+#define GX(m, i, j) gx[((size_t)(m) * (size_t)(n + k) + (size_t)(i)) * (size_t)ni + (size_t)(j)]
   for (int m = 0; m < M; m++) {
     double h = f->tnode[m + 1] - f->tnode[m];
     for (int i = 0; i < n; i++) {
@@ -241,6 +295,7 @@ static int adjoint_start(cable_bpcont *f, char *msg, size_t len)
         AT(r, m * n + j) += 0.5 * fu[(size_t)m * n * n + j * n + i];
         AT(r, (m + 1) * n + j) += 0.5 * fu[(size_t)(m + 1) * n * n + j * n + i];
       }
+      for (int j = 0; j < ni; j++) AT(r, om + j) -= 0.5 * (GX(m, i, j) + GX(m + 1, i, j));
     }
   }
   /* boundary rows: b's derivatives by central differences */
@@ -279,9 +334,11 @@ static int adjoint_start(cable_bpcont *f, char *msg, size_t len)
       tw[1] = m < M ? f->tnode[m + 1] - f->tnode[m] : 0.0;
       double w = 0.5 * (tw[0] + tw[1]);
       for (int j = 0; j < n; j++) AT(ri, m * n + j) -= w * fp[(size_t)m * n * k + j * k + l];
+      for (int j = 0; j < ni; j++) AT(ri, om + j) += w * GX(m, n + l, j);
     }
   }
 #undef AT
+#undef GX
   if (LAPACKE_dgesvd(LAPACK_COL_MAJOR, 'N', 'A', R, N, A, R, S, NULL, 1, VT, N, sup) != 0) {
     rc = CABLE_ERR_LINSOLVE;
     snprintf(msg, len, "ISW=2 at a BP: the adjoint null vector at the start could not be computed (SVD)");
@@ -296,13 +353,14 @@ static int adjoint_start(cable_bpcont *f, char *msg, size_t len)
       nrm += w * v * v;
     }
   }
-  for (int q = 0; q < nb; q++) {
+  for (int q = 0; q < nb + ni; q++) {   /* psi*, omega */
     double v = VT[(size_t)(N - 1) + (size_t)N * (size_t)(pst + q)];
     nrm += v * v;
   }
   double sc = sqrt(f->a0 / nrm);
   for (int c = 0; c < n * (M + 1); c++) f->psi0[c] = sc * VT[(size_t)(N - 1) + (size_t)N * (size_t)c];
   for (int q = 0; q < nb; q++) f->pstar0[q] = sc * VT[(size_t)(N - 1) + (size_t)N * (size_t)(pst + q)];
+  for (int j = 0; j < ni; j++) f->om0[j] = sc * VT[(size_t)(N - 1) + (size_t)N * (size_t)(om + j)];
   for (int l = 0; l < k; l++) f->d0[l] = sc * VT[(size_t)(N - 1) + (size_t)N * (size_t)(dd + l)];
   rc = CABLE_SUCCESS;
   goto done;
@@ -310,7 +368,7 @@ cb:
   snprintf(msg, len, "ISW=2 at a BP: a callback failed (status %d) computing the adjoint start", rc);
   rc = CABLE_ERR_CALLBACK;
 done:
-  free(A); free(S); free(VT); free(sup); free(fu); free(fp);
+  free(A); free(S); free(VT); free(sup); free(fu); free(fp); free(gx);
   return rc;
 }
 
@@ -318,7 +376,7 @@ void cable_bpcont_free(cable_bpcont *f)
 {
   if (!f) return;
   cable_solution_free(f->start);
-  free(f->tnode); free(f->psi0); free(f->pstar0); free(f->d0);
+  free(f->tnode); free(f->psi0); free(f->pstar0); free(f->om0); free(f->d0);
   free(f);
 }
 
@@ -331,13 +389,13 @@ static int starting_data(cable_bpcont *f, char *msg, size_t len)
     snprintf(msg, len, "ISW=2: label %d is already a point of a curve of branch points", f->start->lab);
     return CABLE_ERR_INPUT;
   }
-  /* ICP = [p1, a, p2..pk, b, psi*, d, q, printed...]: q fixed and printed */
+  /* ICP = [p1, a, p2..pk, b, psi*, omega, d, q, printed...]: q fixed and printed */
   cable_constants *c = &f->c;
   if (c->nicp + 1 > CABLE_MAX_ICP) {
     snprintf(msg, len, "ISW=2: too many ICP entries for the starting data");
     return CABLE_ERR_INPUT;
   }
-  int nfree = 2 * f->k + 2 + f->nbc, q = c->icp[1], icp[CABLE_MAX_ICP], m = 0;
+  int nfree = 2 * f->k + 2 + f->nbc + f->nint, q = c->icp[1], icp[CABLE_MAX_ICP], m = 0;
   for (int a = 0; a < c->nicp; a++) {
     if (a == nfree) icp[m++] = q;
     icp[m++] = a == 1 ? f->sa : c->icp[a];
@@ -353,6 +411,7 @@ static int starting_data(cable_bpcont *f, char *msg, size_t len)
   double sc = sqrt(CABLE_FOLD_START_NORM / f->a0);
   for (int i = 0; i < f->n * f->nnode; i++) f->psi0[i] *= sc;
   for (int i = 0; i < f->nbc; i++) f->pstar0[i] *= sc;
+  for (int j = 0; j < f->nint; j++) f->om0[j] *= sc;
   for (int l = 0; l < f->k; l++) f->d0[l] *= sc;
   f->a0 = CABLE_FOLD_START_NORM;
   return CABLE_SUCCESS;
@@ -397,25 +456,28 @@ cable_bpcont *cable_bpcont_alloc(const cable_problem *pb, const cable_constants 
   f->n = n;
   f->k = k;
   f->nbc = pb->nbc;
+  f->nint = pb->nint;
   f->npar0 = c->npar > pb->npar ? c->npar : pb->npar;
   f->sb = f->npar0;
   f->sps = f->sb + 1;
-  f->sd = f->sps + pb->nbc;
+  f->so = f->sps + pb->nbc;
+  f->sd = f->so + pb->nint;
   f->sa = f->sd + k;
   f->npar = f->sa + 1;
   f->a0 = 1.0;
-  if (pb->nint > 0)
-    FAIL(CABLE_ERR_UNSUPPORTED, "ISW=2 at a BP: branch-point continuation supports problems without integral "
-                                "conditions (NINT=0), this one has NINT=%d", pb->nint);
-  if (n > CABLE_FOLD_MAXDIM || f->npar > CABLE_FOLD_MAXPAR)
-    FAIL(CABLE_ERR_UNSUPPORTED, "ISW=2 at a BP: supports NDIM <= %d and NPAR <= %d", CABLE_FOLD_MAXDIM,
+  if (pb->nint > 0 && !pb->icnd) FAIL(CABLE_ERR_INPUT, "ISW=2 at a BP: NINT=%d but the problem has no ICND", pb->nint);
+  if (n > CABLE_FOLD_MAXDIM || pb->nint > CABLE_FOLD_MAXDIM || f->npar > CABLE_FOLD_MAXPAR)
+    FAIL(CABLE_ERR_UNSUPPORTED, "ISW=2 at a BP: supports NDIM, NINT <= %d and NPAR <= %d", CABLE_FOLD_MAXDIM,
          CABLE_FOLD_MAXPAR);
   if (k < 1) FAIL(CABLE_ERR_INPUT, "ISW=2 at a BP: the problem has no free parameter (NBC-NDIM+1 = %d)", k);
-  int nfree = 2 * k + 2 + pb->nbc;
+  int nfree = 2 * k + 2 + pb->nbc + pb->nint;
   if (c->nicp < k + 1 || c->nicp - (k + 1) + nfree > CABLE_MAX_ICP)
     FAIL(CABLE_ERR_INPUT,
-         "ISW=2 at a BP: ICP must list the %d free parameter(s) of the branch and the second parameter second "
-         "(ICP = [p1, q%s]), it lists %d", k, k > 1 ? ", p2, ..." : "", c->nicp);
+         "ISW=2 at a BP: ICP must list the %d free parameter(s) of the branch, then the second parameter "
+         "(ICP = [p1, %sq], AUTO's order), it lists %d", k, k > 1 ? "p2, ..., " : "", c->nicp);
+  cable_constants cu;   /* ICP in the internal order [p1, q, p2..pk, ...] */
+  cable_ext_icp_order(c, k, &cu);
+  c = &cu;
   if (!start) FAIL(CABLE_ERR_INPUT, "ISW=2 at a BP: give a restart label");
   int base = start->itp >= 0 ? start->itp % 10 : -((-start->itp) % 10);
   f->start_ext = start->ndim == 2 * n && abs(start->itp) / 10 == CABLE_BPCONT_ITPST;
@@ -441,7 +503,7 @@ cable_bpcont *cable_bpcont_alloc(const cable_problem *pb, const cable_constants 
   e->description = "branch-point continuation (ISW=2 at a BP): the problem unfolded by b psi, its adjoint, |psi| = 1";
   e->ndim = 2 * n;
   e->nbc = pb->nbc + 2 * n + k;
-  e->nint = k + 1;
+  e->nint = pb->nint + k + 1;
   e->npar = f->npar;
   e->func = bp_func;
   e->bcnd = bp_bcnd;
@@ -455,11 +517,11 @@ cable_bpcont *cable_bpcont_alloc(const cable_problem *pb, const cable_constants 
   f->c.npar = f->npar;
   f->c.ndm = n;
   f->c.itpst = CABLE_BPCONT_ITPST;
-  f->c.npari = f->npar - f->npar0;   /* b, psi*, d and a */
+  f->c.npari = f->npar - f->npar0;   /* b, psi*, omega, d and a */
   int icp[CABLE_MAX_ICP], m = 0;
   for (int a = 0; a <= k; a++) icp[m++] = c->icp[a];
   icp[m++] = f->sb;
-  for (int i = 0; i < pb->nbc; i++) icp[m++] = f->sps + i;
+  for (int i = 0; i < pb->nbc + pb->nint; i++) icp[m++] = f->sps + i;   /* psi*, omega */
   for (int l = 0; l < k; l++) icp[m++] = f->sd + l;
   for (int a = k + 1; a < c->nicp; a++) icp[m++] = c->icp[a];
   memcpy(f->c.icp, icp, (size_t)m * sizeof *icp);

@@ -350,8 +350,11 @@ cable_fold *cable_fold_alloc(const cable_problem *pb, const cable_constants *c, 
   if (k < 1) FAIL(CABLE_ERR_INPUT, "ISW=2: the problem has no free parameter (NBC+NINT-NDIM+1 = %d)", k);
   if (c->nicp < k + 1 || c->nicp + k - 1 > CABLE_MAX_ICP)
     FAIL(CABLE_ERR_INPUT,
-         "ISW=2: ICP must list the %d free parameter(s) of the branch and the fold's second parameter second "
-         "(ICP = [p1, q%s]), it lists %d", k, k > 1 ? ", p2, ..." : "", c->nicp);
+         "ISW=2: ICP must list the %d free parameter(s) of the branch, then the fold's second parameter "
+         "(ICP = [p1, %sq], AUTO's order), it lists %d", k, k > 1 ? "p2, ..., " : "", c->nicp);
+  cable_constants cu;   /* ICP in the internal order [p1, q, p2..pk, ...] */
+  cable_ext_icp_order(c, k, &cu);
+  c = &cu;
   if (!start) FAIL(CABLE_ERR_INPUT, "ISW=2: fold continuation starts from a labelled LP (give a restart label)");
   f->start_ext = start->ndim == 2 * n;
   if (!f->start_ext && start->ndim != n)

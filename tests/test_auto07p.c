@@ -63,6 +63,9 @@ static const case_t cases[] = {
   /* ISW=2 at a BP: the starting data and the curve of branch points from
      them both ways (doc/fold-continuation.md, "Branch-point continuation") */
   {"bpcont", "bpcont.auto", "el", {"el.f90", "c.el", "bpcont.auto", NULL}},
+  /* the same with an integral condition (NINT=1, k=2: ICP in AUTO's order
+     [p1, p2, q]; doc/fold-continuation.md, "With integral conditions") */
+  {"bpcontint", "bpcontint.auto", "rod", {"rod.f90", "c.rod", "bpcontint.auto", NULL}},
   /* declarations AUTO accepts (doc/auto-users.md, "What is checked"): a
      COMPLEX(KIND(1.0D0)) state, implicitly typed stubs, the legacy
      three-argument STPNT */

@@ -127,7 +127,7 @@ static void fold_curve(const cable_problem *pb, const cable_solution *lp, int k,
   base_constants(&c);
   c.isw = 2;
   c.icp[0] = 0; c.icp[1] = 1; c.nicp = 2;
-  if (k == 2) { c.icp[2] = 2; c.nicp = 3; }
+  if (k == 2) { c.icp[1] = 2; c.icp[2] = 1; c.nicp = 3; }   /* AUTO's order [lambda, mu, a]: p1, p2, q */
   c.ds = ds; c.dsmax = 0.5; c.nmx = 200; c.npr = 5;
   c.rl0 = 0.5; c.rl1 = 6.0;
   c.ilp = 1; c.isp = 2;

@@ -495,8 +495,20 @@ static int start_section(cable_aufile *w, const cable_point *pt)
      fold's w and N, a branch-point curve's b, psi*, d and a: the NPARI
      slots after NPAR), and counts its MAX U columns with them */
   w->sec_npcol = 0;
+  int nuser = 0;   /* of them, the free ones: q, p2..pk on a fold or branch-point curve */
+  int nfpr = w->c.nbc + w->c.nint - w->c.ndim + 1;
   for (int k = 1; k < pt->nicp; k++)
-    if (!(w->c.npari > 0 && pt->icp[k] >= w->c.npar - w->c.npari)) w->sec_pcol[w->sec_npcol++] = pt->icp[k];
+    if (!(w->c.npari > 0 && pt->icp[k] >= w->c.npar - w->c.npari)) {
+      if (k < nfpr) nuser++;
+      w->sec_pcol[w->sec_npcol++] = pt->icp[k];
+    }
+  /* the curve's engine order is [p1, q, p2..pk] (cable_ext_icp_order), the
+     user's and AUTO's [p1, p2..pk, q]: print q after p2..pk, as AUTO */
+  if (w->c.isw == 2 && w->c.npari > 0 && w->c.ndm > 0 && nuser > 1) {
+    int q = w->sec_pcol[0];
+    memmove(w->sec_pcol, w->sec_pcol + 1, (size_t)(nuser - 1) * sizeof w->sec_pcol[0]);
+    w->sec_pcol[nuser - 1] = q;
+  }
   w->sec_n2 = n_umax(1 + w->sec_npcol, pt->ndim);
   w->nsections++;
   write_b_header(w, pt);

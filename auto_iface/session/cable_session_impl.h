@@ -121,6 +121,10 @@ int rp_result_read(const cable_session *r, const char *name, const cable_constan
  * and its parnames/unames dicts applied to *names (*has_names: 1 when one was);
  * its NDIM, NBC and NINT set in *c where *c leaves them to the problem (0). */
 void rp_bfile_header(const char *path, char *e, size_t elen, cable_names *names, int *has_names, cable_constants *c);
+/* The constants the header of the b-file section whose first row is at
+ * line first_line records (AUTO's parseB: its branch's c), over *c:
+ * RL0, RL1, A0, A1 and every KEY = VALUE cable reads. */
+void rp_bfile_section_constants(const char *path, int first_line, cable_names *names, cable_constants *c);
 /* One branch from a b-file section: a point per row; the labelled rows take
  * sols[0], sols[1], ... in order, with notes[] (the d-file's).  Parameters
  * without a column take at an unlabelled row the value all labelled

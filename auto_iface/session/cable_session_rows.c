@@ -109,6 +109,86 @@ void rp_bfile_header(const char *path, char *e, size_t elen, cable_names *names,
   fclose(f);
 }
 
+/* One header line's "KEY = VALUE" statements applied to *c, each on its own
+ * (AUTO writes several per line without commas: "NDIM=   2   IPS =   4").
+ * The file names (e, s, c, dat, sv), the names dicts and ICP are read
+ * elsewhere (rp_bfile_header); a statement cable cannot read is skipped. */
+static void header_statements(const char *p, cable_names *names, cable_constants *c)
+{
+  const char *key[64];
+  int nkey = 0;
+  for (const char *q = p; *q && nkey < 64; q++) {
+    if (!(isalpha((unsigned char)*q) && (q == p || isspace((unsigned char)q[-1])))) continue;
+    const char *r = q;
+    while (isalnum((unsigned char)*r) || *r == '_') r++;
+    const char *k_end = r;
+    while (*r == ' ') r++;
+    if (*r == '=' && r[1] != '=') {
+      key[nkey++] = q;
+      q = k_end - 1;
+    }
+  }
+  static const char *const skip[] = {"e", "s", "c", "dat", "sv", "unames", "parnames", "ICP"};
+  for (int k = 0; k < nkey; k++) {
+    size_t len = (size_t)((k + 1 < nkey ? key[k + 1] : p + strlen(p)) - key[k]);
+    char stmt[1024];
+    if (len >= sizeof stmt) continue;
+    memcpy(stmt, key[k], len);
+    stmt[len] = '\0';
+    size_t klen = strcspn(stmt, " =");
+    int skipped = 0;
+    for (size_t j = 0; j < sizeof skip / sizeof skip[0]; j++)
+      if (strlen(skip[j]) == klen && strncmp(stmt, skip[j], klen) == 0) skipped = 1;
+    if (!skipped) {
+      cable_constants t = *c;
+      if (cable_constants_parse_override(stmt, &t, names, NULL, 0, NULL) == 0) *c = t;
+    }
+  }
+}
+
+void rp_bfile_section_constants(const char *path, int first_line, cable_names *names, cable_constants *c)
+{
+  FILE *f = fopen(path, "r");
+  if (!f) return;
+  char line[8192];
+  /* the header block just before the section's first row */
+  long start = -1, pos = ftell(f);
+  int lineno = 0;
+  while (lineno + 1 < first_line && fgets(line, sizeof line, f)) {
+    lineno++;
+    const char *p = line;
+    while (*p == ' ' || *p == '\t') p++;
+    int head = p[0] == '0' && isspace((unsigned char)p[1]);
+    if (head && start < 0) start = pos;
+    if (!head) start = -1;
+    pos = ftell(f);
+  }
+  if (start < 0 || fseek(f, start, SEEK_SET) != 0) {
+    fclose(f);
+    return;
+  }
+  int first = 1;
+  while (ftell(f) < pos && fgets(line, sizeof line, f)) {
+    char *p = line;
+    while (*p == ' ' || *p == '\t') p++;
+    p++;   /* the '0' */
+    p[strcspn(p, "\r\n")] = '\0';
+    double v[5];
+    char tail;
+    /* AUTO's first header line: RL0 RL1 A0 A1 */
+    if (first && sscanf(p, "%lf %lf %lf %lf %c", &v[0], &v[1], &v[2], &v[3], &tail) == 4) {
+      c->rl0 = v[0];
+      c->rl1 = v[1];
+      c->a0 = v[2];
+      c->a1 = v[3];
+    } else if (!strstr(p, "parameter") && !strstr(p, " PT ")) {
+      header_statements(p, names, c);
+    }
+    first = 0;
+  }
+  fclose(f);
+}
+
 /* ---- the rows --------------------------------------------------------------------- */
 
 /* What value column j of a section holds. */

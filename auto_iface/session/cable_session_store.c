@@ -291,10 +291,12 @@ static void solution_notes(const cable_sfile *sf, const rp_dnotes *dn, const cha
   }
 }
 
-/* Every row of a b-file that pairs with its s-file row by row: one branch
- * per section (AUTO's parseB), labelled rows with their solutions. */
-static int read_rows(const cable_sfile *sf, const cable_bfile *bf, const rp_dnotes *dn, const cable_constants *c,
-                     const cable_names *names, const char *e, rp_result **out)
+/* Every row of a b-file (at bpath) that pairs with its s-file row by row:
+ * one branch per section (AUTO's parseB), labelled rows with their
+ * solutions, each branch with the constants its section's header records
+ * over c (AUTO's branch c). */
+static int read_rows(const cable_sfile *sf, const cable_bfile *bf, const char *bpath, const rp_dnotes *dn,
+                     const cable_constants *c, const cable_names *names, const char *e, rp_result **out)
 {
   int n = cable_sfile_count(sf), nbr = 0, rc = 0;
   for (int j = 0; j < bf->nbranch; j++) nbr += bf->branch[j].nrow > 0;
@@ -302,14 +304,18 @@ static int read_rows(const cable_sfile *sf, const cable_bfile *bf, const rp_dnot
   const char **notes = malloc((size_t)(n > 0 ? n : 1) * sizeof *notes);
   int *kinds = malloc((size_t)(n > 0 ? n : 1) * sizeof *kinds);
   rp_result *res = rp_result_alloc(nbr);
-  if (!sols || !notes || !kinds || !res) rc = CABLE_ERR_ALLOC;
+  cable_constants *cs = malloc(sizeof *cs);
+  if (!sols || !notes || !kinds || !res || !cs) rc = CABLE_ERR_ALLOC;
   for (int i = 0; !rc && i < n; i++) sols[i] = cable_sfile_get(sf, i);
   if (!rc) solution_notes(sf, dn, notes, kinds);
   int i = 0, k = 0;
   for (int j = 0; !rc && j < bf->nbranch; j++) {
     const cable_bfile_branch *bb = &bf->branch[j];
     if (bb->nrow == 0) continue;
-    rc = rp_branch_from_rows(bb, sols + i, notes + i, c, names, e, &res->br[k]);
+    *cs = *c;
+    cable_names nm = *names;
+    rp_bfile_section_constants(bpath, bb->first_line, &nm, cs);
+    rc = rp_branch_from_rows(bb, sols + i, notes + i, cs, names, e, &res->br[k]);
     if (rc) break;
     rp_branch *b = res->br[k++];
     for (int q = 0; q < b->nsol; q++)
@@ -319,6 +325,7 @@ static int read_rows(const cable_sfile *sf, const cable_bfile *bf, const rp_dnot
   free(sols);
   free(notes);
   free(kinds);
+  free(cs);
   if (rc) {
     rp_result_free(res);
     return rc;
@@ -336,6 +343,8 @@ int rp_result_read(const cable_session *r, const char *name, const cable_constan
   cable_sfile *sf = cable_sfile_read(path, err);
   if (!sf) return err && err->status ? err->status : CABLE_ERR_IO;
   rp_path(r, "b", name, path, sizeof path);
+  char bpath[sizeof path];
+  snprintf(bpath, sizeof bpath, "%s", path);
   cable_error berr;
   cable_bfile *bf = cable_bfile_read(path, &berr);   /* optional: runs and norms */
   /* the engine's notes (d.NAME) give the labelled points their notes and the BPs their kinds */
@@ -349,7 +358,7 @@ int rp_result_read(const cable_session *r, const char *name, const cable_constan
   if (!rc && assign_runs(sf, bf, run, l2)) {
     /* the b-file pairs with the s-file: every row comes back, as AUTO's loadbd */
     rp_result *rows = NULL;
-    rc = read_rows(sf, bf, &dn, c, names, e, &rows);
+    rc = read_rows(sf, bf, bpath, &dn, c, names, e, &rows);
     free(run);
     free(l2);
     rp_dnotes_free(&dn);

@@ -1,17 +1,18 @@
-/* Branch-point continuation of a boundary-value problem without integral
- * conditions (AUTO's ISW = 2 at a BP, the non-generic case):
+/* Branch-point continuation of a boundary-value problem (AUTO's ISW = 2 at
+ * a BP, the non-generic case), with or without integral conditions:
  * doc/fold-continuation.md, "Branch-point continuation", derives it.
  *
- * For a problem with k = NBC - NDIM + 1 free parameters p1..pk and a new
- * parameter q, the extended problem has the unknowns (u, psi) (2 NDIM
- * components: psi is the adjoint null function), the free parameters p1, q,
- * p2..pk, the unfolding parameter b, the boundary multipliers psi*_1..NBC and
- * k auxiliaries d, and the conditions
- *   u'   = f(u, p) - b psi,           psi' = -f_u(u, p)^T psi,
- *   b(u(0), u(1), p) + b psi* = 0,
+ * For a problem with k = NBC + NINT - NDIM + 1 free parameters p1..pk,
+ * integral conditions int g(u, p) dt = 0 and a new parameter q, the extended
+ * problem has the unknowns (u, psi) (2 NDIM components: psi is the adjoint
+ * null function), the free parameters p1..pk, q, the unfolding parameter b,
+ * the multipliers psi*_1..NBC of the boundary conditions and
+ * omega_1..NINT of the integral conditions, k auxiliaries d, and the conditions
+ *   u'   = f(u, p) - b psi,           psi' = -f_u(u, p)^T psi + g_u^T omega,
+ *   b(u(0), u(1), p) + b psi* = 0,    int g dt + b omega = 0,
  *   -psi(0) + b_{u(0)}^T psi* = 0,    psi(1) + b_{u(1)}^T psi* = 0,
- *   d_j + b_{p_j}^T psi* = 0,         int (-d_j - psi . f_{p_j}) dt = 0,
- *   int |psi|^2 dt + |psi*|^2 = a   (a: 1, or the starting data's).
+ *   d_j + b_{p_j}^T psi* = 0,         int (-d_j - psi . f_{p_j} + omega . g_{p_j}) dt = 0,
+ *   int |psi|^2 dt + |psi*|^2 + |omega|^2 = a   (a: 1, or the starting data's).
  * Transposed derivatives by central differences (CABLE_FOLD_FD_STEP).
  * Used like cable_fold.h: the extended problem from STPNT (the BP's u, a
  * first guess of psi: the adjoint BVP's null vector on the BP's mesh nodes,
@@ -32,8 +33,8 @@
 
 typedef struct cable_bpcont cable_bpcont;
 
-/* c: ISW = 2, ICP = [p1, q, p2, ..., pk, printed...]; start: a BP of the
- * problem's branch.  NULL with *status and msg on error (NINT > 0, not a
+/* c: ISW = 2, ICP = [p1, ..., pk, q, printed...] (AUTO's order); start: a BP of the
+ * problem's branch.  NULL with *status and msg on error (not a
  * BP, too few ICP entries). */
 CABLE_API cable_bpcont *cable_bpcont_alloc(const cable_problem *pb, const cable_constants *c,
                                            const cable_solution *start, int *status, char *msg, size_t len);

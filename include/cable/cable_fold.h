@@ -57,8 +57,8 @@
 
 typedef struct cable_fold cable_fold;
 
-/* c: the fold run's constants, ISW = 2, ICP = [p1, q, p2, ..., pk, printed
- * ...] (the problem's k free parameters with the new one q second).  start:
+/* c: the fold run's constants, ISW = 2, ICP = [p1, ..., pk, q, printed
+ * ...] (the problem's k free parameters, then the new one q: AUTO's order).  start:
  * an LP of the problem's branch (its stored direction is the null vector),
  * or a point of a fold curve of the same problem (NDIM = 2 NDIM).  NULL
  * with *status and msg on error (CABLE_ERR_NULL for a NULL problem or
@@ -73,7 +73,7 @@ CABLE_API int cable_fold_create(const cable_problem *pb, const cable_constants *
 CABLE_API void cable_fold_free(cable_fold *f);   /* NULL is a no-op */
 
 /* The extended problem and the constants of its run (ICP with the w slots
- * after p1, q, p2..pk; NDIM, NBC, NINT, NPAR of the extended problem). */
+ * after p1..pk, q; NDIM, NBC, NINT, NPAR of the extended problem). */
 /* The start's mesh density resampled to ntst intervals (as a restart keeps
  * it, cont_mesh.c) into mesh[0..ntst]: the fold run's mesh, so that the
  * fold curve starts on the discrete problem the LP was located on. */

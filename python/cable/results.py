@@ -354,6 +354,14 @@ class Result:
     def getLabel(self, label):
         return self(label)
 
+    @property
+    def c(self):
+        """The constants of the first branch (AUTO's branch.c: for a loaded
+        file, what its b-file section's header records; r[k].c for branch k)."""
+        if not self._br:
+            raise CableError('the result has no branch')
+        return Constants(self._br[0].constants())
+
     def _repr_html_(self):
         """A notebook shows the result in cable view's page (cable.view)."""
         from .webview import view
