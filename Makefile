@@ -19,7 +19,7 @@ WARN    := -Wall -Wextra -Werror -Wshadow -Wpointer-arith -Wcast-align \
 CSTD    := -std=c11 -D_POSIX_C_SOURCE=200809L
 SYSINCS := -I/usr/include/suitesparse
 PUBINC  := -Iinclude
-INCS_continuation := $(PUBINC) -Icontinuation
+INCS_continuation := $(PUBINC) -Icontinuation/base -Icontinuation
 INCS_equations    := $(INCS_continuation) -Iequations
 INCS_bc           := $(INCS_equations) -Ibc
 INCS_graphics     := $(INCS_bc) -Igraphics
