@@ -60,6 +60,14 @@ enum braid_link_row {
   BL_SYM_NBC                          /* = 22 */
 };
 
+/* The first 12 rows of both, the conditions at s = 0 (braid_bc_origin.c):
+ * fb rows 0..11 from u(0) and T; the u(0) and parameter entries of their
+ * Jacobian rows, written into a dbc the caller has zeroed (nbc rows). */
+enum { BRAID_BC_ORIGIN_NROWS = 12 };
+void braid_bc_origin_residual(const double *par, const double *u0, double *fb);
+void braid_bc_origin_du0(int nbc, double *dbc);
+void braid_bc_origin_dpar(int nbc, double *dbc);
+
 /* braid_knot: nbc = BK_NBC; free parameters T, L, L2, eps21. */
 int braid_knot_bcnd(int ndim, const double *par, const int *icp, int nbc, const double *u0,
                     const double *u1, int ijac, double *fb, double *dbc, void *params);
