@@ -12,7 +12,7 @@ import math
 import os
 
 from .atlas_task import ROW_FIELDS
-from .scenes import write_atomic
+from .atomic import replacing, write_text as write_atomic
 
 
 def finished_results(sweep):
@@ -65,9 +65,8 @@ def _write_parquet(path, rows):
     import pyarrow
     import pyarrow.parquet
     cols = {k: [r.get(k) for r in rows] for k in ROW_FIELDS}
-    tmp = path + '.tmp'
-    pyarrow.parquet.write_table(pyarrow.table(cols), tmp)
-    os.replace(tmp, path)
+    with replacing(path, suffix='.parquet') as tmp:
+        pyarrow.parquet.write_table(pyarrow.table(cols), tmp)
 
 
 # ---- the picture ----------------------------------------------------------------------

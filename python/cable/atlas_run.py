@@ -40,7 +40,7 @@ def read_result(sweep, t):
 def _record_failure(sweep, t, error):
     """A task Dask gave up on (its workers died): recorded as failed, as the
     task itself records an error (a directory with result.json)."""
-    from .scenes import write_atomic
+    from .atomic import write_text as write_atomic
     d = os.path.join(sweep.output, 'tasks', t.name)
     os.makedirs(d, exist_ok=True)
     result = {'name': t.name, 'status': 'failed', 'error': error, 'wall': float('nan'), 'rows': [],

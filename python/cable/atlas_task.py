@@ -21,7 +21,7 @@ import traceback
 
 from . import _cable, scenes
 from .commands import Runner, constant_text
-from .scenes import write_atomic
+from .atomic import write_text as write_atomic
 
 # A task changes the process's current directory and its standard output
 # (the engine prints to file descriptor 1): one task at a time per process.

@@ -19,7 +19,7 @@ import tempfile
 
 import numpy as np
 
-from . import _cable, plotting, scenes
+from . import _cable, atomic, plotting, scenes
 from ._cable import CableError
 from .constants import Constants
 from .results import Result, Solution
@@ -370,14 +370,7 @@ class Runner:
             if not os.path.exists(src):
                 continue
             found = True
-            fd, tmp = tempfile.mkstemp(prefix='.%s.' % os.path.basename(dst), dir=os.path.dirname(dst) or '.')
-            os.close(fd)
-            try:
-                shutil.copyfile(src, tmp)
-                os.replace(tmp, dst)
-            finally:
-                if os.path.exists(tmp):
-                    os.remove(tmp)
+            atomic.copy_file(src, dst)
             if verbose:
                 print('Copying %s to %s ...' % (src, dst))
         if not found:

@@ -93,14 +93,7 @@ def figure(data, x=None, y=None, title=None, marks=()):
 def save(fig, path):
     """The figure written to path (PNG or SVG by its extension), whole or not at all."""
     import os
-    import tempfile
-    d = os.path.dirname(path) or '.'
+    from .atomic import replacing
     ext = os.path.splitext(path)[1]
-    fd, tmp = tempfile.mkstemp(prefix='.%s.' % os.path.basename(path), suffix=ext, dir=d)
-    os.close(fd)
-    try:
+    with replacing(path, suffix=ext) as tmp:
         fig.savefig(tmp, format=ext[1:].lower() or 'png')
-        os.replace(tmp, path)
-    finally:
-        if os.path.exists(tmp):
-            os.remove(tmp)

@@ -12,10 +12,10 @@ axis self-passages) is C (cable._cable); what is done with it is here.
 """
 import math
 import os
-import tempfile
 
 from . import _cable
 from ._cable import CableError
+from .atomic import write_text as write_atomic
 from .results import Result, Solution
 
 # A UZ label lies at the target T to the engine's location accuracy: the
@@ -24,20 +24,6 @@ from .results import Result, Solution
 # |T| = 1) leaves a margin and is still far below the T spacing of distinct
 # stored points.
 COMPARE_T_TOL = 1e-5
-
-
-def write_atomic(path, text):
-    """Write text to path whole or not at all (a temporary file renamed)."""
-    d = os.path.dirname(path) or '.'
-    fd, tmp = tempfile.mkstemp(prefix='.%s.' % os.path.basename(path), dir=d)
-    try:
-        with os.fdopen(fd, 'w') as f:
-            f.write(text)
-        os.replace(tmp, path)
-    except BaseException:
-        if os.path.exists(tmp):
-            os.remove(tmp)
-        raise
 
 
 def _analyze(sol):

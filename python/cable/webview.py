@@ -19,12 +19,12 @@ import json
 import math
 import os
 import sys
-import tempfile
 
 import numpy as np
 
 from . import _cable
 from ._cable import CableError
+from .atomic import write_text
 from .view_page import BODY, CSS, JS
 
 THREE_DIR = '/usr/share/javascript/three'
@@ -233,17 +233,7 @@ def directory_page(directory):
 
 def write_page(text, path):
     """Write text to path atomically (a temporary file renamed over it)."""
-    d = os.path.dirname(os.path.abspath(path))
-    fd, tmp = tempfile.mkstemp(prefix=os.path.basename(path) + '.tmp', dir=d)
-    try:
-        with os.fdopen(fd, 'w', encoding='utf-8') as fh:
-            fh.write(text)
-        os.chmod(tmp, 0o644)
-        os.replace(tmp, path)
-    except BaseException:
-        os.unlink(tmp)
-        raise
-    return path
+    return write_text(path, text)
 
 
 class View:
