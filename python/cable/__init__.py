@@ -12,6 +12,7 @@ the commands and where they differ from AUTO's.
 import threading
 
 from ._cable import CableError
+from .errors import CableFileNotFoundError, CableKeyError, CableTypeError, CableValueError
 from .commands import Runner, constant_text
 from .constants import Constants
 from .results import Parameters, Result, Solution, SolutionList

@@ -21,6 +21,7 @@ import numpy as np
 
 from . import _cable, atomic, plotting, scenes
 from ._cable import CableError
+from .errors import CableFileNotFoundError, CableKeyError, CableTypeError, CableValueError
 from .constants import Constants
 from .results import Result, Solution
 
@@ -42,7 +43,7 @@ def _value_text(key, v):
         return repr(float(v))
     if isinstance(v, str):
         if "'" in v and '"' in v:
-            raise CableError('%s: a value cannot contain both quote characters' % key)
+            raise CableValueError('%s: a value cannot contain both quote characters' % key)
         q = '"' if "'" in v else "'"
         return q + v + q
     if isinstance(v, np.ndarray):
@@ -51,7 +52,7 @@ def _value_text(key, v):
         return '[' + ', '.join(_value_text(key, x) for x in v) + ']'
     if isinstance(v, dict):
         return '{' + ', '.join('%s: %s' % (_value_text(key, k), _value_text(key, x)) for k, x in v.items()) + '}'
-    raise CableError('%s: a %s is not a constants value' % (key, type(v).__name__))
+    raise CableTypeError('%s: a %s is not a constants value' % (key, type(v).__name__))
 
 
 def _command(name):
@@ -65,7 +66,8 @@ def _command(name):
             except CableError as e:
                 if getattr(e, 'command', None):
                     raise
-                err = CableError('%s: %s' % (name, e))
+                # the same class (CableKeyError stays a KeyError ...)
+                err = type(e)('%s: %s' % (name, e))
                 err.status = getattr(e, 'status', -2)
                 err.command = name
                 raise err from None
@@ -82,15 +84,15 @@ def _columns(data):
         try:
             a = np.array(data, dtype=float)
         except (TypeError, ValueError):
-            raise CableError('start data: columns of numbers expected ([[t0, ..., tn], [x0, ..., xn], ...])') from None
+            raise CableValueError('start data: columns of numbers expected ([[t0, ..., tn], [x0, ..., xn], ...])') from None
         if a.ndim != 2 or a.shape[0] < 2 or a.shape[1] < 2:
-            raise CableError('start data: columns [[t0, ..., tn], [x0, ..., xn], ...] with at least two points '
-                             'expected, got an array of shape %s (a point solution [x, y, ...] is for algebraic '
-                             'problems, which cable does not run)' % (a.shape,))
+            raise CableValueError('start data: columns [[t0, ..., tn], [x0, ..., xn], ...] with at least two points '
+                                  'expected, got an array of shape %s (a point solution [x, y, ...] is for algebraic '
+                                  'problems, which cable does not run)' % (a.shape,))
         if not np.all(np.isfinite(a)):
-            raise CableError('start data: a value is not finite')
+            raise CableValueError('start data: a value is not finite')
         if not np.all(np.diff(a[0]) > 0):
-            raise CableError('start data: t (the first column) must increase')
+            raise CableValueError('start data: t (the first column) must increase')
         return a
     return None
 
@@ -105,11 +107,11 @@ def _start(data):
         return br, i, data._mbr, data._mlab, None
     if isinstance(data, Result):
         if len(data) == 0:
-            raise CableError('the result is empty')
+            raise CableValueError('the result is empty')
         return data.branches, -1, 0, 0, None
     if isinstance(data, str):
         return None, -1, 0, 0, data
-    raise CableError('the start must be a solution, a result or a name, got a %s' % type(data).__name__)
+    raise CableTypeError('the start must be a solution, a result or a name, got a %s' % type(data).__name__)
 
 
 def _args(data, kw):
@@ -120,10 +122,10 @@ def _args(data, kw):
         # a keyword is one constants key: run(**{'NMX=50, NPR': 1}) would
         # otherwise be pasted into the override text as two statements
         if not (isinstance(k, str) and k.isidentifier() and k.isascii()):
-            raise CableError('%r: not a constants key (a key is a name such as NMX or DS)' % (k,))
+            raise CableKeyError('%r: not a constants key (a key is a name such as NMX or DS)' % (k,))
         if k in _NAME_KEYS:
             if not isinstance(v, str):
-                raise CableError('%s: must be a non-empty name, got a %s' % (k, type(v).__name__))
+                raise CableTypeError('%s: must be a non-empty name, got a %s' % (k, type(v).__name__))
             names[k] = v
         else:
             over.append(constant_text(k, v))
@@ -145,7 +147,7 @@ class _data_start:
         if cols is None:
             return self.data, self.kw
         if 'dat' in self.kw:
-            raise CableError('start data and dat= both given')
+            raise CableValueError('start data and dat= both given')
         self.dir = tempfile.mkdtemp(prefix='cable-dat-')
         path = os.path.join(self.dir, 'start.dat')
         with open(path, 'w') as f:
@@ -172,7 +174,7 @@ def _branches(x, what):
     if isinstance(x, Solution):
         br, i = x.branch
         return [br], i
-    raise CableError('%s needs a result or a solution, got a %s' % (what, type(x).__name__))
+    raise CableTypeError('%s needs a result or a solution, got a %s' % (what, type(x).__name__))
 
 
 # the commands and their aliases (AUTO's names; cable's own last)
@@ -232,15 +234,15 @@ class Runner:
         if _columns(data) is not None:
             # AUTO's load(u) makes a solution of the table itself; cable's
             # table is read by the run (as dat=), there is no solution before
-            raise CableError('data columns are a start for run(u, ...), not for load (cable reads them as '
-                             'dat= when the run starts)')
+            raise CableValueError('data columns are a start for run(u, ...), not for load (cable reads them as '
+                                  'dat= when the run starts)')
         b = self.session.load(*_args(data, kw))
         return None if b is None else Result([b])(None)[0]
 
     def loadbd(self, name):
         """loadbd('NAME'): the labelled solutions of s.NAME (b.NAME's norms) as a result."""
         if not isinstance(name, str):
-            raise CableError('loadbd needs a name (files b.NAME, s.NAME)')
+            raise CableTypeError('loadbd needs a name (files b.NAME, s.NAME)')
         return Result(self.session.loadbd(name))
 
     def _last_run(self, what):
@@ -259,7 +261,7 @@ class Runner:
             data, name = self._last_run('save'), data
         br, i = _branches(data, 'save')
         if not isinstance(name, str) or not name:
-            raise CableError('the second argument must be a non-empty name, got a %s' % type(name).__name__)
+            raise CableTypeError('the second argument must be a non-empty name, got a %s' % type(name).__name__)
         sys.stdout.flush()
         self.session.save(br, i, name, False)
 
@@ -273,7 +275,7 @@ class Runner:
         elif isinstance(x, str):
             x = self.loadbd(x)
         if not isinstance(name, str) or not name:
-            raise CableError('the second argument must be a non-empty name')
+            raise CableValueError('the second argument must be a non-empty name')
         br, i = _branches(x, 'append')
         sys.stdout.flush()
         self.session.save(br, i, name, True)
@@ -288,7 +290,7 @@ class Runner:
             return self.last
         if isinstance(name1, str):
             if name2 is not None and not (isinstance(name2, str) and name2):
-                raise CableError("%s('A', 'B'): B must be a name, got a %s" % (what, type(name2).__name__))
+                raise CableTypeError("%s('A', 'B'): B must be a name, got a %s" % (what, type(name2).__name__))
             target = name1
             if name2 is not None and name2 != name1:
                 self._copy_files(name1, name2)
@@ -314,7 +316,7 @@ class Runner:
         likewise; the next run without a start uses them (ch('IRS', 4): label 4 of the runner's solutions)."""
         if entry is not None:
             if not isinstance(entry, str):
-                raise CableError("ch('KEY', value) takes a constant's name, got a %s" % type(entry).__name__)
+                raise CableTypeError("ch('KEY', value) takes a constant's name, got a %s" % type(entry).__name__)
             kw = dict(kw)
             kw[entry] = value
         self.load(None, **kw)
@@ -343,7 +345,7 @@ class Runner:
             sys.stdout.write(str(c))
             return None
         if not isinstance(parameter, str):
-            raise CableError("pr('KEY') takes a constant's name, got a %s" % type(parameter).__name__)
+            raise CableTypeError("pr('KEY') takes a constant's name, got a %s" % type(parameter).__name__)
         return c[parameter]
 
     # --- files and directories ----------------------------------------------------------
@@ -374,7 +376,7 @@ class Runner:
             if verbose:
                 print('Copying %s to %s ...' % (src, dst))
         if not found:
-            raise CableError('%s: no files b./s./d.%s' % (name1, name1))
+            raise CableFileNotFoundError('%s: no files b./s./d.%s' % (name1, name1))
 
     def cd(self, dir=None):
         """cd('DIR'): change directory (~ and $VARS expanded); cd(): home."""
@@ -383,7 +385,7 @@ class Runner:
     def auto(self, script=None):
         """auto('x.auto'): run another script in this runner."""
         if script is None or self.script_runner is None:
-            raise CableError('auto needs a script name')
+            raise CableTypeError('auto needs a script name')
         return self.script_runner(script)
 
     def wait(self):
@@ -395,7 +397,7 @@ class Runner:
     def analyze(self, sol):
         """analyze(sol) -> dict: Lk, Tw, Wr, knot type, pressure, tube distance ... (doc/scripts.md)"""
         if not isinstance(sol, Solution):
-            raise CableError('analyze(sol) takes one solution')
+            raise CableTypeError('analyze(sol) takes one solution')
         br, i = sol.branch
         return _cable.analyze(br, i)
 
@@ -408,7 +410,7 @@ class Runner:
                               (isinstance(file, str) and not _picture_file(file))):
             return plotting.figure(self._plot_data(file), x=x, y=y, title=title, marks=marks)
         if file is None:
-            raise CableError("plot('name'), plot(result) or plot('fig.png', ['name', ...], marks=[[sol, 'text'], ...])")
+            raise CableTypeError("plot('name'), plot(result) or plot('fig.png', ['name', ...], marks=[[sol, 'text'], ...])")
         if isinstance(names, (Result, str)):
             names = [names]
         if (isinstance(file, str) and isinstance(names, (list, tuple)) and names and
@@ -420,13 +422,13 @@ class Runner:
             return fig
         if not isinstance(file, str) or not isinstance(names, (list, tuple)) or not names or \
                 not all(isinstance(n, str) for n in names):
-            raise CableError("plot('fig.png', ['name', ...] (saved results or results), marks=[[sol, 'text'], ...])")
+            raise CableTypeError("plot('fig.png', ['name', ...] (saved results or results), marks=[[sol, 'text'], ...])")
         if marks and ((x and x != 'T') or (y and y != 'F')):
-            raise CableError('marks: marks are drawn on the default (T, F) axes only')
+            raise CableValueError('marks: marks are drawn on the default (T, F) axes only')
         m = []
         for mk in marks:
             if len(mk) != 2 or not isinstance(mk[0], Solution) or not isinstance(mk[1], str):
-                raise CableError('marks: marks are [solution, \'text\'] pairs')
+                raise CableValueError('marks: marks are [solution, \'text\'] pairs')
             # a branch point is marked as one (a filled circle: the paper's
             # numbering of branch points, marks=[[bp, '1'], ...]); others open
             m.append((mk[0]['T'], mk[0]['F'], mk[1], mk[0].TY == 'BP'))
@@ -438,16 +440,16 @@ class Runner:
             return self.loadbd(x)
         if isinstance(x, (Result, Solution)):
             return x
-        raise CableError('plot: a name, a result or a solution expected, got a %s' % type(x).__name__)
+        raise CableTypeError('plot: a name, a result or a solution expected, got a %s' % type(x).__name__)
 
     def render(self, sol, file, view=None, size=0, thicken=0.0, color=None, vtp=None, ply=None):
         """render(sol, 'fig.png', view=[x, y, z], size=600, thicken=0, color='pressure', vtp=..., ply=...)"""
         if not isinstance(sol, Solution) or not isinstance(file, str):
-            raise CableError("render(sol, 'fig.png', view=[x, y, z], ...)")
+            raise CableTypeError("render(sol, 'fig.png', view=[x, y, z], ...)")
         if color not in (None, 'pressure'):
-            raise CableError("color: color='pressure' is the only colour map")
+            raise CableValueError("color: color='pressure' is the only colour map")
         if view is not None and len(view) != 3:
-            raise CableError('view: view=[x, y, z]')
+            raise CableValueError('view: view=[x, y, z]')
         br, i = sol.branch
         _cable.render(br, i, file, None if view is None else tuple(float(v) for v in view), int(size),
                       float(thicken), color == 'pressure', vtp, ply)

@@ -6,6 +6,7 @@ key is a cable.CableError naming it; a key that is not set is None (AUTO's
 way) and is not printed.
 """
 from ._cable import CableError
+from .errors import CableKeyError
 
 # the keys of one line of the printed file, in a constants file's order; the
 # problem's own keys (TORUS, HAND ...) follow on a line of their own
@@ -58,7 +59,7 @@ class Constants(dict):
     dicts, names as a constants file gives them); print(c) shows the file."""
 
     def __missing__(self, key):
-        raise CableError('%s: unknown key' % (key,))
+        raise CableKeyError('%s: unknown key' % (key,))
 
     def __str__(self):
         return layout(self)

@@ -8,6 +8,7 @@ against t (or the components x=, y= name).  Figures are made without
 pyplot, so no window or GUI backend is needed.
 """
 from ._cable import CableError
+from .errors import CableTypeError, CableValueError
 from .results import Result, Solution, branch_columns
 
 
@@ -53,7 +54,7 @@ def _diagram(ax, results, x, y, marks):
                                 xytext=(4, 4), fontsize=8)
     for sol, text in marks:
         if not isinstance(sol, Solution) or not isinstance(text, str):
-            raise CableError("marks: marks are [solution, 'text'] pairs")
+            raise CableValueError("marks: marks are [solution, 'text'] pairs")
         xs, ys = sol[xl], sol[yl]
         ax.plot([xs], [ys], 'kx')
         ax.annotate(text, (xs, ys), textcoords='offset points', xytext=(4, -12), fontsize=9)
@@ -83,7 +84,7 @@ def figure(data, x=None, y=None, title=None, marks=()):
         results = data if isinstance(data, (list, tuple)) else [data]
         for r in results:
             if not isinstance(r, Result):
-                raise CableError('plot: a result or a solution expected, got a %s' % type(r).__name__)
+                raise CableTypeError('plot: a result or a solution expected, got a %s' % type(r).__name__)
         _diagram(ax, results, x, y, marks)
     if title:
         ax.set_title(title)

@@ -11,6 +11,7 @@ import re
 import numpy as np
 
 from ._cable import Branch, CableError, curves as _curves
+from .errors import CableKeyError, CableValueError
 from .constants import Constants
 
 _SPEC = re.compile(r'^([A-Z][A-Z])(\d*)$')
@@ -40,8 +41,8 @@ class Parameters:
                 return int(m.group(1)) - 1
             if key in self._names and self._names.index(key) < len(self._v):
                 return self._names.index(key)
-            raise CableError('%s: no such parameter (names: %s, PAR(k))'
-                             % (key, ', '.join(n for n in self._names if n)))
+            raise CableKeyError('%s: no such parameter (names: %s, PAR(k))'
+                                % (key, ', '.join(n for n in self._names if n)))
         k = int(key)
         if k < 0:
             k += len(self._v)
@@ -232,8 +233,8 @@ class Solution:
                 return p[key]
             if key in names:
                 return self._full()['u'][:, names.index(key)].copy()
-        raise CableError('%s: no such parameter or component (names: the problem\'s parameters, PAR(k), '
-                         'U(k), t, LAB, BR, PT, TY; a braid solution also x2, y2, z2, xc, yc, zc, p1, p2)' % (key,))
+        raise CableKeyError('%s: no such parameter or component (names: the problem\'s parameters, PAR(k), '
+                            'U(k), t, LAB, BR, PT, TY; a braid solution also x2, y2, z2, xc, yc, zc, p1, p2)' % (key,))
 
     def __contains__(self, key):
         try:
@@ -297,7 +298,7 @@ def _select(sols, label, where):
         for s in sols:
             if s.LAB == label:
                 return s
-        raise CableError('%d: no such label in %s' % (label, where))
+        raise CableKeyError('%d: no such label in %s' % (label, where))
     if isinstance(label, str):
         m = _SPEC.match(label)
         if m and m.group(1) in _TYPES:
@@ -307,9 +308,9 @@ def _select(sols, label, where):
             n = int(m.group(2))
             if 1 <= n <= len(same):
                 return same[n - 1]
-            raise CableError('%s: no such label in %s' % (label, where))
-    raise CableError('%r: not a label: use a number, a type (BP, LP, UZ, EP, MX, RG) or a type and '
-                     'count (BP1)' % (label,))
+            raise CableKeyError('%s: no such label in %s' % (label, where))
+    raise CableValueError('%r: not a label: use a number, a type (BP, LP, UZ, EP, MX, RG) or a type and '
+                          'count (BP1)' % (label,))
 
 
 class Result:
@@ -407,7 +408,7 @@ def _column(b, key):
         return p['par'][:, int(m.group(1)) - 1].copy()
     if key in names and names.index(key) < p['par'].shape[1]:
         return p['par'][:, names.index(key)].copy()
-    raise CableError("%s: no such column (the problem's parameters, PAR(k), L2-NORM, PT, LAB, TY, BR)" % key)
+    raise CableKeyError("%s: no such column (the problem's parameters, PAR(k), L2-NORM, PT, LAB, TY, BR)" % key)
 
 
 # AUTO prints at most 7 parameter and MAX U columns (its WRLINE; aufile_write.c)

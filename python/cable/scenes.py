@@ -16,6 +16,7 @@ import os
 from . import _cable
 from ._cable import CableError
 from .atomic import write_text as write_atomic
+from .errors import CableTypeError, CableValueError
 from .results import Result, Solution
 
 # A UZ label lies at the target T to the engine's location accuracy: the
@@ -48,7 +49,7 @@ def fail(message):
     """fail('text'): stop the script with that message (a CableError; in
     Python a scene may equally raise it itself)."""
     if not isinstance(message, str):
-        raise CableError('fail() takes the message as a string')
+        raise CableTypeError('fail() takes the message as a string')
     raise CableError(message)
 
 
@@ -73,8 +74,8 @@ def branch_point(result, T, kind=None):
     found = branch_points(result, T=T, kind=kind)
     if len(found) != 1:
         have = ', '.join('LAB %d at T = %.6g (%s)' % (s.LAB, s['T'], bp_kind(s)) for s in result('BP')) or 'none'
-        raise CableError('%d %sbranch points with T in [%g, %g] (the branch has: %s)'
-                         % (len(found), kind + ' ' if kind else '', min(T), max(T), have))
+        raise CableValueError('%d %sbranch points with T in [%g, %g] (the branch has: %s)'
+                              % (len(found), kind + ' ' if kind else '', min(T), max(T), have))
     return found[0]
 
 
@@ -112,11 +113,11 @@ def _pick(x, t_target, f_target, row):
     """(solution, number of UZ labels at T_target, which one was taken)."""
     if isinstance(x, Solution):
         if not _at_target_t(x['T'], t_target):
-            raise CableError('compare: row %d: label %d has T = %.10g, not the target T = %.10g'
-                             % (row, x.LAB, x['T'], t_target))
+            raise CableValueError('compare: row %d: label %d has T = %.10g, not the target T = %.10g'
+                                  % (row, x.LAB, x['T'], t_target))
         return x, 1, 1
     if not isinstance(x, Result):
-        raise CableError('compare: row %d: the second entry must be a result or a solution' % row)
+        raise CableTypeError('compare: row %d: the second entry must be a result or a solution' % row)
     best, nuz, k = None, 0, 0
     for s in x():
         if s.TY != 'UZ' or not _at_target_t(s['T'], t_target):
@@ -125,8 +126,8 @@ def _pick(x, t_target, f_target, row):
         if best is None or abs(s['F'] - f_target) < abs(best['F'] - f_target):
             best, k = s, nuz
     if best is None:
-        raise CableError("compare: row %d: no UZ label at T = %.10g on that result (run it with UZR={'T': %.10g})"
-                         % (row, t_target, t_target))
+        raise CableValueError("compare: row %d: no UZ label at T = %.10g on that result (run it with UZR={'T': %.10g})"
+                              % (row, t_target, t_target))
     return best, nuz, k
 
 
@@ -163,11 +164,11 @@ def compare(runner, file, rows, ref=None, notes=()):
     solution at T_target; ref a solution of the unbuckled branch, for
     (Lk - Lk_ref)/2.  notes: lines written after the table."""
     if not isinstance(file, str) or not isinstance(rows, (list, tuple)):
-        raise CableError("compare('file', [[name, result, T_target, F_target, Lk_target], ...], ref=sol)")
+        raise CableTypeError("compare('file', [[name, result, T_target, F_target, Lk_target], ...], ref=sol)")
     if ref is not None and not isinstance(ref, Solution):
-        raise CableError('ref: ref must be a solution')
+        raise CableTypeError('ref: ref must be a solution')
     if not isinstance(notes, (list, tuple)) or not all(isinstance(n, str) for n in notes):
-        raise CableError('notes: notes must be a list of strings')
+        raise CableTypeError('notes: notes must be a list of strings')
     lk_ref = _analyze(ref)['Lk'] if ref is not None else math.nan
     out = [_COMPARE_HEADER,
            '%-5s %4s %5s %12s %12s %14s %9s %9s %5s %9s %15s %-22s %11s %7s %9s\n'
@@ -178,13 +179,13 @@ def compare(runner, file, rows, ref=None, notes=()):
         ok = (isinstance(row, (list, tuple)) and len(row) in (5, 6) and isinstance(row[0], str)
               and all(_is_number(v) for v in row[2:5]))
         if not ok:
-            raise CableError('compare: row %d must be [name, result or solution, T_target, F_target, Lk_target'
-                             '(, reference solution)]' % k)
+            raise CableTypeError('compare: row %d must be [name, result or solution, T_target, F_target, Lk_target'
+                                 '(, reference solution)]' % k)
         name, x, t_t, f_t, lk_t = row[:5]
         lref = lk_ref
         if len(row) == 6:
             if not isinstance(row[5], Solution):
-                raise CableError('compare: row %d: the reference must be a solution' % k)
+                raise CableTypeError('compare: row %d: the reference must be a solution' % k)
             lref = _analyze(row[5])['Lk']
         s, nuz, chosen = _pick(x, t_t, f_t, k)
         a = _analyze(s)
@@ -263,7 +264,7 @@ def overlap_free(result):
     itself between two labels.  An end between two labels is interpolated
     linearly in dmin, so its accuracy is the label spacing (NPR)."""
     if not isinstance(result, Result):
-        raise CableError('overlap_free(result) takes one result')
+        raise CableTypeError('overlap_free(result) takes one result')
     out = []
     for br in result.branches:
         _, _, _, tau, _ = branch_passages(br, br.nsol - 1)
@@ -276,7 +277,7 @@ def overlap_free(result):
 def _t_index(br):
     names = br.parnames
     if 'T' not in names:
-        raise CableError('the branch has no parameter T (not a braid problem)')
+        raise CableValueError('the branch has no parameter T (not a braid problem)')
     return names.index('T')
 
 
@@ -289,13 +290,13 @@ def _paper(p):
     if p is None:
         return {}
     if not isinstance(p, dict):
-        raise CableError("paper: paper={'knot': 'right trefoil', 'Lk': 3, 'linked': False, 'psign': True, "
-                         "'T': .., 'F': ..}")
+        raise CableTypeError("paper: paper={'knot': 'right trefoil', 'Lk': 3, 'linked': False, 'psign': True, "
+                             "'T': .., 'F': ..}")
     for k, v in p.items():
         ok = ((k == 'knot' and isinstance(v, str)) or (k in ('Lk', 'T', 'F') and _is_number(v))
               or (k in ('linked', 'psign') and isinstance(v, (bool, int, float))))
         if not ok:
-            raise CableError('%s: %s' % (k, _PAPER_KEYS))
+            raise CableValueError('%s: %s' % (k, _PAPER_KEYS))
     return p
 
 
@@ -418,10 +419,10 @@ def branch_table(runner, file, result, paper=None, title=None):
     stretch whose tubes do not overlap), writes (atomically) and prints the
     table.  Returns the reported point's label (None: no solution)."""
     if not isinstance(file, str) or not isinstance(result, Result):
-        raise CableError("branch_table('file', result, paper={...}, title='...') takes a file name and a result")
+        raise CableTypeError("branch_table('file', result, paper={...}, title='...') takes a file name and a result")
     p = _paper(paper)
     if title is not None and not isinstance(title, str):
-        raise CableError('title: title must be a string')
+        raise CableTypeError('title: title must be a string')
     sols = result()
     an, why = [], []
     for s in sols:

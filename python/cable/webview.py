@@ -25,6 +25,7 @@ import numpy as np
 from . import _cable
 from ._cable import CableError
 from .atomic import write_text
+from .errors import CableFileNotFoundError, CableTypeError
 from .view_page import BODY, CSS, JS
 
 THREE_DIR = '/usr/share/javascript/three'
@@ -43,8 +44,8 @@ def _scripts():
             with open(path, encoding='utf-8') as fh:
                 out.append(fh.read())
         except OSError as e:
-            raise CableError('%s: %s (the page embeds Debian\'s three.js: apt-get install libjs-three)'
-                             % (path, e.strerror)) from None
+            raise CableFileNotFoundError('%s: %s (the page embeds Debian\'s three.js: apt-get install libjs-three)'
+                                         % (path, e.strerror)) from None
     return out
 
 
@@ -127,7 +128,7 @@ def run_data(directory, title=None):
     directory = os.path.abspath(directory)
     names = _bnames(directory)
     if not names:
-        raise CableError('%s: no b-files (b.NAME) in this directory' % directory)
+        raise CableFileNotFoundError('%s: no b-files (b.NAME) in this directory' % directory)
     runner = Runner()
     here = os.getcwd()
     runner.cd(directory)   # loadbd reads from the runner's directory
@@ -204,7 +205,7 @@ def atlas_data(directory):
                            'the files are there where the atlas ran ([record] files = true)' % name)
         tasks.append(task)
     if not tasks:
-        raise CableError('%s: no finished atlas task (tasks/NAME/result.json)' % directory)
+        raise CableFileNotFoundError('%s: no finished atlas task (tasks/NAME/result.json)' % directory)
     nrun = sum(1 for t in tasks if t['run'])
     return {'kind': 'atlas', 'title': 'atlas %s: %d tasks, %d with b./s. files'
             % (os.path.basename(os.path.abspath(directory)), len(tasks), nrun),
@@ -225,7 +226,7 @@ def page(data):
 def directory_page(directory):
     """The page of a run directory or an atlas (a directory with tasks/)."""
     if not os.path.isdir(directory):
-        raise CableError('%s: no such directory' % directory)
+        raise CableFileNotFoundError('%s: no such directory' % directory)
     if os.path.isdir(os.path.join(directory, 'tasks')):
         return page(atlas_data(directory))
     return page(run_data(directory))
@@ -265,7 +266,7 @@ def view(x, file=None, title=None):
     elif isinstance(x, Result):
         text = page(result_data(x, title or 'cable result'))
     else:
-        raise CableError('view() takes a result, a solution or a directory name, not %s' % type(x).__name__)
+        raise CableTypeError('view() takes a result, a solution or a directory name, not %s' % type(x).__name__)
     v = View(text)
     return v.save(file) if file else v
 
