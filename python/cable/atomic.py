@@ -13,27 +13,28 @@ NEW_FILE_MODE = 0o644
 
 
 @contextlib.contextmanager
-def replacing(path, suffix=''):
+def replacing(path, suffix='', mode=NEW_FILE_MODE):
     """with replacing(path) as tmp: write tmp; it is renamed over path when
     the block ends normally and removed when it raises.  suffix: the
-    temporary name's ending (a writer that picks the format by it)."""
+    temporary name's ending (a writer that picks the format by it); mode:
+    the file's permissions."""
     d = os.path.dirname(os.path.abspath(path))
     fd, tmp = tempfile.mkstemp(prefix='.%s.' % os.path.basename(path),
                                suffix=suffix, dir=d)
     os.close(fd)
     try:
         yield tmp
-        os.chmod(tmp, NEW_FILE_MODE)
+        os.chmod(tmp, mode)
         os.replace(tmp, path)
     finally:
         if os.path.exists(tmp):
             os.remove(tmp)
 
 
-def write_text(path, text, encoding='utf-8'):
-    """Write text to path whole or not at all."""
-    with replacing(path) as tmp:
-        with open(tmp, 'w', encoding=encoding) as f:
+def write_text(path, text, encoding='utf-8', mode=NEW_FILE_MODE):
+    """Write text to path whole or not at all (newlines as given)."""
+    with replacing(path, mode=mode) as tmp:
+        with open(tmp, 'w', encoding=encoding, newline='') as f:
             f.write(text)
     return path
 
