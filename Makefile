@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # cable: elastic cable knots and links by numerical continuation.
 # One hand-written makefile: settings, then rules.  `make help` lists the targets.
 

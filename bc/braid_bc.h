@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Boundary conditions of the closed standard 2-braid (paper Sect. 12.3) in
  * AUTO's BCND form (cable_bcnd_fn), with analytic Jacobians.
  * State and parameter layout: equations/braid_state.h.  Derivation, the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* The 12 conditions at s = 0 that the knot and the link share: (12.3.1)-(12.3.12)
  * = (12.3.24)-(12.3.35), rows 0 .. BRAID_BC_ORIGIN_NROWS-1 of both problems
  * (braid_bc.h).  Written once here; braid_knot_bc.c and braid_link_bc.c add

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Knot boundary conditions (12.3.1)-(12.3.23) plus the phase condition
  * omega2(0) = w2fix, with the unfolding parameter eps21 in (12.3.21); the
  * symmetric variant adds F2(0) = 0 and eps13 in (12.3.13).  Why the extra rows

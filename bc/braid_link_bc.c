@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Link boundary conditions (12.3.24)-(12.3.44); (12.3.42) is omega2(0) = w2fix.
  * Derivation and the meaning of Phi: doc/braid-boundary-conditions.md. */
 #include <math.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* The equidistant torus braid: a circular contact curve of radius rc with the
  * chord director d1 turning uniformly about it, psi = nu phi (phi the angle
  * along the circle, nu = hand p/2), strands at -/+ Delta/2 d1.  Construction

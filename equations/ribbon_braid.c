@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* The braid ribbon of a solution (ribbon.h; doc/geometry.md, 2): Tw by
  * Gauss-Legendre on the collocation mesh, Wr by the Gauss double integral on
  * samples of the contact curve placed by its arclength, densest where

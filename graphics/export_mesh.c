@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Input checks and meshes for the exporters. */
 #include "export_mesh.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Shared by the exporters: input checks and the meshes of all tubes. */
 #ifndef CABLE_EXPORT_MESH_H
 #define CABLE_EXPORT_MESH_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Stanford PLY (ASCII) writer. */
 #include <math.h>
 #include <stdio.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* VTK XML PolyData (ASCII) writer. */
 #include <stdio.h>
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* The graphics layer's constant pi; the 3-vector helpers are the shared ones
  * (cable_vec3.h). */
 #ifndef CABLE_GRAPHICS_VEC_H

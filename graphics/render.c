@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* render_tubes_png: validation, meshing, rasterisation, profiles, colour
  * bar, PNG output. */
 #include "render.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* The renderer's view: default direction from the point cloud's shape, and
  * a fit of the drawn tubes to the picture. */
 #include <math.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Software z-buffer: triangles with per-sample normal interpolation, and
  * wide segments. */
 #include "render_raster.h"

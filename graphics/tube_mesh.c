@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Rotation-minimising frames and tube meshes. */
 #include "tube_mesh.h"
 

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Generate the API misuse test from the public headers (doc/api.md, Contracts).
 
     gen_api_misuse.py OUT.inc [LIBCABLE.so]

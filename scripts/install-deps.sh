@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Install cable's dependencies from Debian packages, only those missing.
 # Usage: scripts/install-deps.sh [--check | --check-build]
 #   (no option)    install every missing package: the build's and those of the

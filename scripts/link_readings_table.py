@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Tables of the link readings study (scripts/link_readings.sh; doc/links.md).
 
 Reads the s-files the study wrote and prints, per figure: the labelled points

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 """SPDX license lines of cable's sources (LICENSE: GPL-3.0-or-later).
 
 Usage: /usr/bin/python3 scripts/spdx.py --check | --apply [--root DIR]

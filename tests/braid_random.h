@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Random numbers, braid states and boundary points for the tests (one
  * helper, header-only).  Two generators: test_rng, a xorshift64* stream a
  * test seeds itself (its numbers are the same on every machine), and GSL's

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Braid boundary conditions (bc/braid_bc.h): every row against the paper's
  * printed formula, analytic Jacobians against central differences, the
  * geometric meaning of the end-frame conditions, and the error paths. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* The braid right-hand side (equations/braid_model.h): exact Jacobians
  * against central differences, AUTO's FUNC against the plain right-hand side,
  * independent consistency checks of the generated equations, the mirror

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* First integrals and contact pressure of the braid equations
  * (equations/braid_integrals.h, equations/braid_pressure.h):
  *  - random initial-value problems integrated with GSL's rk8pd conserve

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* braid_link_sym: the S0-symmetric link conditions (bc/braid_link_sym_bc.c,
  * doc/links.md).  Checks: every row against the printed formula, the analytic
  * Jacobian against central differences (states and all parameter slots), the

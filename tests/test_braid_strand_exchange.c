@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Strand exchange (equations/braid_exchange.h, doc/links.md "Strand exchange"):
  * the braid seen with s along strand 2 must solve the same equations and, for
  * a link, the same conditions with the same T.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* The plug-in tests/plugins/link_t2plus.c (the reading "t20 = +t10" of the
  * link conditions, doc/links.md §4.2): it loads and validates, every row but
  * (12.3.34) is braid_link's, that row is T2(0) - T, and its Jacobian

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Small 3-vector helpers (header-only, inline), the one set every layer uses:
  * the braid geometry, the starts, the tube mesher, the renderer and the
  * exports.  Vectors are double[3]; an output may alias an input. */

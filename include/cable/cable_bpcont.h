@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Branch-point continuation of a boundary-value problem without integral
  * conditions (AUTO's ISW = 2 at a BP, the non-generic case):
  * doc/fold-continuation.md, "Branch-point continuation", derives it.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """cable: equilibria of elastic cable knots and links by numerical
 continuation, with AUTO-07p's command-line interface.
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """cable.atlas: an atlas of cable knots and links, computed on Dask
 distributed (doc/atlas.md).
 

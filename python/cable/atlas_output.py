@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The atlas's outputs, rebuilt (each file atomically) from the finished
 tasks of a sweep: OUT/atlas.csv (one row per cable knot or link found, plus
 one row per failed task), OUT/atlas.parquet when pyarrow is installed,

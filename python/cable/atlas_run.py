@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Running a sweep on Dask distributed (doc/atlas.md): a local cluster of
 this machine's cores by default, or the scheduler at an address.
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The sweep file of cable.atlas (doc/atlas.md): a TOML file read with
 Python's tomllib, checked whole before any task starts, and expanded into
 tasks, each keyed by a hash of everything that determines its result.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """One atlas task, run on a Dask worker (or anywhere): the flat branch of a
 (p,2) torus knot or link on one arm up to its mode-th branch point, the
 branch from that point, and the rows of the cable knots or links found on

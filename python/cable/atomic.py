@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Files written whole or not at all, the Python side of cable's one atomic
 writer (continuation/atomic_file.c): the text goes to a temporary file in
 the destination's directory, renamed over the destination only when it is

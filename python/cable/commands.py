@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """AUTO-07p's script commands on cable's engine (doc/scripts.md).
 
 A Runner is AUTO's runner: it remembers the constants and problem of the last

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """AUTO constants as a Python object (AUTO's parseC): what pr() shows and
 s.c holds.  A Constants is a dict with AUTO's keys (doc/constants.md) whose
 str() is a constants file in AUTO's layout (the keys grouped on lines as a

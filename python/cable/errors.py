@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """cable's exceptions.  CableError (a RuntimeError) is the base of all: its
 message names what is wrong (file, line and key where there is one) and
 `except CableError` catches every error cable raises.  Where an error is

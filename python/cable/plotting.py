@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """plot(name), plot(result), plot(sol) as matplotlib figures (AUTO's plot
 opens its plotter window on the same data; cable returns a Figure, which a
 notebook shows and fig.savefig writes).  A diagram: each branch's first

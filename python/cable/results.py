@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Results and solutions with AUTO-07p's behaviour (its bifDiag, parseB and
 parseS objects): r('BP1'), r('BP'), r(3), r(), r + s, iteration over
 branches, len, r[0], br['T'] as a numpy array; sol['T'], sol.PAR,

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Post-processing of the scenes in runs/: tables computed from named
 solutions only (nothing here runs during continuation).  The numerical
 analysis of one solution (Lk, writhe, knot type, tube distance, pressure,

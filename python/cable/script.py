@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Running .auto scripts in CPython, as AUTO's `auto X.auto` does: the
 commands preloaded, the script's directory the working directory (where
 its c./s./b./d. files are read and written), AUTO's shorthand `name args`

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The HTML, CSS and JavaScript of the page `cable view` writes (cable.view
 fills in the data).  One self-contained file: three.js (Debian's libjs-three)
 is embedded by cable.view, the diagram is SVG drawn here, the solutions come

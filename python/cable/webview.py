@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """cable view: one self-contained HTML page that links a bifurcation diagram
 to the 3-D shapes of its solutions (doc/view.md).
 

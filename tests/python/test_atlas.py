@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """cable.atlas (doc/atlas.md): a tiny sweep (the (3,2) knot and the (4,2)
 link, one Delta, mode 1, a coarse mesh) on a local Dask cluster of two
 workers; the same sweep interrupted and resumed (on a cluster of `dask

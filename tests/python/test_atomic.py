@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """cable.atomic, the package's one atomic writer: whole files or none, mode
 0644 like the C writer's, no temporary file left behind; and no other
 module writes its own temporary-and-rename."""

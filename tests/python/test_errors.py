@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """cable's exceptions are also the built-ins Python code catches (issue 27):
 CableError stays the base, and an error of a known kind is as well a
 TypeError, KeyError, ValueError or FileNotFoundError, its message (the

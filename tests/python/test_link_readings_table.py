@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """scripts/link_readings_table.py reads its s-files with cable's own loadbd
 (no second reader): the labelled points and their parameters as cable
 reads them, also from AUTO-07p's s-files (three-digit exponents)."""

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Plain `make` builds only (issue 27): it checks the build dependencies and
 names a missing one with the command that installs it, never running apt;
 the README's commands (make check, make demo) and `make deps` install."""

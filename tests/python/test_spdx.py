@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """SPDX lines (issue 27): every source file of the repository carries one
 (scripts/spdx.py --check), and --apply puts it on top, after a shebang."""
 import os
