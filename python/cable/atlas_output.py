@@ -5,6 +5,10 @@ one row per failed task), OUT/atlas.parquet when pyarrow is installed,
 OUT/summary.svg (matplotlib: families against Delta, one cell per arm and mode, coloured
 by the companion knot type and Lk the branch reaches: cell_outcome) and
 OUT/summary.md (counts and the picture)."""
+
+__all__ = ['finished_results', 'table_rows', 'csv_text', 'read_csv',
+           'cell_outcome', 'summary_svg', 'summary_md', 'write_outputs']
+
 import csv
 import importlib.util
 import io

@@ -11,6 +11,10 @@ mid-task is replaced (local cluster: its nanny restarts it) and the
 scheduler gives its task to another worker; after Dask's allowed failures
 (distributed.scheduler.allowed-failures, 3) the task is recorded as failed.
 """
+
+__all__ = ['TABLE_INTERVAL', 'read_result', 'remove_stale_partials',
+           'read_flat', 'priority', 'Progress', 'run_sweep']
+
 import json
 import os
 import shutil

@@ -6,6 +6,12 @@ tasks, each keyed by a hash of everything that determines its result.
     sweep = load('sweep.toml')        # SweepError naming file, line and key
     for t in sweep.tasks: t.key, t.name, t.inputs
 """
+
+__all__ = ['TASK_VERSION', 'FLAT_VERSION', 'FLAT_DEFAULTS', 'BRANCH_DEFAULTS',
+           'MESH_DEFAULTS', 'KNOT_LTOT', 'LINK_L', 'SweepError', 'Task',
+           'FlatTask', 'flat_inputs', 'Sweep', 'knotting_arm', 'contact_limit',
+           'auto_ntst', 'load']
+
 import hashlib
 import json
 import math

@@ -10,6 +10,11 @@ OUT/tasks/NAME when everything (b./s./d. files, log.txt, result.json) is
 written: a task directory without the .partial prefix is complete, and a
 worker that dies leaves only a partial directory, which nothing reads.
 """
+
+__all__ = ['TASK_THREADS', 'GATE_VARIABLE', 'ROW_FIELDS', 'segments',
+           'branch_rows', 'compute_flat', 'compute', 'flat_dir',
+           'flat_has_solutions', 'run_flat', 'FLAT_AGAIN_RTOL', 'run_task']
+
 import ctypes
 import json
 import os

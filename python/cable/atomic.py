@@ -4,11 +4,12 @@ writer (continuation/atomic_file.c): the text goes to a temporary file in
 the destination's directory, renamed over the destination only when it is
 complete, so a reader never sees half a file and a failure leaves the old
 one untouched.  New files get mode 0644, as the C writer gives them."""
+
+__all__ = ['replacing', 'write_text', 'copy_file']
+
 import contextlib
 import os
 import tempfile
-
-__all__ = ['replacing', 'write_text', 'copy_file']
 
 NEW_FILE_MODE = 0o644
 

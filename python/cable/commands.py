@@ -12,6 +12,9 @@ Its commands are AUTO's, with AUTO's short aliases:
   plus cable's analyze,
   compare, overlap_free, branch_table, plot, render.
 """
+
+__all__ = ['constant_text', 'COMMANDS', 'command_names', 'Runner']
+
 import functools
 import os
 import shutil

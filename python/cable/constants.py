@@ -6,6 +6,9 @@ c-file has them), readable again by ld(c=...) and `cable run`.  A missing
 key is a cable.CableError naming it; a key that is not set is None (AUTO's
 way) and is not printed.
 """
+
+__all__ = ['layout', 'Constants']
+
 from ._cable import CableError
 from .errors import CableKeyError
 

@@ -7,10 +7,11 @@ one of the kinds Python code expects, it is also that built-in, so that
 key, parameter, label or column), `except ValueError` (a bad value) or
 `except FileNotFoundError` (no such file or directory) catch it with
 cable's message intact."""
-from ._cable import CableError
 
 __all__ = ['CableError', 'CableTypeError', 'CableKeyError', 'CableValueError',
            'CableFileNotFoundError']
+
+from ._cable import CableError
 
 
 class CableTypeError(CableError, TypeError):

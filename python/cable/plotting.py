@@ -8,6 +8,9 @@ points marked with their type and label.  A solution: its first component
 against t (or the components x=, y= name).  Figures are made without
 pyplot, so no window or GUI backend is needed.
 """
+
+__all__ = ['figure', 'save']
+
 from ._cable import CableError
 from .errors import CableTypeError, CableValueError
 from .results import Result, Solution, branch_columns

@@ -7,6 +7,9 @@ sol['PAR(1)'], the mesh and components as numpy arrays.
 A Result holds branches computed by the engine (cable._cable.Branch, shared
 and immutable); nothing here copies a solution until its mesh is asked for.
 """
+
+__all__ = ['Parameters', 'Solution', 'SolutionList', 'Result', 'branch_columns']
+
 import re
 
 import numpy as np

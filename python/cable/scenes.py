@@ -11,6 +11,11 @@ axis self-passages) is C (cable._cable); what is done with it is here.
   branch_table('table.txt', result, paper={...}, title='...')
   mirror_table(pairs)
 """
+
+__all__ = ['COMPARE_T_TOL', 'bp_kind', 'fail', 'branch_points', 'branch_point',
+           'branch_passages', 'compare', 'overlap_free', 'branch_table',
+           'mirror_table']
+
 import math
 import os
 

@@ -11,6 +11,10 @@ script's file and line, the line itself, and a non-zero exit status:
 Ctrl-C stops a run at its next point (nothing of that run is written) and
 the script with status 130.
 """
+
+__all__ = ['shorthand', 'py2_prints', 'compile_script', 'ScriptRunner',
+           'Terminated', 'run_script', 'main']
+
 import builtins
 import io
 import keyword

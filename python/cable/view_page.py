@@ -4,6 +4,8 @@ fills in the data).  One self-contained file: three.js (Debian's libjs-three)
 is embedded by cable.view, the diagram is SVG drawn here, the solutions come
 as base64 float32 arrays computed by the C analysis (doc/view.md)."""
 
+__all__ = ['CSS', 'BODY', 'JS']
+
 CSS = r"""
 body { font: 13px/1.35 sans-serif; margin: 0; color: #222; background: #fff; }
 header { padding: 6px 10px; background: #f3f3f3; border-bottom: 1px solid #ccc; }

@@ -13,6 +13,11 @@ labelled solution (cable_solution_strands) and its analysis (Lk, the braid
 axis's knot type, tube overlap: braid_analysis_compute).  The page embeds
 Debian's three.js (libjs-three) and works offline from the file.
 """
+
+__all__ = ['THREE_DIR', 'THREE_FILES', 'ANALYSIS_KEYS', 'run_data',
+           'result_data', 'ATLAS_COLUMNS', 'atlas_data', 'page',
+           'directory_page', 'write_page', 'View', 'view', 'main']
+
 import base64
 import glob
 import html
