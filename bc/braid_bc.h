@@ -61,13 +61,16 @@ enum braid_link_row {
   BL_SYM_NBC                          /* = 22 */
 };
 
-/* The first 12 rows of both, the conditions at s = 0 (braid_bc_origin.c):
- * fb rows 0..11 from u(0) and T; the u(0) and parameter entries of their
- * Jacobian rows, written into a dbc the caller has zeroed (nbc rows). */
+/* What the knot and the link share (braid_bc_origin.c): the first 12 rows,
+ * the conditions at s = 0.  _residual: fb rows 0..11 from u(0) and T;
+ * _du0: zeroes the u(0) and u(1) columns of dbc (nbc rows) and writes those
+ * rows' entries; _dpar: zeroes the BP_NPAR parameter columns and writes those
+ * rows' T entries.  braid_bc_all_finite: 1 when fb[0..nbc) are all finite. */
 enum { BRAID_BC_ORIGIN_NROWS = 12 };
 void braid_bc_origin_residual(const double *par, const double *u0, double *fb);
 void braid_bc_origin_du0(int nbc, double *dbc);
 void braid_bc_origin_dpar(int nbc, double *dbc);
+int braid_bc_all_finite(int nbc, const double *fb);
 
 /* braid_knot: nbc = BK_NBC; free parameters T, L, L2, eps21. */
 int braid_knot_bcnd(int ndim, const double *par, const int *icp, int nbc, const double *u0,

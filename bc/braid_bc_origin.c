@@ -5,6 +5,8 @@
  * their own rows. */
 #include "braid_bc.h"
 
+#include <math.h>
+
 static const double sqrt_half = 0.70710678118654752440;
 
 /* The two row enums agree on these rows (the paper's order). */
@@ -32,8 +34,17 @@ void braid_bc_origin_residual(const double *par, const double *u0, double *fb)
   fb[BK_SIG0] = u0[BR_SIGMA];
 }
 
+int braid_bc_all_finite(int nbc, const double *fb)
+{
+  for (int i = 0; i < nbc; i++)
+    if (!isfinite(fb[i])) return 0;
+  return 1;
+}
+
 void braid_bc_origin_du0(int nbc, double *dbc)
 {
+  for (int j = 0; j < 2 * BR_NDIM; j++)
+    for (int i = 0; i < nbc; i++) dbc[i + nbc * j] = 0.0;
   DU0(BK_X0, BR_X1) = 1.0;
   DU0(BK_Y0, BR_Y1) = 1.0;
   DU0(BK_Z0, BR_Z1) = 1.0;
@@ -50,6 +61,8 @@ void braid_bc_origin_du0(int nbc, double *dbc)
 
 void braid_bc_origin_dpar(int nbc, double *dbc)
 {
+  for (int k = 0; k < BP_NPAR; k++)
+    for (int i = 0; i < nbc; i++) DP(i, k) = 0.0;
   DP(BK_T10, BP_T) = -1.0;
   DP(BK_T20, BP_T) = 1.0;
 }

@@ -40,12 +40,9 @@ static int knot_conditions(int ndim, const double *par, int nbc, int sym, const 
   fb[BK_PHASE] = u0[BR_W2] - par[BP_W2FIX];
   if (sym) fb[BK_F20] = u0[BR_F2];
 
-  for (int i = 0; i < nbc; i++)
-    if (!isfinite(fb[i])) return CABLE_BRAID_BC_DOMAIN;
+  if (!braid_bc_all_finite(nbc, fb)) return CABLE_BRAID_BC_DOMAIN;
   if (ijac < 1) return 0;
 
-  for (int j = 0; j < 2 * BR_NDIM; j++)
-    for (int i = 0; i < nbc; i++) dbc[i + nbc * j] = 0.0;
   braid_bc_origin_du0(nbc, dbc);
   DU1(BK_XL, BR_X1) = 1.0;
   DU0(BK_XL, BR_X1) = -1.0;
@@ -72,8 +69,6 @@ static int knot_conditions(int ndim, const double *par, int nbc, int sym, const 
   if (sym) DU0(BK_F20, BR_F2) = 1.0;
   if (ijac < 2) return 0;
 
-  for (int k = 0; k < BP_NPAR; k++)
-    for (int i = 0; i < nbc; i++) DP(i, k) = 0.0;
   braid_bc_origin_dpar(nbc, dbc);
   DP(BK_XL, BP_DELTA) = -1.0;
   if (sym) DP(BK_XL, BP_EPS13) = 1.0;

@@ -32,12 +32,9 @@ int braid_link_bcnd(int ndim, const double *par, const int *icp, int nbc, const 
   fb[BL_OMEGA2] = u1[BR_W2] - u0[BR_W2] * cphi - u0[BR_W3] * sphi;
   fb[BL_SIGL] = u1[BR_SIGMA] - par[BP_L2];
 
-  for (int i = 0; i < nbc; i++)
-    if (!isfinite(fb[i])) return CABLE_BRAID_BC_DOMAIN;
+  if (!braid_bc_all_finite(nbc, fb)) return CABLE_BRAID_BC_DOMAIN;
   if (ijac < 1) return 0;
 
-  for (int j = 0; j < 2 * BR_NDIM; j++)
-    for (int i = 0; i < nbc; i++) dbc[i + nbc * j] = 0.0;
   braid_bc_origin_du0(nbc, dbc);
   DU1(BL_XL, BR_X1) = 1.0;
   DU0(BL_XL, BR_X1) = -1.0;
@@ -58,8 +55,6 @@ int braid_link_bcnd(int ndim, const double *par, const int *icp, int nbc, const 
   DU1(BL_SIGL, BR_SIGMA) = 1.0;
   if (ijac < 2) return 0;
 
-  for (int k = 0; k < BP_NPAR; k++)
-    for (int i = 0; i < nbc; i++) DP(i, k) = 0.0;
   braid_bc_origin_dpar(nbc, dbc);
   DP(BL_PHI, BP_PHI) = 0.5 * cos(arg);
   DP(BL_W2FIX, BP_W2FIX) = -1.0;
