@@ -43,8 +43,10 @@ def _delegate(name):
     return fn
 
 
-_COMMANDS = ('run', 'r', 'load', 'ld', 'loadbd', 'bd', 'save', 'sv', 'merge', 'mb', 'relabel', 'rl', 'clean', 'cl',
-             'delete', 'dl', 'copy', 'cp', 'append', 'ap', 'cd', 'wait', 'pr', 'printconstant', 'pc', 'analyze', 'plot', 'render', 'compare',
+_COMMANDS = ('run', 'r', 'load', 'ld', 'loadbd', 'bd', 'save', 'sv', 'merge', 'mb', 'relabel',
+             'rl', 'clean', 'cl',
+             'delete', 'dl', 'copy', 'cp', 'append', 'ap', 'cd', 'wait', 'pr', 'printconstant',
+             'pc', 'analyze', 'plot', 'render', 'compare',
              'overlap_free', 'branch_table', 'info')
 for _n in _COMMANDS:
     globals()[_n] = _delegate(_n)
@@ -64,7 +66,9 @@ branch_points = scenes.branch_points
 branch_point = scenes.branch_point
 mirror_table = scenes.mirror_table
 
-__all__ = ['CableError', 'CableFileNotFoundError', 'CableKeyError', 'CableTypeError', 'CableValueError',
-           'Runner', 'constant_text', 'Constants', 'Parameters', 'Result', 'Solution', 'SolutionList',
+__all__ = ['CableError', 'CableFileNotFoundError', 'CableKeyError', 'CableTypeError',
+           'CableValueError',
+           'Runner', 'constant_text', 'Constants', 'Parameters', 'Result', 'Solution',
+           'SolutionList',
            'scenes', 'run_script', 'runner', 'view', 'branch_points', 'branch_point',
            'mirror_table'] + list(_COMMANDS)

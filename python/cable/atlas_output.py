@@ -36,9 +36,12 @@ def table_rows(results):
     for t, r in results:
         if r['status'] != 'ok' or not r['rows']:
             i = t.inputs
-            rows.append({'family': '%s(%d,2)' % (i['kind'], i['p']), 'kind': i['kind'], 'p': i['p'],
-                         'hand': i['hand'], 'Delta': i['Delta'], 'arm': i['arm'], 'mode': i['mode'],
-                         'wall': r['wall'], 'status': r['status'], 'error': r['error'], 'task': t.name})
+            rows.append({'family': '%s(%d,2)' % (i['kind'], i['p']), 'kind': i['kind'],
+                         'p': i['p'],
+                         'hand': i['hand'], 'Delta': i['Delta'], 'arm': i['arm'],
+                         'mode': i['mode'],
+                         'wall': r['wall'], 'status': r['status'], 'error': r['error'],
+                         'task': t.name})
         else:
             rows.extend(r['rows'])
     return rows
@@ -76,7 +79,8 @@ def _write_parquet(path, rows):
 
 # ---- the picture ----------------------------------------------------------------------
 
-_PALETTE = ['#4e79a7', '#f28e2b', '#e15759', '#76b7b2', '#59a14f', '#edc948', '#b07aa1', '#ff9da7', '#9c755f',
+_PALETTE = ['#4e79a7', '#f28e2b', '#e15759', '#76b7b2', '#59a14f', '#edc948', '#b07aa1', '#ff9da7',
+            '#9c755f',
             '#bab0ac', '#86bcb6', '#d37295']
 
 

@@ -52,7 +52,8 @@ def layout(constants):
     lines = []
     rest = tuple(k for k in constants if k not in _KNOWN)
     for keys in _LINES + ((rest,) if rest else ()):
-        items = ['%s = %s' % (k, _text(constants[k])) for k in keys if constants.get(k) is not None]
+        items = ['%s = %s' % (k, _text(constants[k])) for k in keys
+                 if constants.get(k) is not None]
         if items:
             lines.append(', '.join(items))
     return '\n'.join(lines) + '\n'

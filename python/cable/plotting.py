@@ -21,8 +21,10 @@ def _matplotlib():
         from matplotlib.backends.backend_agg import FigureCanvasAgg
         from matplotlib.figure import Figure
     except ImportError:
-        raise CableError("plot: drawing a figure needs matplotlib (Debian's python3-matplotlib, which "
-                         "scripts/install-deps.sh installs); plot('fig.png', ['name', ...]) draws without it") from None
+        raise CableError("plot: drawing a figure needs matplotlib (Debian's python3-matplotlib, "
+                         "which "
+                         "scripts/install-deps.sh installs); plot('fig.png', ['name', ...]) draws "
+                         "without it") from None
     return Figure, FigureCanvasAgg
 
 
@@ -54,7 +56,8 @@ def _diagram(ax, results, x, y, marks):
                     if ty in ('RG', ''):
                         continue
                     ax.plot([xs[i]], [ys[i]], 'o', ms=4, color=line.get_color())
-                    ax.annotate('%s%d' % (ty, p['LAB'][i]), (xs[i], ys[i]), textcoords='offset points',
+                    ax.annotate('%s%d' % (ty, p['LAB'][i]), (xs[i], ys[i]),
+                                textcoords='offset points',
                                 xytext=(4, 4), fontsize=8)
     for sol, text in marks:
         if not isinstance(sol, Solution) or not isinstance(text, str):
@@ -88,7 +91,8 @@ def figure(data, x=None, y=None, title=None, marks=()):
         results = data if isinstance(data, (list, tuple)) else [data]
         for r in results:
             if not isinstance(r, Result):
-                raise CableTypeError('plot: a result or a solution expected, got a %s' % type(r).__name__)
+                raise CableTypeError('plot: a result or a solution expected, got a %s'
+                                     % type(r).__name__)
         _diagram(ax, results, x, y, marks)
     if title:
         ax.set_title(title)
