@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # cable: elastic cable knots and links by numerical continuation.
 # One hand-written makefile: settings, then rules.  `make help` lists the targets.
 
@@ -81,7 +82,12 @@ LIBSO    := $(BUILD)/libcable.so
 SONAME   := libcable.so.1
 VERSION  := $(shell sed -n 's/^\#define CABLE_VERSION "\(.*\)"/\1/p' include/cable/cable_version.h)
 PREFIX   ?= /usr/local
-DEPS_OK  := build/.deps-ok
+# Plain `make` only builds: a missing build dependency stops it with the
+# Debian package's name and the command that installs it.  The README's
+# commands (make demo, make check) and the other targets that run things first
+# install every missing package (scripts/install-deps.sh), as `make deps` does.
+INSTALL_GOALS := deps demo check valgrind asan doc-img scenes bench bench-atlas stress
+DEPS_OK  := $(if $(filter $(INSTALL_GOALS),$(MAKECMDGOALS)),build/.deps-ok,build/.build-deps-ok)
 
 # The Python package: python/cable/*.py and the extension cable._cable
 # (auto_iface/python/*.c, the public API only, linked with libcable.a), put
@@ -98,10 +104,13 @@ PY_SO    := $(PYPKG)/_cable.so
 all: cable $(LIBSO) python
 
 # Dependencies come from Debian; the script installs only what is missing.
-$(DEPS_OK): scripts/install-deps.sh
+build/.deps-ok: scripts/install-deps.sh
 	@bash scripts/install-deps.sh
 	@mkdir -p build && touch $@
-deps: $(DEPS_OK)
+build/.build-deps-ok: scripts/install-deps.sh
+	@bash scripts/install-deps.sh --check-build
+	@mkdir -p build && touch $@
+deps: build/.deps-ok
 
 $(LIB_OBJS): $(BUILD)/%.o: %.c | $(DEPS_OK)
 	@mkdir -p $(dir $@)
@@ -193,7 +202,7 @@ check: tests-build
 	@bash scripts/run-tests.sh $(BUILD)
 
 asan:
-	@$(MAKE) --no-print-directory MODE=asan tests-build
+	@$(MAKE) --no-print-directory MODE=asan DEPS_OK=$(DEPS_OK) tests-build
 	@ASAN_OPTIONS=detect_leaks=1:abort_on_error=0 UBSAN_OPTIONS=print_stacktrace=1 \
 	  bash scripts/run-tests.sh build/asan
 
@@ -247,7 +256,8 @@ clean:
 	rm -rf build cable
 
 help:
-	@echo "make            build ./cable, libcable.so and the Python package (build/MODE/python)"
+	@echo "make            build ./cable, libcable.so and the Python package (build/MODE/python); installs nothing"
+	@echo "make deps       install the missing Debian packages (build, tests, benchmarks; scripts/install-deps.sh)"
 	@echo "make lib        build build/MODE/libcable.so (and the static libcable.a)"
 	@echo "make install    headers, libcable.so, cable.pc, cable and the Python package under PREFIX"
 	@echo "make check      build and run the test suite (summary: N passed, M failed)"

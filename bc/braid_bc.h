@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Boundary conditions of the closed standard 2-braid (paper Sect. 12.3) in
  * AUTO's BCND form (cable_bcnd_fn), with analytic Jacobians.
  * State and parameter layout: equations/braid_state.h.  Derivation, the
@@ -59,6 +60,17 @@ enum braid_link_row {
   BL_F20 = BL_NBC,                    /* symmetric variant: F2(0) = 0 */
   BL_SYM_NBC                          /* = 22 */
 };
+
+/* What the knot and the link share (braid_bc_origin.c): the first 12 rows,
+ * the conditions at s = 0.  _residual: fb rows 0..11 from u(0) and T;
+ * _du0: zeroes the u(0) and u(1) columns of dbc (nbc rows) and writes those
+ * rows' entries; _dpar: zeroes the BP_NPAR parameter columns and writes those
+ * rows' T entries.  braid_bc_all_finite: 1 when fb[0..nbc) are all finite. */
+enum { BRAID_BC_ORIGIN_NROWS = 12 };
+void braid_bc_origin_residual(const double *par, const double *u0, double *fb);
+void braid_bc_origin_du0(int nbc, double *dbc);
+void braid_bc_origin_dpar(int nbc, double *dbc);
+int braid_bc_all_finite(int nbc, const double *fb);
 
 /* braid_knot: nbc = BK_NBC; free parameters T, L, L2, eps21. */
 int braid_knot_bcnd(int ndim, const double *par, const int *icp, int nbc, const double *u0,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Knot boundary conditions (12.3.1)-(12.3.23) plus the phase condition
  * omega2(0) = w2fix, with the unfolding parameter eps21 in (12.3.21); the
  * symmetric variant adds F2(0) = 0 and eps13 in (12.3.13).  Why the extra rows
@@ -7,8 +8,6 @@
 #include "braid_bc.h"
 
 /* dbc entry of row i, column j (u0: j, u1: ndim + j, par k: 2 ndim + k). */
-static const double sqrt_half = 0.70710678118654752440;
-
 #define DU0(i, j) dbc[(i) + nbc * (j)]
 #define DU1(i, j) dbc[(i) + nbc * (BR_NDIM + (j))]
 #define DP(i, k) dbc[(i) + nbc * (2 * BR_NDIM + (k))]
@@ -26,18 +25,7 @@ static int knot_conditions(int ndim, const double *par, int nbc, int sym, const 
   if (c0 == 0.0 || al == 0.0 || b2 == 0.0) return CABLE_BRAID_BC_DOMAIN;
   const double eps13 = sym ? par[BP_EPS13] : 0.0;
 
-  fb[BK_X0] = u0[BR_X1];
-  fb[BK_Y0] = u0[BR_Y1];
-  fb[BK_Z0] = u0[BR_Z1];
-  fb[BK_Q00] = u0[BR_Q0];
-  fb[BK_Q10] = u0[BR_Q1] + sqrt_half;
-  fb[BK_Q20] = u0[BR_Q2] + sqrt_half;
-  fb[BK_Q30] = u0[BR_Q3];
-  fb[BK_XI10] = u0[BR_XI1];
-  fb[BK_XI20] = u0[BR_XI2];
-  fb[BK_T10] = u0[BR_T1] - par[BP_T];
-  fb[BK_T20] = u0[BR_T2] + par[BP_T];
-  fb[BK_SIG0] = u0[BR_SIGMA];
+  braid_bc_origin_residual(par, u0, fb);
   fb[BK_XL] = u1[BR_X1] - u0[BR_X1] - delta + eps13;
   fb[BK_YL] = u1[BR_Y1];
   fb[BK_ZL] = u1[BR_Z1];
@@ -52,24 +40,10 @@ static int knot_conditions(int ndim, const double *par, int nbc, int sym, const 
   fb[BK_PHASE] = u0[BR_W2] - par[BP_W2FIX];
   if (sym) fb[BK_F20] = u0[BR_F2];
 
-  for (int i = 0; i < nbc; i++)
-    if (!isfinite(fb[i])) return CABLE_BRAID_BC_DOMAIN;
+  if (!braid_bc_all_finite(nbc, fb)) return CABLE_BRAID_BC_DOMAIN;
   if (ijac < 1) return 0;
 
-  for (int j = 0; j < 2 * BR_NDIM; j++)
-    for (int i = 0; i < nbc; i++) dbc[i + nbc * j] = 0.0;
-  DU0(BK_X0, BR_X1) = 1.0;
-  DU0(BK_Y0, BR_Y1) = 1.0;
-  DU0(BK_Z0, BR_Z1) = 1.0;
-  DU0(BK_Q00, BR_Q0) = 1.0;
-  DU0(BK_Q10, BR_Q1) = 1.0;
-  DU0(BK_Q20, BR_Q2) = 1.0;
-  DU0(BK_Q30, BR_Q3) = 1.0;
-  DU0(BK_XI10, BR_XI1) = 1.0;
-  DU0(BK_XI20, BR_XI2) = 1.0;
-  DU0(BK_T10, BR_T1) = 1.0;
-  DU0(BK_T20, BR_T2) = 1.0;
-  DU0(BK_SIG0, BR_SIGMA) = 1.0;
+  braid_bc_origin_du0(nbc, dbc);
   DU1(BK_XL, BR_X1) = 1.0;
   DU0(BK_XL, BR_X1) = -1.0;
   DU1(BK_YL, BR_Y1) = 1.0;
@@ -95,10 +69,7 @@ static int knot_conditions(int ndim, const double *par, int nbc, int sym, const 
   if (sym) DU0(BK_F20, BR_F2) = 1.0;
   if (ijac < 2) return 0;
 
-  for (int k = 0; k < BP_NPAR; k++)
-    for (int i = 0; i < nbc; i++) DP(i, k) = 0.0;
-  DP(BK_T10, BP_T) = -1.0;
-  DP(BK_T20, BP_T) = 1.0;
+  braid_bc_origin_dpar(nbc, dbc);
   DP(BK_XL, BP_DELTA) = -1.0;
   if (sym) DP(BK_XL, BP_EPS13) = 1.0;
   DP(BK_OMEGA2, BP_B1) = -u0[BR_W2] / b2;

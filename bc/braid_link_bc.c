@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Link boundary conditions (12.3.24)-(12.3.44); (12.3.42) is omega2(0) = w2fix.
  * Derivation and the meaning of Phi: doc/braid-boundary-conditions.md. */
 #include <math.h>
@@ -9,7 +10,6 @@
 #define DP(i, k) dbc[(i) + nbc * (2 * BR_NDIM + (k))]
 
 static const double quarter_pi = 0.78539816339744830962;
-static const double sqrt_half = 0.70710678118654752440;
 
 int braid_link_bcnd(int ndim, const double *par, const int *icp, int nbc, const double *u0,
                     const double *u1, int ijac, double *fb, double *dbc, void *params)
@@ -21,18 +21,7 @@ int braid_link_bcnd(int ndim, const double *par, const int *icp, int nbc, const 
   const double cphi = cos(phi), sphi = sin(phi);
   const double arg = 0.5 * phi - quarter_pi;
 
-  fb[BL_X0] = u0[BR_X1];
-  fb[BL_Y0] = u0[BR_Y1];
-  fb[BL_Z0] = u0[BR_Z1];
-  fb[BL_Q00] = u0[BR_Q0];
-  fb[BL_Q10] = u0[BR_Q1] + sqrt_half;
-  fb[BL_Q20] = u0[BR_Q2] + sqrt_half;
-  fb[BL_Q30] = u0[BR_Q3];
-  fb[BL_XI10] = u0[BR_XI1];
-  fb[BL_XI20] = u0[BR_XI2];
-  fb[BL_T10] = u0[BR_T1] - par[BP_T];
-  fb[BL_T20] = u0[BR_T2] + par[BP_T];
-  fb[BL_SIG0] = u0[BR_SIGMA];
+  braid_bc_origin_residual(par, u0, fb);
   fb[BL_XL] = u1[BR_X1] - u0[BR_X1];
   fb[BL_YL] = u1[BR_Y1] - u0[BR_Y1];
   fb[BL_ZL] = u1[BR_Z1] - u0[BR_Z1];
@@ -43,24 +32,10 @@ int braid_link_bcnd(int ndim, const double *par, const int *icp, int nbc, const 
   fb[BL_OMEGA2] = u1[BR_W2] - u0[BR_W2] * cphi - u0[BR_W3] * sphi;
   fb[BL_SIGL] = u1[BR_SIGMA] - par[BP_L2];
 
-  for (int i = 0; i < nbc; i++)
-    if (!isfinite(fb[i])) return CABLE_BRAID_BC_DOMAIN;
+  if (!braid_bc_all_finite(nbc, fb)) return CABLE_BRAID_BC_DOMAIN;
   if (ijac < 1) return 0;
 
-  for (int j = 0; j < 2 * BR_NDIM; j++)
-    for (int i = 0; i < nbc; i++) dbc[i + nbc * j] = 0.0;
-  DU0(BL_X0, BR_X1) = 1.0;
-  DU0(BL_Y0, BR_Y1) = 1.0;
-  DU0(BL_Z0, BR_Z1) = 1.0;
-  DU0(BL_Q00, BR_Q0) = 1.0;
-  DU0(BL_Q10, BR_Q1) = 1.0;
-  DU0(BL_Q20, BR_Q2) = 1.0;
-  DU0(BL_Q30, BR_Q3) = 1.0;
-  DU0(BL_XI10, BR_XI1) = 1.0;
-  DU0(BL_XI20, BR_XI2) = 1.0;
-  DU0(BL_T10, BR_T1) = 1.0;
-  DU0(BL_T20, BR_T2) = 1.0;
-  DU0(BL_SIG0, BR_SIGMA) = 1.0;
+  braid_bc_origin_du0(nbc, dbc);
   DU1(BL_XL, BR_X1) = 1.0;
   DU0(BL_XL, BR_X1) = -1.0;
   DU1(BL_YL, BR_Y1) = 1.0;
@@ -80,10 +55,7 @@ int braid_link_bcnd(int ndim, const double *par, const int *icp, int nbc, const 
   DU1(BL_SIGL, BR_SIGMA) = 1.0;
   if (ijac < 2) return 0;
 
-  for (int k = 0; k < BP_NPAR; k++)
-    for (int i = 0; i < nbc; i++) DP(i, k) = 0.0;
-  DP(BL_T10, BP_T) = -1.0;
-  DP(BL_T20, BP_T) = 1.0;
+  braid_bc_origin_dpar(nbc, dbc);
   DP(BL_PHI, BP_PHI) = 0.5 * cos(arg);
   DP(BL_W2FIX, BP_W2FIX) = -1.0;
   DP(BL_OMEGA2, BP_PHI) = u0[BR_W2] * sphi - u0[BR_W3] * cphi;

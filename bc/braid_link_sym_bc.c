@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* The S0-symmetric link conditions: braid_link's (12.3.24)-(12.3.44) plus
  * F2(0) = 0, with the unfolding parameter eps13 added to the closure condition
  * (12.3.36) x1(L) = x1(0), the one that is redundant within the symmetric class.

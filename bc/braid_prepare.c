@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* The braid problems prepare themselves: the start from STPNT is built from
  * the problem's own constants keys (TORUS, HAND) and PAR={...}
  * (include/cable/cable_problem.h, prepare/release). */

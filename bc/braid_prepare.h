@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* prepare/release of the braid problems (include/cable/cable_problem.h): a
  * run from STPNT gets an instance that owns its starting geometry, built from
  * the problem's keys TORUS=p ((p,2) torus knot for odd p, link for even

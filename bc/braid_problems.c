@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* The braid problem templates, their PVLS, and instances with a start. */
 #include <math.h>
 #include <string.h>

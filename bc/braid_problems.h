@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* The built-in braid problems (AUTO's FUNC/BCND/STPNT/PVLS for the closed
  * standard 2-braid, paper Sect. 12.3):
  *   braid_knot      NDIM 21, NBC 24, NINT 0; free T, L, L2, eps21

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Starting solutions: parameters, the exact two-ring solution, and the STPNT
  * callback that dispatches to the rings or the torus construction. */
 #include <string.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Starting solutions (AUTO's STPNT) for the closed standard 2-braid, and a
  * check of how well a guess satisfies the ODEs and the boundary conditions.
  * The constructions are explained in doc/braid-boundary-conditions.md.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Private to bc/: the pieces of the starting-solution code shared between
  * braid_start.c (parameters, rings, dispatch) and braid_start_torus.c. */
 #ifndef CABLE_BRAID_START_IMPL_H

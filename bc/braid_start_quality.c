@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* How well a STPNT guess satisfies the ODEs (by differences along t) and the
  * boundary conditions. */
 #include <math.h>

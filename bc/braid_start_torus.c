@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* The equidistant torus braid: a circular contact curve of radius rc with the
  * chord director d1 turning uniformly about it, psi = nu phi (phi the angle
  * along the circle, nu = hand p/2), strands at -/+ Delta/2 d1.  Construction
@@ -17,6 +18,7 @@
 #include "braid_model.h"
 #include "braid_start_impl.h"
 #include "cable/cable_status.h"
+#include "cable_vec3.h"
 
 #define NF BRAID_START_NFOURIER
 #define NH (BRAID_START_NFOURIER / 2)
@@ -163,13 +165,6 @@ static void construction_r1(const braid_start_params *sp, double phi, const doub
   x[2] = -0.5 * sp->delta * r[5];
 }
 
-static void cross(const double *a, const double *b, double *c)
-{
-  c[0] = a[1] * b[2] - a[2] * b[1];
-  c[1] = a[2] * b[0] - a[0] * b[2];
-  c[2] = a[0] * b[1] - a[1] * b[0];
-}
-
 /* The three constitutive residuals at phi as rows of the linear least-squares
  * problem in x = (F (3), M(0) (3), h), all in the construction frame:
  *   M2 - dg/domega2,  M1 - k (dg/deta - d/ds dg/deta'),  M3 + tan(eta) M1 - dg/domega3,
@@ -190,7 +185,7 @@ static int fit_rows(const braid_start_params *sp, const braid_material *m, doubl
   for (int j = 0; j < 3; j++) {
     double e[3] = {0, 0, 0}, dxe[3];
     e[j] = 1.0;
-    cross(d, e, dxe);
+    cable_vec3_cross(d, e, dxe);
     for (int i = 0; i < 3; i++) {
       cm[i][j] = r[j + 3 * i];
       cf[i][j] = -(r[0 + 3 * i] * dxe[0] + r[1 + 3 * i] * dxe[1] + r[2 + 3 * i] * dxe[2]);
@@ -384,7 +379,7 @@ int braid_start_torus_state(const braid_start_params *sp, double t, double *u)
   braid_quat_matrix(qc, r);
   construction_r1(sp, phi, r, x);
   for (int i = 0; i < 3; i++) d[i] = x[i] - sp->r0[i];
-  cross(d, sp->fin, dxf);
+  cable_vec3_cross(d, sp->fin, dxf);
   for (int i = 0; i < 3; i++) min[i] = sp->m0[i] - dxf[i];
   for (int i = 0; i < 3; i++) {
     const double *col = r + 3 * i;

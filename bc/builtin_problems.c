@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* The built-in problems by name: the engine's test problems and the braid
  * templates (include/cable/cable_problem.h, cable_problem_builtin). */
 #include <stddef.h>

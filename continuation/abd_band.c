@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Banded LU with partial pivoting for the reduced system of abd_solver.c:
  * the algorithm, pivot choice and storage of LAPACK's unblocked dgbtf2
  * (doc/linear-algebra.md, "3. Banded LU of the mesh-point system"); what

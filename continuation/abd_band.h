@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Banded LU with partial pivoting of the reduced system of abd_solver
  * (abd_band.c): LAPACK's dgbtf2 algorithm, pivot choice and band storage,
  * working only on the nonzeros of the sparse band and keeping the factors

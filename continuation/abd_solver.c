@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Structured LU of the collocation Newton matrix: local condensation with
  * partial pivoting, then banded LU with partial pivoting of the augmented
  * mesh-point system.  doc/linear-algebra.md explains the augmented system,

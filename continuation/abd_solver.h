@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Structured direct solver for the collocation Newton matrix of colloc_jac.h.
  *
  * Algorithm (doc/linear-algebra.md has the full account, costs and the

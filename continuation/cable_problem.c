@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* The generic part of the problem interface: preparing a problem for a run
  * and finding its constants keys (include/cable/cable_problem.h). */
 #include "cable/cable_problem.h"

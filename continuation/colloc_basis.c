@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 #include "colloc_basis.h"
 
 #include <gsl/gsl_integration.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Collocation basis on one mesh interval, in the local variable x in [0,1]:
  * the Lagrange polynomials l_k through the NCOL+1 equally spaced nodes
  * x_k = k/NCOL (where AUTO stores the solution) and the NCOL Gauss-Legendre

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Block storage of the collocation Newton matrix: allocation and the few
  * products the solvers and the tests need.  The layout is fixed by
  * colloc_jac.h; this file only walks it. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Block storage of the Newton matrix of the collocation system, as assembled by
  * the collocation code and consumed by the structured solver (abd_solver) or,
  * after conversion, by KLU.

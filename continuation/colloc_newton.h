@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Newton's method for the collocation system, run by SUNDIALS KINSOL.
  * The residual and the Newton matrix come from colloc_system; the linear
  * systems are solved by the structured condensation solver (a custom

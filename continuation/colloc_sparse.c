@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* CSC copy of the collocation Newton matrix (see colloc_sparse.h).  One walk
  * over the unknowns writes the pattern and the values together, so the
  * pattern of alloc and of fill cannot disagree. */

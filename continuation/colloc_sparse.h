@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* The reference path LINSOLVER=klu: the Newton matrix of colloc_jac.h as a
  * SUNDIALS compressed-sparse-column matrix for SUNLinSol_KLU.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* The discretised boundary-value problem: orthogonal collocation of
  *   u' = f(u, p), b(u(0), u(1), p) = 0, int_0^1 q(u, p) dt = 0,
  * plus one closing equation (the principal parameter fixed, or AUTO's

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Counts, indices and strings of a cable_constants struct (constants_check.h). */
 #include "constants_check.h"
 

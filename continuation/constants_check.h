@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* The consistency of a cable_constants struct filled by hand (the API
  * contract, doc/api.md): every count within its array, every parameter index
  * within the parameter slots, every string terminated.  The constants parser

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Branch-point continuation (cable_bpcont.h): the extended problem whose
  * solutions with b = 0 are branch points of a problem's branches, its
  * adjoint rows by central differences.  doc/fold-continuation.md. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Work counters: printed (one line on stderr) when CABLE_COUNTS is set in the
  * environment, for scripts/bench and doc/benchmarks.md.  Counts, unlike
  * times, do not depend on the machine's load. */

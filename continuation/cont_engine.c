@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Continuation driver: start, predictor-corrector steps, step control, limits. */
 #include <limits.h>
 #include <math.h>

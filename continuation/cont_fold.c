@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Fold continuation: the extended problem of cable_fold.h, a cable_problem
  * whose callbacks evaluate the original problem and its derivative in the
  * direction of the null vector.  doc/fold-continuation.md derives it. */

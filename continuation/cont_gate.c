@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* The gate of the pencil test: run it only when the test functions say a
  * branch point may lie inside the step (doc/engine.md, "The pencil test's
  * gate").

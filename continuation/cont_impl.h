@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Private: the continuation engine's state.  Only continuation/cont_*.c
  * include this header; users see the opaque cable_cont. */
 #ifndef CABLE_CONT_IMPL_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* A branch that returns to its start: a closed loop (an isola, or a mode
  * branch that comes back to the branch point it left).  AUTO follows it
  * round again until NMX; cable ends it there with CABLE_END_LOOP and a

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Mesh adaptation, re-interpolation, restarts and the error estimate.
  *
  * Error monitor (AUTO's idea): on interval j the collocation polynomial's

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* How many branch points lie inside one step: the pencil test.
  *
  * The determinant's sign only gives the parity of the number of branch

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Starting a branch and the driver loop that hands points to a sink. */
 #include <math.h>
 #include <stdio.h>

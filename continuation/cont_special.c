@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Special points: folds (LP), branch points (BP), user zeros (UZ).
  * Test functions (each changes sign at its special point):
  *   LP: the principal parameter's component of the unit tangent;

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Branch switching at a branch point (ISW = -1).
  * At a simple BP the extended matrix [F_x; theta xdot_old^T] is singular with
  * a one-dimensional kernel: the vector phi with F_x phi = 0 that is

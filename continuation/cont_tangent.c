@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Tangents, determinant signs and singular values of the extended Newton matrix. */
 #include <math.h>
 #include <string.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* The mesh of a stored solution, resampled to another number of intervals. */
 #ifndef CABLE_SOLUTION_MESH_H
 #define CABLE_SOLUTION_MESH_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* The Morse index of a solution of a variational BVP (doc/stability.md, S2):
  * the second variation Q[v] = int v'.P v' + 2 v'.C v + v.R v dt on continuous
  * piecewise polynomials, restricted to the null space of the linearised

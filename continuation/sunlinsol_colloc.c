@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* SUNLinearSolver ops over abd_solver (see sunlinsol_colloc.h). */
 #include "sunlinsol_colloc.h"
 

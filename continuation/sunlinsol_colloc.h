@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* A SUNDIALS SUNLinearSolver (SUNLINEARSOLVER_DIRECT) that factors a
  * SUNMat_Colloc matrix with the structured solver abd_solver.h.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* SUNMatrix ops over colloc_jac (see sunmatrix_colloc.h). */
 #include "sunmatrix_colloc.h"
 

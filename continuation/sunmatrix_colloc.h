@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* A SUNDIALS SUNMatrix (SUNMATRIX_CUSTOM) around the block storage of
  * colloc_jac.h, so that KINSOL can hand the Newton matrix to the structured
  * linear solver (sunlinsol_colloc.h).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* The engine's built-in test problems (selected with e=NAME like the braid):
  *   bratu     u'' + lambda e^u = 0,  u(0) = u(1) = 0;       PAR(1) = lambda
  *   bratu_int the same with the integral condition int_0^1 u dt - mu = 0 (NINT = 1):

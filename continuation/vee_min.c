@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Safeguarded successive parabolic interpolation (vee_min.h).
  *
  * Why not GSL's Brent minimiser, which cont_special.c used before: Brent

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Minimisation of a function that is a parabola near its minimum: the square
  * of a singular value that crosses zero (sigma^2 = c^2 (s - s0)^2 + d^2 to
  * first order, exact for d = 0 and a fixed singular vector), by safeguarded

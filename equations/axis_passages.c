@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 #include "axis_passages.h"
 
 #include <math.h>
@@ -6,6 +7,7 @@
 #include "braid_geometry.h"
 #include "braid_state.h"
 #include "cable/cable_status.h"
+#include "cable_vec3.h"
 #include "tube_distance.h"
 
 /* Bisection steps on a root bracket in [0, 1]: 2^-60 is below the rounding
@@ -17,28 +19,11 @@
  * the coplanar position is as far apart as the curve's parts (Delta). */
 #define PASSAGE_HIT_TOL 1e-6
 
-static void sub3(const double *a, const double *b, double *out)
-{
-  for (int i = 0; i < 3; i++) out[i] = a[i] - b[i];
-}
-
-static double dot3(const double *a, const double *b)
-{
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
-static void cross3(const double *a, const double *b, double *out)
-{
-  out[0] = a[1] * b[2] - a[2] * b[1];
-  out[1] = a[2] * b[0] - a[0] * b[2];
-  out[2] = a[0] * b[1] - a[1] * b[0];
-}
-
 static double triple(const double *a, const double *b, const double *c)
 {
   double x[3];
-  cross3(b, c, x);
-  return dot3(a, x);
+  cable_vec3_cross(b, c, x);
+  return cable_vec3_dot(a, x);
 }
 
 static double cubic(const double *c, double t)
@@ -63,15 +48,15 @@ static int segments_meet(const double *a, const double *b, int n, int i, int j, 
   double p0[3], p1[3], q0[3], q1[3], e[3], w[3], d[3];
   at(a, b, i, tau, p0), at(a, b, (i + 1) % n, tau, p1);
   at(a, b, j, tau, q0), at(a, b, (j + 1) % n, tau, q1);
-  sub3(p1, p0, e), sub3(q1, q0, w), sub3(q0, p0, d);
-  double ee = dot3(e, e), ew = dot3(e, w), ww = dot3(w, w), ed = dot3(e, d), wd = dot3(w, d);
+  cable_vec3_sub(p1, p0, e), cable_vec3_sub(q1, q0, w), cable_vec3_sub(q0, p0, d);
+  double ee = cable_vec3_dot(e, e), ew = cable_vec3_dot(e, w), ww = cable_vec3_dot(w, w), ed = cable_vec3_dot(e, d), wd = cable_vec3_dot(w, d);
   double den = ee * ww - ew * ew;
   if (!(den > 1e-14 * ee * ww)) return 0; /* parallel: a tangency, not a passage */
   double s = (ww * ed - ew * wd) / den, t = (ew * ed - ee * wd) / den;
   if (s < 0 || s >= 1 || t < 0 || t >= 1) return 0;
   double gap[3];
   for (int k = 0; k < 3; k++) gap[k] = p0[k] + s * e[k] - q0[k] - t * w[k];
-  return sqrt(dot3(gap, gap)) <= PASSAGE_HIT_TOL * sqrt(fmax(ee, ww));
+  return sqrt(cable_vec3_dot(gap, gap)) <= PASSAGE_HIT_TOL * sqrt(fmax(ee, ww));
 }
 
 /* The coplanarity cubic det[p1 - p0, q0 - p0, q1 - p0](tau), coefficients
@@ -189,12 +174,12 @@ static int axis_samples(const cable_solution *s, int n, braid_curves *bc)
   double len = 0, gap = 0;
   for (int k = 0; k < n; k++) {
     double d[3];
-    sub3(bc->c + 3 * (k + 1), bc->c + 3 * k, d);
-    len += sqrt(dot3(d, d));
+    cable_vec3_sub(bc->c + 3 * (k + 1), bc->c + 3 * k, d);
+    len += sqrt(cable_vec3_dot(d, d));
   }
   double d[3];
-  sub3(bc->c + 3 * n, bc->c, d);
-  gap = sqrt(dot3(d, d));
+  cable_vec3_sub(bc->c + 3 * n, bc->c, d);
+  gap = sqrt(cable_vec3_dot(d, d));
   return gap <= TUBE_CLOSURE_TOL * len ? CABLE_SUCCESS : CABLE_ERR_INPUT;
 }
 

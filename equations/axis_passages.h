@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Self-passages of a closed curve between two of its shapes: where distant
  * parts of the braid axis pass through each other between two solutions of
  * a branch (a crossing change of the companion knot, which changes Lk of the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 #include "cable/cable_analysis.h"
 #include "braid_geometry.h"
 #include "tube_distance.h"

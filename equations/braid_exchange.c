@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Strand exchange of a braid state (braid_exchange.h; doc/links.md). */
 #include <math.h>
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Strand exchange: the same braid described with s along strand 2.
  *
  * A braid state u(s) (braid_state.h) seen from the second strand: its first

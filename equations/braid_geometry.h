@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Geometry of a braid solution (paper Sect. 12.2.3, 12.3): the two strand
  * centrelines, the contact curve (braid axis) and the first braid frame,
  * sampled from the piecewise-polynomial collocation solution.

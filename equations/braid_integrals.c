@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* First integrals: guarded wrapper around the generated expressions. */
 #include "braid_integrals.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* First integrals of the braid ODEs (doc/braid-equations.md, D8): they are
  * constant along every solution of braid_rhs, so their drift measures the
  * accuracy of a computed solution. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Guarded wrappers around the generated braid right-hand side
  * (braid_rhs_gen.c): material and state checks, AUTO's FUNC, auxiliary
  * quantities and the partials of g. */

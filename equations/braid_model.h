@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* The standard elastic 2-braid ODEs (paper Sect. 12.2): 13 equilibrium
  * equations in (F, M, eta, omega2, omega3, xi1, T1, xi2, T2) plus the 7
  * kinematic equations for (q, r1) and sigma' -- 21 first-order ODEs in the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Contact pressure: u'' = J(u) u' from the exact Jacobian, then the
  * generated strand balance expressions. */
 #include "braid_pressure.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Contact pressure between the two strands of a braid (doc/braid-equations.md,
  * D9): frictionless hard contact, so the only force between the strands is
  * a line load along the chord d1; each strand is a Kirchhoff rod in its own

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* State and parameter layout of the standard elastic 2-braid (paper Sect. 12.2-12.3).
  * The independent variable is t = s/L in [0,1]; every ODE right-hand side is
  * d/dt = L d/ds.  Indices are 0-based (u[BR_F1] is AUTO's U(1)). */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Piecewise-polynomial view of a stored collocation solution.
  *
  * A cable_solution keeps values at ntst*ncol+1 points; on mesh interval j,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Knot type of a closed space polygon from a generic planar projection.
  *
  * Method (doc/geometry.md has the details and the conventions):

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 #include "ribbon.h"
 
 #include <math.h>
@@ -6,15 +7,7 @@
 #include <gsl/gsl_math.h>
 
 #include "cable/cable_status.h"
-
-static double dot3(const double *a, const double *b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-
-static void cross3(const double *a, const double *b, double *c)
-{
-  c[0] = a[1] * b[2] - a[2] * b[1];
-  c[1] = a[2] * b[0] - a[0] * b[2];
-  c[2] = a[0] * b[1] - a[1] * b[0];
-}
+#include "cable_vec3.h"
 
 static int all_finite(int n, const double *x)
 {
@@ -75,12 +68,12 @@ int ribbon_twist_samples(int n, double period, const double *dr, const double *d
   double sum = 0.0;
   for (int i = 0; i < n; i++) {
     const double *a = dr + 3 * i, *b = d + 3 * i, *c = dd + 3 * i;
-    double na = sqrt(dot3(a, a)), nb2 = dot3(b, b);
+    double na = sqrt(cable_vec3_dot(a, a)), nb2 = cable_vec3_dot(b, b);
     if (!(na > 0) || !(nb2 > 0)) return CABLE_ERR_INPUT;
-    if (fabs(dot3(a, b)) > RIBBON_PERP_TOL * na * sqrt(nb2)) return CABLE_ERR_INPUT;
+    if (fabs(cable_vec3_dot(a, b)) > RIBBON_PERP_TOL * na * sqrt(nb2)) return CABLE_ERR_INPUT;
     double x[3];
-    cross3(b, c, x);
-    sum += dot3(a, x) / (na * nb2);
+    cable_vec3_cross(b, c, x);
+    sum += cable_vec3_dot(a, x) / (na * nb2);
   }
   *tw = sum * (period / n) / (2.0 * M_PI);
   return CABLE_SUCCESS;

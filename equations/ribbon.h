@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Ribbon quantities: twist Tw, writhe Wr and linking number Lk = Tw + Wr
  * (Calugareanu-White-Fuller) of a closed curve r(u) with a unit normal field
  * d(u), and the braid ribbon of paper Sect. 12.3 (contact curve with director

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* The braid ribbon of a solution (ribbon.h; doc/geometry.md, 2): Tw by
  * Gauss-Legendre on the collocation mesh, Wr by the Gauss double integral on
  * samples of the contact curve placed by its arclength, densest where
@@ -12,16 +13,8 @@
 #include "braid_geometry.h"
 #include "braid_state.h"
 #include "cable/cable_status.h"
+#include "cable_vec3.h"
 #include "ribbon.h"
-
-static double dot3(const double *a, const double *b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-
-static void cross3(const double *a, const double *b, double *c)
-{
-  c[0] = a[1] * b[2] - a[2] * b[1];
-  c[1] = a[2] * b[0] - a[0] * b[2];
-  c[2] = a[0] * b[1] - a[1] * b[0];
-}
 
 /* Twist rate T . (p x p_t) / |p|^2 of the normal d1 projected on the normal
  * plane of the contact curve, p = d1 - (d1.T) T.  Projection makes the rate
@@ -29,18 +22,18 @@ static void cross3(const double *a, const double *b, double *c)
  * to the discretisation error. */
 static double braid_twist_rate(const braid_point *q)
 {
-  double sp = sqrt(dot3(q->dc, q->dc));
+  double sp = sqrt(cable_vec3_dot(q->dc, q->dc));
   double T[3], Tt[3], p[3], pt[3], x[3];
   for (int i = 0; i < 3; i++) T[i] = q->dc[i] / sp;
-  double tc = dot3(T, q->d2c);
+  double tc = cable_vec3_dot(T, q->d2c);
   for (int i = 0; i < 3; i++) Tt[i] = (q->d2c[i] - tc * T[i]) / sp;
-  double dT = dot3(q->d1, T), dtT = dot3(q->dd1, T), dTt = dot3(q->d1, Tt);
+  double dT = cable_vec3_dot(q->d1, T), dtT = cable_vec3_dot(q->dd1, T), dTt = cable_vec3_dot(q->d1, Tt);
   for (int i = 0; i < 3; i++) {
     p[i] = q->d1[i] - dT * T[i];
     pt[i] = q->dd1[i] - (dtT + dTt) * T[i] - dT * Tt[i];
   }
-  cross3(p, pt, x);
-  return dot3(T, x) / dot3(p, p);
+  cable_vec3_cross(p, pt, x);
+  return cable_vec3_dot(T, x) / cable_vec3_dot(p, p);
 }
 
 /* ---- the contact curve by arclength ------------------------------------- */
@@ -62,7 +55,7 @@ static double contact_speed(axis *x, double t)
   braid_point q;
   int e = braid_point_eval(x->sol, t, &x->hint, &q);
   if (e != CABLE_SUCCESS && x->rc == CABLE_SUCCESS) x->rc = e;
-  return sqrt(dot3(q.dc, q.dc));
+  return sqrt(cable_vec3_dot(q.dc, q.dc));
 }
 
 /* \int_a^b |c_t| dt by Gauss-Legendre (a, b inside one mesh interval). */
@@ -205,7 +198,7 @@ static int sample_axis(axis *x, const density *D, int n, double *r, double *dr)
     double t;
     int rc = axis_at(x, a, &t, &q);
     if (rc != CABLE_SUCCESS) return rc;
-    double sp = sqrt(dot3(q.dc, q.dc)), w = Z / rho(D, a);
+    double sp = sqrt(cable_vec3_dot(q.dc, q.dc)), w = Z / rho(D, a);
     for (int k = 0; k < 3; k++) {
       r[3 * i + k] = q.c[k];
       dr[3 * i + k] = q.dc[k] / sp * w;
@@ -214,18 +207,12 @@ static int sample_axis(axis *x, const density *D, int n, double *r, double *dr)
   return CABLE_SUCCESS;
 }
 
-static double dist2(const double *p, const double *q)
-{
-  double x = p[0] - q[0], y = p[1] - q[1], z = p[2] - q[2];
-  return x * x + y * y + z * z;
-}
-
 /* Unit tangent T and curvature vector K = dT/da of the contact curve at q. */
 static void tangent_curvature(const braid_point *q, double T[3], double K[3])
 {
-  double sp2 = dot3(q->dc, q->dc), sp = sqrt(sp2);
+  double sp2 = cable_vec3_dot(q->dc, q->dc), sp = sqrt(sp2);
   for (int i = 0; i < 3; i++) T[i] = q->dc[i] / sp;
-  double tc = dot3(T, q->d2c);
+  double tc = cable_vec3_dot(T, q->d2c);
   for (int i = 0; i < 3; i++) K[i] = (q->d2c[i] - tc * T[i]) / sp2;
 }
 
@@ -246,16 +233,16 @@ static int refine_pair(axis *x, double a, double b, double span, near_pair *out)
     tangent_curvature(&p, Ta, Ka);
     tangent_curvature(&q, Tb, Kb);
     double D[3] = {p.c[0] - q.c[0], p.c[1] - q.c[1], p.c[2] - q.c[2]};
-    double g1 = dot3(D, Ta), g2 = -dot3(D, Tb);
-    double h11 = 1.0 + dot3(D, Ka), h22 = 1.0 - dot3(D, Kb), h12 = -dot3(Ta, Tb);
+    double g1 = cable_vec3_dot(D, Ta), g2 = -cable_vec3_dot(D, Tb);
+    double h11 = 1.0 + cable_vec3_dot(D, Ka), h22 = 1.0 - cable_vec3_dot(D, Kb), h12 = -cable_vec3_dot(Ta, Tb);
     double det = h11 * h22 - h12 * h12;
     if (!(det > 0) || !(h11 > 0)) return 0;              /* not a minimum (parallel parts) */
     double da = -(h22 * g1 - h12 * g2) / det, db = -(h11 * g2 - h12 * g1) / det;
     if (fabs(da) + fabs(db) <= NEAR_NEWTON_TOL * x->A) {
       double c[3];
-      cross3(Ta, Tb, c);
-      out->d = sqrt(dot3(D, D));
-      out->s = sqrt(dot3(c, c));
+      cable_vec3_cross(Ta, Tb, c);
+      out->d = sqrt(cable_vec3_dot(D, D));
+      out->s = sqrt(cable_vec3_dot(c, c));
       out->a = a - x->A * floor(a / x->A);
       out->b = b - x->A * floor(b / x->A);
       return 1;
@@ -281,14 +268,14 @@ static int find_near(axis *x, int n, const double *r, const double *T, double wi
   for (int i = 0; i < n; i++) {
     for (int k = i + w; k <= i + n - w && k < n; k++) {
       if (k <= i) continue;
-      double d2 = dist2(r + 3 * i, r + 3 * k);
+      double d2 = cable_vec3_dist2(r + 3 * i, r + 3 * k);
       if (d2 >= dnear * dnear) continue;
       int ismin = 1;
       for (int di = -1; di <= 1 && ismin; di++)
         for (int dk = -1; dk <= 1 && ismin; dk++) {
           if (di == 0 && dk == 0) continue;
           int ii = (i + di + n) % n, kk = (k + dk + n) % n;
-          double e2 = dist2(r + 3 * ii, r + 3 * kk);
+          double e2 = cable_vec3_dist2(r + 3 * ii, r + 3 * kk);
           /* ties go to the first pair in scan order */
           if (e2 < d2 || (e2 == d2 && (di < 0 || (di == 0 && dk < 0)))) ismin = 0;
         }
@@ -296,11 +283,11 @@ static int find_near(axis *x, int n, const double *r, const double *T, double wi
       near_pair p;
       if (!refine_pair(x, i * h, k * h, 4.0 * h, &p) || p.d > sqrt(d2)) {
         double c[3];
-        cross3(T + 3 * i, T + 3 * k, c);
+        cable_vec3_cross(T + 3 * i, T + 3 * k, c);
         p.a = i * h;
         p.b = k * h;
         p.d = sqrt(d2);
-        p.s = sqrt(dot3(c, c));
+        p.s = sqrt(cable_vec3_dot(c, c));
       }
       if (x->rc != CABLE_SUCCESS) return x->rc;
       /* a floor on d: the density needs d > 0, and below round-off relative
@@ -365,10 +352,10 @@ int braid_ribbon_compute(const cable_solution *sol, int nsamples, braid_ribbon *
   braid_point p0, p1;
   if ((rc = braid_point_eval(sol, sol->t[0], NULL, &p0)) != CABLE_SUCCESS) goto done;
   if ((rc = braid_point_eval(sol, sol->t[npts - 1], NULL, &p1)) != CABLE_SUCCESS) goto done;
-  out->closure_gap = sqrt(dist2(p1.c, p0.c));
+  out->closure_gap = sqrt(cable_vec3_dist2(p1.c, p0.c));
   if (!isfinite(A) || !isfinite(out->tw)) { rc = CABLE_ERR_NONFINITE; goto done; }
   if (!(A > 0) || out->closure_gap > BRAID_CLOSURE_TOL * A) { rc = CABLE_ERR_INPUT; goto done; }
-  double dd = dot3(p0.d1, p1.d1);
+  double dd = cable_vec3_dot(p0.d1, p1.d1);
   out->closure = dd < -0.5 ? -1 : (dd > 0.5 ? 1 : 0);
 
   /* Writhe on samples placed by the arclength of the contact curve: the curve

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Self-distance of tubes: the closest approach of non-adjacent parts of one or
  * more polylines (strand centrelines, braid axis), with the parts closer than
  * a given distance (overlapping tubes) marked.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Tube meshes for other programs: VTK XML PolyData (.vtp, ParaView) and
  * Stanford PLY (.ply, Blender, MeshLab), both ASCII.  The input is the
  * renderer's (render_tube); the mesh is the one the renderer draws

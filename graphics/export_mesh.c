@@ -1,9 +1,11 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Input checks and meshes for the exporters. */
 #include "export_mesh.h"
 
 #include <ctype.h>
 #include <math.h>
 #include <stddef.h>
+#include <stdlib.h>
 
 #include "cable/cable_status.h"
 
@@ -64,4 +66,34 @@ int export_meshes_build(const render_tube *tubes, int ntube, int nsides, tube_me
     }
   }
   return CABLE_SUCCESS;
+}
+
+int export_begin(const render_tube *tubes, int ntube, const render_profile *curves, int ncurve,
+                 const export_options *opt, const char *path, export_out *out)
+{
+  int nsides;
+  int st = export_check(tubes, ntube, curves, ncurve, opt, path, &nsides);
+  if (st != CABLE_SUCCESS) return st;
+  tube_mesh **m = malloc(sizeof *m * (size_t)ntube);
+  if (m == NULL) return CABLE_ERR_ALLOC;
+  if ((st = export_meshes_build(tubes, ntube, nsides, m)) != CABLE_SUCCESS) {
+    free(m);
+    return st;
+  }
+  cable_atomic_file *gf = cable_atomic_open(path, 0, NULL);
+  if (gf == NULL) {
+    export_meshes_free(m, ntube);
+    free(m);
+    return CABLE_ERR_IO;
+  }
+  *out = (export_out){m, ntube, gf, cable_atomic_stream(gf)};
+  return CABLE_SUCCESS;
+}
+
+int export_end(export_out *out)
+{
+  export_meshes_free(out->m, out->ntube);
+  free(out->m);
+  out->m = NULL;
+  return cable_atomic_commit(out->file, NULL);
 }

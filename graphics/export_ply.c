@@ -1,11 +1,10 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Stanford PLY (ASCII) writer. */
 #include <math.h>
 #include <stdio.h>
-#include <stdlib.h>
 
 #include "cable/cable_status.h"
 #include "export_mesh.h"
-#include "graphics_file.h"
 
 /* PLY floats are single precision: 9 significant digits round-trip them. */
 #define EXPORT_PLY_FMT "%.9g"
@@ -19,22 +18,11 @@ static int ply_byte(double v)
 int export_ply_write(const render_tube *tubes, int ntube, const export_options *opt,
                      const char *path)
 {
-  int nsides;
-  int st = export_check(tubes, ntube, NULL, 0, opt, path, &nsides);
+  export_out out;
+  int st = export_begin(tubes, ntube, NULL, 0, opt, path, &out);
   if (st != CABLE_SUCCESS) return st;
-  tube_mesh **m = malloc(sizeof *m * (size_t)ntube);
-  if (m == NULL) return CABLE_ERR_ALLOC;
-  if ((st = export_meshes_build(tubes, ntube, nsides, m)) != CABLE_SUCCESS) {
-    free(m);
-    return st;
-  }
-  cable_atomic_file *gf = cable_atomic_open(path, 0, NULL);
-  if (gf == NULL) {
-    export_meshes_free(m, ntube);
-    free(m);
-    return CABLE_ERR_IO;
-  }
-  FILE *f = cable_atomic_stream(gf);
+  tube_mesh **m = out.m;
+  FILE *f = out.f;
   long nv = 0, nf = 0;
   for (int k = 0; k < ntube; k++) nv += m[k]->nv, nf += m[k]->ntri;
   fprintf(f, "ply\nformat ascii 1.0\ncomment cable: tubes around the strands' centrelines\n");
@@ -62,7 +50,5 @@ int export_ply_write(const render_tube *tubes, int ntube, const export_options *
     }
     base += m[k]->nv;
   }
-  export_meshes_free(m, ntube);
-  free(m);
-  return cable_atomic_commit(gf, NULL);
+  return export_end(&out);
 }

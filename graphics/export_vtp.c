@@ -1,10 +1,9 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* VTK XML PolyData (ASCII) writer. */
 #include <stdio.h>
-#include <stdlib.h>
 
 #include "cable/cable_status.h"
 #include "export_mesh.h"
-#include "graphics_file.h"
 
 /* Round-trip precision for doubles; normals need only float precision. */
 #define EXPORT_VTP_FMT "%.17g"
@@ -126,22 +125,11 @@ static void vtp_polys(const vtp_ctx *c)
 int export_vtp_write(const render_tube *tubes, int ntube, const render_profile *curves,
                      int ncurve, const export_options *opt, const char *path)
 {
-  int nsides;
-  int st = export_check(tubes, ntube, curves, ncurve, opt, path, &nsides);
+  export_out out;
+  int st = export_begin(tubes, ntube, curves, ncurve, opt, path, &out);
   if (st != CABLE_SUCCESS) return st;
-  tube_mesh **m = malloc(sizeof *m * (size_t)ntube);
-  if (m == NULL) return CABLE_ERR_ALLOC;
-  if ((st = export_meshes_build(tubes, ntube, nsides, m)) != CABLE_SUCCESS) {
-    free(m);
-    return st;
-  }
-  cable_atomic_file *gf = cable_atomic_open(path, 0, NULL);
-  if (gf == NULL) {
-    export_meshes_free(m, ntube);
-    free(m);
-    return CABLE_ERR_IO;
-  }
-  vtp_ctx c = {cable_atomic_stream(gf), tubes, ntube, curves, ncurve, m};
+  tube_mesh **m = out.m;
+  vtp_ctx c = {out.f, tubes, ntube, curves, ncurve, m};
   long npoints = 0, nsurf = 0, npolys = 0;
   for (int k = 0; k < ntube; k++) {
     nsurf += m[k]->nv;
@@ -162,7 +150,5 @@ int export_vtp_write(const render_tube *tubes, int ntube, const render_profile *
   vtp_lines(&c, nsurf);
   vtp_polys(&c);
   fprintf(f, "    </Piece>\n  </PolyData>\n</VTKFile>\n");
-  export_meshes_free(m, ntube);
-  free(m);
-  return cable_atomic_commit(gf, NULL);
+  return export_end(&out);
 }

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Text placement for cairo. */
 #include "graphics_text.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Text placement helpers for cairo (toy font API, sans-serif). */
 #ifndef CABLE_GRAPHICS_TEXT_H
 #define CABLE_GRAPHICS_TEXT_H

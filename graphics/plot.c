@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Bifurcation diagrams with cairo: layout, axes, branches, markers, legend. */
 #include "plot.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Bifurcation diagrams (like Fig. 12.2 of the paper): branches as polylines
  * in distinct colours, branch points as filled black circles, labelled
  * points as open circles with their label, nice axes and a legend; PNG or

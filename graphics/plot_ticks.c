@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Nice axis ticks (1, 2, 5 x 10^k). */
 #include "plot_ticks.h"
 

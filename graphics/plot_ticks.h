@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* "Nice" axis ticks: steps of 1, 2 or 5 times a power of ten, axis limits
  * widened to whole steps (Heckbert, "Nice numbers for graph labels",
  * Graphics Gems, 1990). */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* render_tubes_png: validation, meshing, rasterisation, profiles, colour
  * bar, PNG output. */
 #include "render.h"
@@ -109,8 +110,8 @@ static int render_tube_draw(render_zbuf *zb, const render_ctx *c, const render_t
       const double *n = m->normal + 3 * i;
       render_camera_project(cam, m->xyz + 3 * i, &x, &y, &z);
       v[i].x = x * ss, v[i].y = y * ss, v[i].z = z;
-      v[i].n[0] = gvec_dot(n, cam->right), v[i].n[1] = gvec_dot(n, cam->up);
-      v[i].n[2] = gvec_dot(n, cam->view);
+      v[i].n[0] = cable_vec3_dot(n, cam->right), v[i].n[1] = cable_vec3_dot(n, cam->up);
+      v[i].n[2] = cable_vec3_dot(n, cam->view);
       if (mapped) render_colormap_eval(c->map, (m->scalar[i] - c->lo) / (c->hi - c->lo), v[i].rgb);
       else memcpy(v[i].rgb, t->rgb, sizeof v[i].rgb);
     }

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Shaded 3-D pictures of tubes around space curves (the strands of a cable
  * knot or link, Figs. 12.3-12.9 of the paper), with the contact-pressure
  * profile drawn along the contact curve.  A software z-buffer (2 x 2

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* The renderer's view: default direction from the point cloud's shape, and
  * a fit of the drawn tubes to the picture. */
 #include <math.h>
@@ -53,7 +54,7 @@ static int render_default_view(const render_tube *tubes, int ntube, double view[
     }
     if (view[big] > 0)
       for (int a = 0; a < 3; a++) view[a] = -view[a];
-    st = gvec_normalize(view) > 0 ? CABLE_SUCCESS : CABLE_ERR_INPUT;
+    st = cable_vec3_normalize(view) > 0 ? CABLE_SUCCESS : CABLE_ERR_INPUT;
   }
   gsl_eigen_symmv_free(w);
   gsl_matrix_free(evec);
@@ -66,22 +67,22 @@ static int render_basis(const render_tube *tubes, int ntube, const cable_render_
 {
   double *v = cam->view, *u = cam->up;
   for (int a = 0; a < 3; a++) v[a] = opt ? opt->view_dir[a] : 0.0;
-  if (!isfinite(gvec_norm(v))) return CABLE_ERR_INPUT;
-  if (gvec_normalize(v) == 0) {
+  if (!isfinite(cable_vec3_norm(v))) return CABLE_ERR_INPUT;
+  if (cable_vec3_normalize(v) == 0) {
     int st = render_default_view(tubes, ntube, v);
     if (st != CABLE_SUCCESS) return st;
   }
   for (int a = 0; a < 3; a++) u[a] = opt ? opt->up[a] : 0.0;
-  if (!isfinite(gvec_norm(u))) return CABLE_ERR_INPUT;
-  gvec_axpy(u, -gvec_dot(u, v), v, u);
-  if (gvec_norm(u) <= RENDER_UP_MIN_SINE * (opt ? gvec_norm(opt->up) : 0.0) ||
-      gvec_normalize(u) == 0) {
+  if (!isfinite(cable_vec3_norm(u))) return CABLE_ERR_INPUT;
+  cable_vec3_axpy(u, -cable_vec3_dot(u, v), v, u);
+  if (cable_vec3_norm(u) <= RENDER_UP_MIN_SINE * (opt ? cable_vec3_norm(opt->up) : 0.0) ||
+      cable_vec3_normalize(u) == 0) {
     double z = fabs(v[2]) < RENDER_UP_Z_LIMIT ? 1.0 : 0.0;
     u[0] = 0, u[1] = 1.0 - z, u[2] = z;
-    gvec_axpy(u, -gvec_dot(u, v), v, u);
-    gvec_normalize(u);
+    cable_vec3_axpy(u, -cable_vec3_dot(u, v), v, u);
+    cable_vec3_normalize(u);
   }
-  gvec_cross(v, u, cam->right);
+  cable_vec3_cross(v, u, cam->right);
   return CABLE_SUCCESS;
 }
 
@@ -111,7 +112,7 @@ int render_camera_fit(const render_tube *tubes, int ntube, const cable_render_op
   for (int k = 0; k < ntube; k++)
     for (int i = 0; i < tubes[k].n; i++) {
       const double *p = tubes[k].xyz + 3 * i;
-      double x = gvec_dot(p, cam->right), y = gvec_dot(p, cam->up);
+      double x = cable_vec3_dot(p, cam->right), y = cable_vec3_dot(p, cam->up);
       lo[0] = fmin(lo[0], x), hi[0] = fmax(hi[0], x);
       lo[1] = fmin(lo[1], y), hi[1] = fmax(hi[1], y);
     }
@@ -140,8 +141,8 @@ void render_camera_project(const render_camera *cam, const double p[3], double *
                            double *depth)
 {
   double d[3];
-  gvec_sub(p, cam->centre, d);
-  *x = cam->cx + cam->scale * gvec_dot(d, cam->right);
-  *y = cam->cy - cam->scale * gvec_dot(d, cam->up);
-  *depth = gvec_dot(d, cam->view);
+  cable_vec3_sub(p, cam->centre, d);
+  *x = cam->cx + cam->scale * cable_vec3_dot(d, cam->right);
+  *y = cam->cy - cam->scale * cable_vec3_dot(d, cam->up);
+  *depth = cable_vec3_dot(d, cam->view);
 }

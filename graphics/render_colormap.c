@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Colour maps and colour bar. */
 #include "render_colormap.h"
 

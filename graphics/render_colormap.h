@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Colour maps for scalars on tubes, and the colour bar beside the picture. */
 #ifndef CABLE_RENDER_COLORMAP_H
 #define CABLE_RENDER_COLORMAP_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Software z-buffer: triangles with per-sample normal interpolation, and
  * wide segments. */
 #include "render_raster.h"
@@ -61,13 +62,13 @@ void render_zbuf_clear(render_zbuf *zb, const double rgb[3])
 void render_shade(const double n[3], const double rgb[3], double out[3])
 {
   double l[3] = {render_light[0], render_light[1], render_light[2]};
-  gvec_normalize(l);
+  cable_vec3_normalize(l);
   double nn[3] = {n[0], n[1], n[2]};
   if (nn[2] > 0) nn[0] = -nn[0], nn[1] = -nn[1], nn[2] = -nn[2];
   double h[3] = {l[0], l[1], l[2] - 1.0}; /* half vector: light + eye (0, 0, -1) */
-  gvec_normalize(h);
-  double diff = fmax(0.0, gvec_dot(nn, l));
-  double spec = RENDER_SPECULAR * pow(fmax(0.0, gvec_dot(nn, h)), RENDER_SHININESS);
+  cable_vec3_normalize(h);
+  double diff = fmax(0.0, cable_vec3_dot(nn, l));
+  double spec = RENDER_SPECULAR * pow(fmax(0.0, cable_vec3_dot(nn, h)), RENDER_SHININESS);
   for (int a = 0; a < 3; a++) out[a] = rgb[a] * (RENDER_AMBIENT + RENDER_DIFFUSE * diff) + spec;
 }
 
@@ -104,7 +105,7 @@ void render_zbuf_triangle(render_zbuf *zb, const render_vertex *a, const render_
         n[k] = wa * a->n[k] + wb * b->n[k] + wc * c->n[k];
         base[k] = wa * a->rgb[k] + wb * b->rgb[k] + wc * c->rgb[k];
       }
-      gvec_normalize(n);
+      cable_vec3_normalize(n);
       render_shade(n, base, col);
       render_put(zb, idx, z, col);
     }

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* The renderer's z-buffer: shaded triangles and flat-coloured wide line
  * segments, depth-tested per sample. */
 #ifndef CABLE_RENDER_RASTER_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Rotation-minimising frames and tube meshes. */
 #include "tube_mesh.h"
 
@@ -18,19 +19,19 @@ int tube_points_count(int n, const double *xyz, int closed)
   if (!closed) return n;
   double total = 0, gap[3];
   for (int i = 0; i + 1 < n; i++) {
-    gvec_sub(xyz + 3 * (i + 1), xyz + 3 * i, gap);
-    total += gvec_norm(gap);
+    cable_vec3_sub(xyz + 3 * (i + 1), xyz + 3 * i, gap);
+    total += cable_vec3_norm(gap);
   }
-  gvec_sub(xyz + 3 * (n - 1), xyz, gap);
-  if (n > 2 && gvec_norm(gap) <= TUBE_DUPLICATE_REL * total / (n - 1)) return n - 1;
+  cable_vec3_sub(xyz + 3 * (n - 1), xyz, gap);
+  if (n > 2 && cable_vec3_norm(gap) <= TUBE_DUPLICATE_REL * total / (n - 1)) return n - 1;
   return n;
 }
 
 /* Unit chord from point a to point b; 0 when they coincide. */
 static double tube_chord(const double *xyz, int a, int b, double u[3])
 {
-  gvec_sub(xyz + 3 * b, xyz + 3 * a, u);
-  return gvec_normalize(u);
+  cable_vec3_sub(xyz + 3 * b, xyz + 3 * a, u);
+  return cable_vec3_normalize(u);
 }
 
 static int tube_tangents(int n, const double *xyz, int closed, double *t)
@@ -42,13 +43,13 @@ static int tube_tangents(int n, const double *xyz, int closed, double *t)
     int next = i < n - 1 ? i + 1 : closed ? 0 : -1;
     if (prev >= 0) tube_chord(xyz, prev, i, a);
     if (next >= 0) tube_chord(xyz, i, next, b);
-    gvec_axpy(a, 1.0, b, ti);
-    if (gvec_normalize(ti) == 0) {
+    cable_vec3_axpy(a, 1.0, b, ti);
+    if (cable_vec3_normalize(ti) == 0) {
       /* a cusp (a = -b) or a repeated point: fall back on one chord */
       ti[0] = b[0], ti[1] = b[1], ti[2] = b[2];
-      if (gvec_normalize(ti) == 0) {
+      if (cable_vec3_normalize(ti) == 0) {
         ti[0] = a[0], ti[1] = a[1], ti[2] = a[2];
-        if (gvec_normalize(ti) == 0) continue;
+        if (cable_vec3_normalize(ti) == 0) continue;
       }
     }
     if (have < 0) have = i;
@@ -57,7 +58,7 @@ static int tube_tangents(int n, const double *xyz, int closed, double *t)
   /* points with no usable chord inherit the nearest earlier tangent */
   for (int i = 0; i < n; i++) {
     double *ti = t + 3 * i;
-    if (gvec_norm(ti) > 0.5) continue; /* unit, i.e. set above */
+    if (cable_vec3_norm(ti) > 0.5) continue; /* unit, i.e. set above */
     const double *src = t + 3 * (i == 0 ? have : i - 1);
     ti[0] = src[0], ti[1] = src[1], ti[2] = src[2];
   }
@@ -68,14 +69,14 @@ static int tube_tangents(int n, const double *xyz, int closed, double *t)
  * is (nearly) parallel to t. */
 static void tube_perp(const double t[3], double r[3])
 {
-  gvec_axpy(r, -gvec_dot(r, t), t, r);
-  if (gvec_normalize(r) > TUBE_PERP_MIN) return;
+  cable_vec3_axpy(r, -cable_vec3_dot(r, t), t, r);
+  if (cable_vec3_normalize(r) > TUBE_PERP_MIN) return;
   /* the axis least aligned with t */
   int k = fabs(t[0]) <= fabs(t[1]) && fabs(t[0]) <= fabs(t[2]) ? 0 : fabs(t[1]) <= fabs(t[2]) ? 1 : 2;
   r[0] = r[1] = r[2] = 0;
   r[k] = 1;
-  gvec_axpy(r, -gvec_dot(r, t), t, r);
-  gvec_normalize(r);
+  cable_vec3_axpy(r, -cable_vec3_dot(r, t), t, r);
+  cable_vec3_normalize(r);
 }
 
 /* Double reflection: transports normal r (at point a, tangent ta) to point b
@@ -84,15 +85,15 @@ static void tube_transport(const double *xa, const double *xb, const double ta[3
                            const double tb[3], const double r[3], double out[3])
 {
   double v1[3], rl[3], tl[3], v2[3];
-  gvec_sub(xb, xa, v1);
-  double c1 = gvec_dot(v1, v1);
+  cable_vec3_sub(xb, xa, v1);
+  double c1 = cable_vec3_dot(v1, v1);
   out[0] = r[0], out[1] = r[1], out[2] = r[2];
   if (c1 > 0) {
-    gvec_axpy(r, -2.0 / c1 * gvec_dot(v1, r), v1, rl);
-    gvec_axpy(ta, -2.0 / c1 * gvec_dot(v1, ta), v1, tl);
-    gvec_sub(tb, tl, v2);
-    double c2 = gvec_dot(v2, v2);
-    if (c2 > 0) gvec_axpy(rl, -2.0 / c2 * gvec_dot(v2, rl), v2, out);
+    cable_vec3_axpy(r, -2.0 / c1 * cable_vec3_dot(v1, r), v1, rl);
+    cable_vec3_axpy(ta, -2.0 / c1 * cable_vec3_dot(v1, ta), v1, tl);
+    cable_vec3_sub(tb, tl, v2);
+    double c2 = cable_vec3_dot(v2, v2);
+    if (c2 > 0) cable_vec3_axpy(rl, -2.0 / c2 * cable_vec3_dot(v2, rl), v2, out);
     else out[0] = rl[0], out[1] = rl[1], out[2] = rl[2];
   }
   /* keep exact orthonormality against round-off drift over many steps */
@@ -118,25 +119,25 @@ int tube_frames_compute(int n, const double *xyz, int closed, double *t, double 
 
   double rend[3], c[3], gap[3];
   tube_transport(xyz + 3 * (n - 1), xyz, t + 3 * (n - 1), t, nrm + 3 * (n - 1), rend);
-  gvec_cross(nrm, rend, c);
-  double phi = atan2(gvec_dot(c, t), gvec_dot(nrm, rend));
+  cable_vec3_cross(nrm, rend, c);
+  double phi = atan2(cable_vec3_dot(c, t), cable_vec3_dot(nrm, rend));
   if (closure) *closure = phi;
   double total = 0;
   for (int i = 0; i + 1 < n; i++) {
-    gvec_sub(xyz + 3 * (i + 1), xyz + 3 * i, gap);
-    total += gvec_norm(gap);
+    cable_vec3_sub(xyz + 3 * (i + 1), xyz + 3 * i, gap);
+    total += cable_vec3_norm(gap);
   }
-  gvec_sub(xyz, xyz + 3 * (n - 1), gap);
-  total += gvec_norm(gap);
+  cable_vec3_sub(xyz, xyz + 3 * (n - 1), gap);
+  total += cable_vec3_norm(gap);
   if (total <= 0) return CABLE_ERR_INPUT;
   double s = 0;
   for (int i = 1; i < n; i++) {
-    gvec_sub(xyz + 3 * i, xyz + 3 * (i - 1), gap);
-    s += gvec_norm(gap);
+    cable_vec3_sub(xyz + 3 * i, xyz + 3 * (i - 1), gap);
+    s += cable_vec3_norm(gap);
     /* rotate about t_i by -phi s / total: the frame then arrives back at
      * s = total rotated by exactly -phi, i.e. on the starting normal */
     double a = -phi * s / total, *r = nrm + 3 * i, tr[3];
-    gvec_cross(t + 3 * i, r, tr);
+    cable_vec3_cross(t + 3 * i, r, tr);
     double ca = cos(a), sa = sin(a);
     for (int k = 0; k < 3; k++) r[k] = ca * r[k] + sa * tr[k];
   }
@@ -191,7 +192,7 @@ void tube_mesh_free(tube_mesh *m)
 static void tube_set_vertex(tube_mesh *m, int v, const double c[3], double radius,
                             const double dir[3], const double nrm[3], double scalar)
 {
-  gvec_axpy(c, radius, dir, m->xyz + 3 * v);
+  cable_vec3_axpy(c, radius, dir, m->xyz + 3 * v);
   for (int k = 0; k < 3; k++) m->normal[3 * v + k] = nrm[k];
   m->scalar[v] = scalar;
 }
@@ -233,7 +234,7 @@ int tube_mesh_build(tube_mesh *m, const double *xyz, const double *scalar, doubl
   for (int i = 0; i < n; i++) {
     const double *t = m->t + 3 * i, *r = m->nrm + 3 * i;
     double b[3];
-    gvec_cross(t, r, b);
+    cable_vec3_cross(t, r, b);
     double sv = scalar ? scalar[i] : 0.0;
     for (int j = 0; j < ns; j++) {
       double th = 2.0 * GRAPHICS_PI * j / ns, dir[3];

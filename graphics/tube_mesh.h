@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Triangle meshes of tubes around space curves, built on rotation-minimising
  * frames (parallel transport by the double-reflection method of Wang,
  * Juettler, Zheng and Liu, ACM TOG 27, 2008).  For closed curves the twist

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # make bench, the atlas part: cable.atlas on Dask, 1 against 2 local workers and
 # the scheduler's overhead per task (scripts/bench_atlas.py).  Prints a Markdown
 # section on standard output (scripts/bench.sh puts it in doc/benchmarks.md);

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # make bench: cable against AUTO-07p on the flat (7,2) braid knot (issue 17), the
 # knot72 acceptance path and make demo; writes doc/benchmarks.md (never run by
 # make check).  Environment:

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """make bench, the atlas part (scripts/bench-atlas.sh): cable.atlas on a
 local Dask cluster of 1 and 2 workers, and the scheduler's overhead per task
 with many more tasks than cores.  Prints a Markdown section.

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 """CPU cost per step of two cable builds (and AUTO-07p) side by side: a partial
 measurement for one change, not `make bench`.
 

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 """make bench: cable against AUTO-07p on the flat (7,2) braid knot, in one run.
 
 Usage: /usr/bin/python3 scripts/bench_compare.py BUILD_DIR [REPEATS]

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # BENCH_FULL=1 make bench: the older studies (per-phase costs, work against precision,
 # the whole-path grid, the stress grid); writes doc/benchmarks-full.md (about 50 minutes).
 set -euo pipefail

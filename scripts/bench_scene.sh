@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Work against precision on the whole knot72 path to the paper's four points:
 # the flat branch, BP1-BP4, modes 1-4 to the UZ labels at the points (a)-(d),
 # with runs/knot72's constants files and NTST, NCOL replaced on both.  Prints a

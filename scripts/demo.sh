@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # make demo: the main job, the paper's (7,2) knot scene (Fig. 12.2 and the
 # cable knots (a)-(d)) on its defaults.
 set -euo pipefail

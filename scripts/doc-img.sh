@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # make doc-img: the README's pictures (doc/img) regenerated from the knot72
 # scene: replay it, copy its diagram and renders, write its `cable view`
 # page and a screenshot of that page (headless Chromium).

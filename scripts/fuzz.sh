@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Fuzz cable's input parsers (run scripts are Python: CPython parses them) with libFuzzer (clang-14), ASan and UBSan:
 #   constants  cable_constants_parse_string (+ parse_override)   auto_iface/files/constants_parse.c
 #   sfile      cable_sfile_read on a temporary file               auto_iface/files/aufile_read.c

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Derive the standard 2-braid ODEs (paper Sect. 12.2) with sympy, check the
 derivation, and write the C right-hand sides and exact Jacobians.
 

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The readings study of the link captions (doc/links.md, "Readings of the
 # captions"): the branches of Figs. 12.7-12.9 labelled at the captions' T and
 # at the T of the readings, F(Delta) at the captions' T from the thin limit to

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Tables of the link readings study (scripts/link_readings.sh; doc/links.md).
 
 Reads the s-files the study wrote and prints, per figure: the labelled points
@@ -5,30 +6,39 @@ of both halves of the branch (at the caption's T and the readings' T), F(Delta)
 at the caption's T, and the parameter readings.  The captions' T and F are the
 comparison targets (the paper's Figs. 12.7-12.9), never inputs of a run.
 Usage: /usr/bin/python3 scripts/link_readings_table.py SCRATCH_DIR
+(the s-files are read by cable's own loadbd).
 """
 import os
 import re
 import subprocess
 import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from sfile import read_sfile  # noqa: E402
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(ROOT, 'build', 'release', 'python'))
+import cable  # noqa: E402
 
 # PAR slots (equations/braid_state.h, 0-based)
 T, L2, DELTA, C1, C2, F, H, HAM, DMIN = 0, 2, 4, 9, 10, 15, 17, 19, 21
-UZ = -4
 CAPTIONS = {'fig127': (-11.46623, 364.061, 0.016016913268),
             'fig128': (-14.4933, 633.545, 0.006),
             'fig129': (-14.63829, 946.310, 0.002)}
 
 
-def labelled(path, types=(UZ,)):
-    if not os.path.exists(path):
+def labelled(path, types=('UZ',)):
+    """The solutions of s-file path of the given types, as {lab, par}."""
+    d, base = os.path.split(path)
+    if not os.path.exists(path) or not base.startswith('s.'):
         return []
-    return [s for s in read_sfile(path) if s['itp'] in types]
+    here = os.getcwd()
+    os.chdir(d or '.')
+    try:
+        result = cable.loadbd(base[2:])
+    finally:
+        os.chdir(here)
+    return [{'lab': s.LAB, 'par': s.PAR.toarray()} for s in result() if s.TY in types]
 
 
-CABLE = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), 'cable')
+CABLE = os.path.join(ROOT, 'cable')
 
 
 def dmin_of(d, sname, lab):

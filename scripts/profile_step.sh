@@ -1,4 +1,5 @@
 #!/bin/bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Where a continuation step's CPU time goes: perf profile of the flat (7,2)
 # branch at issue 17's settings, printed as the inclusive share of each phase.
 #

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Run every test program in BUILD/tests, from the repository root, and print one
 # summary line "N passed, M failed" (preceded by "K skipped" when checks were
 # not performed: SKIP lines, e.g. malloc counting under a sanitizer).  A test

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # make scenes: replay every scene in runs/ (each runs/NAME/NAME.auto), with the
 # time of each (wall clock, and the CPU time of the replay: on a shared machine
 # the wall time depends on the load) and of all of them together.

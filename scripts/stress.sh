@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Stress grid on the braid knot and link problems (issue 8): thin and thick
 # rods, |T| up to 50, NTST from 10 to 2000, perturbed starts, long branches.
 # Usage: scripts/stress.sh [BUILD_DIR]      (make stress; default build/release)

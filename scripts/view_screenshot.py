@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """A screenshot of a `cable view` page in headless Chromium (software WebGL):
     view_screenshot.py PAGE.html OUT.png [BRANCH]
 The page opens at its first UZ point, or at BRANCH's first UZ point when

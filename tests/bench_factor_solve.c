@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Benchmark (not a test; build/<mode>/tests/bench_factor_solve): one
  * structured factorisation of the flat (7,2) knot's Newton matrix at NTST 150,
  * NCOL 4 and the solve that follows it, plain (abd_solver_factor, then

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* The flat (7,2) braid knot of the benchmarks (issue 17's problem): the
  * torus start of runs/knot72 and the built-in braid_knot problem on it. */
 #ifndef CABLE_BENCH_KNOT72_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* What STAB=1 costs (doc/stability.md S2, S6): the time per continuation step
  * of the Euler column's trivial branch (elastica_int, ISP = 2) with STAB = 0
  * and 1, and the time of one index computation against the basis size N.

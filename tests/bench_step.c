@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Benchmark (make bench, not a test): cost of continuation steps and of the
  * linear algebra on the flat (7,2) braid knot, NDIM = 21, NCOL = 4.
  * Prints a Markdown table; every time is the median of REPEATS runs. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Benchmark (make bench, not a test): work against precision on the engine's
  * test problems, whose special points are known exactly:
  *   Bratu     u'' + lambda e^u = 0, u(0) = u(1) = 0: the fold at

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Timing helpers shared by the benchmarks (make bench): wall-clock seconds and
  * the median of repeated measurements. */
 #ifndef CABLE_BENCH_UTIL_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Benchmark (make bench, not a test): work against precision of the knot72
  * scene, reduced to the path to the paper's point (a):
  *   flat (7,2) branch (braid_knot, c.knot72) -> its first branch point BP1

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Test helper: run the engine on a problem and keep every point and every
  * labelled solution in memory. */
 #ifndef CABLE_TEST_ENGINE_UTIL_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Test harness: one PASS/FAIL/SKIP line per check, with the compared values
  * and the tolerance.  NaN and Inf never pass a numeric check.  A check that
  * cannot be performed in this build or environment (e.g. counting mallocs

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* abd_band.c, the banded LU of the reduced system: against LAPACK's dgbtrf
  * and dgbtrs on random sparse band matrices, the factorisation in pieces
  * (abd_band_factor_upto, used by abd_solver.c's pipeline) against the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Structured collocation solver (continuation/abd_solver.h) against dense
  * LAPACK on colloc_jac_to_dense, a long-double reference for a stiff
  * boundary-value problem, and dgesvd for the smallest singular values.

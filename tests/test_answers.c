@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Every answer is the one asked for (issue 25, item 2), the C side:
  *  - a negative PVLS status is fatal (doc/plugins.md), at a stored point and
  *    at a trial point (PVLS for a user zero on a PVLS parameter); before,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* libcable as another project sees it: `make install` into a temporary
  * prefix, then, with nothing but `pkg-config --cflags --libs cable`,
  *   - tests/api/api_run.c builds and runs (Bratu through its fold, files

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* b./s./d. files in AUTO-07p's layout: write a synthetic branch (u_i(t) =
  * sin((i+1)t), NDIM 3, NTST 5, NCOL 4) and an appended second branch (NDIM 8,
  * no direction data), read them back with cable's readers and with an

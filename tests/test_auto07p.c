@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* AUTO-07p itself as the reference: the folders of tests/data/autoeq (an
  * equation file, its constants and a script that uses only run and sv) run
  * unchanged through Debian's auto-07p and through `cable replay`, and the

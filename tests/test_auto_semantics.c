@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* AUTO-07p's run semantics (issue 15, item 3), each confirmed by running
  * auto-07p 0.9.2 on the same problem (doc/engine.md, "AUTO's run semantics"):
  *   1. the stored direction: the step is DS times it, so a restart with DS < 0

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* The axis-passage counter (equations/axis_passages.h) on closed-form curves
  * whose self-passages are known: a lifted figure eight, a lifted trefoil
  * projection, rigid motions and near misses.  The knot72 scene's acceptance

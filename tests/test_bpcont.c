@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Branch-point continuation (continuation/cable_bpcont.h) against a closed
  * form: the elastica theta'' + P L^2 sin theta = 0, theta'(0) = theta'(1) = 0
  * (u1 = theta, u2 = theta'; PAR(1) = P, PAR(2) = L) has the straight rod

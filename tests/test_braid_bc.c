@@ -1,12 +1,13 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Braid boundary conditions (bc/braid_bc.h): every row against the paper's
  * printed formula, analytic Jacobians against central differences, the
  * geometric meaning of the end-frame conditions, and the error paths. */
 #include <math.h>
-#include <stdint.h>
 #include <string.h>
 
 #include "braid_bc.h"
 #include "braid_problems.h"
+#include "braid_random.h"
 #include "harness.h"
 
 #define NPARAM BP_NPAR
@@ -30,34 +31,8 @@ static const double geom_tol = 8 * 2.220446049250313e-16;
 /* Number of random points per problem. */
 enum { NSAMPLES = 20 };
 
-static uint64_t rng_state = 0x9E3779B97F4A7C15u;
-static double urand(double a, double b)
-{
-  rng_state ^= rng_state >> 12;
-  rng_state ^= rng_state << 25;
-  rng_state ^= rng_state >> 27;
-  const uint64_t x = rng_state * 2685821657736338717u;
-  return a + (b - a) * (double)(x >> 11) * (1.0 / 9007199254740992.0);
-}
-
-/* A random point inside the conditions' domain: |eta| < 1.2 (cos eta > 0.36),
- * Delta |omega3| < 0.5. */
-static void random_point(double *u0, double *u1, double *par)
-{
-  for (int i = 0; i < BR_NDIM; i++) {
-    u0[i] = urand(-1.5, 1.5);
-    u1[i] = urand(-1.5, 1.5);
-  }
-  u0[BR_ETA] = urand(-1.2, 1.2);
-  u1[BR_ETA] = urand(-1.2, 1.2);
-  for (int k = 0; k < NPARAM; k++) par[k] = urand(0.5, 2.0);
-  par[BP_T] = urand(-3, 3);
-  par[BP_DELTA] = urand(0.01, 0.3);
-  par[BP_PHI] = urand(-8, 8);
-  par[BP_W2FIX] = urand(-1, 1);
-  par[BP_EPS21] = urand(-0.1, 0.1);
-  par[BP_EPS13] = urand(-0.1, 0.1);
-}
+/* the tests' random numbers (tests/braid_random.h) */
+static test_rng rng = {0x9E3779B97F4A7C15u};
 
 /* The printed conditions, written independently, "lhs - rhs". */
 static void knot_formulas(int sym, const double *u0, const double *u1, const double *p, double *e)
@@ -110,7 +85,7 @@ static void check_formulas(const bc_case *c)
   int st_all = 0;
   for (int n = 0; n < NSAMPLES; n++) {
     double u0[BR_NDIM], u1[BR_NDIM], par[NPARAM], fb[MAXBC], e[MAXBC];
-    random_point(u0, u1, par);
+    braid_random_bc_point(&rng, 1, u0, u1, par);
     st_all |= c->fn(BR_NDIM, par, NULL, c->nbc, u0, u1, 0, fb, NULL, NULL);
     if (c->kind == 2) link_formulas(u0, u1, par, e);
     else knot_formulas(c->kind == 1, u0, u1, par, e);
@@ -130,7 +105,7 @@ static void check_jacobian(const bc_case *c)
   int st_all = 0;
   for (int n = 0; n < NSAMPLES; n++) {
     double u0[BR_NDIM], u1[BR_NDIM], par[NPARAM], fb[MAXBC], fp[MAXBC], fm[MAXBC];
-    random_point(u0, u1, par);
+    braid_random_bc_point(&rng, 1, u0, u1, par);
     st_all |= c->fn(BR_NDIM, par, NULL, c->nbc, u0, u1, 2, fb, dbc, NULL);
     for (int j = 0; j < NCOL; j++) {
       double *x = j < BR_NDIM ? &u0[j] : j < 2 * BR_NDIM ? &u1[j - BR_NDIM] : &par[j - 2 * BR_NDIM];
@@ -158,7 +133,7 @@ static void check_jacobian(const bc_case *c)
 
   /* ijac = 1 leaves the parameter columns alone; ijac = 0 accepts dbc = NULL. */
   double u0[BR_NDIM], u1[BR_NDIM], par[NPARAM], fb[MAXBC], fb0[MAXBC];
-  random_point(u0, u1, par);
+  braid_random_bc_point(&rng, 1, u0, u1, par);
   for (int k = 0; k < MAXBC * NCOL; k++) dbc[k] = 12345.0;
   c->fn(BR_NDIM, par, NULL, c->nbc, u0, u1, 1, fb, dbc, NULL);
   int untouched = 1;
@@ -176,7 +151,7 @@ static void check_errors(const bc_case *c)
 {
   double u0[BR_NDIM], u1[BR_NDIM], par[NPARAM], fb[MAXBC];
   char what[128];
-  random_point(u0, u1, par);
+  braid_random_bc_point(&rng, 1, u0, u1, par);
   snprintf(what, sizeof what, "%s: ndim != 21 is fatal", c->name);
   test_int(what, c->fn(20, par, NULL, c->nbc, u0, u1, 0, fb, NULL, NULL), CABLE_BRAID_BC_SIZE);
   snprintf(what, sizeof what, "%s: wrong nbc is fatal", c->name);
@@ -186,12 +161,12 @@ static void check_errors(const bc_case *c)
   snprintf(what, sizeof what, "%s: a NaN state is recoverable", c->name);
   test_int(what, c->fn(BR_NDIM, par, NULL, c->nbc, u0, u1, 0, fb, NULL, NULL), CABLE_BRAID_BC_DOMAIN);
   if (c->kind == 2) return;
-  random_point(u0, u1, par);
+  braid_random_bc_point(&rng, 1, u0, u1, par);
   par[BP_DELTA] = 0.25; /* exact: 1 - 0.25 * 4 = 0 */
   u1[BR_W3] = 4.0;
   snprintf(what, sizeof what, "%s: 1 - Delta omega3(L) = 0 is recoverable", c->name);
   test_int(what, c->fn(BR_NDIM, par, NULL, c->nbc, u0, u1, 0, fb, NULL, NULL), CABLE_BRAID_BC_DOMAIN);
-  random_point(u0, u1, par);
+  braid_random_bc_point(&rng, 1, u0, u1, par);
   par[BP_B2] = 0.0;
   snprintf(what, sizeof what, "%s: B2 = 0 is recoverable", c->name);
   test_int(what, c->fn(BR_NDIM, par, NULL, c->nbc, u0, u1, 0, fb, NULL, NULL), CABLE_BRAID_BC_DOMAIN);
@@ -230,8 +205,8 @@ static void check_knot_geometry(void)
   double worst = 0.0, worst_t = 0.0, dcheck = 0.0;
   for (int n = 0; n < NSAMPLES; n++) {
     double u0[BR_NDIM], u1[BR_NDIM], par[NPARAM], fb[BK_NBC], qx[4], qz[4], q[4], t1[3], d1[3];
-    random_point(u0, u1, par);
-    const double eta = urand(-1.2, 1.2), sign = n % 2 ? 1.0 : -1.0;
+    braid_random_bc_point(&rng, 1, u0, u1, par);
+    const double eta = test_rng_uniform(&rng, -1.2, 1.2), sign = n % 2 ? 1.0 : -1.0;
     u0[BR_ETA] = u1[BR_ETA] = eta;
     qaxis(0, eta, qx);
     qaxis(2, pi / 2, qz);
@@ -249,7 +224,7 @@ static void check_knot_geometry(void)
   test_le("knot: that frame has d1(L) = -e_x", dcheck, geom_tol);
 
   double u0[BR_NDIM], u1[BR_NDIM], par[NPARAM], fb[BK_NBC], t1[3], d1[3];
-  random_point(u0, u1, par);
+  braid_random_bc_point(&rng, 1, u0, u1, par);
   const double q0[4] = {0, -sqrt_half, -sqrt_half, 0};
   for (int i = 0; i < 4; i++) u0[BR_Q0 + i] = q0[i];
   u0[BR_X1] = u0[BR_Y1] = u0[BR_Z1] = 0;
@@ -272,8 +247,8 @@ static void check_link_geometry(void)
   const double q0[4] = {0, -sqrt_half, -sqrt_half, 0};
   for (int n = 0; n < NSAMPLES; n++) {
     double u0[BR_NDIM], u1[BR_NDIM], par[NPARAM], fb[BL_NBC], qy[4], q[4], t1[3], d1[3];
-    random_point(u0, u1, par);
-    const double phi = urand(0.3, 2.8) * (n % 2 ? 1 : -1);
+    braid_random_bc_point(&rng, 1, u0, u1, par);
+    const double phi = test_rng_uniform(&rng, 0.3, 2.8) * (n % 2 ? 1 : -1);
     par[BP_PHI] = phi;
     qaxis(1, phi, qy);
     qmul(qy, q0, q);

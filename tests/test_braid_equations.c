@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* The braid right-hand side (equations/braid_model.h): exact Jacobians
  * against central differences, AUTO's FUNC against the plain right-hand side,
  * independent consistency checks of the generated equations, the mirror
@@ -11,6 +12,7 @@
 #include "braid_integrals.h"
 #include "braid_model.h"
 #include "braid_pressure.h"
+#include "braid_random.h"
 #include "harness.h"
 
 #define N BR_NDIM
@@ -40,36 +42,12 @@
 #define ALONG_F_STEP 1e-6
 #define ALONG_F_TOL 1e-7
 
-static double uniform(gsl_rng *r, double a, double b) { return a + (b - a) * gsl_rng_uniform(r); }
-
 /* A non-singular state with the magnitudes of the paper's braids, scaled to L ~ 1:
  * Delta 0.02-0.1, |eta| <= 0.5, curvatures and forces O(1-5). */
 static void random_state(gsl_rng *r, double *u, braid_material *m)
 {
-  m->Delta = uniform(r, 0.02, 0.1);
-  m->B1 = uniform(r, 0.5, 2.0);
-  m->B2 = uniform(r, 0.5, 2.0);
-  m->C1 = uniform(r, 0.4, 1.5);
-  m->C2 = uniform(r, 0.4, 1.5);
-  m->w01 = uniform(r, -1.0, 1.0);
-  m->w02 = uniform(r, -1.0, 1.0);
-  for (int i = BR_F1; i <= BR_F3; i++) u[i] = uniform(r, -5.0, 5.0);
-  for (int i = BR_M1; i <= BR_M3; i++) u[i] = uniform(r, -3.0, 3.0);
-  u[BR_ETA] = uniform(r, -0.5, 0.5);
-  u[BR_W2] = uniform(r, -2.0, 2.0);
-  u[BR_W3] = uniform(r, -3.0, 3.0);
-  u[BR_XI1] = uniform(r, -3.0, 3.0);
-  u[BR_T1] = uniform(r, -2.0, 2.0);
-  u[BR_XI2] = uniform(r, -3.0, 3.0);
-  u[BR_T2] = uniform(r, -2.0, 2.0);
-  double qn = 0.0;
-  for (int i = BR_Q0; i <= BR_Q3; i++) {
-    u[i] = uniform(r, -1.0, 1.0);
-    qn += u[i] * u[i];
-  }
-  for (int i = BR_Q0; i <= BR_Q3; i++) u[i] /= sqrt(qn);
-  for (int i = BR_X1; i <= BR_Z1; i++) u[i] = uniform(r, -1.0, 1.0);
-  u[BR_SIGMA] = uniform(r, 0.0, 1.0);
+  static const braid_random_ranges ranges = {5.0, 3.0, 0.5, 2.0, 3.0, 1};
+  braid_random_state(r, &ranges, u, m);
 }
 
 static void mat_to_array(const braid_material *m, double *p)

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* First variation of the action at a buckled link (doc/links.md, "First
  * variation").  The link conditions (12.3.24)-(12.3.44) must make a computed
  * link a critical point of

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Braid solutions built from exact ribbon geometry: sampling (braid_curves),
  * contact curvature, Tw/Wr/Lk of the braid ribbon and the topology summary.
  *

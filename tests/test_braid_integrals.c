@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* First integrals and contact pressure of the braid equations
  * (equations/braid_integrals.h, equations/braid_pressure.h):
  *  - random initial-value problems integrated with GSL's rk8pd conserve
@@ -19,6 +20,7 @@
 #include "braid_integrals.h"
 #include "braid_model.h"
 #include "braid_pressure.h"
+#include "braid_random.h"
 #include "harness.h"
 
 #define N BR_NDIM
@@ -37,37 +39,13 @@
  * their terms). */
 #define ROUND_TOL (1e3 * DBL_EPSILON)
 
-static double uniform(gsl_rng *r, double a, double b) { return a + (b - a) * gsl_rng_uniform(r); }
-
 /* Non-singular states with the magnitudes of the paper's braids scaled to
  * L = 1 (Delta 0.02-0.1, |eta| <= 0.4, curvatures, forces O(1)): for the
  * pointwise identities. */
 static void random_state(gsl_rng *r, double *u, braid_material *m)
 {
-  m->Delta = uniform(r, 0.02, 0.1);
-  m->B1 = uniform(r, 0.5, 2.0);
-  m->B2 = uniform(r, 0.5, 2.0);
-  m->C1 = uniform(r, 0.4, 1.5);
-  m->C2 = uniform(r, 0.4, 1.5);
-  m->w01 = uniform(r, -1.0, 1.0);
-  m->w02 = uniform(r, -1.0, 1.0);
-  for (int i = BR_F1; i <= BR_F3; i++) u[i] = uniform(r, -3.0, 3.0);
-  for (int i = BR_M1; i <= BR_M3; i++) u[i] = uniform(r, -2.0, 2.0);
-  u[BR_ETA] = uniform(r, -0.4, 0.4);
-  u[BR_W2] = uniform(r, -1.5, 1.5);
-  u[BR_W3] = uniform(r, -2.0, 2.0);
-  u[BR_XI1] = uniform(r, -3.0, 3.0);
-  u[BR_T1] = uniform(r, -2.0, 2.0);
-  u[BR_XI2] = uniform(r, -3.0, 3.0);
-  u[BR_T2] = uniform(r, -2.0, 2.0);
-  double qn = 0.0;
-  for (int i = BR_Q0; i <= BR_Q3; i++) {
-    u[i] = uniform(r, -1.0, 1.0);
-    qn += u[i] * u[i];
-  }
-  for (int i = BR_Q0; i <= BR_Q3; i++) u[i] /= sqrt(qn);
-  for (int i = BR_X1; i <= BR_Z1; i++) u[i] = 0.0;
-  u[BR_SIGMA] = 0.0;
+  static const braid_random_ranges ranges = {3.0, 2.0, 0.4, 1.5, 2.0, 0};
+  braid_random_state(r, &ranges, u, m);
 }
 
 /* ---- the two-ring solution ---------------------------------------------- */
@@ -126,27 +104,27 @@ static void ring_state(const ring_data *rd, const braid_material *m, double s, d
 static void random_ivp_state(gsl_rng *r, double *u, braid_material *m, double *Rout)
 {
   double du[N];
-  m->Delta = uniform(r, 0.05, 0.1);
-  m->B1 = uniform(r, 0.7, 1.5);
-  m->B2 = uniform(r, 0.7, 1.5);
-  m->C1 = uniform(r, 0.5, 1.2);
-  m->C2 = uniform(r, 0.5, 1.2);
-  m->w01 = uniform(r, -0.5, 0.5);
-  m->w02 = uniform(r, -0.5, 0.5);
-  const double R = uniform(r, 0.3, 0.6), k = 1.0 / R;
+  m->Delta = braid_random_uniform(r, 0.05, 0.1);
+  m->B1 = braid_random_uniform(r, 0.7, 1.5);
+  m->B2 = braid_random_uniform(r, 0.7, 1.5);
+  m->C1 = braid_random_uniform(r, 0.5, 1.2);
+  m->C2 = braid_random_uniform(r, 0.5, 1.2);
+  m->w01 = braid_random_uniform(r, -0.5, 0.5);
+  m->w02 = braid_random_uniform(r, -0.5, 0.5);
+  const double R = braid_random_uniform(r, 0.3, 0.6), k = 1.0 / R;
   if (Rout) *Rout = R;
-  ring_data rd = {R, uniform(r, -2.0, 2.0), uniform(r, -2.0, 2.0), 0.0, 0.0, 0.0};
-  rd.M3 = m->B1 / R + m->B2 / (R - m->Delta) + m->Delta * R * uniform(r, -2.0, 2.0);
+  ring_data rd = {R, braid_random_uniform(r, -2.0, 2.0), braid_random_uniform(r, -2.0, 2.0), 0.0, 0.0, 0.0};
+  rd.M3 = m->B1 / R + m->B2 / (R - m->Delta) + m->Delta * R * braid_random_uniform(r, -2.0, 2.0);
   ring_state(&rd, m, 0.0, u, du);
   braid_aux a;
   braid_aux_eval(u, m, &a);
   const double h0 = a.h;
   const double Fs = fabs(u[BR_F3]) + m->B1 * k * k, Ms = m->B1 * k + fabs(u[BR_M1]);
-  for (int i = BR_F1; i <= BR_F3; i++) u[i] += IVP_AMP * Fs * uniform(r, -1.0, 1.0);
-  for (int i = BR_M1; i <= BR_M2; i++) u[i] += IVP_AMP * Ms * uniform(r, -1.0, 1.0);
-  u[BR_ETA] = IVP_AMP * uniform(r, -1.0, 1.0);
-  u[BR_W2] += IVP_AMP * k * uniform(r, -1.0, 1.0);
-  u[BR_W3] += IVP_AMP * k * uniform(r, -1.0, 1.0);
+  for (int i = BR_F1; i <= BR_F3; i++) u[i] += IVP_AMP * Fs * braid_random_uniform(r, -1.0, 1.0);
+  for (int i = BR_M1; i <= BR_M2; i++) u[i] += IVP_AMP * Ms * braid_random_uniform(r, -1.0, 1.0);
+  u[BR_ETA] = IVP_AMP * braid_random_uniform(r, -1.0, 1.0);
+  u[BR_W2] += IVP_AMP * k * braid_random_uniform(r, -1.0, 1.0);
+  u[BR_W3] += IVP_AMP * k * braid_random_uniform(r, -1.0, 1.0);
   braid_aux_eval(u, m, &a);
   braid_gpartials gp;
   braid_g_partials(u[BR_ETA], a.etap, u[BR_W2], u[BR_W3], a.xi1p, a.xi2p, 0.0, m, &gp);
@@ -154,7 +132,7 @@ static void random_ivp_state(gsl_rng *r, double *u, braid_material *m, double *R
   u[BR_M3] = gp.dw3 - tan(u[BR_ETA]) * u[BR_M1] - h0 * m->Delta / cos(u[BR_ETA]);
   double qn = 0.0;
   for (int i = BR_Q0; i <= BR_Q3; i++) {
-    u[i] = uniform(r, -1.0, 1.0);
+    u[i] = braid_random_uniform(r, -1.0, 1.0);
     qn += u[i] * u[i];
   }
   for (int i = BR_Q0; i <= BR_Q3; i++) u[i] /= sqrt(qn);

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* braid_link_sym: the S0-symmetric link conditions (bc/braid_link_sym_bc.c,
  * doc/links.md).  Checks: every row against the printed formula, the analytic
  * Jacobian against central differences (states and all parameter slots), the
@@ -5,7 +6,6 @@
  * unfolding parameter eps13 vanishes, the solution is braid_link's, and the
  * bordered Newton matrix is regular. */
 #include <math.h>
-#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -17,6 +17,7 @@
 #include "colloc_jac.h"
 #include "colloc_newton.h"
 #include "colloc_system.h"
+#include "braid_random.h"
 #include "harness.h"
 
 static const double sqrt_half = 0.70710678118654752440;
@@ -53,29 +54,8 @@ static const double same_solution_tol = 1e-7;
  * the printed knot conditions, doc/braid-boundary-conditions.md). */
 static const double regular_ratio = 1e-3;
 
-static uint64_t rng_state = 0x2545F4914F6CDD1Du;
-static double urand(double a, double b)
-{
-  rng_state ^= rng_state >> 12;
-  rng_state ^= rng_state << 25;
-  rng_state ^= rng_state >> 27;
-  const uint64_t x = rng_state * 2685821657736338717u;
-  return a + (b - a) * (double)(x >> 11) * (1.0 / 9007199254740992.0);
-}
-
-static void random_point(double *u0, double *u1, double *par)
-{
-  for (int i = 0; i < BR_NDIM; i++) {
-    u0[i] = urand(-1.5, 1.5);
-    u1[i] = urand(-1.5, 1.5);
-  }
-  for (int k = 0; k < BP_NPAR; k++) par[k] = urand(0.5, 2.0);
-  par[BP_T] = urand(-3, 3);
-  par[BP_DELTA] = urand(0.01, 0.3);
-  par[BP_PHI] = urand(-8, 8);
-  par[BP_W2FIX] = urand(-1, 1);
-  par[BP_EPS13] = urand(-0.1, 0.1);
-}
+/* the tests' random numbers (tests/braid_random.h) */
+static test_rng rng = {0x2545F4914F6CDD1Du};
 
 /* (12.3.24)-(12.3.44) with eps13 in (12.3.36), then F2(0), written independently. */
 static void formulas(const double *u0, const double *u1, const double *p, double *e)
@@ -102,7 +82,7 @@ static void check_formulas(void)
   int st = 0;
   for (int n = 0; n < NSAMPLES; n++) {
     double u0[BR_NDIM], u1[BR_NDIM], par[BP_NPAR], fb[BL_SYM_NBC], e[BL_SYM_NBC];
-    random_point(u0, u1, par);
+    braid_random_bc_point(&rng, 0, u0, u1, par);
     st |= braid_link_sym_bcnd(BR_NDIM, par, NULL, BL_SYM_NBC, u0, u1, 0, fb, NULL, NULL);
     formulas(u0, u1, par, e);
     for (int i = 0; i < BL_SYM_NBC; i++) worst = fmax(worst, fabs(fb[i] - e[i]) / fmax(1.0, fabs(e[i])));
@@ -118,7 +98,7 @@ static void check_jacobian(void)
   int st = 0;
   for (int n = 0; n < NSAMPLES; n++) {
     double u0[BR_NDIM], u1[BR_NDIM], par[BP_NPAR], fb[BL_SYM_NBC], fp[BL_SYM_NBC], fm[BL_SYM_NBC];
-    random_point(u0, u1, par);
+    braid_random_bc_point(&rng, 0, u0, u1, par);
     st |= braid_link_sym_bcnd(BR_NDIM, par, NULL, BL_SYM_NBC, u0, u1, 2, fb, dbc, NULL);
     for (int j = 0; j < NCOLS; j++) {
       double *x = j < BR_NDIM ? &u0[j] : j < 2 * BR_NDIM ? &u1[j - BR_NDIM] : &par[j - 2 * BR_NDIM];
@@ -141,7 +121,7 @@ static void check_jacobian(void)
   test_le("braid_link_sym: d fb/d par (all slots) vs central differences", worst_par, fd_tol);
 
   double u0[BR_NDIM], u1[BR_NDIM], par[BP_NPAR], fb[BL_SYM_NBC], fb0[BL_SYM_NBC];
-  random_point(u0, u1, par);
+  braid_random_bc_point(&rng, 0, u0, u1, par);
   for (int k = 0; k < BL_SYM_NBC * NCOLS; k++) dbc[k] = 12345.0;
   braid_link_sym_bcnd(BR_NDIM, par, NULL, BL_SYM_NBC, u0, u1, 1, fb, dbc, NULL);
   int untouched = 1;
@@ -156,7 +136,7 @@ static void check_jacobian(void)
 static void check_errors(void)
 {
   double u0[BR_NDIM], u1[BR_NDIM], par[BP_NPAR], fb[BL_SYM_NBC];
-  random_point(u0, u1, par);
+  braid_random_bc_point(&rng, 0, u0, u1, par);
   test_int("braid_link_sym: ndim != 21 is fatal",
            braid_link_sym_bcnd(20, par, NULL, BL_SYM_NBC, u0, u1, 0, fb, NULL, NULL), CABLE_BRAID_BC_SIZE);
   test_int("braid_link_sym: nbc = 21 (braid_link's) is fatal",
@@ -164,11 +144,11 @@ static void check_errors(void)
   u0[BR_X1] = NAN;
   test_int("braid_link_sym: a NaN in a link row is recoverable",
            braid_link_sym_bcnd(BR_NDIM, par, NULL, BL_SYM_NBC, u0, u1, 0, fb, NULL, NULL), CABLE_BRAID_BC_DOMAIN);
-  random_point(u0, u1, par);
+  braid_random_bc_point(&rng, 0, u0, u1, par);
   u0[BR_F2] = INFINITY;
   test_int("braid_link_sym: a non-finite F2(0) is recoverable",
            braid_link_sym_bcnd(BR_NDIM, par, NULL, BL_SYM_NBC, u0, u1, 0, fb, NULL, NULL), CABLE_BRAID_BC_DOMAIN);
-  random_point(u0, u1, par);
+  braid_random_bc_point(&rng, 0, u0, u1, par);
   par[BP_EPS13] = NAN;
   test_int("braid_link_sym: a NaN eps13 is recoverable",
            braid_link_sym_bcnd(BR_NDIM, par, NULL, BL_SYM_NBC, u0, u1, 0, fb, NULL, NULL), CABLE_BRAID_BC_DOMAIN);

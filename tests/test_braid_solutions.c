@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Converged braid solutions (engine + braid model + conditions + geometry):
  *  - the flat right-handed (7,2) knot at T = 2 and the left-handed one at
  *    T = -2: the same |F| (mirror symmetry), Lk = +3.5 and -3.5;

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Starting solutions (bc/braid_start.h) and the braid problems' STPNT/PVLS:
  *  - the two-ring solution against closed-form derivatives through braid_rhs,
  *    the link conditions at Phi = 0, the contact pressure, PVLS values;

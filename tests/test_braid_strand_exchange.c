@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Strand exchange (equations/braid_exchange.h, doc/links.md "Strand exchange"):
  * the braid seen with s along strand 2 must solve the same equations and, for
  * a link, the same conditions with the same T.
@@ -11,13 +12,13 @@
  *    T_n = T, L_n = L2, L2_n = L and the phase w2fix_n = omega2_n(0); |F|, h
  *    and T1 - T2 are the same. */
 #include <math.h>
-#include <stdint.h>
 #include <string.h>
 
 #include "cable/cable_aufile.h"
 #include "braid_bc.h"
 #include "braid_exchange.h"
 #include "cable/cable_error.h"
+#include "braid_random.h"
 #include "harness.h"
 
 /* Derivative of the map along the flow by Richardson-extrapolated central
@@ -38,15 +39,8 @@ static const double equiv_tol = 1e-7;
 static const double bc_tol = 1e-5;
 enum { NRANDOM = 200 };
 
-static uint64_t rng_state = 0x9E3779B97F4A7C15u;
-static double urand(double a, double b)
-{
-  rng_state ^= rng_state >> 12;
-  rng_state ^= rng_state << 25;
-  rng_state ^= rng_state >> 27;
-  const uint64_t x = rng_state * 2685821657736338717u;
-  return a + (b - a) * (double)(x >> 11) * (1.0 / 9007199254740992.0);
-}
+/* the tests' random numbers (tests/braid_random.h) */
+static test_rng rng = {0x9E3779B97F4A7C15u};
 
 /* dw/dsigma at u (arclength s) by Richardson-extrapolated central differences */
 static int map_derivative(const double *u, double s, const braid_material *m,
@@ -95,18 +89,18 @@ static void check_random_states(void)
   int st = 0;
   for (int n = 0; n < NRANDOM; n++) {
     double u[BR_NDIM];
-    for (int i = 0; i < BR_NDIM; i++) u[i] = urand(-3.0, 3.0);
-    u[BR_F1] = urand(-400, 400); u[BR_F2] = urand(-400, 400); u[BR_F3] = urand(-400, 400);
-    u[BR_M1] = urand(-60, 60); u[BR_M2] = urand(-60, 60); u[BR_M3] = urand(-60, 60);
-    u[BR_ETA] = urand(-0.5, 0.5);
-    u[BR_W2] = urand(-20, 20); u[BR_W3] = urand(-20, 20);
-    u[BR_T1] = urand(-15, 15); u[BR_T2] = urand(-15, 15);
+    for (int i = 0; i < BR_NDIM; i++) u[i] = test_rng_uniform(&rng, -3.0, 3.0);
+    u[BR_F1] = test_rng_uniform(&rng, -400, 400); u[BR_F2] = test_rng_uniform(&rng, -400, 400); u[BR_F3] = test_rng_uniform(&rng, -400, 400);
+    u[BR_M1] = test_rng_uniform(&rng, -60, 60); u[BR_M2] = test_rng_uniform(&rng, -60, 60); u[BR_M3] = test_rng_uniform(&rng, -60, 60);
+    u[BR_ETA] = test_rng_uniform(&rng, -0.5, 0.5);
+    u[BR_W2] = test_rng_uniform(&rng, -20, 20); u[BR_W3] = test_rng_uniform(&rng, -20, 20);
+    u[BR_T1] = test_rng_uniform(&rng, -15, 15); u[BR_T2] = test_rng_uniform(&rng, -15, 15);
     double qn = 0.0;
     for (int i = 0; i < 4; i++) qn += u[BR_Q0 + i] * u[BR_Q0 + i];
     for (int i = 0; i < 4; i++) u[BR_Q0 + i] /= sqrt(qn);
     braid_exchange_frame g;
     st |= braid_exchange_frame_at(u, &m, &g);
-    worst = fmax(worst, equivariance_error(u, urand(0, 1), &m, &g, &st));
+    worst = fmax(worst, equivariance_error(u, test_rng_uniform(&rng, 0, 1), &m, &g, &st));
   }
   test_int("strand exchange: map and rhs defined at the random states", st, 0);
   test_le("strand exchange: dX(u)/dsigma = f(X(u)) at 200 random states (max scaled err)", worst,
@@ -115,7 +109,7 @@ static void check_random_states(void)
   /* the map is not the identity in disguise: it fails for a wrong sign of
      the moment shift (M about r1 instead of r2) */
   double u[BR_NDIM];
-  for (int i = 0; i < BR_NDIM; i++) u[i] = urand(-1.0, 1.0);
+  for (int i = 0; i < BR_NDIM; i++) u[i] = test_rng_uniform(&rng, -1.0, 1.0);
   u[BR_F1] = 300.0; u[BR_F3] = -200.0; u[BR_ETA] = 0.2; u[BR_W3] = 5.0;
   double qn = 0.0;
   for (int i = 0; i < 4; i++) qn += u[BR_Q0 + i] * u[BR_Q0 + i];

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* The cable program through its real binary: malformed constants files,
  * command lines, s-files and scripts each give one line on stderr naming the
  * file, line and key, a non-zero exit, and leave every file in the directory

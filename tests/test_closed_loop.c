@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* A branch that returns to its start ends there (CABLE_END_LOOP) with a
  * message naming the start, instead of going round again until NMX
  * (continuation/cont_loop.c).

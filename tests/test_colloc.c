@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Collocation basis and discretised system: quadrature exactness, partition of
  * unity, and the block Newton matrix against central differences of the
  * residual (analytic and finite-difference problem Jacobians), also with an

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Constants files (c.NAME) and KEY=VALUE overrides: a file with every key
  * parses to the expected values; malformed inputs each give one message
  * naming file, line and key with the expected status; overrides merge and

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Engine validation on problems with known answers:
  *  - Bratu: the fold lambda* = 3.513830719125162 (NTST=20, NCOL=4) to 1e-9;
  *  - elastica: branch points of the trivial branch at (n pi)^2, n = 1,2,3, to

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Engine behaviour beyond the known answers:
  *  - mesh adaptation reduces the error of a boundary-layer solution at equal NTST;
  *  - the stiff dichotomy u'' = k^2 u (k up to 60) is solved to 1e-10 relative at

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Test helper: copy a file byte for byte (scene inputs into scratch directories). */
 #ifndef CABLE_TEST_FILES_H
 #define CABLE_TEST_FILES_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Fold continuation (ISW = 2, continuation/cable_fold.h) against a closed
  * form.  The generalised Bratu problem
  *     u'' + lambda e^u = 0,   u(0) = u(1) = a

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Acceptance test of the fold scene (runs/link62fold): fold continuation
  * (ISW=2) on the braid.  The scene follows the fold of the (6,2) link's
  * mode-2 branch at T = -8.2543 in (T, Delta); this test replays its fold runs

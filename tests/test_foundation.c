@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Foundation checks: status table, solution alloc/copy, error formatting. */
 #include <string.h>
 

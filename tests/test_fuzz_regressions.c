@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Replays the fuzzing regression inputs (tests/data/fuzz_regressions/<target>/)
  * through the same entry points as the libFuzzer targets in tests/fuzz/:
  *   constants/  cable_constants_parse_string, then parse_override on the first half

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Pictures and exports: nice ticks, rotation-minimising frames and tube
  * meshes against closed forms, bifurcation diagrams (PNG header, SVG
  * well-formedness), rendered torus-knot tubes (pixel statistics against the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Knot identification (knot_type.h) on exact curves: torus knots of both
  * handednesses, the figure-eight, unknots with many crossings, random
  * rotations, and the error paths.  All checks are exact (integers). */

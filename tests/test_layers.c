@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* The layer rule (doc/api.md): a folder includes only the public headers
  * (include/cable/), its own headers and those of the layers below it:
  *

@@ -1,14 +1,15 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* The plug-in tests/plugins/link_t2plus.c (the reading "t20 = +t10" of the
  * link conditions, doc/links.md §4.2): it loads and validates, every row but
  * (12.3.34) is braid_link's, that row is T2(0) - T, and its Jacobian
  * (states and parameters) agrees with central differences. */
 #include <math.h>
-#include <stdint.h>
 #include <stdio.h>
 #include <string.h>
 
 #include "braid_bc.h"
 #include "cable/cable_error.h"
+#include "braid_random.h"
 #include "harness.h"
 #include "cable/cable_plugin.h"
 
@@ -20,15 +21,8 @@ static const double same_tol = 0.0;
 static const double fd_rel = 1e-6, fd_tol = 1e-8;
 enum { NCOLS = 2 * BR_NDIM + BP_NPAR, NSAMPLES = 10 };
 
-static uint64_t rng_state = 0x853C49E6748FEA9Bu;
-static double urand(double a, double b)
-{
-  rng_state ^= rng_state >> 12;
-  rng_state ^= rng_state << 25;
-  rng_state ^= rng_state >> 27;
-  const uint64_t x = rng_state * 2685821657736338717u;
-  return a + (b - a) * (double)(x >> 11) * (1.0 / 9007199254740992.0);
-}
+/* the tests' random numbers (tests/braid_random.h) */
+static test_rng rng = {0x853C49E6748FEA9Bu};
 
 int main(int argc, char **argv)
 {
@@ -59,10 +53,10 @@ int main(int argc, char **argv)
   int st = 0;
   for (int n = 0; n < NSAMPLES; n++) {
     double u0[BR_NDIM], u1[BR_NDIM], par[BP_NPAR], fb[BL_NBC], fl[BL_NBC], fp[BL_NBC], fm[BL_NBC];
-    for (int i = 0; i < BR_NDIM; i++) { u0[i] = urand(-2, 2); u1[i] = urand(-2, 2); }
-    for (int k = 0; k < BP_NPAR; k++) par[k] = urand(0.5, 2.0);
-    par[BP_T] = urand(-20, 20);
-    par[BP_PHI] = urand(-20, 20);
+    for (int i = 0; i < BR_NDIM; i++) { u0[i] = test_rng_uniform(&rng, -2, 2); u1[i] = test_rng_uniform(&rng, -2, 2); }
+    for (int k = 0; k < BP_NPAR; k++) par[k] = test_rng_uniform(&rng, 0.5, 2.0);
+    par[BP_T] = test_rng_uniform(&rng, -20, 20);
+    par[BP_PHI] = test_rng_uniform(&rng, -20, 20);
     st |= pb->bcnd(BR_NDIM, par, NULL, BL_NBC, u0, u1, 2, fb, dbc, pb->params);
     st |= braid_link_bcnd(BR_NDIM, par, NULL, BL_NBC, u0, u1, 0, fl, NULL, NULL);
     for (int i = 0; i < BL_NBC; i++)

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* cable's picture commands on real output: a bifurcation diagram from a
  * b-file the AUTO writer produced, a rendered braid solution with its
  * exports, and the error paths (missing file, unknown column, not a braid). */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Plug-in loader and the template plug-in.
  *
  * The Bratu template is checked against the closed-form solution family

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* The second-order predictor (PREDICTOR = 2, cont_engine.c step_predict;
  * doc/engine.md, "The second-order predictor"), against AUTO's tangent
  * predictor (PREDICTOR = 1), on Bratu's branch through its fold:

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Ribbon quantities on curves with known answers (ribbon.h).
  *
  * Tolerances: the twist and linking sums are periodic trapezoidal rules of

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* The Morse index of a variational BVP (doc/stability.md) against closed forms:
  *  - Bratu (u'' + lambda e^u = 0, u(0) = u(1) = 0) on its exact solutions:
  *    lower branch index 0, upper branch index 1, and the two smallest

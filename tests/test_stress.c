@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Stress cases on the braid knot and link problems (issue 8, part 2).
  *
  *   build/release/tests/test_stress          the quick subset (make check)

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* The SUNDIALS wrappers: SUNMat_Colloc, SUNLinSol_Colloc and the KLU
  * reference path (colloc_sparse) give the direct abd_solver's solutions to
  * round-off, and KINSOL drives both to the known root of a nonlinear system

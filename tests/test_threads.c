@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* One, two and three threads give the same results, bit for bit (issue 17):
  * the structured solver's per-interval stages run on a thread team
  * (NTHREADS, continuation/base/cable_team.h) and every reduction runs in interval

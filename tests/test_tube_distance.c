@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Tube distance (tube_distance.h): segment pairs with closed-form distances,
  * a braid whose axis has a waist of known width (exact answers), agreement
  * with brute force, speed, and the error paths. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* vee_min (continuation/vee_min.c): the minimiser behind the location of
  * double branch points, on functions with known minima: the squared
  * singular value's model (an exact parabola), a |sin| dip (linear only near

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Building an AUTO equation file into a module, with a cache keyed by the
  * file's content: the module of a file cable has built before is reused, a
  * changed file is built again.  Fortran files are checked against AUTO's

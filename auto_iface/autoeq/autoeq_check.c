@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Which equation files a run can use: the rule is AUTO's own, "what AUTO can
  * run", applied to the routines this run calls (FUNC always; BCND when
  * NBC > 0; ICND when NINT > 0; STPNT for a start from STPNT; PVLS when it has

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Internals of the AUTO equation-file loader (autoeq_build.c builds and
  * caches, autoeq_load.c loads and checks, autoeq_shim.c adapts the routines
  * and implements GETP). */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Finding, opening and closing AUTO equation files (autoeq.h). */
 #include <dlfcn.h>
 #include <stdio.h>

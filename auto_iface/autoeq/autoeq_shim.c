@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* AUTO's routines behind cable's problem interface: the Fortran calling
  * convention (everything by reference) or AUTO's C interface, 1-based ICP as
  * AUTO passes it, the derivative arrays AUTO always passes, dat= start data,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Plug-in loader: dlopen, the fixed entry symbol, and the checks that make a
  * module safe to call (Lua's loadlib is the model: one entry name, version
  * and size checks before trusting the module, and a reason for every

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* The user's routines called through a guard (run_guard.h). */
 #define _DEFAULT_SOURCE   /* glibc's on_exit: an exit handler that sees the status */
 #include "run_guard.h"

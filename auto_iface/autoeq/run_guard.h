@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* A run's watch over the user's routines (an equation file's FUNC, BCND,
  * ICND, STPNT, PVLS, or a plug-in's): a routine that ends the process
  * (Fortran STOP or ERROR STOP, exit(), abort(), a crash) is reported on

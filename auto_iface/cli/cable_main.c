@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* The `cable` command line: uses only the public API and reports every error
  * on one line with file, line and key, exiting non-zero.  `cable replay`
  * runs a script in CPython with the cable package (python/cable). */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* The b./s./d. writer's live copies (aufile_write.c), for the session's
  * files written as a run goes (live_files.c); not part of the public API. */
 #ifndef CABLE_AUFILE_LIVE_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Readers of s- and b-files in AUTO-07p's layout (cable's own and AUTO's):
  * the s-file block structure follows io.f90's READSOL (header of 12 or 16
  * integers, NROWPR lines of numbers), the b-file sections follow parseB

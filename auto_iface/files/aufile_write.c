@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Writer of b./s./d. files in AUTO-07p's layout (io.f90 STHD/HEADNG/WRLINE,
  * bvp.f90 WRTBV8/WRTBV9), behind the engine's cable_sink.  Learned from
  * AUTO's formats, written afresh; differences are listed in

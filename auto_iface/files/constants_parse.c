@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Constants-file parser: a small lexer and recursive-descent parser build a
  * value tree per statement; statements are collected (unknown, unsupported
  * and duplicate keys are rejected there), then applied to a working copy in

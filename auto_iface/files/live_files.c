@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* A run's b./s./d.NAME on disk as it is computed: generations published by
  * one rename, the lock of NAME, a killed writer's leftovers (live_files.h). */
 #include "live_files.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* A run's b./s./d.NAME on disk as it is computed (doc/failures.md).
  *
  * While a run writes NAME, b.NAME, s.NAME and d.NAME are symbolic links to

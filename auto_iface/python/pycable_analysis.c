@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* The numerical analysis of one braid solution and the pictures, for the
  * Python package: analyze (braid_analysis.h), the axis self-passages
  * between two solutions (axis_passages.h), the tube distance

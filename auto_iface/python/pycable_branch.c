@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* cable._cable.Branch: one computed branch, read-only.  Its points (the
  * b-file rows) and labelled solutions come out as numpy arrays. */
 #include "pycable.h"

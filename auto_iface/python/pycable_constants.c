@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* AUTO constants (cable_constants) as a Python dict with AUTO's keys, in the
  * order of a constants file: what AUTO's pr() shows and s.c holds
  * (doc/scripts.md).  Values are written as a constants file would give them:

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* curves(branch, i): the geometry of a braid solution along its stored
  * points, as numpy arrays for the Python package (Solution.strand2,
  * .contact, .pressure, ...; cable_braid_solution_curves), at the solution's own

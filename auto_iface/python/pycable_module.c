@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* cable._cable: the C side of the Python package (python/cable).  A thin
  * layer over the session (cable_session.h) and the analysis of one braid
  * solution: it converts arguments, releases the GIL around runs, maps

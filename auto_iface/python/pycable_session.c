@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* cable._cable.Session: AUTO's runner on cable's engine (cable_session.h).
  * Runs release the GIL; after every computed point the session takes it back
  * for a moment to run Python's signal handlers, so Ctrl-C (KeyboardInterrupt)

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* `cable info e=NAME` and Python's info('NAME'): what a new study needs to
  * know about a problem without reading its source: its dimensions, its
  * parameters and components by index and name, its own constants keys with

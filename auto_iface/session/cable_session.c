@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* The session: AUTO-07p's runner on cable's continuation engine, constants
  * parser and b./s./d. files.  Branches live in memory (cable_session_store.c);
  * files are written only by sv=, ap=, save, and merge/relabel of file names. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Internals of the session (cable_session.c, cable_session_store.c). */
 #ifndef CABLE_SCRIPT_HOST_IMPL_H
 #define CABLE_SCRIPT_HOST_IMPL_H

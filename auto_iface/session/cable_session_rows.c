@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Every row of a b-file back into branches (AUTO's loadbd: its parseB
  * keeps every computed point, not only the labelled ones), and the names
  * its header records (e, parnames, unames), which AUTO's parseB reads

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* The runner state of a session (AUTO's runner.options["constants"]): what
  * AUTO's pr() prints and what the next run without a start uses. */
 #include <stddef.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* The engine host's results in memory: branches of copied points and
  * solutions, shared by reference counting; writing them as b./s./d. files,
  * reading them back, AUTO's merge and relabel. */

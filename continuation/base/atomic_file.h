@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Atomic output files: everything is written to a temporary file in the same
  * directory (".NAME.tmpXXXXXX") and renamed over NAME only at commit (or at a
  * checkpoint, which publishes a complete copy of what has been written so

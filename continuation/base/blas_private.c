@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* The BLAS of libcable.so and of the Python extension (cable._cable): a
  * private copy of OpenBLAS, linked in statically with its symbols hidden
  * (the Makefile's LIBS_PRIVBLAS), asked for one thread when the library is

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* A small team of threads for loops over mesh intervals (pthreads).
  *
  * cable_team_run(t, fn, ctx, n) calls fn(ctx, i) for i = 0..n-1, each i on

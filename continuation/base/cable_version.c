@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 #include "cable/cable_version.h"
 
 #include <gsl/gsl_version.h>

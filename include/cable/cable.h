@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* libcable: elastic cable knots and links by numerical continuation.
  * The whole public API (doc/api.md); a program or plug-in includes this
  * header, or the single headers below, and links with

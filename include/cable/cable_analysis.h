@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Derived quantities of one stored braid solution, computed only when a
  * scene or `cable analyze` asks (they cost far more than a continuation step):
  * linking, twist and writhe of the contact-curve ribbon, the knot type of the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* The export macro of libcable: every function of the public API is declared
  * CABLE_API; the library is compiled with -fvisibility=hidden, so nothing
  * else is visible to programs linked against libcable.so. */

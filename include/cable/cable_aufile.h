@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* AUTO-07p output files: b.NAME (bifurcation diagram, AUTO's fort.7),
  * s.NAME (labelled solutions, fort.8), d.NAME (diagnostics, fort.9), plus a
  * CSV table per branch, written in AUTO-07p's layout so that AUTO's Python

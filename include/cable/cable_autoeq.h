@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* AUTO-07p equation files as plug-ins: e='NAME' with NAME.f90, NAME.f or
  * NAME.c in the run directory (AUTO's search order).  cable compiles the file
  * once (gfortran or cc), keeps the module in a cache keyed by the file's

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* AUTO-07p constants, as the engine consumes them.  Field names follow AUTO's
  * keywords; defaults (cable_constants_init) are AUTO-07p's unless noted in
  * doc/constants.md.  Parameter indices in icp/uzr/thl are 0-based here

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* The continuation engine: orthogonal collocation for boundary-value problems
  * (AUTO's IPS=4 class), pseudo-arclength continuation, special points,
  * branch switching.  set / step / inspect, plus a driver (cable_cont_run).

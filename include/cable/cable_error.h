@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Error reports for user input: every message names the file, the line and
  * the key (or script statement) at fault, e.g.
  *   runs/knot72/c.knot72:12: NTST: must be a positive integer, got '-5'   */

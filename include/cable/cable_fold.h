@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Fold continuation (AUTO's ISW = 2 at an LP of a boundary-value problem):
  * the extended problem whose solutions are the folds of a problem's branches,
  * followed in one more parameter.  doc/fold-continuation.md derives it.

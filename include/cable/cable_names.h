@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Names used in AUTO-07p files: parameter and solution-component names
  * (the `parnames` and `unames` of a constants file) and the two-letter point
  * type names (BP, LP, UZ, EP, MX, RG) that label specs such as 'BP1' use.

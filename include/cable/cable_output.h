@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* What the continuation engine hands to its caller: one row per computed point
  * (a line of AUTO's b-file), the labelled solutions (s-file entries) and
  * diagnostics (d-file).  The engine never writes files itself. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Pictures from cable's own output files: bifurcation diagrams of b-files and
  * 3-D renders of braid solutions (post-processing only; nothing here runs
  * during continuation).  The command-line `cable plot` and `cable render`

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* User problems from shared objects (doc/plugins.md).
  *
  * A plug-in is a .so file exporting

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* The problem interface: the C form of AUTO-07p's FUNC, BCND, ICND, STPNT and
  * PVLS user routines, plus the dimensions and names AUTO keeps in the
  * constants file.  Built-in problems and user plug-ins (.so files exporting

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* A session of AUTO-07p's runner on cable's engine: what the Python package
  * (python/cable, its C side auto_iface/python/pycable_*.c) and `cable run` use;
  * everything a script can do goes through it.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* A stored solution: what AUTO writes to an s-file for one label.
  * Values are kept at the NTST*NCOL+1 points AUTO stores: the mesh points and
  * NCOL-1 equally spaced nodes inside each mesh interval. */

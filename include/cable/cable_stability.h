@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* The Morse index of a solution of a variational boundary-value problem: the
  * number of negative eigenvalues of the second variation of the action on the
  * variations that keep the constraints to first order (doc/stability.md).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* One table of status codes and their messages (SUNDIALS style).
  * 0 is success, > 0 a normal end of a branch, < 0 an error. */
 #ifndef CABLE_STATUS_H

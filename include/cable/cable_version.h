@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 #ifndef CABLE_VERSION_H
 #define CABLE_VERSION_H
 

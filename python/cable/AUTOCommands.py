@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """AUTO-07p's module AUTOCommands under its own name: scripts written for AUTO
 that `import AUTOCommands` or `from AUTOCommands import *` get cable's commands (the
 module runner's, cable.runner()), the same as AUTOclui's.  Inside `cable replay`

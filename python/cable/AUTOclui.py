@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """AUTO-07p's module AUTOclui under its own name: scripts written for AUTO
 that `import AUTOclui` or `from AUTOclui import *` get cable's commands (the
 module runner's, cable.runner()).  Inside `cable replay` the top-level

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """cable: equilibria of elastic cable knots and links by numerical
 continuation, with AUTO-07p's command-line interface.
 
@@ -12,6 +13,7 @@ the commands and where they differ from AUTO's.
 import threading
 
 from ._cable import CableError
+from .errors import CableFileNotFoundError, CableKeyError, CableTypeError, CableValueError
 from .commands import Runner, constant_text
 from .constants import Constants
 from .results import Parameters, Result, Solution, SolutionList
@@ -41,9 +43,12 @@ def _delegate(name):
     return fn
 
 
-for _n in ('run', 'r', 'load', 'ld', 'loadbd', 'bd', 'save', 'sv', 'merge', 'mb', 'relabel', 'rl', 'clean', 'cl',
-           'delete', 'dl', 'copy', 'cp', 'append', 'ap', 'cd', 'wait', 'pr', 'printconstant', 'pc', 'analyze', 'plot', 'render', 'compare',
-           'overlap_free', 'branch_table', 'info'):
+_COMMANDS = ('run', 'r', 'load', 'ld', 'loadbd', 'bd', 'save', 'sv', 'merge', 'mb', 'relabel',
+             'rl', 'clean', 'cl',
+             'delete', 'dl', 'copy', 'cp', 'append', 'ap', 'cd', 'wait', 'pr', 'printconstant',
+             'pc', 'analyze', 'plot', 'render', 'compare',
+             'overlap_free', 'branch_table', 'info')
+for _n in _COMMANDS:
     globals()[_n] = _delegate(_n)
 del _n
 
@@ -60,3 +65,10 @@ def view(x, file=None, title=None):
 branch_points = scenes.branch_points
 branch_point = scenes.branch_point
 mirror_table = scenes.mirror_table
+
+__all__ = ['CableError', 'CableFileNotFoundError', 'CableKeyError', 'CableTypeError',
+           'CableValueError',
+           'Runner', 'constant_text', 'Constants', 'Parameters', 'Result', 'Solution',
+           'SolutionList',
+           'scenes', 'run_script', 'runner', 'view', 'branch_points', 'branch_point',
+           'mirror_table'] + list(_COMMANDS)

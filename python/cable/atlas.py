@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """cable.atlas: an atlas of cable knots and links, computed on Dask
 distributed (doc/atlas.md).
 
@@ -20,7 +21,8 @@ from .atlas_run import run_sweep
 from .atlas_sweep import Sweep, SweepError, Task, load
 from .atlas_task import ROW_FIELDS, run_task
 
-__all__ = ['load', 'run', 'run_task', 'write_outputs', 'read_csv', 'Sweep', 'SweepError', 'Task', 'ROW_FIELDS',
+__all__ = ['load', 'run', 'run_task', 'write_outputs', 'read_csv', 'Sweep', 'SweepError', 'Task',
+           'ROW_FIELDS',
            'main']
 
 
@@ -29,17 +31,22 @@ def run(sweep, scheduler=None, workers=None, retry_failed=False, stream=None):
     skipped, computed, failed)."""
     if isinstance(sweep, str):
         sweep = load(sweep)
-    return run_sweep(sweep, scheduler=scheduler, workers=workers, retry_failed=retry_failed, stream=stream)
+    return run_sweep(sweep, scheduler=scheduler, workers=workers, retry_failed=retry_failed,
+                     stream=stream)
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(prog='cable atlas', description='an atlas of cable knots and links on Dask '
+    ap = argparse.ArgumentParser(prog='cable atlas',
+                                 description='an atlas of cable knots and links on Dask '
                                  '(doc/atlas.md)')
     ap.add_argument('sweep', help='the sweep file (TOML)')
-    ap.add_argument('--scheduler', help='address of a running Dask scheduler (default: a local cluster)')
-    ap.add_argument('--workers', type=int, help='local cluster: number of worker processes (default: cores)')
+    ap.add_argument('--scheduler',
+                    help='address of a running Dask scheduler (default: a local cluster)')
+    ap.add_argument('--workers', type=int,
+                    help='local cluster: number of worker processes (default: cores)')
     ap.add_argument('--retry-failed', action='store_true', help='compute the failed tasks again')
-    ap.add_argument('--check', action='store_true', help='check the sweep file and list its tasks; run nothing')
+    ap.add_argument('--check', action='store_true',
+                    help='check the sweep file and list its tasks; run nothing')
     a = ap.parse_args(argv)
     if a.workers is not None and a.workers < 1:
         print('cable atlas: --workers must be at least 1', file=sys.stderr)
@@ -57,11 +64,14 @@ def main(argv=None):
     try:
         c = run(sweep, scheduler=a.scheduler, workers=a.workers, retry_failed=a.retry_failed)
     except KeyboardInterrupt:
-        print('\ncable atlas: interrupted; finished tasks are kept, run again to resume', file=sys.stderr)
+        print('\ncable atlas: interrupted; finished tasks are kept, run again to resume',
+              file=sys.stderr)
         return 130
     earlier = c.get('failed_earlier', 0)
-    print('cable atlas: %d tasks: %d finished earlier%s, %d computed (%d failed); table %s/atlas.csv'
-          % (c['total'], c['skipped'], ' (%d of them failed: --retry-failed computes them again)' % earlier
+    print('cable atlas: %d tasks: %d finished earlier%s, %d computed (%d failed); table '
+          '%s/atlas.csv'
+          % (c['total'], c['skipped'], ' (%d of them failed: --retry-failed computes them again)'
+             % earlier
              if earlier else '', c['computed'], c['failed'], sweep.output))
     # non-zero while the table holds a failed task, whenever it failed
     return 1 if c['failed'] or earlier else 0

@@ -1,9 +1,14 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The atlas's outputs, rebuilt (each file atomically) from the finished
 tasks of a sweep: OUT/atlas.csv (one row per cable knot or link found, plus
 one row per failed task), OUT/atlas.parquet when pyarrow is installed,
-OUT/summary.svg (families against Delta, one cell per arm and mode, coloured
+OUT/summary.svg (matplotlib: families against Delta, one cell per arm and mode, coloured
 by the companion knot type and Lk the branch reaches: cell_outcome) and
 OUT/summary.md (counts and the picture)."""
+
+__all__ = ['finished_results', 'table_rows', 'csv_text', 'read_csv',
+           'cell_outcome', 'summary_svg', 'summary_md', 'write_outputs']
+
 import csv
 import importlib.util
 import io
@@ -12,7 +17,7 @@ import math
 import os
 
 from .atlas_task import ROW_FIELDS
-from .scenes import write_atomic
+from .atomic import replacing, write_text as write_atomic
 
 
 def finished_results(sweep):
@@ -31,9 +36,12 @@ def table_rows(results):
     for t, r in results:
         if r['status'] != 'ok' or not r['rows']:
             i = t.inputs
-            rows.append({'family': '%s(%d,2)' % (i['kind'], i['p']), 'kind': i['kind'], 'p': i['p'],
-                         'hand': i['hand'], 'Delta': i['Delta'], 'arm': i['arm'], 'mode': i['mode'],
-                         'wall': r['wall'], 'status': r['status'], 'error': r['error'], 'task': t.name})
+            rows.append({'family': '%s(%d,2)' % (i['kind'], i['p']), 'kind': i['kind'],
+                         'p': i['p'],
+                         'hand': i['hand'], 'Delta': i['Delta'], 'arm': i['arm'],
+                         'mode': i['mode'],
+                         'wall': r['wall'], 'status': r['status'], 'error': r['error'],
+                         'task': t.name})
         else:
             rows.extend(r['rows'])
     return rows
@@ -65,14 +73,14 @@ def _write_parquet(path, rows):
     import pyarrow
     import pyarrow.parquet
     cols = {k: [r.get(k) for r in rows] for k in ROW_FIELDS}
-    tmp = path + '.tmp'
-    pyarrow.parquet.write_table(pyarrow.table(cols), tmp)
-    os.replace(tmp, path)
+    with replacing(path, suffix='.parquet') as tmp:
+        pyarrow.parquet.write_table(pyarrow.table(cols), tmp)
 
 
 # ---- the picture ----------------------------------------------------------------------
 
-_PALETTE = ['#4e79a7', '#f28e2b', '#e15759', '#76b7b2', '#59a14f', '#edc948', '#b07aa1', '#ff9da7', '#9c755f',
+_PALETTE = ['#4e79a7', '#f28e2b', '#e15759', '#76b7b2', '#59a14f', '#edc948', '#b07aa1', '#ff9da7',
+            '#9c755f',
             '#bab0ac', '#86bcb6', '#d37295']
 
 
@@ -90,20 +98,29 @@ def cell_outcome(rows):
     return '%s (Lk %g)' % (r['companion'], round(2 * r['Lk']) / 2)
 
 
-def _esc(s):
-    return s.replace('&', '&amp;').replace('<', '&lt;').replace('>', '&gt;')
-
-
 def summary_svg(results, tasks=None):
-    """The picture: a row per family, a group of cells per Delta, a cell per
-    arm and mode, for every task of tasks (default: those of results), so
-    that an empty cell is a task not computed yet."""
+    """The picture (matplotlib, SVG text): a row per family, a group of
+    cells per Delta, a cell per arm and mode, for every task of tasks
+    (default: those of results), so that an empty cell is a task not
+    computed yet."""
+    import io
+    try:
+        import matplotlib
+        from matplotlib.backends.backend_svg import FigureCanvasSVG
+        from matplotlib.figure import Figure
+        from matplotlib.patches import Patch, Rectangle
+    except ImportError:
+        from ._cable import CableError
+        raise CableError("atlas: summary.svg is drawn with matplotlib (Debian's "
+                         "python3-matplotlib, which scripts/install-deps.sh "
+                         "installs)") from None
     fams, deltas, cols = [], [], []
     cell = {}
 
     def where(t):
         i = t.inputs
-        return '%s(%d,2) %s' % (i['kind'], i['p'], 'R' if i['hand'] > 0 else 'L'), i['Delta'], (i['arm'], i['mode'])
+        fam = '%s(%d,2) %s' % (i['kind'], i['p'], 'R' if i['hand'] > 0 else 'L')
+        return fam, i['Delta'], (i['arm'], i['mode'])
 
     for t in (tasks if tasks is not None else [t for t, _ in results]):
         for lst, x in zip((fams, deltas, cols), where(t)):
@@ -127,46 +144,57 @@ def summary_svg(results, tasks=None):
         else:
             colour[v] = _PALETTE[k % len(_PALETTE)]
             k += 1
-    cw, ch, left, top = 18, 18, 130, 78
-    title = ['cable atlas: the companion knot type and Lk each branch reaches',
-             '(its overlap-free stretch with the most axis passages; a cell per arm and mode)']
-    # text widths estimated at 0.62 em per character (sans-serif), so that nothing overlaps
-    labels = ['Delta = %.4g' % d for d in deltas]
-    gw = max([len(cols) * cw + 12, 110] + [int(0.62 * 11 * len(x)) + 14 for x in labels])
-    width = max(left + len(deltas) * gw + 20, int(0.62 * 13 * max(len(x) for x in title)) + 16,
-                int(0.62 * 11 * max([len(v) for v in kinds] + [0])) + 40)
-    height = top + len(fams) * ch + 30 + 16 * len(kinds)
-    out = ['<svg xmlns="http://www.w3.org/2000/svg" width="%d" height="%d" font-family="sans-serif" '
-           'font-size="11">' % (width, height),
-           '<rect width="100%" height="100%" fill="white"/>']
-    out += ['<text x="8" y="%d" font-size="13">%s</text>' % (18 + 17 * k, _esc(x)) for k, x in enumerate(title)]
-    for j, d in enumerate(deltas):
-        x = left + j * gw
-        out.append('<text x="%d" y="%d">%s</text>' % (x, top - 22, labels[j]))
-        for m, c in enumerate(cols):
-            out.append('<text x="%d" y="%d" font-size="9">%s%d</text>' % (x + m * cw + 3, top - 6,
-                                                                          '+' if c[0] > 0 else '-', c[1]))
-    for i, f in enumerate(fams):
-        y = top + i * ch
-        out.append('<text x="8" y="%d">%s</text>' % (y + 13, _esc(f)))
+    # cell (family i, Delta j, column m) at x = j (ncol + 1) + m, y = -i
+    ncol, gap = len(cols), 1
+    width = max(len(deltas) * (ncol + gap), 1)
+    # the legend: up to 12 entries a column, each column about 2.4 inches
+    nleg = len(kinds) + 1
+    legcols = min(4, -(-nleg // 12))
+    legrows = -(-nleg // legcols)
+    legh = 0.1 + 0.19 * legrows
+    rc = {'svg.fonttype': 'none', 'svg.hashsalt': 'cable-atlas',
+          'font.family': 'sans-serif', 'font.size': 9}
+    with matplotlib.rc_context(rc):
+        fig = Figure(figsize=(max(7.5, 2.2 + 0.28 * width, 2.4 * legcols),
+                              1.6 + 0.28 * len(fams) + legh))
+        FigureCanvasSVG(fig)
+        ax = fig.add_subplot()
+        for i, f in enumerate(fams):
+            for j, d in enumerate(deltas):
+                for m, c in enumerate(cols):
+                    v = cell.get((f, d, c))
+                    x = j * (ncol + gap) + m
+                    if v is None:
+                        ax.add_patch(Rectangle((x, -i - 0.45), 0.9, 0.9,
+                                               fill=False, edgecolor='#bbbbbb'))
+                    else:
+                        ax.add_patch(Rectangle((x, -i - 0.45), 0.9, 0.9,
+                                               facecolor=colour[v]))
+        ax.set_xlim(-0.2, width)
+        ax.set_ylim(-len(fams) + 0.4, 0.6)
+        ax.set_yticks([-i for i in range(len(fams))], fams)
+        ax.set_xticks([j * (ncol + gap) + m + 0.45 for j in range(len(deltas))
+                       for m in range(ncol)],
+                      ['%s%d' % ('+' if c[0] > 0 else '-', c[1])
+                       for _ in deltas for c in cols], fontsize=7)
+        ax.tick_params(length=0)
         for j, d in enumerate(deltas):
-            for m, c in enumerate(cols):
-                v = cell.get((f, d, c))
-                x = left + j * gw + m * cw
-                if v is None:
-                    out.append('<rect x="%d" y="%d" width="%d" height="%d" fill="none" stroke="#bbbbbb"/>'
-                               % (x, y, cw - 2, ch - 2))
-                else:
-                    out.append('<rect x="%d" y="%d" width="%d" height="%d" fill="%s"><title>%s</title></rect>'
-                               % (x, y, cw - 2, ch - 2, colour[v], _esc(v)))
-    y = top + len(fams) * ch + 20
-    for v in kinds:
-        out.append('<rect x="8" y="%d" width="12" height="12" fill="%s" stroke="#888888"/>' % (y - 10, colour[v]))
-        out.append('<text x="26" y="%d">%s</text>' % (y, _esc(v)))
-        y += 16
-    out.append('<text x="8" y="%d" fill="#888888">empty cell: not computed yet</text>' % y)
-    out.append('</svg>')
-    return '\n'.join(out) + '\n'
+            ax.text(j * (ncol + gap), 0.75, 'Delta = %.4g' % d)
+        for side in ax.spines.values():
+            side.set_visible(False)
+        ax.set_title('cable atlas: the companion knot type and Lk each '
+                     'branch reaches\n(its overlap-free stretch with the most '
+                     'axis passages; a cell per arm and mode)', pad=18)
+        handles = [Patch(facecolor=colour[v], edgecolor='#888888', label=v)
+                   for v in kinds]
+        handles.append(Patch(fill=False, edgecolor='#bbbbbb',
+                             label='empty cell: not computed yet'))
+        fig.legend(handles=handles, loc='lower left', ncol=legcols,
+                   frameon=False, borderaxespad=0.2)
+        fig.tight_layout(rect=(0, legh / fig.get_figheight(), 1, 1))
+        buf = io.StringIO()
+        fig.savefig(buf, format='svg', metadata={'Date': None})
+    return buf.getvalue()
 
 
 def summary_md(sweep, results, rows):

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Running a sweep on Dask distributed (doc/atlas.md): a local cluster of
 this machine's cores by default, or the scheduler at an address.
 
@@ -10,6 +11,10 @@ mid-task is replaced (local cluster: its nanny restarts it) and the
 scheduler gives its task to another worker; after Dask's allowed failures
 (distributed.scheduler.allowed-failures, 3) the task is recorded as failed.
 """
+
+__all__ = ['TABLE_INTERVAL', 'read_result', 'remove_stale_partials',
+           'read_flat', 'priority', 'Progress', 'run_sweep']
+
 import json
 import os
 import shutil
@@ -40,7 +45,7 @@ def read_result(sweep, t):
 def _record_failure(sweep, t, error):
     """A task Dask gave up on (its workers died): recorded as failed, as the
     task itself records an error (a directory with result.json)."""
-    from .scenes import write_atomic
+    from .atomic import write_text as write_atomic
     d = os.path.join(sweep.output, 'tasks', t.name)
     os.makedirs(d, exist_ok=True)
     result = {'name': t.name, 'status': 'failed', 'error': error, 'wall': float('nan'), 'rows': [],
@@ -92,7 +97,8 @@ def _fmt_time(s):
     if s != s or s == float('inf'):
         return '?'
     s = int(round(s))
-    return '%dh%02dm' % (s // 3600, s % 3600 // 60) if s >= 3600 else '%dm%02ds' % (s // 60, s % 60)
+    return '%dh%02dm' % (s // 3600, s % 3600 // 60) if s >= 3600 else '%dm%02ds' % (s // 60,
+                                                                                    s % 60)
 
 
 class Progress:
@@ -137,7 +143,8 @@ def _client(scheduler, workers):
         return Client(scheduler), None
     n = workers or os.cpu_count() or 1
     # one thread per worker process: a task owns its process's directory and stdout
-    cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=True, dashboard_address=None,
+    cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=True,
+                           dashboard_address=None,
                            silence_logs=40)
     return Client(cluster), cluster
 
@@ -150,7 +157,8 @@ def run_sweep(sweep, scheduler=None, workers=None, retry_failed=False, stream=No
     from the first submission to the last result), threads (the cluster's
     worker threads at the end)."""
     from distributed import wait
-    from distributed.client import TimeoutError as DaskTimeout   # noqa: the name differs between versions
+    # noqa: the name differs between versions
+    from distributed.client import TimeoutError as DaskTimeout
     stream = stream or sys.stderr
     os.makedirs(os.path.join(sweep.output, 'tasks'), exist_ok=True)
     remove_stale_partials(sweep)
@@ -186,7 +194,8 @@ def run_sweep(sweep, scheduler=None, workers=None, retry_failed=False, stream=No
         by_key = {}
         futures = []
         flats = {}   # flat key -> its finished result or the future computing it (once per sweep)
-        # submitted in priority order as well: with Dask's default (no queuing on the scheduler) every
+        # submitted in priority order as well: with Dask's default (no queuing on the scheduler)
+        # every
         # task goes to a worker at once, and the workers were seen to run them in submission order
         for t in sorted(todo, key=lambda x: -priority(x)):
             ft = t.flat
@@ -197,9 +206,11 @@ def run_sweep(sweep, scheduler=None, workers=None, retry_failed=False, stream=No
                     r = None
                 # a flat branch runs before the mode tasks that wait for it (Dask's dependencies)
                 flats[ft.key] = r if r is not None else client.submit(
-                    run_flat, ft.inputs, ft.name, sweep.output, key='atlas-flat-' + ft.key, pure=False,
+                    run_flat, ft.inputs, ft.name, sweep.output, key='atlas-flat-' + ft.key,
+                    pure=False,
                     priority=priority(t) + 1)
-            f = client.submit(run_task, t.inputs, t.name, sweep.output, flats[ft.key], key='atlas-' + t.key,
+            f = client.submit(run_task, t.inputs, t.name, sweep.output, flats[ft.key],
+                              key='atlas-' + t.key,
                               pure=False, priority=priority(t))
             by_key[f.key] = t
             futures.append(f)
@@ -214,7 +225,8 @@ def run_sweep(sweep, scheduler=None, workers=None, retry_failed=False, stream=No
                 if f.status == 'finished':
                     r = f.result()
                 else:
-                    r = _record_failure(sweep, t, '%s: %s' % (type(f.exception()).__name__, f.exception()))
+                    r = _record_failure(sweep, t, '%s: %s'
+                                        % (type(f.exception()).__name__, f.exception()))
                 known[t.name] = r
                 prog.done += 1
                 counts['computed'] += 1
@@ -223,7 +235,8 @@ def run_sweep(sweep, scheduler=None, workers=None, retry_failed=False, stream=No
                     counts['failed'] += 1
                 elif r['wall'] == r['wall']:
                     prog.walls.append(r['wall'])
-            # the table at most once a second (and at the end): each task's own result is on disk already
+            # the table at most once a second (and at the end): each task's own result is on disk
+            # already
             if done:
                 dirty = True
             if dirty and (not pending or time.time() - written >= TABLE_INTERVAL):

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The sweep file of cable.atlas (doc/atlas.md): a TOML file read with
 Python's tomllib, checked whole before any task starts, and expanded into
 tasks, each keyed by a hash of everything that determines its result.
@@ -5,6 +6,12 @@ tasks, each keyed by a hash of everything that determines its result.
     sweep = load('sweep.toml')        # SweepError naming file, line and key
     for t in sweep.tasks: t.key, t.name, t.inputs
 """
+
+__all__ = ['TASK_VERSION', 'FLAT_VERSION', 'FLAT_DEFAULTS', 'BRANCH_DEFAULTS',
+           'MESH_DEFAULTS', 'KNOT_LTOT', 'LINK_L', 'SweepError', 'Task',
+           'FlatTask', 'flat_inputs', 'Sweep', 'knotting_arm', 'contact_limit',
+           'auto_ntst', 'load']
+
 import hashlib
 import json
 import math
@@ -22,10 +29,14 @@ FLAT_VERSION = 1
 
 # The AUTO constants a sweep may set for the flat branch ([flat]) and the
 # mode branches ([branch]), with their defaults (doc/atlas.md says why).
-FLAT_DEFAULTS = {'DS': 2.0, 'DSMIN': 1e-6, 'DSMAX': 10.0, 'NMX': 200, 'NPR': 0, 'RL0': -200.0, 'RL1': 200.0,
-                 'EPSL': 1e-7, 'EPSU': 1e-7, 'EPSS': 1e-7, 'ITNW': 5, 'NWTN': 3, 'ITMX': 8, 'IAD': 3}
-BRANCH_DEFAULTS = {'DS': 0.05, 'DSMIN': 1e-6, 'DSMAX': 2.0, 'NMX': 400, 'NPR': 10, 'RL0': -200.0, 'RL1': 200.0,
-                   'EPSL': 1e-7, 'EPSU': 1e-7, 'EPSS': 1e-7, 'ITNW': 5, 'NWTN': 3, 'ITMX': 8, 'IAD': 3}
+FLAT_DEFAULTS = {'DS': 2.0, 'DSMIN': 1e-6, 'DSMAX': 10.0, 'NMX': 200, 'NPR': 0, 'RL0': -200.0,
+                 'RL1': 200.0,
+                 'EPSL': 1e-7, 'EPSU': 1e-7, 'EPSS': 1e-7, 'ITNW': 5, 'NWTN': 3, 'ITMX': 8,
+                 'IAD': 3}
+BRANCH_DEFAULTS = {'DS': 0.05, 'DSMIN': 1e-6, 'DSMAX': 2.0, 'NMX': 400, 'NPR': 10, 'RL0': -200.0,
+                   'RL1': 200.0,
+                   'EPSL': 1e-7, 'EPSU': 1e-7, 'EPSS': 1e-7, 'ITNW': 5, 'NWTN': 3, 'ITMX': 8,
+                   'IAD': 3}
 _INT_CONSTANTS = ('NMX', 'NPR', 'ITNW', 'NWTN', 'ITMX', 'IAD')
 MESH_DEFAULTS = {'NTST': 30, 'NCOL': 4}
 KNOT_LTOT = 1.98889      # the knot72 scene's total length (both strands)
@@ -51,7 +62,8 @@ class Task:
         self.key = hashlib.sha256(text.encode()).hexdigest()[:16]
         i = inputs
         self.name = '%s%d%s-D%s-arm%s-m%d-%s' % (i['kind'], i['p'], 'R' if i['hand'] > 0 else 'L',
-                                                 _num(i['Delta']), '+' if i['arm'] > 0 else '-', i['mode'],
+                                                 _num(i['Delta']), '+' if i['arm'] > 0 else '-',
+                                                 i['mode'],
                                                  self.key)
         # the flat branch it starts from (load() shares one between a family's modes)
         self.flat = FlatTask(flat_inputs(inputs, inputs['mode']))
@@ -73,8 +85,10 @@ class FlatTask:
         text = json.dumps(inputs, sort_keys=True, separators=(',', ':'))
         self.key = hashlib.sha256(text.encode()).hexdigest()[:16]
         i = inputs
-        self.name = 'flat-%s%d%s-D%s-arm%s-bp%d-%s' % (i['kind'], i['p'], 'R' if i['hand'] > 0 else 'L',
-                                                      _num(i['Delta']), '+' if i['arm'] > 0 else '-', i['bps'],
+        self.name = 'flat-%s%d%s-D%s-arm%s-bp%d-%s' % (i['kind'], i['p'], 'R' if i['hand'] > 0
+                                                       else 'L',
+                                                      _num(i['Delta']), '+' if i['arm'] > 0
+                                                      else '-', i['bps'],
                                                       self.key)
 
     def __repr__(self):
@@ -85,8 +99,10 @@ def flat_inputs(task_inputs, bps):
     """The inputs of the flat branch a mode task starts from, run to its
     bps-th branch point (bps >= the task's mode)."""
     i = task_inputs
-    return {'version': FLAT_VERSION, 'kind': i['kind'], 'p': i['p'], 'hand': i['hand'], 'Delta': i['Delta'],
-            'length': i['length'], 'arm': i['arm'], 'mesh': i['mesh'], 'flat': i['flat'], 'bps': bps}
+    return {'version': FLAT_VERSION, 'kind': i['kind'], 'p': i['p'], 'hand': i['hand'],
+            'Delta': i['Delta'],
+            'length': i['length'], 'arm': i['arm'], 'mesh': i['mesh'], 'flat': i['flat'],
+            'bps': bps}
 
 
 def _num(x):
@@ -165,7 +181,8 @@ def _modes(w, v, table=None, index=None):
     out = []
     for x in _list(w, v, 'modes', table, index):
         if not isinstance(x, int) or isinstance(x, bool) or x < 1:
-            raise w.error('a mode is the n-th branch point of the arm, n >= 1; got %r' % (x,), 'modes', table,
+            raise w.error('a mode is the n-th branch point of the arm, n >= 1; got %r' % (x,),
+                          'modes', table,
                           index)
         out.append(x)
     return out
@@ -175,7 +192,8 @@ def _arms(w, v, table=None, index=None):
     out = []
     for x in _list(w, v, 'arms', table, index):
         if x not in ('knotting', '+', '-'):
-            raise w.error('an arm is "knotting", "+" (T > 0) or "-" (T < 0); got %r' % (x,), 'arms', table,
+            raise w.error('an arm is "knotting", "+" (T > 0) or "-" (T < 0); got %r' % (x,),
+                          'arms', table,
                           index)
         out.append(x)
     return out
@@ -208,7 +226,8 @@ def _constants(w, v, table, defaults):
     out = dict(defaults)
     for k, x in v.items():
         if k not in defaults:
-            raise w.error('unknown key (the AUTO constants allowed here: %s)' % ', '.join(sorted(defaults)), k,
+            raise w.error('unknown key (the AUTO constants allowed here: %s)'
+                          % ', '.join(sorted(defaults)), k,
                           table)
         if k in _INT_CONSTANTS:
             if not isinstance(x, int) or isinstance(x, bool) or x < 0:
@@ -238,7 +257,8 @@ def _mesh(w, v):
             out[k] = x
             continue
         if not isinstance(x, int) or isinstance(x, bool):
-            raise w.error('must be an integer%s' % (' or "auto"' if k == 'NTST' else ''), k, 'mesh')
+            raise w.error('must be an integer%s' % (' or "auto"' if k == 'NTST' else ''), k,
+                          'mesh')
         if (k == 'NCOL' and not 2 <= x <= 7) or (k == 'NTST' and x < 2):
             raise w.error('out of range (NTST >= 2, 2 <= NCOL <= 7)', k, 'mesh')
         out[k] = x
@@ -263,7 +283,8 @@ def _family(w, f, i, top):
             raise w.error('unknown key (a family has %s)' % ', '.join(_FAMILY_KEYS), k, t, i)
     kind = f.get('kind')
     if kind not in ('knot', 'link'):
-        raise w.error('kind must be "knot" ((p,2) torus knots, p odd) or "link" ((p,2) torus links, p even)',
+        raise w.error('kind must be "knot" ((p,2) torus knots, p odd) or "link" ((p,2) torus '
+                      'links, p even)',
                       'kind', t, i)
     if 'p' not in f:
         raise w.error('missing key p (a list of p of the (p,2) torus %ss)' % kind, 'kind', t, i)
@@ -272,9 +293,11 @@ def _family(w, f, i, top):
         if not isinstance(p, int) or isinstance(p, bool):
             raise w.error('p must be an integer, got %r' % (p,), 'p', t, i)
         if kind == 'knot' and (p < 1 or p % 2 == 0):
-            raise w.error('no (%d,2) torus knot: a knot needs p odd and >= 1 (p even gives a link)' % p, 'p', t, i)
+            raise w.error('no (%d,2) torus knot: a knot needs p odd and >= 1 '
+                          '(p even gives a link)' % p, 'p', t, i)
         if kind == 'link' and (p < 2 or p % 2 == 1):
-            raise w.error('no (%d,2) torus link: a link needs p even and >= 2 (p odd gives a knot)' % p, 'p', t, i)
+            raise w.error('no (%d,2) torus link: a link needs p even and >= 2 '
+                          '(p odd gives a knot)' % p, 'p', t, i)
     hands = f.get('hands', [1 if kind == 'knot' else -1])
     for h in _list(w, hands, 'hands', t, i):
         if h not in (1, -1) or isinstance(h, bool):
@@ -288,7 +311,8 @@ def _family(w, f, i, top):
     lim = contact_limit(kind, float(length))
     for d in deltas:
         if d >= lim:
-            msg = ('Delta = %g is impossible for a %s of length %g: the braid does not fit inside its axis '
+            msg = ('Delta = %g is impossible for a %s of length %g: the braid does not fit inside '
+                   'its axis '
                    '(Delta < %.4g needed)' % (d, kind, length, lim))
             raise w.error(msg, 'deltas', t, i) if 'deltas' in f else w.error(msg, 'deltas')
     modes = _modes(w, f['modes'], t, i) if 'modes' in f else top['modes']
@@ -342,12 +366,16 @@ def load(path):
             for h in hands:
                 for d in deltas:
                     for a in arms:
-                        sign = knotting_arm(kind, h) if a == 'knotting' else (1 if a == '+' else -1)
-                        me = dict(mesh, NTST=auto_ntst(kind, p) if mesh['NTST'] == 'auto' else mesh['NTST'])
+                        sign = knotting_arm(kind, h) if a == 'knotting' else (1 if a == '+'
+                                                                              else -1)
+                        me = dict(mesh, NTST=auto_ntst(kind, p) if mesh['NTST'] == 'auto'
+                                  else mesh['NTST'])
                         group = []
                         for m in modes:
-                            t = Task({'version': TASK_VERSION, 'kind': kind, 'p': p, 'hand': h, 'Delta': d,
-                                      'length': length, 'arm': sign, 'mode': m, 'mesh': me, 'flat': flat,
+                            t = Task({'version': TASK_VERSION, 'kind': kind, 'p': p, 'hand': h,
+                                      'Delta': d,
+                                      'length': length, 'arm': sign, 'mode': m, 'mesh': me,
+                                      'flat': flat,
                                       'branch': branch, 'files': record['files']})
                             if t.key not in seen:
                                 seen.add(t.key)

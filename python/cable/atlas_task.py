@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """One atlas task, run on a Dask worker (or anywhere): the flat branch of a
 (p,2) torus knot or link on one arm up to its mode-th branch point, the
 branch from that point, and the rows of the cable knots or links found on
@@ -9,6 +10,11 @@ OUT/tasks/NAME when everything (b./s./d. files, log.txt, result.json) is
 written: a task directory without the .partial prefix is complete, and a
 worker that dies leaves only a partial directory, which nothing reads.
 """
+
+__all__ = ['TASK_THREADS', 'GATE_VARIABLE', 'ROW_FIELDS', 'segments',
+           'branch_rows', 'compute_flat', 'compute', 'flat_dir',
+           'flat_has_solutions', 'run_flat', 'FLAT_AGAIN_RTOL', 'run_task']
+
 import ctypes
 import json
 import os
@@ -21,7 +27,7 @@ import traceback
 
 from . import _cable, scenes
 from .commands import Runner, constant_text
-from .scenes import write_atomic
+from .atomic import write_text as write_atomic
 
 # A task changes the process's current directory and its standard output
 # (the engine prints to file descriptor 1): one task at a time per process.
@@ -53,9 +59,12 @@ def _wait_at_gate(name):
     while gate and not os.path.exists(os.path.join(gate, name)):
         time.sleep(0.05)
 
-ROW_FIELDS = ['family', 'kind', 'p', 'hand', 'Delta', 'arm', 'mode', 'bp_T', 'bp_F', 'bp_multiplicity',
-              'formulation', 'segment', 'passages', 'companion', 'crossings', 'Lk', 'Lk_tube', 'overlap_free',
-              'LAB_free', 'T_free', 'F_free', 'LAB_free_end', 'T_free_end', 'F_free_end', 'free_end', 'dmin',
+ROW_FIELDS = ['family', 'kind', 'p', 'hand', 'Delta', 'arm', 'mode', 'bp_T', 'bp_F',
+              'bp_multiplicity',
+              'formulation', 'segment', 'passages', 'companion', 'crossings', 'Lk', 'Lk_tube',
+              'overlap_free',
+              'LAB_free', 'T_free', 'F_free', 'LAB_free_end', 'T_free_end', 'F_free_end',
+              'free_end', 'dmin',
               'pmin', 'err', 'wall', 'status', 'error', 'task']
 
 
@@ -74,19 +83,23 @@ def _problem(inp, sym):
 
 def _flat_constants(inp):
     e, par = _problem(inp, False)
-    c = {'e': e, 'NDIM': 21, 'IPS': 4, 'ICP': _ICP[(inp['kind'], False)], 'TORUS': inp['p'], 'HAND': inp['hand'],
-         'PAR': par, 'NTST': inp['mesh']['NTST'], 'NCOL': inp['mesh']['NCOL'], 'JAC': 1, 'ISP': 2, 'ILP': 0,
+    c = {'e': e, 'NDIM': 21, 'IPS': 4, 'ICP': _ICP[(inp['kind'], False)], 'TORUS': inp['p'],
+         'HAND': inp['hand'],
+         'PAR': par, 'NTST': inp['mesh']['NTST'], 'NCOL': inp['mesh']['NCOL'], 'JAC': 1, 'ISP': 2,
+         'ILP': 0,
          'NSV': 2}
     c.update(inp['flat'])
     c['NTHREADS'] = TASK_THREADS
     c['DS'] = inp['arm'] * abs(c['DS'])
-    c['STOP'] = ['BP%d' % inp['bps']]   # BPs of the other arm never come: the run goes one way from T = 0
+    c['STOP'] = ['BP%d'
+                 % inp['bps']]   # BPs of the other arm never come: the run goes one way from T = 0
     return c
 
 
 def _branch_constants(inp, sym):
     e, _ = _problem(inp, sym)
-    c = {'e': e, 'NDIM': 21, 'IPS': 4, 'ICP': _ICP[(inp['kind'], sym)], 'NTST': inp['mesh']['NTST'],
+    c = {'e': e, 'NDIM': 21, 'IPS': 4, 'ICP': _ICP[(inp['kind'], sym)],
+         'NTST': inp['mesh']['NTST'],
          'NCOL': inp['mesh']['NCOL'], 'JAC': 1, 'ISW': -1, 'ISP': 0, 'ILP': 0}
     c.update(inp['branch'])
     c['NTHREADS'] = TASK_THREADS
@@ -125,7 +138,8 @@ def branch_rows(mode_result, bp, lk_bp, base):
     br = mode_result.branches[0]
     sols = mode_result()
     t = [s['T'] for s in sols]
-    t[0] = bp['T']   # the first point is the branch point (the switch's first record; see doc/atlas.md)
+    # the first point is the branch point (the switch's first record; see doc/atlas.md)
+    t[0] = bp['T']
     d = [_cable.tube_dmin(br, i) for i in range(br.nsol)]
     rows = []
     for k, (i0, i1) in enumerate(segments(br)):
@@ -149,7 +163,8 @@ def branch_rows(mode_result, bp, lk_bp, base):
         else:
             why = 'passage'
         row = dict(base, segment=k, passages=(a['Lk'] - lk_bp) / 2, companion=_knot_text(a),
-                   crossings=a['crossings'], Lk=a['Lk'], Lk_tube=a['lk_in_tube'], overlap_free=int(first is not None),
+                   crossings=a['crossings'], Lk=a['Lk'], Lk_tube=a['lk_in_tube'],
+                   overlap_free=int(first is not None),
                    dmin=d[at], pmin=a['pmin'], err=a['err'], free_end=why)
         if first is not None:
             row.update(LAB_free=sols[first].LAB, T_free=t[first], F_free=sols[first]['F'],
@@ -191,9 +206,11 @@ def compute(inp, times, flat, flat_dir):
     bps = flat['bps']
     if len(bps) < inp['mode']:
         fc = fi['flat']
-        raise _cable.CableError('the flat branch has %d branch point(s) on the %s arm up to T = %.6g (NMX = %d, '
+        raise _cable.CableError('the flat branch has %d branch point(s) on the %s arm up to T = '
+                                '%.6g (NMX = %d, '
                                 'RL0..RL1 = %g..%g): no branch point %d'
-                                % (len(bps), '+' if inp['arm'] > 0 else '-', flat['end_T'], fc['NMX'], fc['RL0'],
+                                % (len(bps), '+' if inp['arm'] > 0 else '-', flat['end_T'],
+                                   fc['NMX'], fc['RL0'],
                                    fc['RL1'], inp['mode']))
     bp = bps[inp['mode'] - 1]
     runner = Runner()
@@ -202,17 +219,22 @@ def compute(inp, times, flat, flat_dir):
         raise _cable.CableError('s.flat of %s has %d solutions labelled %d (a BP expected)'
                                 % (flat['name'], len(start), bp['LAB']))
     start = start[0]
-    sym = bp['kind'] == 'double'   # doc/links.md, 2: double BPs switch in the S0-symmetric formulation
+    # doc/links.md, 2: double BPs switch in the S0-symmetric formulation
+    sym = bp['kind'] == 'double'
     bc = _branch_constants(inp, sym)
-    _constants_file('c.branch', '# the branch from branch point %d (cable.atlas)' % inp['mode'], bc)
+    _constants_file('c.branch', '# the branch from branch point %d (cable.atlas)'
+                    % inp['mode'], bc)
     lk_bp = _cable.analyze(*start.branch)['Lk']
     t1 = time.time()
-    # e= is given to run() as well: from a start solution the runner keeps the start's problem over a
-    # constants file's e (measured: c.branch's e = 'braid_knot_sym' alone left the switch in braid_knot)
+    # e= is given to run() as well: from a start solution the runner keeps the start's problem over
+    # a
+    # constants file's e (measured: c.branch's e = 'braid_knot_sym' alone left the switch in
+    # braid_knot)
     mode = runner.run(start, c='branch', e=bc['e'], sv='branch')
     t2 = time.time()
     times['branch'] = t2 - t1
-    base = {'family': _family(inp), 'kind': inp['kind'], 'p': inp['p'], 'hand': inp['hand'], 'Delta': inp['Delta'],
+    base = {'family': _family(inp), 'kind': inp['kind'], 'p': inp['p'], 'hand': inp['hand'],
+            'Delta': inp['Delta'],
             'arm': inp['arm'], 'mode': inp['mode'], 'bp_T': bp['T'], 'bp_F': bp['F'],
             'bp_multiplicity': 2 if sym else 1, 'formulation': bc['e']}
     rows = branch_rows(mode, bp, lk_bp, base)
@@ -258,11 +280,13 @@ def _in_directory(final, inputs, work, complete=None):
             return json.load(fh)
     parent, name = os.path.split(final)
     with _PROCESS_LOCK:
-        part = os.path.join(parent, '.%s.partial-%s-%d' % (name, socket.gethostname(), os.getpid()))
+        part = os.path.join(parent, '.%s.partial-%s-%d'
+                            % (name, socket.gethostname(), os.getpid()))
         if os.path.exists(part):
             shutil.rmtree(part)
         os.makedirs(part)
-        write_atomic(os.path.join(part, 'task.json'), json.dumps(inputs, indent=1, sort_keys=True) + '\n')
+        write_atomic(os.path.join(part, 'task.json'), json.dumps(inputs, indent=1, sort_keys=True)
+                     + '\n')
         write_atomic(os.path.join(part, 'pid'), '%d\n' % os.getpid())
         here = os.getcwd()
         _cable.blas_single_thread()
@@ -294,7 +318,8 @@ def _finish(part, final, result):
     done = os.path.join(final, 'result.json')
     write_atomic(os.path.join(part, 'result.json'), json.dumps(result, indent=1) + '\n')
     os.remove(os.path.join(part, 'pid'))
-    if os.path.exists(final):   # another worker finished it meanwhile (a retried task): keep the first
+    # another worker finished it meanwhile (a retried task): keep the first
+    if os.path.exists(final):
         shutil.rmtree(part)
         with open(done) as fh:
             return json.load(fh)
@@ -339,18 +364,23 @@ def _restore_flat_files(final, inputs, name, kept):
     clone resumes from them) is computed again in a directory of its own;
     its files move into final if its branch points are the kept ones, else
     CableError.  s.flat moves last: its presence marks final as usable."""
-    again_dir = os.path.join(os.path.dirname(final), '.%s.again-%s-%d' % (name, socket.gethostname(), os.getpid()))
+    again_dir = os.path.join(os.path.dirname(final), '.%s.again-%s-%d'
+                             % (name, socket.gethostname(), os.getpid()))
     if os.path.exists(again_dir):
         shutil.rmtree(again_dir)
     try:
         again = _in_directory(again_dir, inputs, lambda: compute_flat(inputs))
         if again['status'] != 'ok':
-            raise _cable.CableError('the flat branch %s, computed again for its solutions, failed: %s'
+            raise _cable.CableError('the flat branch %s, computed again for its solutions, '
+                                    'failed: %s'
                                     % (name, again['error']))
-        same = [(a['LAB'], a['kind']) for a in again['bps']] == [(k['LAB'], k['kind']) for k in kept['bps']] and all(
-            abs(a['T'] - k['T']) <= FLAT_AGAIN_RTOL * max(1.0, abs(k['T'])) for a, k in zip(again['bps'], kept['bps']))
+        same = [(a['LAB'], a['kind']) for a in again['bps']] == [(k['LAB'], k['kind'])
+                                                                 for k in kept['bps']] and all(
+            abs(a['T'] - k['T']) <= FLAT_AGAIN_RTOL * max(1.0, abs(k['T']))
+            for a, k in zip(again['bps'], kept['bps']))
         if not same:
-            raise _cable.CableError('the flat branch %s computed again has other branch points than its result.json '
+            raise _cable.CableError('the flat branch %s computed again has other branch points '
+                                    'than its result.json '
                                     '(%s, kept %s): remove %s to recompute its tasks'
                                     % (name, [(a['LAB'], a['T']) for a in again['bps']],
                                        [(k['LAB'], k['T']) for k in kept['bps']], final))
@@ -381,7 +411,8 @@ def run_task(inputs, name, out_dir, flat=None):
 
     def work():
         _wait_at_gate(name)
-        return {'rows': compute(inputs, times, flat, os.path.abspath(flat_dir(out_dir, flat['name'])))}
+        return {'rows': compute(inputs, times, flat,
+                                os.path.abspath(flat_dir(out_dir, flat['name'])))}
 
     def complete(part, result):
         result.setdefault('rows', [])

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """AUTO-07p's script commands on cable's engine (doc/scripts.md).
 
 A Runner is AUTO's runner: it remembers the constants and problem of the last
@@ -11,6 +12,9 @@ Its commands are AUTO's, with AUTO's short aliases:
   plus cable's analyze,
   compare, overlap_free, branch_table, plot, render.
 """
+
+__all__ = ['constant_text', 'COMMANDS', 'command_names', 'Runner']
+
 import functools
 import os
 import shutil
@@ -19,8 +23,9 @@ import tempfile
 
 import numpy as np
 
-from . import _cable, plotting, scenes
+from . import _cable, atomic, plotting, scenes
 from ._cable import CableError
+from .errors import CableFileNotFoundError, CableKeyError, CableTypeError, CableValueError
 from .constants import Constants
 from .results import Result, Solution
 
@@ -42,7 +47,7 @@ def _value_text(key, v):
         return repr(float(v))
     if isinstance(v, str):
         if "'" in v and '"' in v:
-            raise CableError('%s: a value cannot contain both quote characters' % key)
+            raise CableValueError('%s: a value cannot contain both quote characters' % key)
         q = '"' if "'" in v else "'"
         return q + v + q
     if isinstance(v, np.ndarray):
@@ -50,8 +55,9 @@ def _value_text(key, v):
     if isinstance(v, (list, tuple)):
         return '[' + ', '.join(_value_text(key, x) for x in v) + ']'
     if isinstance(v, dict):
-        return '{' + ', '.join('%s: %s' % (_value_text(key, k), _value_text(key, x)) for k, x in v.items()) + '}'
-    raise CableError('%s: a %s is not a constants value' % (key, type(v).__name__))
+        return '{' + ', '.join('%s: %s' % (_value_text(key, k), _value_text(key, x))
+                               for k, x in v.items()) + '}'
+    raise CableTypeError('%s: a %s is not a constants value' % (key, type(v).__name__))
 
 
 def _command(name):
@@ -65,7 +71,8 @@ def _command(name):
             except CableError as e:
                 if getattr(e, 'command', None):
                     raise
-                err = CableError('%s: %s' % (name, e))
+                # the same class (CableKeyError stays a KeyError ...)
+                err = type(e)('%s: %s' % (name, e))
                 err.status = getattr(e, 'status', -2)
                 err.command = name
                 raise err from None
@@ -78,19 +85,23 @@ def _columns(data):
     ...] (a list or numpy array; AUTO's load(data)), as a float array of
     shape (NDIM + 1, n); None when data is not such a thing."""
     if isinstance(data, np.ndarray) or (isinstance(data, (list, tuple)) and data and
-                                        not any(isinstance(x, (Solution, Result, str)) for x in data)):
+                                        not any(isinstance(x, (Solution, Result, str))
+                                                for x in data)):
         try:
             a = np.array(data, dtype=float)
         except (TypeError, ValueError):
-            raise CableError('start data: columns of numbers expected ([[t0, ..., tn], [x0, ..., xn], ...])') from None
+            raise CableValueError('start data: columns of numbers expected ([[t0, ..., tn], [x0, '
+                                  '..., xn], ...])') from None
         if a.ndim != 2 or a.shape[0] < 2 or a.shape[1] < 2:
-            raise CableError('start data: columns [[t0, ..., tn], [x0, ..., xn], ...] with at least two points '
-                             'expected, got an array of shape %s (a point solution [x, y, ...] is for algebraic '
-                             'problems, which cable does not run)' % (a.shape,))
+            raise CableValueError('start data: columns [[t0, ..., tn], [x0, ..., xn], ...] with '
+                                  'at least two points '
+                                  'expected, got an array of shape %s (a point solution [x, y, '
+                                  '...] is for algebraic '
+                                  'problems, which cable does not run)' % (a.shape,))
         if not np.all(np.isfinite(a)):
-            raise CableError('start data: a value is not finite')
+            raise CableValueError('start data: a value is not finite')
         if not np.all(np.diff(a[0]) > 0):
-            raise CableError('start data: t (the first column) must increase')
+            raise CableValueError('start data: t (the first column) must increase')
         return a
     return None
 
@@ -105,11 +116,12 @@ def _start(data):
         return br, i, data._mbr, data._mlab, None
     if isinstance(data, Result):
         if len(data) == 0:
-            raise CableError('the result is empty')
+            raise CableValueError('the result is empty')
         return data.branches, -1, 0, 0, None
     if isinstance(data, str):
         return None, -1, 0, 0, data
-    raise CableError('the start must be a solution, a result or a name, got a %s' % type(data).__name__)
+    raise CableTypeError('the start must be a solution, a result or a name, got a %s'
+                         % type(data).__name__)
 
 
 def _args(data, kw):
@@ -120,14 +132,17 @@ def _args(data, kw):
         # a keyword is one constants key: run(**{'NMX=50, NPR': 1}) would
         # otherwise be pasted into the override text as two statements
         if not (isinstance(k, str) and k.isidentifier() and k.isascii()):
-            raise CableError('%r: not a constants key (a key is a name such as NMX or DS)' % (k,))
+            raise CableKeyError('%r: not a constants key (a key is a name such as NMX or DS)'
+                                % (k,))
         if k in _NAME_KEYS:
             if not isinstance(v, str):
-                raise CableError('%s: must be a non-empty name, got a %s' % (k, type(v).__name__))
+                raise CableTypeError('%s: must be a non-empty name, got a %s'
+                                     % (k, type(v).__name__))
             names[k] = v
         else:
             over.append(constant_text(k, v))
-    return (start, sol, mbr, mlab, name, names.get('e'), names.get('c'), names.get('s'), names.get('sv'),
+    return (start, sol, mbr, mlab, name, names.get('e'), names.get('c'), names.get('s'),
+            names.get('sv'),
             names.get('ap'), over)
 
 
@@ -145,7 +160,7 @@ class _data_start:
         if cols is None:
             return self.data, self.kw
         if 'dat' in self.kw:
-            raise CableError('start data and dat= both given')
+            raise CableValueError('start data and dat= both given')
         self.dir = tempfile.mkdtemp(prefix='cable-dat-')
         path = os.path.join(self.dir, 'start.dat')
         with open(path, 'w') as f:
@@ -172,20 +187,23 @@ def _branches(x, what):
     if isinstance(x, Solution):
         br, i = x.branch
         return [br], i
-    raise CableError('%s needs a result or a solution, got a %s' % (what, type(x).__name__))
+    raise CableTypeError('%s needs a result or a solution, got a %s' % (what, type(x).__name__))
 
 
 # the commands and their aliases (AUTO's names; cable's own last)
 # (AUTO's commandXxx names are the same commands: AUTOclui exports both)
 COMMANDS = {
-    'run': ('r', 'rn', 'commandRun'), 'load': ('ld', 'commandRunnerLoadName', 'commandRunnerConfig'),
-    'loadbd': ('bd', 'commandParseOutputFiles'), 'save': ('sv',), 'merge': ('mb', 'commandMergeBranches'),
+    'run': ('r', 'rn', 'commandRun'),
+    'load': ('ld', 'commandRunnerLoadName', 'commandRunnerConfig'),
+    'loadbd': ('bd', 'commandParseOutputFiles'), 'save': ('sv',),
+    'merge': ('mb', 'commandMergeBranches'),
     'relabel': ('rl', 'commandRelabel'), 'clean': ('cl', 'commandClean'),
     'delete': ('dl', 'commandDeleteDataFiles'), 'copy': ('cp', 'commandCopyDataFiles'),
     'append': ('ap', 'commandAppend'), 'cd': ('commandCd',), 'auto': (), 'wait': ('commandWait',),
     'pr': ('printconstant', 'pc', 'commandRunnerPrintFort2'), 'analyze': (),
     'plot': ('pl', 'p2', 'commandPlotter'),
-    'sl': ('solutionget', 'commandParseSolutionFile'), 'ch': ('changeconstant', 'cc', 'commandRunnerConfigFort2'),
+    'sl': ('solutionget', 'commandParseSolutionFile'),
+    'ch': ('changeconstant', 'cc', 'commandRunnerConfigFort2'),
     'render': (), 'compare': (),
     'overlap_free': (), 'branch_table': (), 'info': (),
 }
@@ -202,7 +220,8 @@ class Runner:
     def __init__(self):
         self.session = _cable.Session()
         self.script_runner = None   # set by cable.script to run auto('other.auto')
-        self.last = None            # the last run's result: AUTO's fort.7/8/9, for sv('NAME'), ap('NAME')
+        # the last run's result: AUTO's fort.7/8/9, for sv('NAME'), ap('NAME')
+        self.last = None
 
     # --- runs -------------------------------------------------------------------------
     def run(self, data=None, **kw):
@@ -232,23 +251,26 @@ class Runner:
         if _columns(data) is not None:
             # AUTO's load(u) makes a solution of the table itself; cable's
             # table is read by the run (as dat=), there is no solution before
-            raise CableError('data columns are a start for run(u, ...), not for load (cable reads them as '
-                             'dat= when the run starts)')
+            raise CableValueError('data columns are a start for run(u, ...), not for load (cable '
+                                  'reads them as '
+                                  'dat= when the run starts)')
         b = self.session.load(*_args(data, kw))
         return None if b is None else Result([b])(None)[0]
 
     def loadbd(self, name):
         """loadbd('NAME'): the labelled solutions of s.NAME (b.NAME's norms) as a result."""
         if not isinstance(name, str):
-            raise CableError('loadbd needs a name (files b.NAME, s.NAME)')
+            raise CableTypeError('loadbd needs a name (files b.NAME, s.NAME)')
         return Result(self.session.loadbd(name))
 
     def _last_run(self, what):
         if self.last is None:
             if what in ('merge', 'relabel'):
-                raise CableError("%s() works on the last run's output (AUTO's fort.7, fort.8, fort.9), "
+                raise CableError("%s() works on the last run's output (AUTO's fort.7, fort.8, "
+                                 "fort.9), "
                                  "but there was no run yet" % what)
-            raise CableError("%s('NAME') saves the last run's output (AUTO's fort.7, fort.8, fort.9), "
+            raise CableError("%s('NAME') saves the last run's output (AUTO's fort.7, fort.8, "
+                             "fort.9), "
                              "but there was no run yet" % what)
         return self.last
 
@@ -259,7 +281,8 @@ class Runner:
             data, name = self._last_run('save'), data
         br, i = _branches(data, 'save')
         if not isinstance(name, str) or not name:
-            raise CableError('the second argument must be a non-empty name, got a %s' % type(name).__name__)
+            raise CableTypeError('the second argument must be a non-empty name, got a %s'
+                                 % type(name).__name__)
         sys.stdout.flush()
         self.session.save(br, i, name, False)
 
@@ -268,12 +291,14 @@ class Runner:
         append('NAME1', 'NAME2'): the files NAME1 appended to NAME2."""
         if isinstance(x, str) and isinstance(name, Result):   # append('xxx', x): x after the files
             return self.loadbd(x) + name
-        if isinstance(x, str) and name is None:   # append('NAME'): the last run's output (AUTO: fort.*)
+        if isinstance(x,
+                      # append('NAME'): the last run's output (AUTO: fort.*)
+                      str) and name is None:
             x, name = self._last_run('append'), x
         elif isinstance(x, str):
             x = self.loadbd(x)
         if not isinstance(name, str) or not name:
-            raise CableError('the second argument must be a non-empty name')
+            raise CableValueError('the second argument must be a non-empty name')
         br, i = _branches(x, 'append')
         sys.stdout.flush()
         self.session.save(br, i, name, True)
@@ -288,7 +313,8 @@ class Runner:
             return self.last
         if isinstance(name1, str):
             if name2 is not None and not (isinstance(name2, str) and name2):
-                raise CableError("%s('A', 'B'): B must be a name, got a %s" % (what, type(name2).__name__))
+                raise CableTypeError("%s('A', 'B'): B must be a name, got a %s"
+                                     % (what, type(name2).__name__))
             target = name1
             if name2 is not None and name2 != name1:
                 self._copy_files(name1, name2)
@@ -306,15 +332,19 @@ class Runner:
         return self._transform('merge', False, name1, name2)
 
     def sl(self, name):
-        """sl('NAME'): the labelled solutions of s.NAME, as a list (AUTO's sl: loadbd('NAME')())."""
+        """sl('NAME'): the labelled solutions of s.NAME, as a list (AUTO's sl: loadbd('NAME')()).
+        """
         return self.loadbd(name)()
 
     def ch(self, entry=None, value=None, **kw):
-        """ch('KEY', value): change one of the runner's constants (AUTO's ch / cc); ch(KEY=value, ...)
-        likewise; the next run without a start uses them (ch('IRS', 4): label 4 of the runner's solutions)."""
+        """ch('KEY', value): change one of the runner's constants (AUTO's ch / cc); ch(KEY=value,
+        ...)
+        likewise; the next run without a start uses them (ch('IRS', 4): label 4 of the runner's
+        solutions)."""
         if entry is not None:
             if not isinstance(entry, str):
-                raise CableError("ch('KEY', value) takes a constant's name, got a %s" % type(entry).__name__)
+                raise CableTypeError("ch('KEY', value) takes a constant's name, got a %s"
+                                     % type(entry).__name__)
             kw = dict(kw)
             kw[entry] = value
         self.load(None, **kw)
@@ -343,7 +373,8 @@ class Runner:
             sys.stdout.write(str(c))
             return None
         if not isinstance(parameter, str):
-            raise CableError("pr('KEY') takes a constant's name, got a %s" % type(parameter).__name__)
+            raise CableTypeError("pr('KEY') takes a constant's name, got a %s"
+                                 % type(parameter).__name__)
         return c[parameter]
 
     # --- files and directories ----------------------------------------------------------
@@ -370,18 +401,11 @@ class Runner:
             if not os.path.exists(src):
                 continue
             found = True
-            fd, tmp = tempfile.mkstemp(prefix='.%s.' % os.path.basename(dst), dir=os.path.dirname(dst) or '.')
-            os.close(fd)
-            try:
-                shutil.copyfile(src, tmp)
-                os.replace(tmp, dst)
-            finally:
-                if os.path.exists(tmp):
-                    os.remove(tmp)
+            atomic.copy_file(src, dst)
             if verbose:
                 print('Copying %s to %s ...' % (src, dst))
         if not found:
-            raise CableError('%s: no files b./s./d.%s' % (name1, name1))
+            raise CableFileNotFoundError('%s: no files b./s./d.%s' % (name1, name1))
 
     def cd(self, dir=None):
         """cd('DIR'): change directory (~ and $VARS expanded); cd(): home."""
@@ -390,7 +414,7 @@ class Runner:
     def auto(self, script=None):
         """auto('x.auto'): run another script in this runner."""
         if script is None or self.script_runner is None:
-            raise CableError('auto needs a script name')
+            raise CableTypeError('auto needs a script name')
         return self.script_runner(script)
 
     def wait(self):
@@ -400,9 +424,10 @@ class Runner:
 
     # --- cable's scene functions ---------------------------------------------------------
     def analyze(self, sol):
-        """analyze(sol) -> dict: Lk, Tw, Wr, knot type, pressure, tube distance ... (doc/scripts.md)"""
+        """analyze(sol) -> dict: Lk, Tw, Wr, knot type, pressure, tube distance ...
+        (doc/scripts.md)"""
         if not isinstance(sol, Solution):
-            raise CableError('analyze(sol) takes one solution')
+            raise CableTypeError('analyze(sol) takes one solution')
         br, i = sol.branch
         return _cable.analyze(br, i)
 
@@ -415,25 +440,28 @@ class Runner:
                               (isinstance(file, str) and not _picture_file(file))):
             return plotting.figure(self._plot_data(file), x=x, y=y, title=title, marks=marks)
         if file is None:
-            raise CableError("plot('name'), plot(result) or plot('fig.png', ['name', ...], marks=[[sol, 'text'], ...])")
+            raise CableTypeError("plot('name'), plot(result) or plot('fig.png', ['name', ...], "
+                                 "marks=[[sol, 'text'], ...])")
         if isinstance(names, (Result, str)):
             names = [names]
         if (isinstance(file, str) and isinstance(names, (list, tuple)) and names and
                 any(isinstance(n, Result) for n in names)):
             # results in memory: drawn by matplotlib into the file
-            fig = plotting.figure([self._plot_data(n) for n in names], x=x, y=y, title=title, marks=marks)
+            fig = plotting.figure([self._plot_data(n) for n in names], x=x, y=y, title=title,
+                                  marks=marks)
             plotting.save(fig, file)
             print('  diagram written to %s' % file)
             return fig
         if not isinstance(file, str) or not isinstance(names, (list, tuple)) or not names or \
                 not all(isinstance(n, str) for n in names):
-            raise CableError("plot('fig.png', ['name', ...] (saved results or results), marks=[[sol, 'text'], ...])")
+            raise CableTypeError("plot('fig.png', ['name', ...] (saved results or results), "
+                                 "marks=[[sol, 'text'], ...])")
         if marks and ((x and x != 'T') or (y and y != 'F')):
-            raise CableError('marks: marks are drawn on the default (T, F) axes only')
+            raise CableValueError('marks: marks are drawn on the default (T, F) axes only')
         m = []
         for mk in marks:
             if len(mk) != 2 or not isinstance(mk[0], Solution) or not isinstance(mk[1], str):
-                raise CableError('marks: marks are [solution, \'text\'] pairs')
+                raise CableValueError('marks: marks are [solution, \'text\'] pairs')
             # a branch point is marked as one (a filled circle: the paper's
             # numbering of branch points, marks=[[bp, '1'], ...]); others open
             m.append((mk[0]['T'], mk[0]['F'], mk[1], mk[0].TY == 'BP'))
@@ -445,27 +473,32 @@ class Runner:
             return self.loadbd(x)
         if isinstance(x, (Result, Solution)):
             return x
-        raise CableError('plot: a name, a result or a solution expected, got a %s' % type(x).__name__)
+        raise CableTypeError('plot: a name, a result or a solution expected, got a %s'
+                             % type(x).__name__)
 
     def render(self, sol, file, view=None, size=0, thicken=0.0, color=None, vtp=None, ply=None):
-        """render(sol, 'fig.png', view=[x, y, z], size=600, thicken=0, color='pressure', vtp=..., ply=...)"""
+        """render(sol, 'fig.png', view=[x, y, z], size=600, thicken=0, color='pressure', vtp=...,
+        ply=...)"""
         if not isinstance(sol, Solution) or not isinstance(file, str):
-            raise CableError("render(sol, 'fig.png', view=[x, y, z], ...)")
+            raise CableTypeError("render(sol, 'fig.png', view=[x, y, z], ...)")
         if color not in (None, 'pressure'):
-            raise CableError("color: color='pressure' is the only colour map")
+            raise CableValueError("color: color='pressure' is the only colour map")
         if view is not None and len(view) != 3:
-            raise CableError('view: view=[x, y, z]')
+            raise CableValueError('view: view=[x, y, z]')
         br, i = sol.branch
-        _cable.render(br, i, file, None if view is None else tuple(float(v) for v in view), int(size),
+        _cable.render(br, i, file, None if view is None else tuple(float(v) for v in view),
+                      int(size),
                       float(thicken), color == 'pressure', vtp, ply)
         print('  label %d rendered to %s' % (sol.LAB, file))
 
     def compare(self, file, rows, ref=None, notes=()):
-        """compare('table.txt', [[name, x, T, F, Lk(, ref)], ...], ref=sol, notes=[...]) (scenes.compare)"""
+        """compare('table.txt', [[name, x, T, F, Lk(, ref)], ...], ref=sol, notes=[...])
+        (scenes.compare)"""
         return scenes.compare(self, file, rows, ref=ref, notes=notes)
 
     def overlap_free(self, result):
-        """overlap_free(result): the stretches where the tubes do not overlap (scenes.overlap_free)"""
+        """overlap_free(result): the stretches where the tubes do not overlap (scenes.overlap_free)
+        """
         return scenes.overlap_free(result)
 
     def branch_table(self, file, result, paper=None, title=None):
@@ -481,7 +514,8 @@ class Runner:
             ns[name] = fn
             for a in aliases:
                 ns[a] = fn
-        ns.update({'CableError': CableError, 'branch_points': scenes.branch_points, 'bp_kind': scenes.bp_kind,
+        ns.update({'CableError': CableError, 'branch_points': scenes.branch_points,
+                   'bp_kind': scenes.bp_kind,
                    'branch_point': _command('branch_point')(scenes.branch_point),
                    'mirror_table': scenes.mirror_table, 'fail': _command('fail')(scenes.fail)})
         return ns

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """AUTO constants as a Python object (AUTO's parseC): what pr() shows and
 s.c holds.  A Constants is a dict with AUTO's keys (doc/constants.md) whose
 str() is a constants file in AUTO's layout (the keys grouped on lines as a
@@ -5,7 +6,11 @@ c-file has them), readable again by ld(c=...) and `cable run`.  A missing
 key is a cable.CableError naming it; a key that is not set is None (AUTO's
 way) and is not printed.
 """
+
+__all__ = ['layout', 'Constants']
+
 from ._cable import CableError
+from .errors import CableKeyError
 
 # the keys of one line of the printed file, in a constants file's order; the
 # problem's own keys (TORUS, HAND ...) follow on a line of their own
@@ -47,7 +52,8 @@ def layout(constants):
     lines = []
     rest = tuple(k for k in constants if k not in _KNOWN)
     for keys in _LINES + ((rest,) if rest else ()):
-        items = ['%s = %s' % (k, _text(constants[k])) for k in keys if constants.get(k) is not None]
+        items = ['%s = %s' % (k, _text(constants[k])) for k in keys
+                 if constants.get(k) is not None]
         if items:
             lines.append(', '.join(items))
     return '\n'.join(lines) + '\n'
@@ -58,7 +64,7 @@ class Constants(dict):
     dicts, names as a constants file gives them); print(c) shows the file."""
 
     def __missing__(self, key):
-        raise CableError('%s: unknown key' % (key,))
+        raise CableKeyError('%s: unknown key' % (key,))
 
     def __str__(self):
         return layout(self)

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """plot(name), plot(result), plot(sol) as matplotlib figures (AUTO's plot
 opens its plotter window on the same data; cable returns a Figure, which a
 notebook shows and fig.savefig writes).  A diagram: each branch's first
@@ -7,7 +8,11 @@ points marked with their type and label.  A solution: its first component
 against t (or the components x=, y= name).  Figures are made without
 pyplot, so no window or GUI backend is needed.
 """
+
+__all__ = ['figure', 'save']
+
 from ._cable import CableError
+from .errors import CableTypeError, CableValueError
 from .results import Result, Solution, branch_columns
 
 
@@ -16,8 +21,10 @@ def _matplotlib():
         from matplotlib.backends.backend_agg import FigureCanvasAgg
         from matplotlib.figure import Figure
     except ImportError:
-        raise CableError("plot: drawing a figure needs matplotlib (Debian's python3-matplotlib, which "
-                         "scripts/install-deps.sh installs); plot('fig.png', ['name', ...]) draws without it") from None
+        raise CableError("plot: drawing a figure needs matplotlib (Debian's python3-matplotlib, "
+                         "which "
+                         "scripts/install-deps.sh installs); plot('fig.png', ['name', ...]) draws "
+                         "without it") from None
     return Figure, FigureCanvasAgg
 
 
@@ -49,11 +56,12 @@ def _diagram(ax, results, x, y, marks):
                     if ty in ('RG', ''):
                         continue
                     ax.plot([xs[i]], [ys[i]], 'o', ms=4, color=line.get_color())
-                    ax.annotate('%s%d' % (ty, p['LAB'][i]), (xs[i], ys[i]), textcoords='offset points',
+                    ax.annotate('%s%d' % (ty, p['LAB'][i]), (xs[i], ys[i]),
+                                textcoords='offset points',
                                 xytext=(4, 4), fontsize=8)
     for sol, text in marks:
         if not isinstance(sol, Solution) or not isinstance(text, str):
-            raise CableError("marks: marks are [solution, 'text'] pairs")
+            raise CableValueError("marks: marks are [solution, 'text'] pairs")
         xs, ys = sol[xl], sol[yl]
         ax.plot([xs], [ys], 'kx')
         ax.annotate(text, (xs, ys), textcoords='offset points', xytext=(4, -12), fontsize=9)
@@ -83,7 +91,8 @@ def figure(data, x=None, y=None, title=None, marks=()):
         results = data if isinstance(data, (list, tuple)) else [data]
         for r in results:
             if not isinstance(r, Result):
-                raise CableError('plot: a result or a solution expected, got a %s' % type(r).__name__)
+                raise CableTypeError('plot: a result or a solution expected, got a %s'
+                                     % type(r).__name__)
         _diagram(ax, results, x, y, marks)
     if title:
         ax.set_title(title)
@@ -93,14 +102,7 @@ def figure(data, x=None, y=None, title=None, marks=()):
 def save(fig, path):
     """The figure written to path (PNG or SVG by its extension), whole or not at all."""
     import os
-    import tempfile
-    d = os.path.dirname(path) or '.'
+    from .atomic import replacing
     ext = os.path.splitext(path)[1]
-    fd, tmp = tempfile.mkstemp(prefix='.%s.' % os.path.basename(path), suffix=ext, dir=d)
-    os.close(fd)
-    try:
+    with replacing(path, suffix=ext) as tmp:
         fig.savefig(tmp, format=ext[1:].lower() or 'png')
-        os.replace(tmp, path)
-    finally:
-        if os.path.exists(tmp):
-            os.remove(tmp)

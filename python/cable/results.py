@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Results and solutions with AUTO-07p's behaviour (its bifDiag, parseB and
 parseS objects): r('BP1'), r('BP'), r(3), r(), r + s, iteration over
 branches, len, r[0], br['T'] as a numpy array; sol['T'], sol.PAR,
@@ -6,11 +7,15 @@ sol['PAR(1)'], the mesh and components as numpy arrays.
 A Result holds branches computed by the engine (cable._cable.Branch, shared
 and immutable); nothing here copies a solution until its mesh is asked for.
 """
+
+__all__ = ['Parameters', 'Solution', 'SolutionList', 'Result', 'branch_columns']
+
 import re
 
 import numpy as np
 
 from ._cable import Branch, CableError, curves as _curves
+from .errors import CableKeyError, CableValueError
 from .constants import Constants
 
 _SPEC = re.compile(r'^([A-Z][A-Z])(\d*)$')
@@ -40,8 +45,8 @@ class Parameters:
                 return int(m.group(1)) - 1
             if key in self._names and self._names.index(key) < len(self._v):
                 return self._names.index(key)
-            raise CableError('%s: no such parameter (names: %s, PAR(k))'
-                             % (key, ', '.join(n for n in self._names if n)))
+            raise CableKeyError('%s: no such parameter (names: %s, PAR(k))'
+                                % (key, ', '.join(n for n in self._names if n)))
         k = int(key)
         if k < 0:
             k += len(self._v)
@@ -81,7 +86,8 @@ class Parameters:
 class Solution:
     """One labelled solution of a branch (AUTO's parseS.AUTOSolution)."""
 
-    __slots__ = ('_br', '_i', '_lab', '_ty', '_ibr', '_pt', '_par', '_note', '_kind', '_data', '_mbr', '_mlab',
+    __slots__ = ('_br', '_i', '_lab', '_ty', '_ibr', '_pt', '_par', '_note', '_kind', '_data',
+                 '_mbr', '_mlab',
                  '_curv')
 
     def __init__(self, branch, index, info, mbr=0, mlab=0):
@@ -107,12 +113,14 @@ class Solution:
 
     @property
     def c(self):
-        """The constants the solution's run used (AUTO's s.c; print(s.c) shows them as a constants file)."""
+        """The constants the solution's run used (AUTO's s.c; print(s.c) shows them as a constants
+        file)."""
         return Constants(self._br.constants())
 
     @property
     def note(self):
-        """The engine's remark on this point (the d-file's), e.g. 'double branch point: ...'; None: none."""
+        """The engine's remark on this point (the d-file's), e.g. 'double branch point: ...'; None:
+        none."""
         return self._note
 
     # --- what AUTO's solutions offer -------------------------------------------
@@ -199,7 +207,8 @@ class Solution:
         return dict(self._full())
 
     def __getitem__(self, key):
-        # AUTO's parseS solutions also answer to 'Label', 'Type name', 'Branch number', 'Point number'
+        # AUTO's parseS solutions also answer to 'Label', 'Type name', 'Branch number', 'Point
+        # number'
         if key in ('LAB', 'Label'):
             return self._lab
         if key in ('TY', 'TY name', 'Type name'):
@@ -232,8 +241,10 @@ class Solution:
                 return p[key]
             if key in names:
                 return self._full()['u'][:, names.index(key)].copy()
-        raise CableError('%s: no such parameter or component (names: the problem\'s parameters, PAR(k), '
-                         'U(k), t, LAB, BR, PT, TY; a braid solution also x2, y2, z2, xc, yc, zc, p1, p2)' % (key,))
+        raise CableKeyError('%s: no such parameter or component (names: the problem\'s '
+                            'parameters, PAR(k), '
+                            'U(k), t, LAB, BR, PT, TY; a braid solution also x2, y2, z2, xc, yc, '
+                            'zc, p1, p2)' % (key,))
 
     def __contains__(self, key):
         try:
@@ -249,10 +260,12 @@ class Solution:
         return hash((id(self._br), self._i))
 
     def __repr__(self):
-        return '<solution %s label %d, branch %d, point %d>' % (self._ty or '-', self._lab, self._ibr, self._pt)
+        return '<solution %s label %d, branch %d, point %d>' % (self._ty or '-', self._lab,
+                                                                self._ibr, self._pt)
 
     def __str__(self):
-        return ('  BR    PT  TY  LAB\n%4d %5d  %-2s %4d\n' % (self._ibr, self._pt, self._ty, self._lab)
+        return ('  BR    PT  TY  LAB\n%4d %5d  %-2s %4d\n'
+                % (self._ibr, self._pt, self._ty, self._lab)
                 + str(self.PAR))
 
     # --- cable's own ---------------------------------------------------------------
@@ -297,7 +310,7 @@ def _select(sols, label, where):
         for s in sols:
             if s.LAB == label:
                 return s
-        raise CableError('%d: no such label in %s' % (label, where))
+        raise CableKeyError('%d: no such label in %s' % (label, where))
     if isinstance(label, str):
         m = _SPEC.match(label)
         if m and m.group(1) in _TYPES:
@@ -307,9 +320,10 @@ def _select(sols, label, where):
             n = int(m.group(2))
             if 1 <= n <= len(same):
                 return same[n - 1]
-            raise CableError('%s: no such label in %s' % (label, where))
-    raise CableError('%r: not a label: use a number, a type (BP, LP, UZ, EP, MX, RG) or a type and '
-                     'count (BP1)' % (label,))
+            raise CableKeyError('%s: no such label in %s' % (label, where))
+    raise CableValueError('%r: not a label: use a number, a type (BP, LP, UZ, EP, MX, RG) or a '
+                          'type and '
+                          'count (BP1)' % (label,))
 
 
 class Result:
@@ -390,11 +404,13 @@ class Result:
         if not self._br:
             return []
         b = self._br[0]
-        return ['PAR(%d)' % k if not b.parnames[k - 1] else b.parnames[k - 1] for k in b.icp] + ['L2-NORM']
+        return ['PAR(%d)' % k if not b.parnames[k - 1] else b.parnames[k - 1]
+                for k in b.icp] + ['L2-NORM']
 
     def __repr__(self):
         n = sum(b.nsol for b in self._br)
-        return '<result: %d branch%s, %d labelled solution%s>' % (len(self._br), '' if len(self._br) == 1 else 'es',
+        return '<result: %d branch%s, %d labelled solution%s>' % (len(self._br), ''
+                                                                  if len(self._br) == 1 else 'es',
                                                                    n, '' if n == 1 else 's')
 
     def __str__(self):
@@ -415,7 +431,8 @@ def _column(b, key):
         return p['par'][:, int(m.group(1)) - 1].copy()
     if key in names and names.index(key) < p['par'].shape[1]:
         return p['par'][:, names.index(key)].copy()
-    raise CableError("%s: no such column (the problem's parameters, PAR(k), L2-NORM, PT, LAB, TY, BR)" % key)
+    raise CableKeyError("%s: no such column (the problem's parameters, PAR(k), L2-NORM, PT, LAB, "
+                        "TY, BR)" % key)
 
 
 # AUTO prints at most 7 parameter and MAX U columns (its WRLINE; aufile_write.c)
@@ -476,7 +493,8 @@ def _branch_summary(b):
         if not ty or p['LAB'][i] == 0:
             continue
         if not lines:
-            lines.append('\n  BR    PT  TY  LAB ' + ''.join('%-14s' % ('   ' + h) for h, _ in cols))
+            lines.append('\n  BR    PT  TY  LAB '
+                         + ''.join('%-14s' % ('   ' + h) for h, _ in cols))
         lines.append('%4d%6d%4s%5d' % (abs(int(p['BR'][i])), abs(int(p['PT'][i])) % 10000,
                                         '  ' if ty == 'RG' else ty, int(p['LAB'][i]))
                      + ''.join('%14.5E' % c[i] for _, c in cols))

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Post-processing of the scenes in runs/: tables computed from named
 solutions only (nothing here runs during continuation).  The numerical
 analysis of one solution (Lk, writhe, knot type, tube distance, pressure,
@@ -10,12 +11,18 @@ axis self-passages) is C (cable._cable); what is done with it is here.
   branch_table('table.txt', result, paper={...}, title='...')
   mirror_table(pairs)
 """
+
+__all__ = ['COMPARE_T_TOL', 'bp_kind', 'fail', 'branch_points', 'branch_point',
+           'branch_passages', 'compare', 'overlap_free', 'branch_table',
+           'mirror_table']
+
 import math
 import os
-import tempfile
 
 from . import _cable
 from ._cable import CableError
+from .atomic import write_text as write_atomic
+from .errors import CableTypeError, CableValueError
 from .results import Result, Solution
 
 # A UZ label lies at the target T to the engine's location accuracy: the
@@ -24,20 +31,6 @@ from .results import Result, Solution
 # |T| = 1) leaves a margin and is still far below the T spacing of distinct
 # stored points.
 COMPARE_T_TOL = 1e-5
-
-
-def write_atomic(path, text):
-    """Write text to path whole or not at all (a temporary file renamed)."""
-    d = os.path.dirname(path) or '.'
-    fd, tmp = tempfile.mkstemp(prefix='.%s.' % os.path.basename(path), dir=d)
-    try:
-        with os.fdopen(fd, 'w') as f:
-            f.write(text)
-        os.replace(tmp, path)
-    except BaseException:
-        if os.path.exists(tmp):
-            os.remove(tmp)
-        raise
 
 
 def _analyze(sol):
@@ -62,7 +55,7 @@ def fail(message):
     """fail('text'): stop the script with that message (a CableError; in
     Python a scene may equally raise it itself)."""
     if not isinstance(message, str):
-        raise CableError('fail() takes the message as a string')
+        raise CableTypeError('fail() takes the message as a string')
     raise CableError(message)
 
 
@@ -86,9 +79,10 @@ def branch_point(result, T, kind=None):
     one."""
     found = branch_points(result, T=T, kind=kind)
     if len(found) != 1:
-        have = ', '.join('LAB %d at T = %.6g (%s)' % (s.LAB, s['T'], bp_kind(s)) for s in result('BP')) or 'none'
-        raise CableError('%d %sbranch points with T in [%g, %g] (the branch has: %s)'
-                         % (len(found), kind + ' ' if kind else '', min(T), max(T), have))
+        have = ', '.join('LAB %d at T = %.6g (%s)' % (s.LAB, s['T'], bp_kind(s))
+                         for s in result('BP')) or 'none'
+        raise CableValueError('%d %sbranch points with T in [%g, %g] (the branch has: %s)'
+                              % (len(found), kind + ' ' if kind else '', min(T), max(T), have))
     return found[0]
 
 
@@ -126,11 +120,13 @@ def _pick(x, t_target, f_target, row):
     """(solution, number of UZ labels at T_target, which one was taken)."""
     if isinstance(x, Solution):
         if not _at_target_t(x['T'], t_target):
-            raise CableError('compare: row %d: label %d has T = %.10g, not the target T = %.10g'
-                             % (row, x.LAB, x['T'], t_target))
+            raise CableValueError('compare: row %d: label %d has T = %.10g, not the target T = '
+                                  '%.10g'
+                                  % (row, x.LAB, x['T'], t_target))
         return x, 1, 1
     if not isinstance(x, Result):
-        raise CableError('compare: row %d: the second entry must be a result or a solution' % row)
+        raise CableTypeError('compare: row %d: the second entry must be a result or a solution'
+                             % row)
     best, nuz, k = None, 0, 0
     for s in x():
         if s.TY != 'UZ' or not _at_target_t(s['T'], t_target):
@@ -139,8 +135,9 @@ def _pick(x, t_target, f_target, row):
         if best is None or abs(s['F'] - f_target) < abs(best['F'] - f_target):
             best, k = s, nuz
     if best is None:
-        raise CableError("compare: row %d: no UZ label at T = %.10g on that result (run it with UZR={'T': %.10g})"
-                         % (row, t_target, t_target))
+        raise CableValueError("compare: row %d: no UZ label at T = %.10g on that result (run it "
+                              "with UZR={'T': %.10g})"
+                              % (row, t_target, t_target))
     return best, nuz, k
 
 
@@ -177,28 +174,31 @@ def compare(runner, file, rows, ref=None, notes=()):
     solution at T_target; ref a solution of the unbuckled branch, for
     (Lk - Lk_ref)/2.  notes: lines written after the table."""
     if not isinstance(file, str) or not isinstance(rows, (list, tuple)):
-        raise CableError("compare('file', [[name, result, T_target, F_target, Lk_target], ...], ref=sol)")
+        raise CableTypeError("compare('file', [[name, result, T_target, F_target, Lk_target], "
+                             "...], ref=sol)")
     if ref is not None and not isinstance(ref, Solution):
-        raise CableError('ref: ref must be a solution')
+        raise CableTypeError('ref: ref must be a solution')
     if not isinstance(notes, (list, tuple)) or not all(isinstance(n, str) for n in notes):
-        raise CableError('notes: notes must be a list of strings')
+        raise CableTypeError('notes: notes must be a list of strings')
     lk_ref = _analyze(ref)['Lk'] if ref is not None else math.nan
     out = [_COMPARE_HEADER,
            '%-5s %4s %5s %12s %12s %14s %9s %9s %5s %9s %15s %-22s %11s %7s %9s\n'
-           % ('point', 'LAB', 'uz', 'T', 'F_paper', 'F_cable', 'rel', 'Lk', 'dLk/2', 'pass', 'Lk_tube(paper)',
+           % ('point', 'LAB', 'uz', 'T', 'F_paper', 'F_cable', 'rel', 'Lk', 'dLk/2', 'pass',
+              'Lk_tube(paper)',
               'braid axis', 'pmin', 'dmin', 'err')]
     result = []
     for k, row in enumerate(rows, 1):
         ok = (isinstance(row, (list, tuple)) and len(row) in (5, 6) and isinstance(row[0], str)
               and all(_is_number(v) for v in row[2:5]))
         if not ok:
-            raise CableError('compare: row %d must be [name, result or solution, T_target, F_target, Lk_target'
-                             '(, reference solution)]' % k)
+            raise CableTypeError('compare: row %d must be [name, result or solution, T_target, '
+                                 'F_target, Lk_target'
+                                 '(, reference solution)]' % k)
         name, x, t_t, f_t, lk_t = row[:5]
         lref = lk_ref
         if len(row) == 6:
             if not isinstance(row[5], Solution):
-                raise CableError('compare: row %d: the reference must be a solution' % k)
+                raise CableTypeError('compare: row %d: the reference must be a solution' % k)
             lref = _analyze(row[5])['Lk']
         s, nuz, chosen = _pick(x, t_t, f_t, k)
         a = _analyze(s)
@@ -207,15 +207,21 @@ def compare(runner, file, rows, ref=None, notes=()):
         br, i = s.branch
         passes, net, mixed, _, _ = branch_passages(br, i)
         knot = _knot_text(a)
-        out.append('%-5s %4d %5s %12.6f %12.6f %14.7f %9.2e %9.5f %5.1f %9s %15s %-22s %11.4g %7.3f %9.2e\n'
+        out.append('%-5s %4d %5s %12.6f %12.6f %14.7f %9.2e %9.5f %5.1f %9s %15s %-22s %11.4g '
+                   '%7.3f %9.2e\n'
                    % (name, s.LAB, '%d/%d' % (chosen, nuz), s['T'], f_t, s['F'], rel, a['Lk'], dlk,
                       '%d (%d)%s' % (passes, net, '*' if mixed else ''),
-                      '%.4g (%.4g)' % (a['lk_in_tube'], lk_t), knot, a['pmin'], a['dmin'], a['err']))
-        result.append({'name': name, 'LAB': s.LAB, 'T': s['T'], 'F': s['F'], 'T_paper': t_t, 'F_paper': f_t,
+                      '%.4g (%.4g)' % (a['lk_in_tube'], lk_t), knot, a['pmin'], a['dmin'],
+                      a['err']))
+        result.append({'name': name, 'LAB': s.LAB, 'T': s['T'], 'F': s['F'], 'T_paper': t_t,
+                       'F_paper': f_t,
                        'rel': rel, 'uz_at_T': nuz, 'uz_chosen': chosen, 'Lk': a['Lk'],
-                       'lk_in_tube': a['lk_in_tube'], 'lk_paper': lk_t, 'dLk_half': dlk, 'passes': passes,
-                       'passes_net': net, 'passes_mixed': mixed, 'knot': a['knot'], 'hand': a['hand'],
-                       'crossings': a['crossings'], 'pmin': a['pmin'], 'dmin': a['dmin'], 'err': a['err'],
+                       'lk_in_tube': a['lk_in_tube'], 'lk_paper': lk_t, 'dLk_half': dlk,
+                       'passes': passes,
+                       'passes_net': net, 'passes_mixed': mixed, 'knot': a['knot'],
+                       'hand': a['hand'],
+                       'crossings': a['crossings'], 'pmin': a['pmin'], 'dmin': a['dmin'],
+                       'err': a['err'],
                        'solution': s})
     if notes:
         out.append('\n')
@@ -277,7 +283,7 @@ def overlap_free(result):
     itself between two labels.  An end between two labels is interpolated
     linearly in dmin, so its accuracy is the label spacing (NPR)."""
     if not isinstance(result, Result):
-        raise CableError('overlap_free(result) takes one result')
+        raise CableTypeError('overlap_free(result) takes one result')
     out = []
     for br in result.branches:
         _, _, _, tau, _ = branch_passages(br, br.nsol - 1)
@@ -290,26 +296,28 @@ def overlap_free(result):
 def _t_index(br):
     names = br.parnames
     if 'T' not in names:
-        raise CableError('the branch has no parameter T (not a braid problem)')
+        raise CableValueError('the branch has no parameter T (not a braid problem)')
     return names.index('T')
 
 
 # ---- branch_table ---------------------------------------------------------------------
 
-_PAPER_KEYS = "paper: keys are 'knot' (a string), 'Lk', 'T', 'F' (numbers), 'linked', 'psign' (True/False)"
+_PAPER_KEYS = ("paper: keys are 'knot' (a string), 'Lk', 'T', 'F' (numbers), 'linked', "
+               "'psign' (True/False)")
 
 
 def _paper(p):
     if p is None:
         return {}
     if not isinstance(p, dict):
-        raise CableError("paper: paper={'knot': 'right trefoil', 'Lk': 3, 'linked': False, 'psign': True, "
-                         "'T': .., 'F': ..}")
+        raise CableTypeError("paper: paper={'knot': 'right trefoil', 'Lk': 3, 'linked': False, "
+                             "'psign': True, "
+                             "'T': .., 'F': ..}")
     for k, v in p.items():
         ok = ((k == 'knot' and isinstance(v, str)) or (k in ('Lk', 'T', 'F') and _is_number(v))
               or (k in ('linked', 'psign') and isinstance(v, (bool, int, float))))
         if not ok:
-            raise CableError('%s: %s' % (k, _PAPER_KEYS))
+            raise CableValueError('%s: %s' % (k, _PAPER_KEYS))
     return p
 
 
@@ -358,33 +366,44 @@ def _table_point(s, a, p):
            _table_value('T = T1 = -T2', s['T'], p.get('T')),
            _table_value('F', s['F'], p.get('F'))]
     buf = '%s (Lk - %s = %.1e)' % (_g(lkc), _g(lkc), a['Lk'] - lkc)
-    out.append('%-30s %-42s %-16s %s\n' % ('Lk (an integer for a link)' if link else 'Lk (a half-integer for a knot)',
+    out.append('%-30s %-42s %-16s %s\n'
+               % ('Lk (an integer for a link)' if link else 'Lk (a half-integer for a knot)',
                                           buf, _g(p['Lk']) if 'Lk' in p else '-',
                                           _agree(lkc == p['Lk']) if 'Lk' in p else ''))
     out.append('%-30s %.6f, %.6f\n' % ('Tw, Wr', a['Tw'], a['Wr']))
-    out.append('%-30s %-42s %-16s %s\n' % ('braid axis', '%s (crossing number %d)' % (kt, a['crossings']),
-                                          p.get('knot', '-'), _agree(kt == p['knot']) if 'knot' in p else ''))
-    buf = '%s (Lk_tube = %.4g)' % ('unknown' if lk_in < 0 else 'yes' if lk_in else 'no', a['lk_in_tube'])
+    out.append('%-30s %-42s %-16s %s\n'
+               % ('braid axis', '%s (crossing number %d)' % (kt, a['crossings']),
+                                          p.get('knot', '-'), _agree(kt == p['knot'])
+                                          if 'knot' in p else ''))
+    buf = '%s (Lk_tube = %.4g)' % ('unknown' if lk_in < 0 else 'yes' if lk_in else 'no',
+                                   a['lk_in_tube'])
     out.append('%-30s %-42s %-16s %s\n' % ('strands linked inside tube', buf,
-                                          ('yes' if p['linked'] else 'no') if 'linked' in p else '-',
-                                          _agree(lk_in == bool(p['linked'])) if 'linked' in p else ''))
-    buf = '%s: %d on strand 1, %d on strand 2' % ('yes' if a['psign'] or a['psign2'] else 'no', a['psign'],
+                                          ('yes' if p['linked'] else 'no') if 'linked' in p
+                                          else '-',
+                                          _agree(lk_in == bool(p['linked'])) if 'linked' in p
+                                          else ''))
+    buf = '%s: %d on strand 1, %d on strand 2' % ('yes' if a['psign'] or a['psign2'] else 'no',
+                                                  a['psign'],
                                                   a['psign2'])
     out.append('%-30s %-42s %-16s %s\n' % ('contact pressure changes sign', buf,
                                           ('yes' if p['psign'] else 'no') if 'psign' in p else '-',
-                                          _agree((a['psign'] > 0) == bool(p['psign'])) if 'psign' in p else ''))
+                                          _agree((a['psign'] > 0) == bool(p['psign']))
+                                          if 'psign' in p else ''))
     out.append('%-30s %s\n' % ('pmin', '%.6g (p1 in [%.6g, %.6g], p2 in [%.6g, %.6g])'
-                               % (min(a['pmin1'], a['pmin2']), a['pmin1'], a['pmax1'], a['pmin2'], a['pmax2'])))
+                               % (min(a['pmin1'], a['pmin2']), a['pmin1'], a['pmax1'], a['pmin2'],
+                                  a['pmax2'])))
     out.append('%-30s %.4f (axis %.4f)\n' % ('dmin', a['dmin'], a['axis_dmin']))
     out.append('%-30s %.6g (%.4f / Delta)\n' % ('max curvature of the axis', a['axis_kappa_max'],
                                                 a['axis_kappa_max'] * s['Delta']))
     if link:
-        out.append('%-30s %.6f, %.6f (mod 2 pi; 0: closed)\n' % ('material closure xi1, xi2', a['closure'],
+        out.append('%-30s %.6f, %.6f (mod 2 pi; 0: closed)\n'
+                   % ('material closure xi1, xi2', a['closure'],
                                                                 a['closure2']))
     else:
         out.append('%-30s %.6f (mod 2 pi)\n' % ('material closure', a['closure']))
     out.append('%-30s %.2e\n' % ('first-integral drift', a['drift']))
-    out.append('%-30s %.2e\n' % ('error estimate', a['err']) if a['err'] >= 0 else '%-30s -\n' % 'error estimate')
+    out.append('%-30s %.2e\n' % ('error estimate', a['err']) if a['err'] >= 0 else '%-30s -\n'
+               % 'error estimate')
     out.append(_positions('p1 changes sign at s        =', a['psign_s1'], a['psign']))
     out.append(_positions('p2 changes sign at sigma    =', a['psign_sigma2'], a['psign2']))
     out.append(_positions('p2 changes sign at s        =', a['psign_s2'], a['psign2']))
@@ -398,27 +417,39 @@ def _table_row(s, a, why):
     lk_in = _linked(a)
     err = '%9.2e' % a['err'] if a['err'] >= 0 else '%9s' % '-'
     return head + '%10.6f %-18s %8.4f %-6s %11.5g %11.5g %3d %3d %7.4f %8.4f %s\n' % (
-        a['Lk'], _knot_text(a), a['lk_in_tube'], '?' if lk_in < 0 else 'yes' if lk_in else 'no', a['pmin1'],
+        a['Lk'], _knot_text(a), a['lk_in_tube'], '?' if lk_in < 0 else 'yes' if lk_in else 'no',
+        a['pmin1'],
         a['pmin2'], a['psign'], a['psign2'], a['dmin'], a['overlap_length'], err)
 
 
-_TABLE_INTRO = """\
-# Every labelled solution of the branch (%d), analysed as analyze() and `cable analyze` do.
-# T = T1(0) = -T2(0) (the paper's T1 = -T2, t10 = -t20; PAR 'T').  Sign convention: T1 = -C1 (omega1~ - w01)
-#   is minus strand 1's twisting moment and T2 = C2 (Omega1~/sigma' - w02) is strand 2's, so T > 0 means
-#   both strands carry the twisting moment -T about their own tangents (doc/braid-boundary-conditions.md).
-# F = |F|, the braid force; Lk = Tw + Wr of the contact-curve ribbon (integer for a link, half-integer for a knot).
-# axis: knot type of the braid axis (Alexander polynomial and signature of a projection, knot_type.h).
-# Lk_tube: Lk minus the writhe of the axis's minimal diagram; the two strands are linked inside the tube
-#   around the axis when it is not 0 ('linked').
-# p1, p2: contact force per unit length on strand 1, strand 2 (< 0: the strands must be held together);
-#   np1, np2: their sign changes along the braid, at the s (arclength of strand 1) and sigma (of strand 2)
-#   listed at the end.  dmin: closest approach of non-adjacent strand centrelines / Delta (< 1: the tubes
-#   overlap), overlap: length in s where they do; err: discretisation-error estimate.
-# The paper's values are comparison targets, never inputs: the final knot type and the reported point are
-#   decided from the branch alone.
-
-"""
+_TABLE_INTRO = (
+    '# Every labelled solution of the branch (%d), analysed as analyze() and `cable '
+    'analyze` do.\n'
+    "# T = T1(0) = -T2(0) (the paper's T1 = -T2, t10 = -t20; PAR 'T').  Sign "
+    'convention: T1 = -C1 (omega1~ - w01)\n'
+    "#   is minus strand 1's twisting moment and T2 = C2 (Omega1~/sigma' - w02) is "
+    "strand 2's, so T > 0 means\n"
+    '#   both strands carry the twisting moment -T about their own tangents '
+    '(doc/braid-boundary-conditions.md).\n'
+    '# F = |F|, the braid force; Lk = Tw + Wr of the contact-curve ribbon (integer '
+    'for a link, half-integer for a knot).\n'
+    '# axis: knot type of the braid axis (Alexander polynomial and signature of a '
+    'projection, knot_type.h).\n'
+    "# Lk_tube: Lk minus the writhe of the axis's minimal diagram; the two strands "
+    'are linked inside the tube\n'
+    "#   around the axis when it is not 0 ('linked').\n"
+    '# p1, p2: contact force per unit length on strand 1, strand 2 (< 0: the strands '
+    'must be held together);\n'
+    '#   np1, np2: their sign changes along the braid, at the s (arclength of strand '
+    '1) and sigma (of strand 2)\n'
+    '#   listed at the end.  dmin: closest approach of non-adjacent strand '
+    'centrelines / Delta (< 1: the tubes\n'
+    '#   overlap), overlap: length in s where they do; err: discretisation-error '
+    'estimate.\n'
+    "# The paper's values are comparison targets, never inputs: the final knot type "
+    'and the reported point are\n'
+    '#   decided from the branch alone.\n'
+    '\n')
 
 
 def _same_type(a, b):
@@ -432,17 +463,19 @@ def branch_table(runner, file, result, paper=None, title=None):
     stretch whose tubes do not overlap), writes (atomically) and prints the
     table.  Returns the reported point's label (None: no solution)."""
     if not isinstance(file, str) or not isinstance(result, Result):
-        raise CableError("branch_table('file', result, paper={...}, title='...') takes a file name and a result")
+        raise CableTypeError("branch_table('file', result, paper={...}, title='...') takes a file "
+                             "name and a result")
     p = _paper(paper)
     if title is not None and not isinstance(title, str):
-        raise CableError('title: title must be a string')
+        raise CableTypeError('title: title must be a string')
     sols = result()
     an, why = [], []
     for s in sols:
         try:
             an.append(_analyze(s))
             why.append(None)
-        except CableError as e:   # an axis passing through itself has no knot type: a row, not an error
+        # an axis passing through itself has no knot type: a row, not an error
+        except CableError as e:
             an.append(None)
             why.append(_cable_status_text(e))
     n = len(sols)
@@ -464,28 +497,36 @@ def branch_table(runner, file, result, paper=None, title=None):
             if not _same_type(an[i], an[last]):
                 break
             first = i
-        rep = next((i for i in range(first, last + 1) if an[i] is not None and an[i]['dmin'] > 1.0), None)
+        rep = next((i for i in range(first, last + 1) if an[i] is not None
+                    and an[i]['dmin'] > 1.0), None)
         nst = sum(1 for i in range(first, last + 1) if an[i] is not None)
-        out.append('final knot type of the braid axis (decided from the branch): %s\n' % _knot_text(an[last]))
-        out.append('  the type of its last labelled solution, LAB %d; the last %d analysed labelled solutions\n'
+        out.append('final knot type of the braid axis (decided from the branch): %s\n'
+                   % _knot_text(an[last]))
+        out.append('  the type of its last labelled solution, LAB %d; the last %d analysed '
+                   'labelled solutions\n'
                    '  (LAB %d-%d, T from %.5f to %.5f) all have it\n'
-                   % (sols[last].LAB, nst, sols[first].LAB, sols[last].LAB, sols[first]['T'], sols[last]['T']))
+                   % (sols[last].LAB, nst, sols[first].LAB, sols[last].LAB, sols[first]['T'],
+                      sols[last]['T']))
         if rep is not None:
-            out.append('reported point: LAB %d, the first of them whose tubes do not overlap (dmin > 1)\n\n'
+            out.append('reported point: LAB %d, the first of them whose tubes do not overlap '
+                       '(dmin > 1)\n\n'
                        % sols[rep].LAB)
         else:
             rep = first
             for i in range(first, last + 1):
                 if an[i] is not None and an[i]['dmin'] > an[rep]['dmin']:
                     rep = i
-            out.append('reported point: none of them is free of overlap; LAB %d, the one with the largest dmin\n\n'
+            out.append('reported point: none of them is free of overlap; LAB %d, the one with the '
+                       'largest dmin\n\n'
                        % sols[rep].LAB)
         out.extend(_table_point(sols[rep], an[rep], p))
     out.append('\n%4s %-2s %13s %13s %10s %-18s %8s %-6s %11s %11s %3s %3s %7s %8s %9s\n'
-               % ('LAB', 'TY', 'T', 'F', 'Lk', 'axis', 'Lk_tube', 'linked', 'p1min', 'p2min', 'np1', 'np2', 'dmin',
+               % ('LAB', 'TY', 'T', 'F', 'Lk', 'axis', 'Lk_tube', 'linked', 'p1min', 'p2min',
+                  'np1', 'np2', 'dmin',
                   'overlap', 'err'))
     out.extend(_table_row(s, a, w) for s, a, w in zip(sols, an, why))
-    out.append('\n# where the contact pressure changes sign: p1 at s (strand 1), p2 at sigma (strand 2)\n')
+    out.append('\n# where the contact pressure changes sign: p1 at s (strand 1), p2 at sigma '
+               '(strand 2)\n')
     for s, a in zip(sols, an):
         if a is None:
             continue
@@ -514,10 +555,12 @@ def mirror_table(pairs):
     lines = []
     for name, lh, rh in pairs:
         a, b = lh(), rh()
-        pts = [(x, y) for i, (x, y) in enumerate(zip(a, b)) if i == 0 or (x.TY != 'EP' and y.TY != 'EP')]
+        pts = [(x, y) for i, (x, y) in enumerate(zip(a, b)) if i == 0
+               or (x.TY != 'EP' and y.TY != 'EP')]
         dt = max((abs(x['T'] + y['T']) for x, y in pts), default=0.0)
         df = max((abs(x['F'] - y['F']) for x, y in pts), default=0.0)
         fmax = max((x['F'] for x, _ in pts), default=0.0)
-        lines.append('%-9s %3d pairs  max |T_lh + T_rh| = %.2e  max |F_lh - F_rh| = %.2e  (F <= %.1f)'
+        lines.append('%-9s %3d pairs  max |T_lh + T_rh| = %.2e  max |F_lh - F_rh| = %.2e  (F <= '
+                     '%.1f)'
                      % (name, len(pts), dt, df, max(fmax, 0.0)))
     return lines

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Running .auto scripts in CPython, as AUTO's `auto X.auto` does: the
 commands preloaded, the script's directory the working directory (where
 its c./s./b./d. files are read and written), AUTO's shorthand `name args`
@@ -10,6 +11,10 @@ script's file and line, the line itself, and a non-zero exit status:
 Ctrl-C stops a run at its next point (nothing of that run is written) and
 the script with status 130.
 """
+
+__all__ = ['shorthand', 'py2_prints', 'compile_script', 'ScriptRunner',
+           'Terminated', 'run_script', 'main']
+
 import builtins
 import io
 import keyword
@@ -35,7 +40,10 @@ _ARG_OPS = ('[', '{', '~')
 
 
 def _callable_in(namespace, name):
-    obj = namespace.get(name) if namespace is not None and name in namespace else getattr(builtins, name, None)
+    if namespace is not None and name in namespace:
+        obj = namespace.get(name)
+    else:
+        obj = getattr(builtins, name, None)
     return obj if callable(obj) else None
 
 
@@ -62,9 +70,11 @@ def shorthand(text, namespace=None):
             depth += 1
         elif kind == 'OP' and t.string in ')]}':
             depth -= 1
-        stmt_start = prev is None or prev in ('NEWLINE', 'INDENT', 'DEDENT', 'NL') or prev == ':' or prev == ';'
+        stmt_start = prev is None or prev in ('NEWLINE', 'INDENT', 'DEDENT',
+                                              'NL') or prev == ':' or prev == ';'
         obj = (_callable_in(namespace, t.string)
-               if kind == 'NAME' and depth == 0 and stmt_start and not keyword.iskeyword(t.string) else None)
+               if kind == 'NAME' and depth == 0 and stmt_start and not keyword.iskeyword(t.string)
+               else None)
         if obj is not None:
             nxt = toks[k + 1] if k + 1 < len(toks) else None
             nkind = tokenize.tok_name[nxt.type] if nxt else 'ENDMARKER'
@@ -75,7 +85,8 @@ def shorthand(text, namespace=None):
             elif nkind == 'NAME':
                 args = nxt.string not in _NOT_ARGS_KW
             elif nkind == 'OP':
-                args = ((nxt.string in _ARG_OPS and not (nxt.string == '[' and hasattr(obj, '__getitem__')))
+                args = ((nxt.string in _ARG_OPS
+                         and not (nxt.string == '[' and hasattr(obj, '__getitem__')))
                         or (is_print and nxt.string in ('-', '+')))
             else:
                 args = False
@@ -88,7 +99,8 @@ def shorthand(text, namespace=None):
                         d += 1
                     elif tk == 'OP' and toks[j].string in ')]}':
                         d -= 1
-                    if d == 0 and (tk in _STOPS or tk == 'COMMENT' or (tk == 'OP' and toks[j].string == ';')):
+                    if d == 0 and (tk in _STOPS or tk == 'COMMENT'
+                                   or (tk == 'OP' and toks[j].string == ';')):
                         break
                     j += 1
                 last = toks[j - 1] if j - 1 > k else None
@@ -143,7 +155,8 @@ class ScriptRunner:
         # scripts get AUTO's runner's
         names = command_names()
         for mod in ('AUTOclui', 'AUTOCommands'):
-            m = types.ModuleType(mod, "AUTO-07p's %s: cable's commands of the script's runner" % mod)
+            m = types.ModuleType(mod,
+                                 "AUTO-07p's %s: cable's commands of the script's runner" % mod)
             m.__dict__.update({k: v for k, v in self.namespace.items() if k in names})
             m.__all__ = [k for k in names if k in self.namespace]
             sys.modules[mod] = m
@@ -224,14 +237,16 @@ def run_script(path, out=None):
         return 0
     except SyntaxError as e:
         fn = e.filename if e.filename in sr.files else name
-        _report(_shown(fn, path, name), e.lineno or 0, '%s: %s' % (type(e).__name__, e.msg), out, fn)
+        _report(_shown(fn, path, name), e.lineno or 0, '%s: %s' % (type(e).__name__, e.msg),
+                out, fn)
         return 1
     except KeyboardInterrupt as e:
         sys.stdout.flush()
         w = sr.where(e) or (name, 0)
         notes = getattr(e, '__notes__', None)
         sig = 'SIGTERM' if isinstance(e, Terminated) else 'SIGINT'
-        _report(_shown(w[0], path, name), w[1], 'stopped by %s: %s' % (sig, '; '.join(notes) if notes else
+        _report(_shown(w[0], path, name), w[1], 'stopped by %s: %s'
+                % (sig, '; '.join(notes) if notes else
                 'the script stopped; files written before are complete'), out, w[0])
         return 143 if isinstance(e, Terminated) else 130
     except CableError as e:
@@ -262,9 +277,11 @@ def main(argv):
     # threads spin (CABLE_BLAS_THREADS=n keeps n)
     blas_single_thread()
     # the application's too: SIGINT and SIGTERM end the script (exit 130,
-    # 143) after the point being computed, keeping its files, and the log goes out line by line into a file or a pipe
+    # 143) after the point being computed, keeping its files, and the log goes out line by line
+    # into a file or a pipe
     signal.signal(signal.SIGTERM, _on_sigterm)
-    signal.signal(signal.SIGINT, signal.default_int_handler)   # also where the shell ignored it (cmd &)
+    signal.signal(signal.SIGINT,
+                  signal.default_int_handler)   # also where the shell ignored it (cmd &)
     try:
         sys.stdout.reconfigure(line_buffering=True)
     except (AttributeError, ValueError):

@@ -1,7 +1,10 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The HTML, CSS and JavaScript of the page `cable view` writes (cable.view
 fills in the data).  One self-contained file: three.js (Debian's libjs-three)
 is embedded by cable.view, the diagram is SVG drawn here, the solutions come
 as base64 float32 arrays computed by the C analysis (doc/view.md)."""
+
+__all__ = ['CSS', 'BODY', 'JS']
 
 CSS = r"""
 body { font: 13px/1.35 sans-serif; margin: 0; color: #222; background: #fff; }
@@ -9,17 +12,20 @@ header { padding: 6px 10px; background: #f3f3f3; border-bottom: 1px solid #ccc; 
 header h1 { font-size: 15px; margin: 0; display: inline; }
 #main { display: flex; flex-wrap: wrap; gap: 8px; padding: 8px; }
 #left, #right { flex: 1 1 520px; min-width: 420px; }
-#diagram { width: 100%; height: 480px; border: 1px solid #ccc; background: #fff; cursor: crosshair; }
+#diagram { width: 100%; height: 480px; border: 1px solid #ccc; background: #fff;
+    cursor: crosshair; }
 #diagram .pt { cursor: pointer; }
 #diagram .sel { fill: none; stroke: #d00; stroke-width: 2.5; }
 #view3d { width: 100%; height: 480px; border: 1px solid #ccc; position: relative; }
 #view3d canvas { display: block; }
 #colorbar { position: absolute; right: 6px; top: 10px; width: 60px; height: 220px; }
-#tip { position: fixed; pointer-events: none; background: #ffffe8; border: 1px solid #999; padding: 3px 6px;
+#tip { position: fixed; pointer-events: none; background: #ffffe8; border: 1px solid #999;
+    padding: 3px 6px;
        font: 12px monospace; white-space: pre; display: none; z-index: 10; }
 .controls { margin: 4px 0; }
 .controls label { margin-right: 10px; }
-#info { font: 12px monospace; white-space: pre; background: #fafafa; border: 1px solid #ddd; padding: 4px 6px; }
+#info { font: 12px monospace; white-space: pre; background: #fafafa; border: 1px solid #ddd;
+    padding: 4px 6px; }
 #slider { width: 70%; vertical-align: middle; }
 #tasks { max-height: 300px; overflow: auto; border: 1px solid #ccc; margin: 8px; }
 #tasks table { border-collapse: collapse; font-size: 12px; }
@@ -51,7 +57,8 @@ BODY = r"""
    <label><input type="checkbox" id="axis"> braid axis</label>
   </div>
   <div id="view3d"><canvas id="colorbar" width="60" height="220"></canvas></div>
-  <div class="controls"><input type="range" id="slider" min="0" max="0" value="0"> <span id="slidertext"></span></div>
+  <div class="controls"><input type="range" id="slider" min="0" max="0" value="0">
+      <span id="slidertext"></span></div>
   <div id="info"></div>
  </div>
 </div>
@@ -64,9 +71,11 @@ BODY = r"""
 JS = r"""
 (function () {
 'use strict';
-var PALETTE = ['#4e79a7', '#f28e2b', '#e15759', '#76b7b2', '#59a14f', '#edc948', '#b07aa1', '#ff9da7',
+var PALETTE = ['#4e79a7', '#f28e2b', '#e15759', '#76b7b2', '#59a14f', '#edc948',
+    '#b07aa1', '#ff9da7',
                '#9c755f', '#bab0ac'];
-var TYPES = {1: 'BP', 2: 'LP', 3: 'HB', 4: 'RG', 5: 'LP', 6: 'BP', 7: 'PD', 8: 'TR', 9: 'EP', '-9': 'MX',
+var TYPES = {1: 'BP', 2: 'LP', 3: 'HB', 4: 'RG', 5: 'LP', 6: 'BP', 7: 'PD', 8: 'TR',
+    9: 'EP', '-9': 'MX',
              '-4': 'UZ'};
 var SVGNS = 'http://www.w3.org/2000/svg';
 var $ = function (id) { return document.getElementById(id); };
@@ -77,7 +86,8 @@ function b64floats(s) {
   return new Float32Array(buf);
 }
 function typeName(t) {
-  var base = Math.abs(t) % 10, k = String(t < 0 && base === 4 ? -4 : t < 0 && base === 9 ? -9 : base);
+  var base = Math.abs(t) % 10, k = String(t < 0 && base === 4 ? -4 : t < 0 && base === 9
+      ? -9 : base);
   return TYPES[k] || String(t);
 }
 function fmt(x) {
@@ -113,7 +123,8 @@ function dataBox() {
     var xs = column(b, view.x), ys = column(b, view.y);
     for (var i = 0; i < b.npt; i++) {
       if (!isFinite(xs[i]) || !isFinite(ys[i])) continue;
-      x0 = Math.min(x0, xs[i]); x1 = Math.max(x1, xs[i]); y0 = Math.min(y0, ys[i]); y1 = Math.max(y1, ys[i]);
+      x0 = Math.min(x0, xs[i]); x1 = Math.max(x1, xs[i]); y0 = Math.min(y0, ys[i]);
+          y1 = Math.max(y1, ys[i]);
     }
   });
   if (!isFinite(x0)) { x0 = 0; x1 = 1; y0 = 0; y1 = 1; }
@@ -123,7 +134,9 @@ function dataBox() {
   return [x0 - dx, x1 + dx, y0 - dy, y1 + dy];
 }
 function sx(x) { return M.l + (x - view.box[0]) / (view.box[1] - view.box[0]) * (W - M.l - M.r); }
-function sy(y) { return H - M.b - (y - view.box[2]) / (view.box[3] - view.box[2]) * (H - M.t - M.b); }
+function sy(y) {
+  return H - M.b - (y - view.box[2]) / (view.box[3] - view.box[2]) * (H - M.t - M.b);
+}
 function el(name, attrs, parent) {
   var e = document.createElementNS(SVGNS, name);
   for (var k in attrs) e.setAttribute(k, attrs[k]);
@@ -136,23 +149,29 @@ function drawDiagram() {
   while (svg.firstChild) svg.removeChild(svg.firstChild);
   var defs = el('defs', {}, svg), cp = el('clipPath', {id: 'plotarea'}, defs);
   el('rect', {x: M.l, y: M.t, width: W - M.l - M.r, height: H - M.t - M.b}, cp);
-  var grid = el('g', {stroke: '#e4e4e4'}, svg), ticks = el('g', {'font-size': 11, fill: '#333'}, svg);
+  var grid = el('g', {stroke: '#e4e4e4'}, svg), ticks = el('g', {'font-size': 11,
+      fill: '#333'}, svg);
   var b = view.box, xs = niceStep(b[1] - b[0], 8), ys = niceStep(b[3] - b[2], 7);
   for (var x = Math.ceil(b[0] / xs) * xs; x <= b[1]; x += xs) {
     el('line', {x1: sx(x), x2: sx(x), y1: M.t, y2: H - M.b}, grid);
-    el('text', {x: sx(x), y: H - M.b + 14, 'text-anchor': 'middle'}, ticks).textContent = fmt(Math.round(x / xs) * xs);
+    el('text', {x: sx(x), y: H - M.b + 14, 'text-anchor': 'middle'},
+        ticks).textContent = fmt(Math.round(x / xs) * xs);
   }
   for (var y = Math.ceil(b[2] / ys) * ys; y <= b[3]; y += ys) {
     el('line', {x1: M.l, x2: W - M.r, y1: sy(y), y2: sy(y)}, grid);
-    el('text', {x: M.l - 4, y: sy(y) + 4, 'text-anchor': 'end'}, ticks).textContent = fmt(Math.round(y / ys) * ys);
+    el('text', {x: M.l - 4, y: sy(y) + 4, 'text-anchor': 'end'},
+        ticks).textContent = fmt(Math.round(y / ys) * ys);
   }
-  el('rect', {x: M.l, y: M.t, width: W - M.l - M.r, height: H - M.t - M.b, fill: 'none', stroke: '#444'}, svg);
-  el('text', {x: (M.l + W - M.r) / 2, y: H - 8, 'text-anchor': 'middle', 'font-size': 13}, svg).textContent = view.x;
+  el('rect', {x: M.l, y: M.t, width: W - M.l - M.r, height: H - M.t - M.b, fill: 'none',
+      stroke: '#444'}, svg);
+  el('text', {x: (M.l + W - M.r) / 2, y: H - 8, 'text-anchor': 'middle', 'font-size': 13},
+      svg).textContent = view.x;
   el('text', {x: 14, y: (M.t + H - M.b) / 2, 'text-anchor': 'middle', 'font-size': 13,
               transform: 'rotate(-90 14 ' + (M.t + H - M.b) / 2 + ')'}, svg).textContent = view.y;
   // lines, then open circles and texts, then branch points on top (a branch
   // starts at another's branch point: the BP stays visible)
-  var g = el('g', {'clip-path': 'url(#plotarea)'}, svg), marks = el('g', {'clip-path': 'url(#plotarea)'}, svg);
+  var g = el('g', {'clip-path': 'url(#plotarea)'}, svg), marks = el('g',
+      {'clip-path': 'url(#plotarea)'}, svg);
   var bpg = el('g', {'clip-path': 'url(#plotarea)'}, svg);
   run.branches.forEach(function (br, bi) {
     var X = column(br, view.x), Y = column(br, view.y), d = '', pen = false;
@@ -166,13 +185,16 @@ function drawDiagram() {
     // folds: open triangles; branch points: filled black circles
     for (i = 0; i < br.npt; i++) {
       var t = typeName(br.ty[i]);
-      if (t === 'LP') el('path', {d: 'M' + sx(X[i]) + ' ' + (sy(Y[i]) - 6) + 'l5 9h-10z', fill: 'none',
+      if (t === 'LP') el('path', {d: 'M' + sx(X[i]) + ' ' + (sy(Y[i]) - 6) + 'l5 9h-10z',
+          fill: 'none',
                                   stroke: '#000', 'stroke-width': 1.2}, marks);
     }
     br.sols.forEach(function (s, si) {
       var cx = sx(X[s.row]), cy = sy(Y[s.row]), isbp = s.ty === 'BP';
-      var c = el('circle', {cx: cx, cy: cy, r: isbp ? 4 : 4.5, fill: isbp ? '#000' : '#fff', stroke: '#000',
-                            'stroke-width': 1.2, 'class': 'pt', 'data-branch': bi, 'data-index': si,
+      var c = el('circle', {cx: cx, cy: cy, r: isbp ? 4 : 4.5, fill: isbp ? '#000' : '#fff',
+          stroke: '#000',
+                            'stroke-width': 1.2, 'class': 'pt', 'data-branch': bi,
+                                'data-index': si,
                             'data-lab': s.lab, 'data-ty': s.ty}, isbp ? bpg : marks);
       c.addEventListener('click', function () { select(bi, si); });
       c.addEventListener('mousemove', function (ev) { tip(ev, br, s.row, s); });
@@ -183,12 +205,14 @@ function drawDiagram() {
   });
   if (cur.b >= 0) {
     var s = run.branches[cur.b].sols[cur.s], br2 = run.branches[cur.b];
-    el('circle', {cx: sx(column(br2, view.x)[s.row]), cy: sy(column(br2, view.y)[s.row]), r: 8, 'class': 'sel',
+    el('circle', {cx: sx(column(br2, view.x)[s.row]), cy: sy(column(br2, view.y)[s.row]), r: 8,
+        'class': 'sel',
                   id: 'selmark'}, bpg);
   }
   // legend: the branch names, in the corner of the plot that hides the fewest points
   var lw = 150, lh = 14 * run.branches.length + 6, pad = 4;
-  var corners = [[W - M.r - lw - pad, M.t + pad], [M.l + pad, M.t + pad], [W - M.r - lw - pad, H - M.b - lh - pad],
+  var corners = [[W - M.r - lw - pad, M.t + pad], [M.l + pad, M.t + pad], [W - M.r - lw - pad,
+      H - M.b - lh - pad],
                  [M.l + pad, H - M.b - lh - pad]];
   var best = 0, fewest = Infinity;
   corners.forEach(function (c, k) {
@@ -204,9 +228,11 @@ function drawDiagram() {
   });
   var lx = corners[best][0], ly = corners[best][1] + 14;
   var lg = el('g', {'class': 'legend'}, svg);
-  el('rect', {x: lx, y: corners[best][1], width: lw, height: lh, fill: '#fff', 'fill-opacity': 0.85, stroke: '#bbb'}, lg);
+  el('rect', {x: lx, y: corners[best][1], width: lw, height: lh, fill: '#fff',
+      'fill-opacity': 0.85, stroke: '#bbb'}, lg);
   run.branches.forEach(function (br, bi) {
-    el('line', {x1: lx + 6, x2: lx + 26, y1: ly - 4, y2: ly - 4, stroke: PALETTE[bi % PALETTE.length],
+    el('line', {x1: lx + 6, x2: lx + 26, y1: ly - 4, y2: ly - 4,
+        stroke: PALETTE[bi % PALETTE.length],
                 'stroke-width': 2.5}, lg);
     el('text', {x: lx + 32, y: ly}, lg).textContent = br.name;
     ly += 14;
@@ -217,11 +243,13 @@ function tip(ev, br, row, s) {
   run.columns.forEach(function (c) { lines.push(c + ' = ' + fmt(column(br, c)[row])); });
   if (s && s.a) {
     lines.push('Lk = ' + fmt(s.a.Lk) + '   axis: ' + s.a.knot);
-    lines.push('tubes ' + (s.a.noverlap > 0 ? 'overlap' : 'do not overlap') + ' (dmin/Delta = ' + fmt(s.a.dmin) + ')');
+    lines.push('tubes ' + (s.a.noverlap > 0 ? 'overlap' : 'do not overlap') + ' (dmin/Delta = '
+        + fmt(s.a.dmin) + ')');
   }
   var t = $('tip');
   t.textContent = lines.join('\n');
-  t.style.left = (ev.clientX + 14) + 'px'; t.style.top = (ev.clientY + 10) + 'px'; t.style.display = 'block';
+  t.style.left = (ev.clientX + 14) + 'px'; t.style.top = (ev.clientY + 10) + 'px';
+      t.style.display = 'block';
 }
 function setupDiagram() {
   var svg = $('diagram'), drag = null;
@@ -231,15 +259,18 @@ function setupDiagram() {
     var x = view.box[0] + (px - M.l) / (W - M.l - M.r) * (view.box[1] - view.box[0]);
     var y = view.box[2] + (H - M.b - py) / (H - M.t - M.b) * (view.box[3] - view.box[2]);
     var f = ev.deltaY > 0 ? 1.25 : 0.8;
-    view.box = [x + (view.box[0] - x) * f, x + (view.box[1] - x) * f, y + (view.box[2] - y) * f, y + (view.box[3] - y) * f];
+    view.box = [x + (view.box[0] - x) * f, x + (view.box[1] - x) * f, y + (view.box[2] - y) * f,
+        y + (view.box[3] - y) * f];
     drawDiagram();
   }, {passive: false});
-  svg.addEventListener('mousedown', function (ev) { drag = {x: ev.clientX, y: ev.clientY, box: view.box.slice()}; });
+  svg.addEventListener('mousedown', function (ev) { drag = {x: ev.clientX, y: ev.clientY,
+      box: view.box.slice()}; });
   window.addEventListener('mouseup', function () { drag = null; });
   // hover anywhere near a branch: the nearest row (within 8 px) and its values
   svg.addEventListener('mousemove', function (ev) {
     if (drag || (ev.target && ev.target.classList && ev.target.classList.contains('pt'))) return;
-    var r = svg.getBoundingClientRect(), px = ev.clientX - r.left, py = ev.clientY - r.top, best = null, bd = 64;
+    var r = svg.getBoundingClientRect(), px = ev.clientX - r.left, py = ev.clientY - r.top,
+        best = null, bd = 64;
     run.branches.forEach(function (br) {
       var X = column(br, view.x), Y = column(br, view.y);
       for (var i = 0; i < br.npt; i++) {
@@ -267,13 +298,16 @@ function setupDiagram() {
 var three = null;
 // the colour of pressure v: viridis over [lo, hi] when the pressure keeps one
 // sign, blue-white-red over [-m, m] when it changes sign (as graphics/render_colormap.c)
-var VIRIDIS = [[0.267, 0.005, 0.329], [0.283, 0.141, 0.458], [0.254, 0.265, 0.530], [0.207, 0.372, 0.553],
-               [0.164, 0.471, 0.558], [0.128, 0.567, 0.551], [0.135, 0.659, 0.518], [0.267, 0.749, 0.441],
+var VIRIDIS = [[0.267, 0.005, 0.329], [0.283, 0.141, 0.458], [0.254, 0.265, 0.530], [0.207,
+    0.372, 0.553],
+               [0.164, 0.471, 0.558], [0.128, 0.567, 0.551], [0.135, 0.659, 0.518], [0.267,
+                   0.749, 0.441],
                [0.478, 0.821, 0.318], [0.741, 0.873, 0.150], [0.993, 0.906, 0.144]];
 function pcolor(v, cm) {
   if (cm.div) {
     var t = cm.m > 0 ? Math.max(-1, Math.min(1, v / cm.m)) : 0;
-    return t < 0 ? [1 + t * 0.83, 1 + t * 0.6, 1 + t * 0.15] : [1 - t * 0.15, 1 - t * 0.8, 1 - t * 0.85];
+    return t < 0 ? [1 + t * 0.83, 1 + t * 0.6, 1 + t * 0.15] : [1 - t * 0.15, 1 - t * 0.8,
+        1 - t * 0.85];
   }
   var u = cm.hi > cm.lo ? Math.max(0, Math.min(1, (v - cm.lo) / (cm.hi - cm.lo))) : 0.5;
   var x = u * (VIRIDIS.length - 1), k = Math.min(VIRIDIS.length - 2, Math.floor(x)), f = x - k;
@@ -290,15 +324,18 @@ function setup3d() {
   // multisampled context: there the page draws without antialiasing, on the
   // context it probed with (WEBGL_debug_renderer_info names the renderer).
   var canvas = document.createElement('canvas');
-  var attrs = {antialias: false, preserveDrawingBuffer: true, alpha: false, depth: true, stencil: false};
+  var attrs = {antialias: false, preserveDrawingBuffer: true, alpha: false, depth: true,
+      stencil: false};
   var gl = canvas.getContext('webgl', attrs);
   if (!gl) throw new Error('no WebGL context');
   var dbg = gl.getExtension('WEBGL_debug_renderer_info');
   var name = dbg ? String(gl.getParameter(dbg.UNMASKED_RENDERER_WEBGL)) : '';
   var software = /swiftshader|llvmpipe|software/i.test(name);
   window.cableView.webgl = {renderer: name, software: software};
-  var renderer = software ? new THREE.WebGLRenderer({canvas: canvas, context: gl, preserveDrawingBuffer: true})
-                          : new THREE.WebGLRenderer({antialias: true, preserveDrawingBuffer: true});
+  var renderer = software ? new THREE.WebGLRenderer({canvas: canvas, context: gl,
+      preserveDrawingBuffer: true})
+                          : new THREE.WebGLRenderer({antialias: true,
+                              preserveDrawingBuffer: true});
   renderer.setPixelRatio(1);
   renderer.setSize(box.clientWidth, box.clientHeight);
   renderer.setClearColor(0xffffff, 1);
@@ -312,15 +349,18 @@ function setup3d() {
   scene.add(camera);
   var controls = new THREE.OrbitControls(camera, renderer.domElement);
   controls.addEventListener('change', function () { renderer.render(scene, camera); });
-  three = {renderer: renderer, scene: scene, camera: camera, controls: controls, group: null, fitted: null};
+  three = {renderer: renderer, scene: scene, camera: camera, controls: controls, group: null,
+      fitted: null};
 }
 // a tube of radius r around the centre line P (n points), rings on parallel-transported frames
 function tubeGeometry(P, n, r, closed, colors) {
-  var m = 16, pos = new Float32Array(n * m * 3), nor = new Float32Array(n * m * 3), col = new Float32Array(n * m * 3);
+  var m = 16, pos = new Float32Array(n * m * 3), nor = new Float32Array(n * m * 3),
+      col = new Float32Array(n * m * 3);
   var T = [], i, k;
   for (i = 0; i < n; i++) {
     var a = i > 0 ? i - 1 : (closed ? n - 2 : 0), b = i < n - 1 ? i + 1 : (closed ? 1 : n - 1);
-    var t = new THREE.Vector3(P[3 * b] - P[3 * a], P[3 * b + 1] - P[3 * a + 1], P[3 * b + 2] - P[3 * a + 2]);
+    var t = new THREE.Vector3(P[3 * b] - P[3 * a], P[3 * b + 1] - P[3 * a + 1],
+        P[3 * b + 2] - P[3 * a + 2]);
     if (t.lengthSq() === 0) t.set(0, 0, 1);
     T.push(t.normalize());
   }
@@ -333,7 +373,8 @@ function tubeGeometry(P, n, r, closed, colors) {
     for (k = 0; k < m; k++) {
       var ph = 2 * Math.PI * k / m, c = Math.cos(ph), s = Math.sin(ph), j = 3 * (i * m + k);
       var nx = c * N.x + s * B.x, ny = c * N.y + s * B.y, nz = c * N.z + s * B.z;
-      pos[j] = P[3 * i] + r * nx; pos[j + 1] = P[3 * i + 1] + r * ny; pos[j + 2] = P[3 * i + 2] + r * nz;
+      pos[j] = P[3 * i] + r * nx; pos[j + 1] = P[3 * i + 1] + r * ny;
+          pos[j + 2] = P[3 * i + 2] + r * nz;
       nor[j] = nx; nor[j + 1] = ny; nor[j + 2] = nz;
       col[j] = colors[3 * i]; col[j + 1] = colors[3 * i + 1]; col[j + 2] = colors[3 * i + 2];
     }
@@ -360,10 +401,12 @@ function solutionArrays(br, s) {
 function drawColorbar(cm) {
   var c = $('colorbar'), ctx = c.getContext('2d');
   ctx.clearRect(0, 0, c.width, c.height);
-  var x0 = 4, y0 = 28, h = c.height - 40, w = 14, top = cm.div ? cm.m : cm.hi, bot = cm.div ? -cm.m : cm.lo;
+  var x0 = 4, y0 = 28, h = c.height - 40, w = 14, top = cm.div ? cm.m : cm.hi,
+      bot = cm.div ? -cm.m : cm.lo;
   for (var i = 0; i < h; i++) {
     var rgb = pcolor(top + (bot - top) * i / (h - 1), cm);
-    ctx.fillStyle = 'rgb(' + Math.round(255 * rgb[0]) + ',' + Math.round(255 * rgb[1]) + ',' + Math.round(255 * rgb[2]) + ')';
+    ctx.fillStyle = 'rgb(' + Math.round(255 * rgb[0]) + ',' + Math.round(255 * rgb[1]) + ','
+        + Math.round(255 * rgb[2]) + ')';
     ctx.fillRect(x0, y0 + i, w, 1);
   }
   ctx.strokeStyle = '#444'; ctx.strokeRect(x0, y0, w, h);
@@ -389,7 +432,8 @@ function show3d(br, s) {
     three.group.traverse(function (o) { if (o.geometry) o.geometry.dispose(); });
   }
   var grp = new THREE.Group();
-  var mat = new THREE.MeshPhongMaterial({vertexColors: THREE.VertexColors, shininess: 40, specular: 0x333333});
+  var mat = new THREE.MeshPhongMaterial({vertexColors: THREE.VertexColors, shininess: 40,
+      specular: 0x333333});
   grp.add(new THREE.Mesh(tubeGeometry(A.r1, n, s.radius, s.closed, c1), mat));
   grp.add(new THREE.Mesh(tubeGeometry(A.r2, n, s.radius, s.closed, c2), mat));
   var axg = new THREE.BufferGeometry();
@@ -404,7 +448,8 @@ function show3d(br, s) {
   // fit the camera to the first solution of a branch; later ones keep the view
   if (three.fitted !== br) {
     var bb = new THREE.Box3().setFromBufferAttribute(new THREE.BufferAttribute(A.r1, 3));
-    var ctr = bb.getCenter(new THREE.Vector3()), rad = bb.getSize(new THREE.Vector3()).length() / 2 + s.radius;
+    var ctr = bb.getCenter(new THREE.Vector3()),
+        rad = bb.getSize(new THREE.Vector3()).length() / 2 + s.radius;
     // look along the direction of least extent (a flat knot seen from above)
     var sz = bb.getSize(new THREE.Vector3()), dir = new THREE.Vector3(0, 0, 1);
     if (sz.x <= sz.y && sz.x <= sz.z) dir.set(1, 0, 0); else if (sz.y <= sz.z) dir.set(0, 1, 0);
@@ -423,7 +468,8 @@ function show3d(br, s) {
 }
 function cameraMatrix() {
   three.camera.updateMatrixWorld();
-  var M = new THREE.Matrix4().multiplyMatrices(three.camera.projectionMatrix, three.camera.matrixWorldInverse);
+  var M = new THREE.Matrix4().multiplyMatrices(three.camera.projectionMatrix,
+      three.camera.matrixWorldInverse);
   return Array.prototype.slice.call(M.elements);
 }
 
@@ -436,14 +482,18 @@ function select(bi, si) {
   $('slider').value = String(si);
   $('slidertext').textContent = (si + 1) + ' of ' + br.sols.length + ' solutions on ' + br.name;
   var lines = ['branch ' + br.name + '   LAB ' + s.lab + '   ' + s.ty + '   PT ' + s.pt];
-  lines.push(run.columns.slice(0, 4).map(function (c) { return c + ' = ' + fmt(column(br, c)[s.row]); }).join('   '));
+  lines.push(run.columns.slice(0, 4).map(function (c) { return c + ' = ' + fmt(column(br,
+      c)[s.row]); }).join('   '));
   var info = {branch: br.name, lab: s.lab, ty: s.ty, pt: s.pt, has3d: !!s.n};
   run.columns.forEach(function (c) { info[c] = column(br, c)[s.row]; });
   if (s.a) {
-    lines.push('companion knot (braid axis): ' + s.a.knot + '   Lk = ' + fmt(s.a.Lk) + '  (Tw ' + fmt(s.a.Tw) +
+    lines.push('companion knot (braid axis): ' + s.a.knot + '   Lk = ' + fmt(s.a.Lk) + '  (Tw '
+        + fmt(s.a.Tw) +
                ', Wr ' + fmt(s.a.Wr) + ')');
-    lines.push('tubes ' + (s.a.noverlap > 0 ? 'OVERLAP' : 'do not overlap') + ': min distance / Delta = ' +
-               fmt(s.a.dmin) + '   pressure ' + fmt(s.a.pmin) + ' .. ' + fmt(Math.max(s.a.pmax1, s.a.pmax2)));
+    lines.push('tubes ' + (s.a.noverlap > 0 ? 'OVERLAP' : 'do not overlap')
+        + ': min distance / Delta = ' +
+               fmt(s.a.dmin) + '   pressure ' + fmt(s.a.pmin) + ' .. ' + fmt(Math.max(s.a.pmax1,
+                   s.a.pmax2)));
     for (var k in s.a) info[k] = s.a[k];
   }
   if (s.n && three) {
@@ -466,7 +516,8 @@ window.cableView.axisVisible = function () {
 window.cableView.findLabel = function (name, lab) {
   for (var b = 0; b < run.branches.length; b++)
     if (run.branches[b].name === name)
-      for (var s = 0; s < run.branches[b].sols.length; s++) if (run.branches[b].sols[s].lab === lab) return [b, s];
+      for (var s = 0; s < run.branches[b].sols.length;
+          s++) if (run.branches[b].sols[s].lab === lab) return [b, s];
   return null;
 };
 
@@ -477,14 +528,16 @@ function showRun(r) {
   ['xcol', 'ycol'].forEach(function (id) {
     var sel = $(id);
     sel.innerHTML = '';
-    run.columns.forEach(function (c) { var o = document.createElement('option'); o.value = o.textContent = c; sel.appendChild(o); });
+    run.columns.forEach(function (c) { var o = document.createElement('option');
+        o.value = o.textContent = c; sel.appendChild(o); });
   });
   view.x = run.xdefault; view.y = run.ydefault;
   $('xcol').value = view.x; $('ycol').value = view.y;
   var bs = $('branch');
   bs.innerHTML = '';
   run.branches.forEach(function (br, i) {
-    var o = document.createElement('option'); o.value = String(i); o.textContent = br.name + ' (' + br.sols.length + ')';
+    var o = document.createElement('option'); o.value = String(i);
+        o.textContent = br.name + ' (' + br.sols.length + ')';
     bs.appendChild(o);
   });
   view.box = dataBox();
@@ -502,7 +555,8 @@ function showRun(r) {
   // start at the first UZ point (a scene's chosen T), else the first solution with a 3-D shape
   for (var b1 = 0; b1 < run.branches.length; b1++)
     for (var s1 = 0; s1 < run.branches[b1].sols.length; s1++)
-      if (run.branches[b1].sols[s1].n && run.branches[b1].sols[s1].ty === 'UZ') { select(b1, s1); return; }
+      if (run.branches[b1].sols[s1].n && run.branches[b1].sols[s1].ty === 'UZ') { select(b1,
+          s1); return; }
   for (var b = 0; b < run.branches.length; b++)
     for (var s = 0; s < run.branches[b].sols.length; s++)
       if (run.branches[b].sols[s].n) { select(b, s); return; }
@@ -515,7 +569,8 @@ function showAtlas() {
   box.style.display = 'block';
   var t = document.createElement('table'), head = document.createElement('tr');
   var cols = DATA.columns;
-  ['task'].concat(cols).forEach(function (c) { var th = document.createElement('th'); th.textContent = c; head.appendChild(th); });
+  ['task'].concat(cols).forEach(function (c) { var th = document.createElement('th');
+      th.textContent = c; head.appendChild(th); });
   t.appendChild(head);
   DATA.tasks.forEach(function (task, ti) {
     task.rows.forEach(function (row, ri) {
@@ -525,7 +580,8 @@ function showAtlas() {
       var td = document.createElement('td');
       td.textContent = ri === 0 ? task.name + (task.run ? '' : ' (no b./s. files)') : '';
       tr.appendChild(td);
-      cols.forEach(function (c) { var d = document.createElement('td'); d.textContent = fmt(row[c]); tr.appendChild(d); });
+      cols.forEach(function (c) { var d = document.createElement('td');
+          d.textContent = fmt(row[c]); tr.appendChild(d); });
       tr.onclick = function () { openTask(ti); };
       t.appendChild(tr);
     });
@@ -534,7 +590,8 @@ function showAtlas() {
   var first = -1;
   DATA.tasks.forEach(function (task, ti) { if (first < 0 && task.run) first = ti; });
   if (first >= 0) openTask(first);
-  else $('info').textContent = 'none of the ' + DATA.tasks.length + ' tasks has its b./s. files here';
+  else $('info').textContent = 'none of the ' + DATA.tasks.length
+      + ' tasks has its b./s. files here';
 }
 function openTask(ti) {
   var task = DATA.tasks[ti];
@@ -547,7 +604,8 @@ function openTask(ti) {
   showRun(task.run);
 }
 window.cableView.openTask = function (name) {
-  for (var i = 0; i < DATA.tasks.length; i++) if (DATA.tasks[i].name === name) { openTask(i); return true; }
+  for (var i = 0; i < DATA.tasks.length; i++) if (DATA.tasks[i].name === name) { openTask(i);
+      return true; }
   return false;
 };
 
@@ -578,6 +636,7 @@ function start() {
   window.cableView.ready = true;
   window.cableView.readyAt = performance.now();
 }
-if (document.readyState === 'loading') document.addEventListener('DOMContentLoaded', start); else start();
+if (document.readyState === 'loading') document.addEventListener('DOMContentLoaded', start);
+    else start();
 })();
 """

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """cable view: one self-contained HTML page that links a bifurcation diagram
 to the 3-D shapes of its solutions (doc/view.md).
 
@@ -12,6 +13,11 @@ labelled solution (cable_solution_strands) and its analysis (Lk, the braid
 axis's knot type, tube overlap: cable_braid_analysis_compute).  The page embeds
 Debian's three.js (libjs-three) and works offline from the file.
 """
+
+__all__ = ['THREE_DIR', 'THREE_FILES', 'ANALYSIS_KEYS', 'run_data',
+           'result_data', 'ATLAS_COLUMNS', 'atlas_data', 'page',
+           'directory_page', 'write_page', 'View', 'view', 'main']
+
 import base64
 import glob
 import html
@@ -19,19 +25,21 @@ import json
 import math
 import os
 import sys
-import tempfile
 
 import numpy as np
 
 from . import _cable
 from ._cable import CableError
+from .atomic import write_text
+from .errors import CableFileNotFoundError, CableTypeError
 from .view_page import BODY, CSS, JS
 
 THREE_DIR = '/usr/share/javascript/three'
 THREE_FILES = ('three.min.js', 'examples/js/controls/OrbitControls.js')
 
 # the analysis values the page shows (names of _cable.analyze's dict)
-ANALYSIS_KEYS = ('Lk', 'Tw', 'Wr', 'knot', 'hand', 'crossings', 'dmin', 'noverlap', 'overlap_length', 'pmin',
+ANALYSIS_KEYS = ('Lk', 'Tw', 'Wr', 'knot', 'hand', 'crossings', 'dmin', 'noverlap',
+                 'overlap_length', 'pmin',
                  'pmax1', 'pmax2')
 
 
@@ -43,8 +51,9 @@ def _scripts():
             with open(path, encoding='utf-8') as fh:
                 out.append(fh.read())
         except OSError as e:
-            raise CableError('%s: %s (the page embeds Debian\'s three.js: apt-get install libjs-three)'
-                             % (path, e.strerror)) from None
+            raise CableFileNotFoundError('%s: %s (the page embeds Debian\'s three.js: apt-get '
+                                         'install libjs-three)'
+                                         % (path, e.strerror)) from None
     return out
 
 
@@ -85,7 +94,8 @@ def _section(name, columns, data, pt, ty, lab, sols):
             continue
         e, off = _solution(b, i, slab, sty, spt, row_of[slab], geom, off)
         entries.append(e)
-    return {'name': name, 'npt': npt, 'colnames': list(columns), 'coldata': data, 'pt': [int(x) for x in pt],
+    return {'name': name, 'npt': npt, 'colnames': list(columns), 'coldata': data,
+            'pt': [int(x) for x in pt],
             'ty': [int(x) for x in ty], 'sols': entries,
             'geometry': _b64(np.concatenate(geom)) if geom else ''}
 
@@ -106,7 +116,8 @@ def _finish(title, sections):
         s['data'] = _b64(cols)
     x = names[0] if names else 'PT'
     y = 'F' if 'F' in names else 'L2-NORM' if 'L2-NORM' in names else names[-1]
-    return {'kind': 'run', 'title': title, 'columns': names, 'xdefault': x, 'ydefault': y, 'branches': sections}
+    return {'kind': 'run', 'title': title, 'columns': names, 'xdefault': x, 'ydefault': y,
+            'branches': sections}
 
 
 def _bnames(directory):
@@ -127,7 +138,7 @@ def run_data(directory, title=None):
     directory = os.path.abspath(directory)
     names = _bnames(directory)
     if not names:
-        raise CableError('%s: no b-files (b.NAME) in this directory' % directory)
+        raise CableFileNotFoundError('%s: no b-files (b.NAME) in this directory' % directory)
     runner = Runner()
     here = os.getcwd()
     runner.cd(directory)   # loadbd reads from the runner's directory
@@ -145,14 +156,17 @@ def _run_data(runner, directory, names, title):
         if os.path.isfile(os.path.join(directory, 's.' + name)):
             for b in runner.loadbd(name).branches:
                 for i, lab in enumerate(b.labels()):
-                    sols.setdefault(abs(int(lab[2])), []).append((b, i, int(lab[0]), lab[1], int(lab[2]), int(lab[3])))
+                    sols.setdefault(abs(int(lab[2])),
+                                    []).append((b, i, int(lab[0]), lab[1], int(lab[2]),
+                                                int(lab[3])))
         for k, sec in enumerate(secs):
             npt = len(sec['pt'])
             data = np.frombuffer(sec['data'], dtype=np.float64).reshape(len(sec['columns']), npt)
             brs = {abs(x) for x in sec['br']}
             mine = [s for br in sorted(brs) for s in sols.get(br, [])]
             label = name if len(secs) == 1 else '%s (%d)' % (name, k + 1)
-            sections.append(_section(label, sec['columns'], data, sec['pt'], sec['ty'], sec['lab'], mine))
+            sections.append(_section(label, sec['columns'], data, sec['pt'], sec['ty'],
+                                     sec['lab'], mine))
     return _finish(title or os.path.basename(os.path.abspath(directory)), sections)
 
 
@@ -167,16 +181,20 @@ def result_data(result, title='cable result', select=None):
         if 'F' in names and 'F' not in cols:
             cols.append('F')
         data = [p['par'][:, names.index(c)] for c in cols] + [p['L2-NORM']]
-        sols = [(b, i, int(lab[0]), lab[1], int(lab[2]), int(lab[3])) for i, lab in enumerate(b.labels())]
-        sections.append(_section('branch %d' % b.ibr if len(result.branches) > 1 or not b.ibr else 'branch %d' % b.ibr,
-                                 cols + ['L2-NORM'], np.array(data), p['PT'], p['TY'], p['LAB'], sols))
+        sols = [(b, i, int(lab[0]), lab[1], int(lab[2]), int(lab[3]))
+                for i, lab in enumerate(b.labels())]
+        sections.append(_section('branch %d' % b.ibr if len(result.branches) > 1 or not b.ibr
+                                 else 'branch %d' % b.ibr,
+                                 cols + ['L2-NORM'], np.array(data), p['PT'], p['TY'],
+                                 p['LAB'], sols))
     d = _finish(title, sections)
     if select is not None:
         d['select'] = select
     return d
 
 
-ATLAS_COLUMNS = ('family', 'Delta', 'mode', 'segment', 'companion', 'Lk', 'overlap_free', 'T_free', 'F_free',
+ATLAS_COLUMNS = ('family', 'Delta', 'mode', 'segment', 'companion', 'Lk', 'overlap_free', 'T_free',
+                 'F_free',
                  'T_free_end', 'F_free_end', 'free_end', 'dmin', 'status')
 
 
@@ -200,11 +218,14 @@ def atlas_data(directory):
         if _bnames(tdir):
             task['run'] = run_data(tdir, title=name)
         else:
-            task['why'] = ('no b./s. files in tasks/%s: the repository keeps each task\'s result.json; '
-                           'the files are there where the atlas ran ([record] files = true)' % name)
+            task['why'] = ('no b./s. files in tasks/%s: the repository keeps each task\'s '
+                           'result.json; '
+                           'the files are there where the atlas ran ([record] files = true)'
+                           % name)
         tasks.append(task)
     if not tasks:
-        raise CableError('%s: no finished atlas task (tasks/NAME/result.json)' % directory)
+        raise CableFileNotFoundError('%s: no finished atlas task (tasks/NAME/result.json)'
+                                     % directory)
     nrun = sum(1 for t in tasks if t['run'])
     return {'kind': 'atlas', 'title': 'atlas %s: %d tasks, %d with b./s. files'
             % (os.path.basename(os.path.abspath(directory)), len(tasks), nrun),
@@ -215,17 +236,20 @@ def page(data):
     """The HTML page of data (run_data, result_data or atlas_data)."""
     three, orbit = _scripts()
     js = json.dumps(data, separators=(',', ':'), allow_nan=False).replace('</', '<\\/')
-    return ''.join(['<!DOCTYPE html>\n<html lang="en"><head><meta charset="utf-8">\n<title>cable view</title>',
+    return ''.join(['<!DOCTYPE html>\n<html lang="en"><head><meta charset="utf-8">\n<title>cable '
+                    'view</title>',
                     '\n<style>', CSS, '</style></head>\n<body>', BODY,
                     '\n<script>/* three.js r111 (Debian libjs-three, MIT licence) */\n', three,
-                    '\n</script>\n<script>/* OrbitControls (three.js examples, MIT licence) */\n', orbit,
-                    '\n</script>\n<script>var DATA = ', js, ';\n</script>\n<script>', JS, '</script>\n</body></html>\n'])
+                    '\n</script>\n<script>/* OrbitControls (three.js examples, MIT licence) */\n',
+                    orbit,
+                    '\n</script>\n<script>var DATA = ', js, ';\n</script>\n<script>', JS,
+                    '</script>\n</body></html>\n'])
 
 
 def directory_page(directory):
     """The page of a run directory or an atlas (a directory with tasks/)."""
     if not os.path.isdir(directory):
-        raise CableError('%s: no such directory' % directory)
+        raise CableFileNotFoundError('%s: no such directory' % directory)
     if os.path.isdir(os.path.join(directory, 'tasks')):
         return page(atlas_data(directory))
     return page(run_data(directory))
@@ -233,17 +257,7 @@ def directory_page(directory):
 
 def write_page(text, path):
     """Write text to path atomically (a temporary file renamed over it)."""
-    d = os.path.dirname(os.path.abspath(path))
-    fd, tmp = tempfile.mkstemp(prefix=os.path.basename(path) + '.tmp', dir=d)
-    try:
-        with os.fdopen(fd, 'w', encoding='utf-8') as fh:
-            fh.write(text)
-        os.chmod(tmp, 0o644)
-        os.replace(tmp, path)
-    except BaseException:
-        os.unlink(tmp)
-        raise
-    return path
+    return write_text(path, text)
 
 
 class View:
@@ -254,7 +268,8 @@ class View:
         self.html = text
 
     def _repr_html_(self):
-        return ('<iframe style="width:100%%;height:1020px;border:1px solid #ccc" sandbox="allow-scripts" '
+        return ('<iframe style="width:100%%;height:1020px;border:1px solid #ccc" '
+                'sandbox="allow-scripts" '
                 'srcdoc="%s"></iframe>' % html.escape(self.html, quote=True))
 
     def save(self, path):
@@ -275,7 +290,8 @@ def view(x, file=None, title=None):
     elif isinstance(x, Result):
         text = page(result_data(x, title or 'cable result'))
     else:
-        raise CableError('view() takes a result, a solution or a directory name, not %s' % type(x).__name__)
+        raise CableTypeError('view() takes a result, a solution or a directory name, not %s'
+                             % type(x).__name__)
     v = View(text)
     return v.save(file) if file else v
 

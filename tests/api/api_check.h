@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Checks for the API tests, which see the public headers only: one
  * PASS/FAIL line per check (the format scripts/run-tests.sh counts). */
 #ifndef CABLE_API_CHECK_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* The cases of the API contract (doc/api.md, Contracts) a generated NULL
  * test cannot make: counts that disagree with their arrays, indices beyond
  * the parameters, unterminated strings, arguments that contradict each

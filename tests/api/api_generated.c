@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* The generated misuse test (doc/api.md, Contracts): every function declared
  * CABLE_API in the headers of include/cable/ is called once per pointer argument with
  * that argument NULL and the others valid (the fixtures below); the cases

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* AUTO's loadbd and merge through the public API (cable_session.h): a
  * branch read back from b./s.NAME has every b-file row (not only the
  * labelled ones), takes its problem from the b-file's header in a new

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Misuse of every public entry point (include/cable/): NULL handles and
  * arguments, calls in the wrong order, invalid sizes, failed constructors.
  * Each must give a status (or NULL, or a documented neutral value) and never

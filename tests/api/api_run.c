@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* A program written against the public headers only (include/cable/) and
  * linked with libcable.so: it runs Bratu's problem from u = 0 through its
  * fold with the output writer, reads the files back and compares the fold

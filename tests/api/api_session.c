@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* The session's runner state through the public API (cable_session.h):
  * cable_session_constants gives the constants the next run without a start
  * uses (AUTO's pr()): the defaults at first, a load's c= file with its

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Template plug-in: the Bratu problem (AUTO-07p's demo 'exp' is the same
  * equation), written as a cable problem.  Copy this file to start your own;
  * doc/plugins.md explains every field.  Build it with one command from the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Broken on purpose: built for another ABI version. */
 #include "broken_common.h"
 

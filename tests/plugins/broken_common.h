@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Shared by the deliberately broken plug-ins (each a test of one rejection):
  * a valid one-equation problem that each file then spoils in one way. */
 #ifndef CABLE_BROKEN_COMMON_H

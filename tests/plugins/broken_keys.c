@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Broken on purpose: declares a constants key that is one of cable's own. */
 #include "broken_common.h"
 

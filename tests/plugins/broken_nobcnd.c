@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Broken on purpose: two boundary conditions but no BCND. */
 #include "broken_common.h"
 

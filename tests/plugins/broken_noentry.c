@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Broken on purpose: the entry symbol is misspelt, so the loader finds no
  * cable_problem_entry. */
 #include "broken_common.h"

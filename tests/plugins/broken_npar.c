@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Broken on purpose: more parameters than AUTO's NPAR = 36. */
 #include "broken_common.h"
 

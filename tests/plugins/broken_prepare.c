@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Broken on purpose: a prepare without the release that gives instances back. */
 #include "broken_common.h"
 

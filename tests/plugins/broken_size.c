@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Broken on purpose: the struct size of another build of the header. */
 #include "broken_common.h"
 

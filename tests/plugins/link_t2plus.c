@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* The reading "t20 = +t10" of the link conditions (doc/links.md §4.2): the
  * built-in braid_link with (12.3.34) read as T2(0) = +T instead of -T, i.e. the
  * two strands twisted in opposite senses.  A plug-in, so that the built-in

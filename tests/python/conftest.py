@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Fixtures of the Python package's tests: the package from the build tree
 (PYTHONPATH=BUILD/python, set by scripts/run-tests.sh), the cable program,
 scratch directories with the constants files the tests need."""

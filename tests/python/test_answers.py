@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Every answer is the one asked for (issue 25, item 2): the first row of a
 branch is the point the engine continues from, IPS follows AUTO's default,
 run('NAME', c='OTHER') reads only c.OTHER, keywords are constants keys.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Acceptance test of the atlas scene (runs/atlas/atlas.toml): its task for
 the right-handed (7,2) knot at the paper's Delta, mode 1, with the scene's
 own mesh and branch constants, cut to the first 75 points of the branch

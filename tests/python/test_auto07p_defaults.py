@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """cable's defaults of AUTO's constants against auto-07p's own.
 
 auto-07p writes every constant it ran with into the b-file header (its STHD:

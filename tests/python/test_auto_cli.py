@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """AUTO's CLI commands the other test files do not show: pr/printconstant/pc
 (the runner's constants after ld and after runs with overrides, printed as
 a constants file that reads back to the same constants, unknown keys), s.c,

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """AUTO-07p's CLI objects as AUTO's users know them (issue 26, item 3),
 compared with auto-07p 0.9.2 on the same folder where it runs them.
 

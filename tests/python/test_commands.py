@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """AUTO's commands on cable's engine, in-process (import cable) and through
 `cable replay`: runs and restarts, label selection, results and solutions as
 AUTO's objects, the file commands, exact error messages and statuses, a

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The README's pictures (doc/img) are what `make doc-img` (scripts/doc-img.sh)
 makes: the knot72 scene replayed in a scratch copy gives the same diagram and
 renders, pixel for pixel up to anti-aliasing.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """`import cable` runs as fast as the cable program (issue 26, item 5).
 
 The same braid run (the flat (7,2) knot, 24 steps) by `cable run` and inside

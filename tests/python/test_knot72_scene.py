@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The project's acceptance test: the knot72 scene's path, run by its own
 Python (runs/knot72/knot72.auto up to its comparison runs: the flat
 right-handed (7,2) knot, both arms, its branch points and the mode 1-4

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Acceptance tests of what the link scenes runs/link62, runs/link43 and
 runs/link102 claim beyond their branch points (issue 16): both halves of the
 scene's mode branch (DS > 0 and DS < 0 from the branch point that the scene's

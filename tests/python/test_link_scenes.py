@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Acceptance tests of the link scenes runs/link62, runs/link43, runs/link102
 (ported from tests/test_link_scenes.c): the path to each scene's branch point,
 replayed with the scene's constants files on a coarser mesh (NTST 50-60

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Replays are reproducible (issue 25, item 5): a short link scene (the
 flat left-handed (10,2) link of runs/link102 on a coarse mesh to its first
 branch point, and a branch switched there with a user zero) replayed by

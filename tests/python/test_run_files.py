@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """A run's b./s./d. files are on disk as it computes (doc/failures.md): after
 SIGKILL at any moment they hold every published point, consistently, read
 by cable and by AUTO-07p's own parsers; SIGINT and SIGTERM end a run after

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The scene functions of the package (cable.scenes and the analysis exposed
 from C): analyze() and branch_table() on a short flat-knot branch, whose
 answers are known without the code under test (unknotted axis, Lk = 3.5 of

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Acceptance tests of the small scenes runs/bratu, runs/elastica and
 runs/torus (ported from tests/test_scenes.c): each scene's own script is
 replayed (`cable replay`) in a scratch directory with its constants files,

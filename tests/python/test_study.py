@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """A new study without hidden knowledge (issue 26 item 6): `cable info` and
 info(), AUTO's PAR={...} updates, the braid problems' recommended constants
 as the defaults of a keywords-only run, the advice at a double branch point

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The Python package from threads (doc/scripts.md, Threads): concurrent
 run() calls on one runner (the module's own, cable.run) run one after the
 other, and every one of them gives the branch a run alone gives; separate

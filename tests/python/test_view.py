@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """cable view (doc/view.md) in a real browser: Debian's headless Chromium with
 its software WebGL (SwiftShader) opens the page written for a small knot run
 and for an atlas, clicks a point of the diagram, checks the values the page

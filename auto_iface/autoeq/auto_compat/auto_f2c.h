@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* cable's auto_f2c.h for AUTO-07p equation files written in C.
  *
  * cable compiles NAME.c with this header first on the include path.  It gives

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* AUTO's GETP for equation files, compiled by cable into every module it
  * builds from NAME.f90, NAME.f or NAME.c.  Fortran calls GETP_(CODE, IC, U)
  * with the hidden length of CODE; C calls getp(code, ic, u).  Both find

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* The block that cable puts in front of the solution array it hands to an
  * AUTO-style PVLS.  AUTO's GETP(CODE, IC, U) receives PVLS's own U, so the
  * GETP shim compiled into the equation module (cable_getp.c) finds this
