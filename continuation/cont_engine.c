@@ -155,6 +155,7 @@ cable_cont *cable_cont_alloc(const cable_problem *pb, const cable_constants *c, 
     return NULL;
   }
   cable_cont *cc = calloc(1, sizeof *cc);
+  if (cc) cc->nbr = -1;
   if (!cc) {
     *status = CABLE_ERR_ALLOC;
     return NULL;

@@ -117,6 +117,10 @@ struct cable_cont {
   long gate_skipped, gate_run;  /* pencil tests skipped and run on this branch */
   cont_counts cnt;              /* work counters of the run */
   cont_loop loop;               /* closed-loop detection */
+  /* the branch directions at a double BP (cont_branches.c) */
+  cable_branch_dir br[CABLE_MAX_BRANCHES];
+  int nbr;                      /* -1: not computed */
+  int abe_order;                /* 2 quadratic, 3 cubic ABE, 0 none */
 };
 
 /* cont_tangent.c */
@@ -195,6 +199,12 @@ int cont_store_solution(cable_cont *cc, int itp, int lab);
 
 /* cont_switch.c: the direction of the bifurcating branch at a BP start */
 int cont_switch_direction(cable_cont *cc);
+
+/* cont_branches.c: the ABE at a double BP (x = cc->x, A = cc->J factored in
+ * cc->abd with closing row theta q0^T; e1, e2 are made theta-orthonormal in
+ * place, the coordinates of the directions): fills cc->br, cc->nbr (-1 when
+ * degenerate, msg says why), cc->abe_order.  CABLE_SUCCESS or an error. */
+int cont_branches_compute(cable_cont *cc, const double *q0, double *e1, double *e2, char *msg, size_t len);
 
 /* cont_engine.c */
 int cont_correct(cable_cont *cc, const double *x0, const double *xdot0, double ds, double *x);
