@@ -23,6 +23,9 @@
 /* P counts as vanishing below this fraction of L (the differences are good to
    about 1e-8 relative) */
 #define CONT_ABE_QUAD 1.0e-5
+/* a coefficient (or g) is taken for nonzero only above this multiple of its
+   error estimate from the two step sizes */
+#define CONT_ABE_SIGNIF 10.0
 /* g vanishes identically below this fraction of max|L| max|N| */
 #define CONT_ABE_ZERO 1.0e-6
 /* L vanishes (no transversal crossing) below this fraction of max|N| */
@@ -66,10 +69,9 @@ static int proj(abe_work *aw, const double *d1, double c1, const double *d2, dou
 
 /* psi^T F_xx[v, v], v = ca a + cb b (b may be NULL), by the central second
    difference; the full vector into full when not NULL */
-static int second(abe_work *aw, const double *a, double ca, const double *b, double cb, const double f0[2],
+static int second(abe_work *aw, double h, const double *a, double ca, const double *b, double cb, const double f0[2],
                   const double *F0, double out[2], double *full)
 {
-  const double h = CONT_ABE_H2;
   double fp[2], fm[2];
   int rc = proj(aw, a, h * ca, b, h * cb, NULL, 0, fp, full);
   if (rc == CABLE_SUCCESS) rc = proj(aw, a, -h * ca, b, -h * cb, NULL, 0, fm, NULL);
@@ -182,6 +184,60 @@ static double gval(const abe_eq *e, double phi)
   return form(e->L[0], 1, phi) * form(e->N[1], e->nd, phi) - form(e->L[1], 1, phi) * form(e->N[0], e->nd, phi);
 }
 
+/* L and N (P when h3 = 0, else C with w2) with steps h2, h3; *w2res the
+   largest relative residual of w2 so far */
+static int coeffs(abe_work *aw, const double *q0, const double *e1, const double *e2, const double f0[2],
+                  const double *F0, double h2, double h3, abe_eq *eq, double *w2res)
+{
+  int rc = CABLE_SUCCESS;
+  double B[6][2]; /* psi^T F_xx[a+b, a+b] for q0, e1, e2, q0+e1, q0+e2, e1+e2 */
+  const double *dirs[6][2] = {{q0, NULL}, {e1, NULL}, {e2, NULL}, {q0, e1}, {q0, e2}, {e1, e2}};
+  for (int k = 0; k < 6 && rc == CABLE_SUCCESS; k++)
+    rc = second(aw, h2, dirs[k][0], 1.0, dirs[k][1], 1.0, f0, F0, B[k], NULL);
+  if (rc != CABLE_SUCCESS) return rc;
+  memset(eq, 0, sizeof *eq);
+  for (int i = 0; i < 2; i++) {
+    eq->L[i][0] = 0.5 * (B[3][i] - B[0][i] - B[1][i]);
+    eq->L[i][1] = 0.5 * (B[4][i] - B[0][i] - B[2][i]);
+    eq->N[i][0] = B[1][i];                     /* cos^2 */
+    eq->N[i][1] = B[5][i] - B[1][i] - B[2][i]; /* 2 cos sin F_xx[e1,e2] */
+    eq->N[i][2] = B[2][i];                     /* sin^2 */
+  }
+  eq->nd = 2;
+  if (h3 == 0.0) return CABLE_SUCCESS;
+  /* the cubic ABE: C at u = e1, e2, e1 + e2, e1 - e2 */
+  eq->nd = 3;
+  double C[4][2];
+  const double sg[4][2] = {{1, 0}, {0, 1}, {1, 1}, {1, -1}};
+  for (int k = 0; k < 4; k++) {
+    double dummy[2], res = 0.0;
+    /* the full second difference along u = sg0 e1 + sg1 e2, then w2 */
+    rc = second(aw, h2, e1, sg[k][0], e2, sg[k][1], f0, F0, dummy, aw->r);
+    if (rc == CABLE_SUCCESS) rc = solve_w2(aw, &res);
+    if (rc != CABLE_SUCCESS) return rc;
+    *w2res = fmax(*w2res, res);
+    /* G(s) = psi^T F(x0 + s u + s^2 w2) at s = +-h, +-2h; the five-point
+       third difference cancels psi^T F_x u (not zero to the differences'
+       accuracy when F_x is a difference Jacobian, JAC = 0) and gives the
+       third derivative of G, 6 C */
+    double g[4][2];
+    const double sk[4] = {2 * h3, h3, -h3, -2 * h3};
+    for (int q = 0; q < 4 && rc == CABLE_SUCCESS; q++)
+      rc = proj(aw, e1, sk[q] * sg[k][0], e2, sk[q] * sg[k][1], aw->w, sk[q] * sk[q], g[q], NULL);
+    if (rc != CABLE_SUCCESS) return rc;
+    for (int i = 0; i < 2; i++)
+      C[k][i] = (g[0][i] - 2.0 * g[1][i] + 2.0 * g[2][i] - g[3][i]) / (12.0 * h3 * h3 * h3);
+  }
+  for (int i = 0; i < 2; i++) {
+    double c0 = C[0][i], c3 = C[1][i], cp = C[2][i], cm = C[3][i];
+    eq->N[i][0] = c0;
+    eq->N[i][3] = c3;
+    eq->N[i][1] = 0.5 * (cp - cm) - c3;
+    eq->N[i][2] = 0.5 * (cp + cm) - c0;
+  }
+  return CABLE_SUCCESS;
+}
+
 int cont_branches_compute(cable_cont *cc, const double *q0, double *e1, double *e2, char *msg, size_t len)
 {
   int n = cc->n, rc = CABLE_SUCCESS;
@@ -210,66 +266,45 @@ int cont_branches_compute(cable_cont *cc, const double *q0, double *e1, double *
     free(mem);
     return CABLE_SUCCESS;
   }
-  double f0[2], B[6][2]; /* B: psi^T F_xx[a+b, a+b] for q0, e1, e2, q0+e1, q0+e2, e1+e2 */
+  double f0[2];
   rc = proj(&aw, q0, 0.0, NULL, 0, NULL, 0, f0, F0);
-  const double *dirs[6][2] = {{q0, NULL}, {e1, NULL}, {e2, NULL}, {q0, e1}, {q0, e2}, {e1, e2}};
-  for (int k = 0; k < 6 && rc == CABLE_SUCCESS; k++) rc = second(&aw, dirs[k][0], 1.0, dirs[k][1], 1.0, f0, F0, B[k], NULL);
+  /* every coefficient at two step sizes: the Richardson combination
+     (4 c(h) - c(2h)) / 3 removes the O(h^2) truncation, and
+     |c(h) - c(2h)| / 3 estimates the error of c(h) (doc/engine.md) */
+  abe_eq qa, qb, eq;
+  double w2res = 0.0, lmax = 0.0, pmax = 0.0, perr = 0.0, nmax = 0.0;
+  if (rc == CABLE_SUCCESS) rc = coeffs(&aw, q0, e1, e2, f0, F0, CONT_ABE_H2, 0.0, &qa, &w2res);
+  if (rc == CABLE_SUCCESS) rc = coeffs(&aw, q0, e1, e2, f0, F0, 2.0 * CONT_ABE_H2, 0.0, &qb, &w2res);
   if (rc != CABLE_SUCCESS) {
     free(mem);
     return rc;
   }
-  abe_eq eq;
-  memset(&eq, 0, sizeof eq);
-  double lmax = 0, pmax = 0, nmax = 0;
+  eq = qa;
   for (int i = 0; i < 2; i++) {
-    eq.L[i][0] = 0.5 * (B[3][i] - B[0][i] - B[1][i]);
-    eq.L[i][1] = 0.5 * (B[4][i] - B[0][i] - B[2][i]);
-    eq.N[i][0] = B[1][i];                              /* cos^2 */
-    eq.N[i][1] = B[5][i] - B[1][i] - B[2][i];          /* 2 cos sin F_xx[e1,e2] */
-    eq.N[i][2] = B[2][i];                              /* sin^2 */
-    for (int k = 0; k < 2; k++) lmax = fmax(lmax, fabs(eq.L[i][k]));
-    for (int k = 0; k < 3; k++) pmax = fmax(pmax, fabs(eq.N[i][k]));
-  }
-  eq.nd = 2;
-  double w2res = 0.0;
-  if (!(pmax > CONT_ABE_QUAD * lmax)) {
-    /* the cubic ABE: C at u = e1, e2, e1 + e2, e1 - e2 */
-    eq.nd = 3;
-    double C[4][2];
-    const double sg[4][2] = {{1, 0}, {0, 1}, {1, 1}, {1, -1}};
-    for (int k = 0; k < 4 && rc == CABLE_SUCCESS; k++) {
-      double dummy[2];
-      /* the full second difference along u = sg0 e1 + sg1 e2 */
-      rc = second(&aw, e1, sg[k][0], e2, sg[k][1], f0, F0, dummy, aw.r);
-      double res = 0.0;
-      if (rc == CABLE_SUCCESS) rc = solve_w2(&aw, &res);
-      w2res = fmax(w2res, res);
-      if (rc != CABLE_SUCCESS) break;
-      /* G(s) = psi^T F(x0 + s u + s^2 w2) at s = +-h, +-2h; the five-point
-         third difference cancels psi^T F_x u (not zero to the differences'
-         accuracy when F_x is a difference Jacobian, JAC = 0) */
-      const double h = CONT_ABE_H3;
-      double g[4][2];
-      const double sk[4] = {2 * h, h, -h, -2 * h};
-      for (int q = 0; q < 4 && rc == CABLE_SUCCESS; q++)
-        rc = proj(&aw, e1, sk[q] * sg[k][0], e2, sk[q] * sg[k][1], aw.w, sk[q] * sk[q], g[q], NULL);
-      if (rc != CABLE_SUCCESS) break;
-      for (int i = 0; i < 2; i++) C[k][i] = (g[0][i] - 2.0 * g[1][i] + 2.0 * g[2][i] - g[3][i]) / (12.0 * h * h * h); /* G'''(0) / 6 */
+    for (int k = 0; k < 2; k++) lmax = fmax(lmax, fabs(qa.L[i][k]));
+    for (int k = 0; k < 3; k++) {
+      eq.N[i][k] = (4.0 * qa.N[i][k] - qb.N[i][k]) / 3.0;
+      pmax = fmax(pmax, fabs(eq.N[i][k]));
+      perr = fmax(perr, fabs(qa.N[i][k] - qb.N[i][k]) / 3.0);
     }
+  }
+  nmax = pmax;
+  /* the quadratic terms count when they exceed their error estimate
+     CONT_ABE_SIGNIF-fold and the floor CONT_ABE_QUAD of L */
+  if (!(pmax > CONT_ABE_SIGNIF * perr && pmax > CONT_ABE_QUAD * lmax)) {
+    rc = coeffs(&aw, q0, e1, e2, f0, F0, CONT_ABE_H2, CONT_ABE_H3, &qa, &w2res);
+    if (rc == CABLE_SUCCESS) rc = coeffs(&aw, q0, e1, e2, f0, F0, CONT_ABE_H2, 2.0 * CONT_ABE_H3, &qb, &w2res);
     if (rc != CABLE_SUCCESS) {
       free(mem);
       return rc;
     }
-    for (int i = 0; i < 2; i++) {
-      double c0 = C[0][i], c3 = C[1][i], cp = C[2][i], cm = C[3][i];
-      eq.N[i][0] = c0;
-      eq.N[i][3] = c3;
-      eq.N[i][1] = 0.5 * (cp - cm) - c3;
-      eq.N[i][2] = 0.5 * (cp + cm) - c0;
-      for (int k = 0; k < 4; k++) nmax = fmax(nmax, fabs(eq.N[i][k]));
-    }
-  } else {
-    nmax = pmax;
+    eq = qa;
+    nmax = 0.0;
+    for (int i = 0; i < 2; i++)
+      for (int k = 0; k < 4; k++) {
+        eq.N[i][k] = (4.0 * qa.N[i][k] - qb.N[i][k]) / 3.0;
+        nmax = fmax(nmax, fabs(eq.N[i][k]));
+      }
   }
   free(mem);
   cc->abe_order = eq.nd;
@@ -279,11 +314,16 @@ int cont_branches_compute(cable_cont *cc, const double *q0, double *e1, double *
     return CABLE_SUCCESS;
   }
   const double step = CONT_ABE_PI / CONT_ABE_GRID, a = -0.5 * step;
-  double gmax = 0.0;
-  for (int k = 0; k <= CONT_ABE_GRID; k++) gmax = fmax(gmax, fabs(gval(&eq, a + k * step)));
-  if (!(gmax > CONT_ABE_ZERO * lmax * nmax)) {
-    snprintf(msg, len, "ABE (%s): g vanishes identically (max %.2e, scale %.2e): a continuum of directions",
-             eq.nd == 2 ? "quadratic" : "cubic", gmax, lmax * nmax);
+  double gmax = 0.0, gerr = 0.0;
+  for (int k = 0; k <= CONT_ABE_GRID; k++) {
+    double phi = a + k * step;
+    gmax = fmax(gmax, fabs(gval(&eq, phi)));
+    gerr = fmax(gerr, fabs(gval(&qa, phi) - gval(&qb, phi)) / 3.0);
+  }
+  if (!(gmax > CONT_ABE_SIGNIF * gerr && gmax > CONT_ABE_ZERO * lmax * nmax)) {
+    snprintf(msg, len, "ABE (%s, max|P|/max|L| = %.1e, error %.1e): g vanishes identically (max %.2e, error %.1e, "
+             "scale %.2e): a continuum of directions", eq.nd == 2 ? "quadratic" : "cubic", lmax > 0 ? pmax / lmax : 0.0,
+             lmax > 0 ? perr / lmax : 0.0, gmax, gerr, lmax * nmax);
     return CABLE_SUCCESS;
   }
   int nb = 0;
@@ -323,8 +363,9 @@ int cont_branches_compute(cable_cont *cc, const double *q0, double *e1, double *
     b->dg = fabs(gval(&eq, phi + h) - gval(&eq, phi - h)) / (2 * h);
   }
   cc->nbr = nb;
-  size_t l = (size_t)snprintf(msg, len, "ABE (%s): %d direction%s at phi =", eq.nd == 2 ? "quadratic" : "cubic", nb,
-                              nb == 1 ? "" : "s");
+  size_t l = (size_t)snprintf(msg, len, "ABE (%s, max|P|/max|L| = %.1e, error %.1e): %d direction%s at phi =",
+                              eq.nd == 2 ? "quadratic" : "cubic", lmax > 0 ? pmax / lmax : 0.0,
+                              lmax > 0 ? perr / lmax : 0.0, nb, nb == 1 ? "" : "s");
   for (int k = 0; k < nb && l < len; k++) l += (size_t)snprintf(msg + l, len - l, " %.4g", cc->br[k].phi);
   if (eq.nd == 3 && l < len) l += (size_t)snprintf(msg + l, len - l, " degrees (w2 residual %.1e)", w2res);
   else if (l < len) l += (size_t)snprintf(msg + l, len - l, " degrees");
