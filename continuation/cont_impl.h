@@ -41,6 +41,11 @@ typedef struct cont_loop {
   int m;
   double dmax;                  /* largest distance of a point from the start */
   int start_lab;                /* the start's label in its restart data (0: STPNT) */
+  /* branch points computed on other branches (cable_cont_add_known_point):
+     summaries [nknown * (nfpr + 2 ndim)] and their names */
+  double *known;
+  char (*known_name)[64];
+  int nknown;
 } cont_loop;
 
 struct cable_cont {
@@ -189,6 +194,9 @@ int cont_adapt_mesh(cable_cont *cc);
  * point passed through the start again (cc->err then names it). */
 int cont_loop_start(cable_cont *cc, int start_lab);
 int cont_loop_closed(cable_cont *cc);
+/* 1 when the current point is a located BP that is a known point (cc->err
+ * then names it) */
+int cont_loop_known(cable_cont *cc);
 void cont_loop_free(cable_cont *cc);
 double cont_error_estimate(const cable_cont *cc, const double *x);
 int cont_load_solution(cable_cont *cc, const cable_solution *s);

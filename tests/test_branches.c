@@ -49,6 +49,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "cable/cable_constants.h"
 #include "cable/cable_cont.h"
@@ -245,10 +246,75 @@ static void test_pair(int elastica, double b)
   cable_solution_free(bp);
 }
 
+/* Branch identity: a branch that locates a branch point already computed on
+ * another branch stops there (cont_loop.c).  Run A, the pair's trivial
+ * branch from lambda = 1 to 12, computes the double BP at pi^2; run B comes
+ * down the trivial branch from A's end (DS < 0) and reaches that BP: with
+ * A's BP declared known it ends there with CABLE_END_LOOP and a message that
+ * names it; without, it goes on to RL0. */
+static int run_down(const cable_problem *pb, const cable_solution *from, const cable_solution *known, double *lam_end,
+                    char *err, size_t len)
+{
+  cable_constants c;
+  engine_constants(&c, 40, 4);
+  c.jac = 0;
+  c.ds = -0.5; c.dsmin = 1e-6; c.dsmax = 3.0; c.nmx = 100;
+  c.rl0 = 2.0; c.rl1 = 20.0;
+  c.isp = 2;
+  c.epss = 1e-9;
+  int st = 0;
+  cable_cont *cc = cable_cont_alloc(pb, &c, &st);
+  if (!cc) return st;
+  if (known) st = cable_cont_add_known_point(cc, known, "BP label 2 of the first run");
+  if (st == CABLE_SUCCESS) st = cable_cont_set_start(cc, from);
+  while (st == CABLE_SUCCESS) st = cable_cont_step(cc);
+  const cable_point *pt = cable_cont_point(cc);
+  *lam_end = pt ? pt->par[0] : (double)NAN;
+  snprintf(err, len, "%s", cable_cont_error(cc));
+  cable_cont_free(cc);
+  return st;
+}
+
+static void test_known_branch_point(void)
+{
+  pair_params pp = {1, 0.0};
+  cable_problem pb = {.abi_version = CABLE_PROBLEM_ABI, .struct_size = sizeof(cable_problem),
+                      .name = "two elasticas", .ndim = 4, .nbc = 4, .npar = 1,
+                      .func = pair_func, .bcnd = pair_bcnd, .stpnt = pair_stpnt, .params = &pp};
+  memrun *r = calloc(1, sizeof *r);
+  cable_constants c;
+  engine_constants(&c, 40, 4);
+  c.jac = 0;
+  c.ds = 0.5; c.dsmin = 1e-6; c.dsmax = 3.0; c.nmx = 100;
+  c.rl1 = 12.0;
+  c.isp = 2;
+  c.epss = 1e-9;
+  memrun_run(&pb, &c, NULL, r);
+  const cable_solution *bp = memrun_find(r, CABLE_TY_BP, 0);
+  const cable_solution *end = r->nsol ? r->sol[r->nsol - 1] : NULL;
+  test_true("known BP: the first run computes the BP and ends beyond it", bp && end && end->par[0] > 12.0);
+  if (bp && end) {
+    double lam = 0;
+    char err[600];
+    int st = run_down(&pb, end, bp, &lam, err, sizeof err);
+    char what[900];
+    snprintf(what, sizeof what, "known BP: the run down the branch ends at the known BP (%s)", err);
+    test_int(what, st, CABLE_END_LOOP);
+    test_rel("known BP: it ends at lambda = pi^2", lam, CB_PI * CB_PI, 1e-7);
+    test_true("known BP: the message names the point", strstr(err, "BP label 2 of the first run") != NULL);
+    st = run_down(&pb, end, NULL, &lam, err, sizeof err);
+    snprintf(what, sizeof what, "known BP: without it the run passes the BP and ends at RL0 (lambda = %.4f)", lam);
+    test_true(what, st == CABLE_END_BOUNDS && lam < 2.0);
+  }
+  memrun_free(r);
+  free(r);
+}
+
 int main(void)
 {
   test_pair(1, 0.0);
   test_pair(0, 0.0);
   test_pair(0, 1.0);
+  test_known_branch_point();
   return test_summary();
 }

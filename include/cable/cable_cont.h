@@ -91,6 +91,14 @@ CABLE_API int cable_cont_branches(const cable_cont *cc, cable_branch_dir *out, i
  * "" when none, never NULL. */
 CABLE_API const char *cable_cont_note(const cable_cont *cc);
 
+/* A branch point computed on another branch (a stored BP solution; name,
+ * e.g. "BP label 3 of branch 1", goes into the message): a branch that
+ * locates a BP at the same place (free parameters, U(0), U(1) within 1e-5
+ * relative) joins a known branch and ends there with CABLE_END_LOOP and a
+ * message naming it (cable_cont_error).  Call before the first step; any
+ * number of points.  CABLE_ERR_INPUT for a solution of another NDIM. */
+CABLE_API int cable_cont_add_known_point(cable_cont *cc, const cable_solution *s, const char *name);
+
 /* Every entry point checks its handle: NULL gives CABLE_ERR_NULL, step and
  * run before a successful set_start give CABLE_ERR_STATE. */
 
