@@ -59,7 +59,7 @@
 #define CB_PI 3.14159265358979323846
 
 typedef struct pair_params {
-  int elastica; /* 1: lambda sin theta; 0: the coupled cubic pair */
+  int elastica; /* 1: lambda sin theta; 0: the coupled cubic pair; 2: the O(2) pair */
   double b;     /* + b theta_i^2 in equation i of the coupled pair */
 } pair_params;
 
@@ -70,7 +70,11 @@ static int pair_func(int ndim, const double *u, const int *icp, const double *pa
   double lam = par[0], t1 = u[0], t2 = u[2];
   f[0] = u[1];
   f[2] = u[3];
-  if (pp->elastica) {
+  if (pp->elastica == 2) {
+    double r2 = t1 * t1 + t2 * t2;
+    f[1] = -(lam * t1 - r2 * t1);
+    f[3] = -(lam * t2 - r2 * t2);
+  } else if (pp->elastica) {
     f[1] = -lam * sin(t1);
     f[3] = -lam * sin(t2);
   } else {
@@ -310,11 +314,50 @@ static void test_known_branch_point(void)
   free(r);
 }
 
+/* 4. The O(2)-symmetric pair theta_i'' + lambda theta_i - (theta1^2 +
+ *    theta2^2) theta_i = 0: every rotation of (theta1, theta2) maps
+ *    solutions to solutions, the cubic ABE are alpha_i (nu - (3/4) c^2 s^2
+ *    |alpha|^2) = 0 and g = L_1 C_2 - L_2 C_1 vanishes for every direction:
+ *    a continuum (a group orbit of branches).  The list is empty, the note
+ *    says so, and the switch follows the canonical e1, a branch of the orbit
+ *    (theta2 = 0 along it). */
+static void test_o2_pair(void)
+{
+  pair_params pp = {2, 0.0};
+  cable_problem pb = {.abi_version = CABLE_PROBLEM_ABI, .struct_size = sizeof(cable_problem),
+                      .name = "O(2) pair", .ndim = 4, .nbc = 4, .npar = 1,
+                      .func = pair_func, .bcnd = pair_bcnd, .stpnt = pair_stpnt, .params = &pp};
+  memrun *r = calloc(1, sizeof *r);
+  cable_solution *bp = first_bp(&pb, r);
+  free(r);
+  test_true("O(2) pair: a branch point on the trivial branch", bp != NULL);
+  if (!bp) return;
+  cable_constants c;
+  switch_constants(&c, 0, 0.05);
+  int st = 0, order = 0, nb = 0;
+  cable_cont *cc = cable_cont_alloc(&pb, &c, &st);
+  int rc = cc && cable_cont_set_start(cc, bp) == CABLE_SUCCESS ? cable_cont_step(cc) : CABLE_ERR_STATE;
+  nb = cable_cont_branches(cc, NULL, 0, &order);
+  char what[900];
+  snprintf(what, sizeof what, "O(2) pair: the start is computed (%s)", cc ? cable_cont_note(cc) : "");
+  test_int(what, rc, CABLE_SUCCESS);
+  test_int("O(2) pair: the cubic ABE vanish identically: no list", nb, -1);
+  test_true("O(2) pair: the note says a continuum", cc && strstr(cable_cont_note(cc), "g vanishes identically") != NULL);
+  cable_cont_free(cc);
+  double m[3];
+  follow(&pb, bp, 0, 0.05, 0.0, m);
+  snprintf(what, sizeof what, "O(2) pair: the canonical e1 is followed, a branch of the orbit (max |theta1| %.3f, "
+           "|theta2| %.2e)", m[0], m[1]);
+  test_true(what, m[0] > 0.3 && m[1] >= 0 && m[1] < 1e-6);
+  cable_solution_free(bp);
+}
+
 int main(void)
 {
   test_pair(1, 0.0);
   test_pair(0, 0.0);
   test_pair(0, 1.0);
+  test_o2_pair();
   test_known_branch_point();
   return test_summary();
 }
