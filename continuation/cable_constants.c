@@ -30,7 +30,7 @@ void cable_constants_init(cable_constants *c)
   c->thu_default = 1.0;
   c->iid = 2; c->iis = 3;
   c->linsolver = CABLE_LINSOLVER_CONDENSE;
-  c->nsv = 0; c->nthreads = 0; c->bpsym = 0; c->bpangle = (double)NAN; c->predictor = 1;
+  c->nsv = 0; c->nthreads = 0; c->bpsym = 0; c->bpangle = (double)NAN; c->branch = 0; c->predictor = 1;
   c->npkey = 0;
 }
 

@@ -148,6 +148,7 @@ cable_cont *cable_cont_alloc(const cable_problem *pb, const cable_constants *c, 
     return NULL;
   }
   cable_cont *cc = calloc(1, sizeof *cc);
+  if (cc) cc->nbr = -1;
   if (!cc) {
     *status = CABLE_ERR_ALLOC;
     return NULL;
@@ -382,6 +383,7 @@ static void check_limits(cable_cont *cc)
   if (cc->uz_stop) end = CABLE_END_UZSTOP;
   else if (p0 < cc->c.rl0 || p0 > cc->c.rl1 || m < cc->c.a0 || m > cc->c.a1) end = CABLE_END_BOUNDS;
   else if (cont_loop_closed(cc)) end = CABLE_END_LOOP;   /* before NMX: the reason that says more */
+  else if (cont_loop_known(cc)) end = CABLE_END_LOOP;
   else if (cc->c.nmx > 0 && cc->npt >= cc->c.nmx) end = CABLE_END_NMX;
   if (!end) return;
   if (end != CABLE_END_UZSTOP && cc->itp == CABLE_TY_NONE) {

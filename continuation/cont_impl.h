@@ -45,6 +45,11 @@ typedef struct cont_loop {
   int m;
   double dmax;                  /* largest distance of a point from the start */
   int start_lab;                /* the start's label in its restart data (0: STPNT) */
+  /* branch points computed on other branches (cable_cont_add_known_point):
+     summaries [nknown * (nfpr + 2 ndim)] and their names */
+  double *known;
+  char (*known_name)[64];
+  int nknown;
 } cont_loop;
 
 struct cable_cont {
@@ -126,6 +131,10 @@ struct cable_cont {
   long gate_skipped, gate_run;  /* pencil tests skipped and run on this branch */
   cont_counts cnt;              /* work counters of the run */
   cont_loop loop;               /* closed-loop detection */
+  /* the branch directions at a double BP (cont_branches.c) */
+  cable_branch_dir br[CABLE_MAX_BRANCHES];
+  int nbr;                      /* -1: not computed */
+  int abe_order;                /* 2 quadratic, 3 cubic ABE, 0 none */
 };
 
 /* cont_tangent.c */
@@ -193,6 +202,9 @@ int cont_adapt_mesh(cable_cont *cc);
  * point passed through the start again (cc->err then names it). */
 int cont_loop_start(cable_cont *cc, int start_lab);
 int cont_loop_closed(cable_cont *cc);
+/* 1 when the current point is a located BP that is a known point (cc->err
+ * then names it) */
+int cont_loop_known(cable_cont *cc);
 void cont_loop_free(cable_cont *cc);
 double cont_error_estimate(const cable_cont *cc, const double *x);
 int cont_load_solution(cable_cont *cc, const cable_solution *s);
@@ -203,6 +215,12 @@ int cont_store_solution(cable_cont *cc, int itp, int lab);
 
 /* cont_switch.c: the direction of the bifurcating branch at a BP start */
 int cont_switch_direction(cable_cont *cc);
+
+/* cont_branches.c: the ABE at a double BP (x = cc->x, A = cc->J factored in
+ * cc->abd with closing row theta q0^T; e1, e2 are made theta-orthonormal in
+ * place, the coordinates of the directions): fills cc->br, cc->nbr (-1 when
+ * degenerate, msg says why), cc->abe_order.  CABLE_SUCCESS or an error. */
+int cont_branches_compute(cable_cont *cc, const double *q0, double *e1, double *e2, char *msg, size_t len);
 
 /* cont_correct.c: the corrector and the test functions at one point */
 int cont_correct(cable_cont *cc, const double *x0, const double *xdot0, double ds, double *x);

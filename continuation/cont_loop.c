@@ -2,7 +2,9 @@
 /* A branch that returns to its start: a closed loop (an isola, or a mode
  * branch that comes back to the branch point it left).  AUTO follows it
  * round again until NMX; cable ends it there with CABLE_END_LOOP and a
- * message naming the start.
+ * message naming the start.  A branch that reaches a branch point already
+ * computed on another branch (cable_cont_add_known_point) joins a known
+ * branch: it ends there too (CABLE_END_LOOP), the message naming the point.
  *
  * Mesh adaptation changes the discretisation between points, so the test
  * compares mesh-independent summaries z of the stored solutions: the free
@@ -25,6 +27,11 @@
 
 #define CONT_LOOP_CHORD 0.1   /* a pass within this fraction of the chord's length */
 #define CONT_LOOP_AWAY 3.0    /* first away from the start by this many chord lengths */
+/* A located BP is a known point when its summary is within this distance d
+ * of the known one: both are located to EPSS in arclength (1e-7 relative in
+ * the scenes), far below; distinct BPs of one problem differ in PAR(ICP(1))
+ * or in U by O(1) relative. */
+#define CONT_KNOWN_TOL 1.0e-5
 
 static void summary(const cable_cont *cc, double *z)
 {
@@ -91,8 +98,62 @@ int cont_loop_closed(cable_cont *cc)
   return closed;
 }
 
+/* A known point's summary: the free parameters, U(0), U(1) (no IPLT measure:
+ * a stored solution does not carry it) */
+static void solution_summary(const cable_cont *cc, const cable_solution *s, double *z)
+{
+  int k = 0, npts = cable_solution_npts(s);
+  for (int q = 0; q < cc->nfpr; q++) z[k++] = s->par[cc->c.icp[q]];
+  for (int i = 0; i < cc->ndim; i++) z[k++] = s->u[i];
+  for (int i = 0; i < cc->ndim; i++) z[k++] = s->u[(size_t)(npts - 1) * (size_t)cc->ndim + (size_t)i];
+}
+
+int cable_cont_add_known_point(cable_cont *cc, const cable_solution *s, const char *name)
+{
+  if (!cc || !s) return CABLE_ERR_NULL;
+  if (s->ndim != cc->ndim || s->npar <= cc->c.icp[cc->nfpr - 1]) return CABLE_ERR_INPUT;
+  cont_loop *l = &cc->loop;
+  int m = cc->nfpr + 2 * cc->ndim;
+  double *k = realloc(l->known, (size_t)(l->nknown + 1) * (size_t)m * sizeof *k);
+  if (!k) return CABLE_ERR_ALLOC;
+  l->known = k;
+  char(*nm)[64] = realloc(l->known_name, (size_t)(l->nknown + 1) * sizeof *nm);
+  if (!nm) return CABLE_ERR_ALLOC;
+  l->known_name = nm;
+  solution_summary(cc, s, l->known + (size_t)l->nknown * (size_t)m);
+  snprintf(l->known_name[l->nknown], sizeof l->known_name[0], "%s", name ? name : "a known point");
+  l->nknown++;
+  return CABLE_SUCCESS;
+}
+
+int cont_loop_known(cable_cont *cc)
+{
+  cont_loop *l = &cc->loop;
+  if (cc->itp != CABLE_TY_BP || cc->npt <= 1 || l->nknown == 0 || !l->z) return 0;
+  int m = cc->nfpr + 2 * cc->ndim;
+  double *z = l->z; /* scratch here: cont_loop_closed has copied it to zp */
+  solution_summary(cc, cc->sol, z);
+  for (int q = 0; q < l->nknown; q++) {
+    const double *kq = l->known + (size_t)q * (size_t)m;
+    double d = 0;
+    for (int j = 0; j < m; j++) d = fmax(d, fabs(z[j] - kq[j]) / (1.0 + fabs(kq[j])));
+    if (d <= CONT_KNOWN_TOL) {
+      cont_set_error(cc, "joins a known branch: the branch point at point %d (PAR(%d) = %.10g) is %s (distance "
+                     "%.1e); following it further would repeat a computed branch", cc->npt, cc->c.icp[0] + 1, z[0],
+                     l->known_name[q], d);
+      return 1;
+    }
+  }
+  return 0;
+}
+
 void cont_loop_free(cable_cont *cc)
 {
+  free(cc->loop.known);
+  free(cc->loop.known_name);
+  cc->loop.known = NULL;
+  cc->loop.known_name = NULL;
+  cc->loop.nknown = 0;
   free(cc->loop.z0);
   free(cc->loop.zp);
   free(cc->loop.z);

@@ -24,6 +24,7 @@
  * that is not negligible at t = 0 is positive there (else the entry of
  * largest magnitude); DS < 0 reverses the direction. */
 #include <math.h>
+#include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -167,6 +168,17 @@ static int kernel_dimension(const double *sv)
   return one ? 1 : two ? 2 : 0;
 }
 
+/* appends to the start's note (truncated at its size) */
+static void note_append(cable_cont *cc, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+static void note_append(cable_cont *cc, const char *fmt, ...)
+{
+  size_t l = strlen(cc->note);
+  va_list ap;
+  va_start(ap, fmt);
+  vsnprintf(cc->note + l, sizeof cc->note - l, fmt, ap);
+  va_end(ap);
+}
+
 int cont_switch_direction(cable_cont *cc)
 {
   int n = cc->n;
@@ -224,11 +236,35 @@ int cont_switch_direction(cable_cont *cc)
       cont_set_error(cc, "ISW=-1: no solution component distinguishes the two kernel vectors at this double branch point");
       return CABLE_ERR_SWITCH;
     }
+    if (!angle_set && cc->c.bpsym == 0) {
+      /* the branch directions (cont_branches.c); A = cc->J still holds
+         [F_x; theta q0^T] with q0 the stored tangent, now in dir */
+      double *q0 = cc->w3;
+      char abe[300];
+      memcpy(q0, dir, (size_t)n * sizeof *q0);
+      int arc = cont_branches_compute(cc, q0, e1, e2, abe, sizeof abe);
+      if (arc != CABLE_SUCCESS) return arc;
+      int k = cc->c.branch > 0 ? cc->c.branch : 1;
+      if (cc->nbr > 0 && k <= cc->nbr) {
+        const cable_branch_dir *b = &cc->br[k - 1];
+        for (int i = 0; i < n; i++) dir[i] = b->a[0] * q0[i] + b->a[1] * e1[i] + b->a[2] * e2[i];
+        note_append(cc, "; %s; %s; following branch %d (%.4g degrees from e1 "
+                 "towards e2%s)", how, abe, k, b->phi, b->a[0] != 0 ? ", with the known tangent" : "");
+        goto oriented;
+      }
+      if (cc->c.branch > 1 || cc->nbr > 0) {
+        cont_set_error(cc, "ISW=-1: BRANCH=%d but the bifurcation equations give %d direction%s (%s)", k,
+                       cc->nbr < 0 ? 0 : cc->nbr, cc->nbr == 1 ? "" : "s", abe);
+        return CABLE_ERR_SWITCH;
+      }
+      len += snprintf(cc->note + len, sizeof cc->note - (size_t)len, "; %s; the canonical basis instead", abe);
+    }
     double phi = angle_set ? cc->c.bpangle * (CONT_PI / 180.0) : (cc->c.bpsym ? 0.5 * CONT_PI : 0.0);
     for (int i = 0; i < n; i++) dir[i] = cos(phi) * e1[i] + sin(phi) * e2[i];
     snprintf(cc->note + len, sizeof cc->note - (size_t)len, "; %s; following %g degrees from e1 towards e2", how,
              phi * (180.0 / CONT_PI));
   }
+oriented:
   cont_normalize(cc, dir);
   if (cc->c.ds < 0) for (int i = 0; i < n; i++) dir[i] = -dir[i];
   cc->ds = fabs(cc->c.ds);

@@ -69,6 +69,8 @@ FIXTURE = {
     'cable_autoeq *': None, 'const cable_autoeq *': None,
     # no branch point of a BVP among the fixtures (Bratu has none)
     'cable_bpcont *': None, 'const cable_bpcont *': None,
+    # the branch list's output array (NULL: only the count)
+    'cable_branch_dir *': None,
 }
 
 # Valid values of string arguments, by argument name, then by function.
@@ -118,6 +120,7 @@ RESULT = {
     'cable_problem_validate': 'neg', 'cable_branch_number': 'zero', 'cable_branch_npoints': 'zero',
     'cable_branch_nsolutions': 'zero', 'cable_solution_measure': 'any',
     'cable_autoeq_find': 'neg', 'cable_bp_kind_code': 'zero', 'cable_branch_end_status': 'zero',
+    'cable_cont_branches': 'neg', 'cable_cont_note': 'nonnull',
 }
 
 # Arguments that may be NULL (documented): the call must survive, its result
@@ -142,6 +145,7 @@ OPTIONAL = {
     'cable_cont_check': {'err'}, 'cable_cont_alloc': {'status'},
     'cable_cont_set_start': {'start'}, 'cable_cont_run': {'sink', 'next_label'},
     'cable_cont_test_functions': {'det_sign', 'sv1', 'sv2'},
+    'cable_cont_branches': {'out', 'order'}, 'cable_cont_add_known_point': {'name'},
     'cable_error_set': {'e', 'file', 'key', 'fmt'},
     'cable_fold_alloc': {'status', 'msg'},
     'cable_names_par_index': {'n', 'parnames'}, 'cable_names_fill': {'parnames', 'unames'},

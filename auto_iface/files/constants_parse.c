@@ -996,6 +996,7 @@ static const key_desc key_table[] = {
   {"NTHREADS", apply_int, OFF(nthreads), 0, CABLE_THREADS_MAX, 2, KI_NONE},
   {"BPDIR", apply_int, OFF(bpsym), 0, 1, 2, KI_NONE},
   {"BPANGLE", apply_real, OFF(bpangle), 0, 0, 2, KI_NONE},
+  {"BRANCH", apply_int, OFF(branch), 0, CABLE_MAX_BRANCHES, 2, KI_NONE},
   {"PREDICTOR", apply_int, OFF(predictor), 1, 2, 2, KI_NONE},
   {"STAB", apply_stab, OFF(stab), 0, 1, 2, KI_NONE},
   {"PAR", apply_par, 0, 0, 0, 2, KI_NONE},

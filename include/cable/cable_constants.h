@@ -15,6 +15,7 @@
 #define CABLE_MAX_UZR 128
 #define CABLE_MAX_THL 64
 #define CABLE_NAME_MAX 256
+#define CABLE_MAX_BRANCHES 8 /* BRANCH: directions listed at a double BP (cable_cont.h) */
 #define CABLE_MAX_PKEYS 16   /* problem-specific keys set in one constants file */
 #define CABLE_PKEY_LEN 32
 /* NCOL: collocation points per mesh interval (AUTO allows the same range). */
@@ -93,6 +94,8 @@ typedef struct cable_constants {
   int predictor;                          /* PREDICTOR: 1 tangent (AUTO's), 2 second order */
   double bpangle;                         /* BPANGLE: direction in a 2-d kernel, degrees from
                                              the canonical e1 towards e2 (NAN: use BPDIR) */
+  int branch;                             /* BRANCH: the k-th direction of the ABE at a double BP
+                                             (0: the first; doc/engine.md) */
   /* problem-specific keys (the problem's cable_problem_key list), as set */
   cable_keyval pkey[CABLE_MAX_PKEYS]; int npkey;
   /* names */

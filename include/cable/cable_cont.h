@@ -72,6 +72,38 @@ CABLE_API int cable_cont_run(cable_cont *cc, const cable_sink *sink, int ibr, in
  * matrix and its smallest singular values (0 when not computed). */
 CABLE_API void cable_cont_test_functions(const cable_cont *cc, int *det_sign, double *sv1, double *sv2);
 
+/* The branch directions at a double branch point (doc/engine.md, "Multiple
+ * branch points"), computed by the first cable_cont_step of an ISW = -1
+ * run from a BP: the real solutions of the algebraic bifurcation equations,
+ * ordered by phi.  The unit direction is a[0] q0 + a[1] e1 + a[2] e2 (q0 the
+ * known branch's tangent, e1, e2 the canonical kernel basis of BPANGLE). */
+typedef struct cable_branch_dir {
+  double phi;     /* degrees from e1 towards e2, in [-0.125, 179.875) */
+  double a[3];    /* coefficients of q0, e1, e2 (a[0] = 0 for the cubic ABE) */
+  double mu;      /* cubic ABE: the s^2 coefficient of q0 along the branch; NAN otherwise */
+  double L[2];    /* L_1, L_2 at the direction (psi_i^T F_xx[q0, u]) */
+  double N[2];    /* P_i (quadratic ABE) or C_i (cubic) at the direction */
+  double dg;      /* |g'(phi)|: small means an ill-conditioned direction */
+} cable_branch_dir;
+
+/* Copies at most max of them into out; returns their number (0 when the
+ * equations have no real solution), -1 when none were computed (not a
+ * double BP, or degenerate equations: cable_cont_error's note says why).
+ * *order (may be NULL): 2 quadratic, 3 cubic ABE, 0 none. */
+CABLE_API int cable_cont_branches(const cable_cont *cc, cable_branch_dir *out, int max, int *order);
+
+/* The note of the current point (the switch's account at an ISW = -1 start);
+ * "" when none, never NULL. */
+CABLE_API const char *cable_cont_note(const cable_cont *cc);
+
+/* A branch point computed on another branch (a stored BP solution; name,
+ * e.g. "BP label 3 of branch 1", goes into the message): a branch that
+ * locates a BP at the same place (free parameters, U(0), U(1) within 1e-5
+ * relative) joins a known branch and ends there with CABLE_END_LOOP and a
+ * message naming it (cable_cont_error).  Call before the first step; any
+ * number of points.  CABLE_ERR_INPUT for a solution of another NDIM. */
+CABLE_API int cable_cont_add_known_point(cable_cont *cc, const cable_solution *s, const char *name);
+
 /* Every entry point checks its handle: NULL gives CABLE_ERR_NULL, step and
  * run before a successful set_start give CABLE_ERR_STATE. */
 

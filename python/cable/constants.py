@@ -31,7 +31,7 @@ _LINES = (
     ('UZSTOP',),
     ('STOP',),
     ('RL0', 'RL1', 'A0', 'A1'),
-    ('LINSOLVER', 'NSV', 'NTHREADS', 'BPDIR', 'BPANGLE', 'PREDICTOR'),
+    ('LINSOLVER', 'NSV', 'NTHREADS', 'BPDIR', 'BPANGLE', 'BRANCH', 'PREDICTOR'),
 )
 _KNOWN = frozenset(k for line in _LINES for k in line)
 

@@ -1,0 +1,363 @@
+/* The branch directions at double branch points (continuation/cont_branches.c,
+ * doc/engine.md "Multiple branch points") on problems whose bifurcation
+ * equations are solved in closed form.
+ *
+ * Both are pairs theta1, theta2 on [0, 1] with theta_i'(0) = theta_i'(1) = 0,
+ * written first order as u = (theta1, theta1', theta2, theta2'); the trivial
+ * branch theta = 0 has a double branch point at lambda = pi^2 with kernel
+ * (cos pi t, 0), (0, cos pi t).
+ *
+ * 1. Two uncoupled elasticas, theta_i'' + lambda sin theta_i = 0: the four
+ *    branches are theta1 alone, theta2 alone, theta1 = theta2, theta1 =
+ *    -theta2, i.e. phi = 0, 90, 45, 135 degrees in the canonical basis
+ *    (e1 = only theta1 moves).
+ * 2. A coupled pair without the exchange symmetry,
+ *        theta1'' + lambda theta1 - theta1^3 = 0,
+ *        theta2'' + lambda theta2 - theta2^3 + 2 theta2 theta1^2 = 0:
+ *    with theta2 = k theta1 both equations are theta1'' + lambda theta1 -
+ *    theta1^3 = 0 when k^2 - 2 = 1, so theta2 = +-sqrt(3) theta1 are exact
+ *    branches (phi = 60, 120 degrees), besides theta1 alone and theta2 alone.
+ *    By hand: projecting on cos(pi t) (int cos^4 / int cos^2 = 3/4), with
+ *    theta_i = s c alpha_i cos(pi t) + ..., lambda = pi^2 + nu, the cubic ABE
+ *    are alpha1 (nu - (3/4) c^2 s^2 alpha1^2) = 0 and
+ *    alpha2 (nu - (3/4) c^2 s^2 (alpha2^2 - 2 alpha1^2)) = 0: the mixed
+ *    solutions have alpha1^2 = alpha2^2 - 2 alpha1^2, tan^2 phi = 3.
+ *
+ * 3. The coupled pair with + b theta_i^2 added to equation i (b = 1): the
+ *    quadratic terms project to zero on the kernel (int cos^3 = 0), so the
+ *    cubic ABE again, now with the w2 term: theta'' + lambda theta +
+ *    b theta^2 - g theta^3 = 0 has w = -(b a^2 / 2)(1/pi^2 - cos(2 pi t) /
+ *    (3 pi^2)) at second order and, projected at third order,
+ *    nu = a^2 (3 g / 4 + 5 b^2 / (6 pi^2)): the cubic coefficients gain the
+ *    factor 1 + B, B = (4/3) 5 b^2 / (6 pi^2), on the alpha_i^3 terms only, and
+ *    the mixed directions move to tan^2 phi = (3 + B) / (1 + B).
+ *
+ * mu (lambda = pi^2 + mu s^2 along the branch, s the arclength of the unit
+ * kernel direction): the kernel vector c (cos pi t, -pi sin pi t) of unit
+ * theta-norm (node quadrature of the integral of u.u) has c^2 = 2 / (1 + pi^2);
+ * an amplitude a of cos(pi t) in one equation theta'' + lambda theta - g
+ * theta^3 shifts lambda by (3/4) g a^2 (sin: g = lambda / 6).  Hence
+ *   elastica, one buckled: mu = (3/4) (pi^2 / 6) c^2 = pi^2 c^2 / 8; both:
+ *   each has amplitude c / sqrt 2, mu = pi^2 c^2 / 16;
+ *   coupled: theta1 alone and theta2 alone mu = (3/4) c^2, mixed (alpha1^2 =
+ *   1/4) mu = (3/16) c^2.
+ * Tolerances: the ABE's coefficients come from differences accurate to about
+ * 1e-6 relative (h3^2 truncation, doc/engine.md), the kernel vectors of the
+ * NTST = 40, NCOL = 4 discretisation differ from cos(pi t) by about
+ * (0.025)^8 pi^8 ~ 1e-9: phi to 1e-3 degrees (a simple root moves by the
+ * coefficient error over |g'|, of order 1e-6 rad), mu to 1e-4 relative. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cable/cable_constants.h"
+#include "cable/cable_cont.h"
+#include "engine_util.h"
+#include "harness.h"
+
+#define CB_PI 3.14159265358979323846
+
+typedef struct pair_params {
+  int elastica; /* 1: lambda sin theta; 0: the coupled cubic pair; 2: the O(2) pair */
+  double b;     /* + b theta_i^2 in equation i of the coupled pair */
+} pair_params;
+
+static int pair_func(int ndim, const double *u, const int *icp, const double *par, int ijac, double *f,
+                     double *dfdu, double *dfdp, void *params)
+{
+  const pair_params *pp = params;
+  double lam = par[0], t1 = u[0], t2 = u[2];
+  f[0] = u[1];
+  f[2] = u[3];
+  if (pp->elastica == 2) {
+    double r2 = t1 * t1 + t2 * t2;
+    f[1] = -(lam * t1 - r2 * t1);
+    f[3] = -(lam * t2 - r2 * t2);
+  } else if (pp->elastica) {
+    f[1] = -lam * sin(t1);
+    f[3] = -lam * sin(t2);
+  } else {
+    f[1] = -(lam * t1 + pp->b * t1 * t1 - t1 * t1 * t1);
+    f[3] = -(lam * t2 + pp->b * t2 * t2 - t2 * t2 * t2 + 2.0 * t2 * t1 * t1);
+  }
+  (void)ndim; (void)icp; (void)ijac; (void)dfdu; (void)dfdp;
+  return 0;
+}
+
+static int pair_bcnd(int ndim, const double *par, const int *icp, int nbc, const double *u0, const double *u1,
+                     int ijac, double *fb, double *dbc, void *params)
+{
+  (void)ndim; (void)par; (void)icp; (void)nbc; (void)ijac; (void)dbc; (void)params;
+  fb[0] = u0[1]; fb[1] = u1[1]; fb[2] = u0[3]; fb[3] = u1[3];
+  return 0;
+}
+
+static int pair_stpnt(int ndim, double t, double *u, double *par, void *params)
+{
+  (void)t; (void)params;
+  for (int i = 0; i < ndim; i++) u[i] = 0.0;
+  par[0] = 1.0;
+  return 0;
+}
+
+/* the first BP of the trivial branch */
+static cable_solution *first_bp(const cable_problem *pb, memrun *r)
+{
+  cable_constants c;
+  engine_constants(&c, 40, 4);
+  c.jac = 0;
+  c.ds = 0.5; c.dsmin = 1e-6; c.dsmax = 3.0; c.nmx = 100;
+  c.rl1 = 12.0;
+  c.isp = 2;
+  c.epss = 1e-9;
+  memrun_run(pb, &c, NULL, r);
+  const cable_solution *bp = memrun_find(r, CABLE_TY_BP, 0);
+  cable_solution *s = bp ? cable_solution_clone(bp) : NULL;
+  memrun_free(r);
+  return s;
+}
+
+static void switch_constants(cable_constants *c, int branch, double ds)
+{
+  engine_constants(c, 40, 4);
+  c->jac = 0; c->isw = -1; c->isp = 0;
+  c->branch = branch;
+  c->ds = ds; c->dsmin = 1e-6; c->dsmax = 0.2; c->nmx = 25; c->npr = 5;
+}
+
+/* the branch list at the BP: one step of an ISW = -1 run */
+static int list_branches(const cable_problem *pb, const cable_solution *bp, cable_branch_dir *br, int *order)
+{
+  cable_constants c;
+  switch_constants(&c, 0, 0.05);
+  int st = 0, nb = -1;
+  cable_cont *cc = cable_cont_alloc(pb, &c, &st);
+  if (!cc) return -1;
+  if (cable_cont_set_start(cc, bp) == CABLE_SUCCESS && cable_cont_step(cc) == CABLE_SUCCESS)
+    nb = cable_cont_branches(cc, br, CABLE_MAX_BRANCHES, order);
+  printf("# %s: %s\n", pb->name, cable_cont_note(cc));
+  cable_cont_free(cc);
+  return nb;
+}
+
+static void check_list(const char *name, const cable_branch_dir *br, int nb, int order, const double *phi,
+                       const double *mu)
+{
+  char what[200];
+  snprintf(what, sizeof what, "%s: the cubic bifurcation equations (quadratic terms vanish by symmetry)", name);
+  test_int(what, order, 3);
+  snprintf(what, sizeof what, "%s: four branch directions", name);
+  test_int(what, nb, 4);
+  for (int k = 0; k < nb && k < 4; k++) {
+    snprintf(what, sizeof what, "%s: direction %d at phi = %g degrees", name, k + 1, phi[k]);
+    test_abs(what, br[k].phi, phi[k], 1e-3);
+    snprintf(what, sizeof what, "%s: direction %d, lambda = pi^2 + mu s^2", name, k + 1);
+    test_rel(what, br[k].mu, mu[k], 1e-4);
+  }
+}
+
+/* follow BRANCH = k: max |theta1|, |theta2|, |theta2 - r theta1| over the branch */
+static void follow(const cable_problem *pb, const cable_solution *bp, int k, double ds, double r, double out[3])
+{
+  cable_constants c;
+  switch_constants(&c, k, ds);
+  memrun *m = calloc(1, sizeof *m);
+  memrun_run(pb, &c, bp, m);
+  out[0] = out[1] = out[2] = 0.0;
+  for (int i = 1; i < m->nsol; i++) {
+    const cable_solution *s = m->sol[i];
+    for (int j = 0; j < cable_solution_npts(s); j++) {
+      double t1 = s->u[4 * j], t2 = s->u[4 * j + 2];
+      out[0] = fmax(out[0], fabs(t1));
+      out[1] = fmax(out[1], fabs(t2));
+      out[2] = fmax(out[2], fabs(t2 - r * t1));
+    }
+  }
+  if (m->nsol < 3) out[0] = out[1] = -1.0; /* not computed */
+  memrun_free(m);
+  free(m);
+}
+
+static void test_pair(int elastica, double b)
+{
+  pair_params pp = {elastica, b};
+  cable_problem pb = {.abi_version = CABLE_PROBLEM_ABI, .struct_size = sizeof(cable_problem),
+                      .name = elastica ? "two elasticas" : b == 0 ? "coupled cubic pair" : "coupled pair with b theta^2", .ndim = 4, .nbc = 4, .npar = 1,
+                      .func = pair_func, .bcnd = pair_bcnd, .stpnt = pair_stpnt, .params = &pp};
+  memrun *r = calloc(1, sizeof *r);
+  cable_solution *bp = first_bp(&pb, r);
+  free(r);
+  char what[200];
+  snprintf(what, sizeof what, "%s: a branch point on the trivial branch", pb.name);
+  test_true(what, bp != NULL);
+  if (!bp) return;
+  snprintf(what, sizeof what, "%s: the branch point at pi^2", pb.name);
+  test_rel(what, bp->par[0], CB_PI * CB_PI, 1e-7);
+  cable_branch_dir br[CABLE_MAX_BRANCHES];
+  int order = 0, nb = list_branches(&pb, bp, br, &order);
+  double c2 = 2.0 / (1.0 + CB_PI * CB_PI), pi2 = CB_PI * CB_PI;
+  double r3 = sqrt(3.0);
+  if (elastica) {
+    const double phi[4] = {0, 45, 90, 135}, mu[4] = {pi2 * c2 / 8, pi2 * c2 / 16, pi2 * c2 / 8, pi2 * c2 / 16};
+    check_list(pb.name, br, nb, order, phi, mu);
+  } else if (b != 0) {
+    const double B = (4.0 / 3.0) * 5.0 * b * b / (6.0 * pi2), pm = atan(sqrt((3.0 + B) / (1.0 + B))) * 180.0 / CB_PI;
+    const double phi[4] = {0, pm, 90, 180.0 - pm};
+    double s2 = sin(pm * CB_PI / 180.0), c1 = 1.0 - s2 * s2; /* alpha2^2, alpha1^2 of the mixed direction */
+    const double mu[4] = {0.75 * (1 + B) * c2, 0.75 * (1 + B) * c1 * c2, 0.75 * (1 + B) * c2, 0.75 * (1 + B) * c1 * c2};
+    check_list(pb.name, br, nb, order, phi, mu);
+  } else {
+    const double phi[4] = {0, 60, 90, 120}, mu[4] = {0.75 * c2, 0.1875 * c2, 0.75 * c2, 0.1875 * c2};
+    check_list(pb.name, br, nb, order, phi, mu);
+  }
+  if (b != 0) {
+    /* no closed-form mixed branch: each BRANCH = k is computed and leaves
+       the trivial branch */
+    for (int k = 1; k <= 4; k++) {
+      double m[3];
+      follow(&pb, bp, k, 0.05, 0.0, m);
+      snprintf(what, sizeof what, "%s: BRANCH=%d is computed (max |theta1| %.3f, |theta2| %.3f)", pb.name, k, m[0],
+               m[1]);
+      test_true(what, fmax(m[0], m[1]) > 0.3);
+    }
+    cable_solution_free(bp);
+    return;
+  }
+  /* each BRANCH = k is the exact branch: theta2 = ratio theta1 (ratio
+     infinite: theta1 = 0); a zero component stays zero to the Newton
+     tolerance (EPSU = 1e-7 relative corrections, converged quadratically) */
+  const double ratio_el[4] = {0, 1, INFINITY, -1}, ratio_cp[4] = {0, r3, INFINITY, -r3};
+  for (int k = 1; k <= 4; k++) {
+    double q = elastica ? ratio_el[k - 1] : ratio_cp[k - 1], m[3];
+    double ds = k == 2 ? -0.05 : 0.05; /* DS < 0: the other half of the branch */
+    follow(&pb, bp, k, ds, isinf(q) ? 0.0 : q, m);
+    double dev = isinf(q) ? m[0] : m[2], amp = isinf(q) ? m[1] : m[0];
+    snprintf(what, sizeof what, "%s: BRANCH=%d DS=%g follows theta2 = %s theta1 (amplitude %.3f, deviation %.2e)",
+             pb.name, k, ds, isinf(q) ? "inf" : q == 0 ? "0" : q == 1 ? "" : q == -1 ? "-" : q > 0 ? "sqrt3" : "-sqrt3",
+             amp, dev);
+    test_true(what, amp > 0.3 && dev < 1e-6);
+  }
+  /* BRANCH beyond the list is refused */
+  cable_constants c;
+  switch_constants(&c, 5, 0.05);
+  int st = 0;
+  cable_cont *cc = cable_cont_alloc(&pb, &c, &st);
+  int rc = cc && cable_cont_set_start(cc, bp) == CABLE_SUCCESS ? cable_cont_step(cc) : CABLE_SUCCESS;
+  snprintf(what, sizeof what, "%s: BRANCH=5 is refused (%s)", pb.name, cc ? cable_cont_error(cc) : "no handle");
+  test_int(what, rc, CABLE_ERR_SWITCH);
+  cable_cont_free(cc);
+  cable_solution_free(bp);
+}
+
+/* Branch identity: a branch that locates a branch point already computed on
+ * another branch stops there (cont_loop.c).  Run A, the pair's trivial
+ * branch from lambda = 1 to 12, computes the double BP at pi^2; run B comes
+ * down the trivial branch from A's end (DS < 0) and reaches that BP: with
+ * A's BP declared known it ends there with CABLE_END_LOOP and a message that
+ * names it; without, it goes on to RL0. */
+static int run_down(const cable_problem *pb, const cable_solution *from, const cable_solution *known, double *lam_end,
+                    char *err, size_t len)
+{
+  cable_constants c;
+  engine_constants(&c, 40, 4);
+  c.jac = 0;
+  c.ds = -0.5; c.dsmin = 1e-6; c.dsmax = 3.0; c.nmx = 100;
+  c.rl0 = 2.0; c.rl1 = 20.0;
+  c.isp = 2;
+  c.epss = 1e-9;
+  int st = 0;
+  cable_cont *cc = cable_cont_alloc(pb, &c, &st);
+  if (!cc) return st;
+  if (known) st = cable_cont_add_known_point(cc, known, "BP label 2 of the first run");
+  if (st == CABLE_SUCCESS) st = cable_cont_set_start(cc, from);
+  while (st == CABLE_SUCCESS) st = cable_cont_step(cc);
+  const cable_point *pt = cable_cont_point(cc);
+  *lam_end = pt ? pt->par[0] : (double)NAN;
+  snprintf(err, len, "%s", cable_cont_error(cc));
+  cable_cont_free(cc);
+  return st;
+}
+
+static void test_known_branch_point(void)
+{
+  pair_params pp = {1, 0.0};
+  cable_problem pb = {.abi_version = CABLE_PROBLEM_ABI, .struct_size = sizeof(cable_problem),
+                      .name = "two elasticas", .ndim = 4, .nbc = 4, .npar = 1,
+                      .func = pair_func, .bcnd = pair_bcnd, .stpnt = pair_stpnt, .params = &pp};
+  memrun *r = calloc(1, sizeof *r);
+  cable_constants c;
+  engine_constants(&c, 40, 4);
+  c.jac = 0;
+  c.ds = 0.5; c.dsmin = 1e-6; c.dsmax = 3.0; c.nmx = 100;
+  c.rl1 = 12.0;
+  c.isp = 2;
+  c.epss = 1e-9;
+  memrun_run(&pb, &c, NULL, r);
+  const cable_solution *bp = memrun_find(r, CABLE_TY_BP, 0);
+  const cable_solution *end = r->nsol ? r->sol[r->nsol - 1] : NULL;
+  test_true("known BP: the first run computes the BP and ends beyond it", bp && end && end->par[0] > 12.0);
+  if (bp && end) {
+    double lam = 0;
+    char err[600];
+    int st = run_down(&pb, end, bp, &lam, err, sizeof err);
+    char what[900];
+    snprintf(what, sizeof what, "known BP: the run down the branch ends at the known BP (%s)", err);
+    test_int(what, st, CABLE_END_LOOP);
+    test_rel("known BP: it ends at lambda = pi^2", lam, CB_PI * CB_PI, 1e-7);
+    test_true("known BP: the message names the point", strstr(err, "BP label 2 of the first run") != NULL);
+    st = run_down(&pb, end, NULL, &lam, err, sizeof err);
+    snprintf(what, sizeof what, "known BP: without it the run passes the BP and ends at RL0 (lambda = %.4f)", lam);
+    test_true(what, st == CABLE_END_BOUNDS && lam < 2.0);
+  }
+  memrun_free(r);
+  free(r);
+}
+
+/* 4. The O(2)-symmetric pair theta_i'' + lambda theta_i - (theta1^2 +
+ *    theta2^2) theta_i = 0: every rotation of (theta1, theta2) maps
+ *    solutions to solutions, the cubic ABE are alpha_i (nu - (3/4) c^2 s^2
+ *    |alpha|^2) = 0 and g = L_1 C_2 - L_2 C_1 vanishes for every direction:
+ *    a continuum (a group orbit of branches).  The list is empty, the note
+ *    says so, and the switch follows the canonical e1, a branch of the orbit
+ *    (theta2 = 0 along it). */
+static void test_o2_pair(void)
+{
+  pair_params pp = {2, 0.0};
+  cable_problem pb = {.abi_version = CABLE_PROBLEM_ABI, .struct_size = sizeof(cable_problem),
+                      .name = "O(2) pair", .ndim = 4, .nbc = 4, .npar = 1,
+                      .func = pair_func, .bcnd = pair_bcnd, .stpnt = pair_stpnt, .params = &pp};
+  memrun *r = calloc(1, sizeof *r);
+  cable_solution *bp = first_bp(&pb, r);
+  free(r);
+  test_true("O(2) pair: a branch point on the trivial branch", bp != NULL);
+  if (!bp) return;
+  cable_constants c;
+  switch_constants(&c, 0, 0.05);
+  int st = 0, order = 0, nb = 0;
+  cable_cont *cc = cable_cont_alloc(&pb, &c, &st);
+  int rc = cc && cable_cont_set_start(cc, bp) == CABLE_SUCCESS ? cable_cont_step(cc) : CABLE_ERR_STATE;
+  nb = cable_cont_branches(cc, NULL, 0, &order);
+  char what[900];
+  snprintf(what, sizeof what, "O(2) pair: the start is computed (%s)", cc ? cable_cont_note(cc) : "");
+  test_int(what, rc, CABLE_SUCCESS);
+  test_int("O(2) pair: the cubic ABE vanish identically: no list", nb, -1);
+  test_true("O(2) pair: the note says a continuum", cc && strstr(cable_cont_note(cc), "g vanishes identically") != NULL);
+  cable_cont_free(cc);
+  double m[3];
+  follow(&pb, bp, 0, 0.05, 0.0, m);
+  snprintf(what, sizeof what, "O(2) pair: the canonical e1 is followed, a branch of the orbit (max |theta1| %.3f, "
+           "|theta2| %.2e)", m[0], m[1]);
+  test_true(what, m[0] > 0.3 && m[1] >= 0 && m[1] < 1e-6);
+  cable_solution_free(bp);
+}
+
+int main(void)
+{
+  test_pair(1, 0.0);
+  test_pair(0, 0.0);
+  test_pair(0, 1.0);
+  test_o2_pair();
+  test_known_branch_point();
+  return test_summary();
+}
