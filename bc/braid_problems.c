@@ -8,6 +8,7 @@
 #include "braid_pressure.h"
 #include "braid_prepare.h"
 #include "braid_problems.h"
+#include "braid_second_variation.h"
 #include "cable/cable_analysis.h"
 #include "cable/cable_solution.h"
 #include "cable/cable_status.h"
@@ -96,6 +97,17 @@ int braid_pvls(const cable_solution *sol, double *par, void *params)
   return rc;
 }
 
+/* The links' variational structure (doc/stability.md S7): the Ritz matrices of
+ * the second variation in the strain variables; the knots' is not done. */
+static int link_ritz(const cable_solution *sol, int refine, int degree, int *n, int *nc, double **K, double **M,
+                     double **G, void *params)
+{
+  (void)params;
+  return braid_link_ritz(sol, refine, degree, n, nc, K, M, G, NULL);
+}
+
+static const cable_variational link_var = {.nvar = BSV_NFIELD, .ritz = link_ritz};
+
 #define BRAID_PROBLEM_COMMON                                                           \
   .abi_version = CABLE_PROBLEM_ABI, .struct_size = sizeof(cable_problem), .ndim = BR_NDIM, \
   .nint = 0, .npar = BP_NPAR, .parnames = braid_parnames, .unames = braid_unames,       \
@@ -127,6 +139,7 @@ static const cable_problem link_template = {
   .description = "closed 2-braid forming a two-component link (12.3.24-44; free T, Delta or Phi)",
   .nbc = BL_NBC,
   .bcnd = braid_link_bcnd,
+  .variational = &link_var,
 };
 
 static const cable_problem link_sym_template = {
@@ -135,6 +148,7 @@ static const cable_problem link_sym_template = {
   .description = "S0-symmetric link: braid_link + F2(0) = 0, eps13 on (12.3.36) (free T, eps13)",
   .nbc = BL_SYM_NBC,
   .bcnd = braid_link_sym_bcnd,
+  .variational = &link_var,
 };
 
 const cable_problem *braid_knot_problem(void) { return &knot_template; }
