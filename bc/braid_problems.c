@@ -97,16 +97,24 @@ int braid_pvls(const cable_solution *sol, double *par, void *params)
   return rc;
 }
 
-/* The links' variational structure (doc/stability.md S7): the Ritz matrices of
- * the second variation in the strain variables; the knots' is not done. */
+/* The variational structure (doc/stability.md S7): the Ritz matrices of the
+ * second variation in the strain variables. */
 static int link_ritz(const cable_solution *sol, int refine, int degree, int *n, int *nc, double **K, double **M,
                      double **G, void *params)
 {
   (void)params;
-  return braid_link_ritz(sol, refine, degree, n, nc, K, M, G, NULL);
+  return braid_ritz(sol, 0, refine, degree, n, nc, K, M, G, NULL);
+}
+
+static int knot_ritz(const cable_solution *sol, int refine, int degree, int *n, int *nc, double **K, double **M,
+                     double **G, void *params)
+{
+  (void)params;
+  return braid_ritz(sol, 1, refine, degree, n, nc, K, M, G, NULL);
 }
 
 static const cable_variational link_var = {.nvar = BSV_NFIELD, .ritz = link_ritz};
+static const cable_variational knot_var = {.nvar = BSV_NFIELD, .ritz = knot_ritz};
 
 #define BRAID_PROBLEM_COMMON                                                           \
   .abi_version = CABLE_PROBLEM_ABI, .struct_size = sizeof(cable_problem), .ndim = BR_NDIM, \
@@ -123,6 +131,7 @@ static const cable_problem knot_template = {
                  "free T, L, L2, eps21)",
   .nbc = BK_NBC,
   .bcnd = braid_knot_bcnd,
+  .variational = &knot_var,
 };
 
 static const cable_problem knot_sym_template = {
@@ -131,6 +140,7 @@ static const cable_problem knot_sym_template = {
   .description = "S0-symmetric knot: braid_knot + F2(0) = 0 (free T, L, L2, eps21, eps13)",
   .nbc = BK_SYM_NBC,
   .bcnd = braid_knot_sym_bcnd,
+  .variational = &knot_var,
 };
 
 static const cable_problem link_template = {

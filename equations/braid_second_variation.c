@@ -36,6 +36,9 @@ typedef struct {
   double *f0, *f;       /* nstep * 3 * NF: base and current fields */
   double *y, *Fy, *p;   /* (nstep + 1) * NY */
   double q0[4];
+  int knot;             /* 1: the knot's closure (strand 1 continues as strand 2), L free */
+  double Lb, Ltot, sg;  /* the solution's L; L + L2; the link's quaternion sign */
+  int nL;               /* the unknown delta L (knots), -1 for links */
 } sv_ctx;
 
 static void lagrange(int n, double x, double *l, double *dl)
@@ -130,6 +133,43 @@ static void pfphi(const sv_ctx *c, const double *f, const double *y, const doubl
 
 #define FLD(c, st, nu) ((c)->f + ((size_t)(st) * 3 + (size_t)(nu)) * NF)
 
+/* constraint k at the end state y1 (eta1 = eta(1)): its value, its gradient
+   in y(1), in eta(1) and its direct dependence on L.  Link (12.3.36-44):
+   r1(L) = r1(0), q(0)^-1 q(L) = +-1, sigma(L) = L2.  Knot (12.3.13-22):
+   r1(L) - r1(0) = (Delta, 0, 0), q0 = q3, q1 = -q2, 4 q0 q1 = sin eta at L,
+   sigma(L) = Ltot - L. */
+static double con(const sv_ctx *c, int k, const double *y1, double eta1, double *gy, double *geta, double *gL)
+{
+  for (int i = 0; i < NY; i++) gy[i] = 0.0;
+  *geta = *gL = 0.0;
+  const double *a = c->q0, *b = y1;
+  if (k < 3) {
+    gy[4 + k] = 1.0;
+    return y1[4 + k] - (c->knot && k == 0 ? c->mat.Delta : 0.0);
+  }
+  if (k == 6) {
+    gy[7] = 1.0;
+    if (c->knot) {
+      *gL = 1.0;
+      return y1[7] + c->L - c->Ltot;
+    }
+    return y1[7] - c->L2;
+  }
+  if (c->knot) {
+    if (k == 3) { gy[0] = 1.0; gy[3] = -1.0; return b[0] - b[3]; }
+    if (k == 4) { gy[1] = 1.0; gy[2] = 1.0; return b[1] + b[2]; }
+    gy[0] = 4 * b[1]; gy[1] = 4 * b[0]; *geta = -cos(eta1);
+    return 4 * b[0] * b[1] - sin(eta1);
+  }
+  const double dv[3][4] = {{-a[1], a[0], a[3], -a[2]}, {-a[2], -a[3], a[0], a[1]}, {-a[3], a[2], -a[1], a[0]}};
+  double v = 0.0;
+  for (int i = 0; i < 4; i++) {
+    gy[i] = c->sg * dv[k - 3][i];
+    v += gy[i] * b[i];
+  }
+  return v;
+}
+
 static int forward(sv_ctx *c)
 {
   double *y = c->y;
@@ -153,13 +193,22 @@ static int forward(sv_ctx *c)
   return 0;
 }
 
-/* the gradient of (local ? A : 0) + pend . y(1) in the Ritz coefficients;
-   forward() must have run */
-static int gradient(sv_ctx *c, const double *pend, int local, double *out)
+/* the gradient of (local ? A : 0) + sum_k coef_k c_k in the Ritz
+   coefficients (and L for a knot); forward() must have run */
+static int gradient(sv_ctx *c, const double *coef, int local, double *out)
 {
   const int k = c->k;
   memset(out, 0, (size_t)c->n * sizeof *out);
-  memcpy(c->p + (size_t)c->nstep * NY, pend, NY * sizeof *pend);
+  const double *yend = c->y + (size_t)c->nstep * NY, eta1 = FLD(c, c->nstep - 1, 2)[0];
+  double *pend = c->p + (size_t)c->nstep * NY;
+  memset(pend, 0, NY * sizeof *pend);
+  for (int r = 0; r < BSV_NCON; r++) {
+    double gy[NY], geta, gL;
+    con(c, r, yend, eta1, gy, &geta, &gL);
+    for (int i = 0; i < NY; i++) pend[i] += coef[r] * gy[i];
+    out[(size_t)(c->nnode - 1) * BSV_NFIELD] += coef[r] * geta;
+    if (c->nL >= 0) out[c->nL] += coef[r] * gL;
+  }
   for (int st = c->nstep - 1; st >= 0; st--) {
     const double h = c->h[st], *fa = FLD(c, st, 0), *fm = FLD(c, st, 1), *fb = FLD(c, st, 2);
     const double *y0 = c->y + (size_t)st * NY, *y1 = y0 + NY, *F0 = c->Fy + (size_t)st * NY, *F1 = F0 + NY;
@@ -195,6 +244,19 @@ static int gradient(sv_ctx *c, const double *pend, int local, double *out)
         dens[4] += c->L * (gp.dxi2p + c->T);
         dd = gp.detap;   /* L * g_eta' * (1/L) d(delta eta)/dt */
       }
+      if (c->nL >= 0) {
+        /* d/dL: y' = L F, A = int L (g - T xi1' + T xi2') dt with eta' = eta_t / L */
+        double F[NY], pF = 0.0;
+        kin(c, f, ys[nu], F);
+        for (int i = 0; i < NY; i++) pF += ps[nu][i] * F[i] / c->L;
+        double dl = pF;
+        if (local) {
+          braid_gpartials gp;
+          braid_g_partials(f[0], f[1], f[2], f[3], f[4], f[5], 0.0, &c->mat, &gp);
+          dl += gp.g - c->T * f[4] + c->T * f[5] - gp.detap * f[1];
+        }
+        out[c->nL] += wts[nu] * dl;
+      }
       const double *v = c->val + ((size_t)st * 3 + (size_t)nu) * (size_t)(k + 1);
       const double *dv = c->der + ((size_t)st * 3 + (size_t)nu) * (size_t)(k + 1);
       for (int a = 0; a <= k; a++) {
@@ -229,14 +291,22 @@ static void perturb(sv_ctx *c, int node, int j, double amp)
   }
 }
 
+/* L = Lb + amp (a knot): eta' = eta_t / L rescales; amp = 0 restores */
+static void perturb_L(sv_ctx *c, double amp)
+{
+  const size_t nfl = (size_t)c->nstep * 3;
+  c->L = c->Lb + amp;
+  for (size_t o = 0; o < nfl; o++) c->f[o * NF + 1] = c->f0[o * NF + 1] * c->Lb / c->L;
+}
+
 static void ctx_free(sv_ctx *c)
 {
   free(c->h); free(c->piece); free(c->val); free(c->der); free(c->f0); free(c->f);
   free(c->y); free(c->Fy); free(c->p);
 }
 
-int braid_link_ritz(const cable_solution *sol, int refine, int degree, int *n_out, int *nc_out, double **K_out,
-                    double **M_out, double **G_out, braid_sv_info *info)
+int braid_ritz(const cable_solution *sol, int knot, int refine, int degree, int *n_out, int *nc_out, double **K_out,
+               double **M_out, double **G_out, braid_sv_info *info)
 {
   *K_out = *M_out = *G_out = NULL;
   if (!sol || sol->ndim != BR_NDIM || refine < 1 || degree < 1 || degree > 10 || sol->ncol > 30)
@@ -244,7 +314,9 @@ int braid_link_ritz(const cable_solution *sol, int refine, int degree, int *n_ou
   sv_ctx c = {0};
   c.sol = sol;
   braid_material_from_par(sol->par, &c.mat);
-  c.L = sol->par[BP_L];
+  c.L = c.Lb = sol->par[BP_L];
+  c.Ltot = sol->par[BP_LTOT];
+  c.knot = knot != 0;
   c.L2 = sol->par[BP_L2];
   c.T = sol->par[BP_T];
   c.k = degree;
@@ -253,7 +325,8 @@ int braid_link_ritz(const cable_solution *sol, int refine, int degree, int *n_ou
   c.ns = 2 * degree;   /* Simpson steps per piece */
   c.nstep = c.npiece * c.ns;
   c.nnode = c.npiece * degree + 1;
-  c.n = BSV_NFIELD * c.nnode;
+  c.n = BSV_NFIELD * c.nnode + c.knot;
+  c.nL = c.knot ? c.n - 1 : -1;
   for (int i = 0; i < 4; i++) c.q0[i] = sol->u[BR_Q0 + i];
   const int n = c.n, k = degree;
   const size_t nb = (size_t)c.nstep * 3 * (size_t)(k + 1), nfl = (size_t)c.nstep * 3 * NF;
@@ -305,23 +378,20 @@ int braid_link_ritz(const cable_solution *sol, int refine, int degree, int *n_ou
     goto done;
   }
   /* the constraints at the rebuilt configuration and their gradients */
-  const double *a = c.q0, *b = c.y + (size_t)c.nstep * NY;
-  const double w = a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3], sg = w < 0 ? -1.0 : 1.0;
-  double dc[BSV_NCON][NY] = {{0}};
-  dc[0][4] = dc[1][5] = dc[2][6] = 1.0;
-  const double dv[3][4] = {{-a[1], a[0], a[3], -a[2]}, {-a[2], -a[3], a[0], a[1]}, {-a[3], a[2], -a[1], a[0]}};
-  for (int r = 0; r < 3; r++)
-    for (int i = 0; i < 4; i++) dc[3 + r][i] = sg * dv[r][i];
-  dc[6][7] = 1.0;
-  double cl = fmax(fmax(fabs(b[4]), fabs(b[5])), fmax(fabs(b[6]), fabs(b[7] - c.L2)));
-  for (int r = 0; r < 3; r++) {
-    double v = 0.0;
-    for (int i = 0; i < 4; i++) v += dv[r][i] * b[i];
-    cl = fmax(cl, fabs(v));
+  {
+    const double *a = c.q0, *b = c.y + (size_t)c.nstep * NY;
+    c.sg = a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3] < 0 ? -1.0 : 1.0;
+  }
+  double cl = 0.0;
+  for (int r = 0; r < BSV_NCON; r++) {
+    double gy[NY], geta, gL;
+    cl = fmax(cl, fabs(con(&c, r, c.y + (size_t)c.nstep * NY, FLD(&c, c.nstep - 1, 2)[0], gy, &geta, &gL)));
   }
   int nc = BSV_NCON + 1;
   for (int r = 0; r < BSV_NCON; r++) {
-    if (gradient(&c, dc[r], 0, ga) != 0) {
+    double e[BSV_NCON] = {0};
+    e[r] = 1.0;
+    if (gradient(&c, e, 0, ga) != 0) {
       st = CABLE_ERR_INPUT;
       goto done;
     }
@@ -331,7 +401,7 @@ int braid_link_ritz(const cable_solution *sol, int refine, int degree, int *n_ou
   G[BSV_NCON + 0] = 1.0;
   G[(size_t)BSV_NCON + (size_t)ncmax * (size_t)((c.nnode - 1) * BSV_NFIELD)] = -1.0;
   /* the multipliers: dA = C^T lambda (+ the periodicity row's) by least squares */
-  const double zero[NY] = {0};
+  const double zero[BSV_NCON] = {0};
   if (gradient(&c, zero, 1, rhs) != 0) {
     st = CABLE_ERR_INPUT;
     goto done;
@@ -352,17 +422,16 @@ int braid_link_ritz(const cable_solution *sol, int refine, int degree, int *n_ou
     an += ga[i] * ga[i];
   }
   /* the Hessian of Lambda = A - lambda . c by differences of its gradient */
-  double pend[NY] = {0};
-  for (int r = 0; r < BSV_NCON; r++)
-    for (int i = 0; i < NY; i++) pend[i] -= lambda[r] * dc[r][i];
+  double coef[BSV_NCON];
+  for (int r = 0; r < BSV_NCON; r++) coef[r] = -lambda[r];
   for (int node = 0; node < c.nnode; node++)
     for (int j = 0; j < BSV_NFIELD; j++) {
       const int col = node * BSV_NFIELD + j;
       perturb(&c, node, j, fd_eps);
-      int bad = forward(&c) || gradient(&c, pend, 1, ga);
+      int bad = forward(&c) || gradient(&c, coef, 1, ga);
       perturb(&c, node, j, 0.0);
       perturb(&c, node, j, -fd_eps);
-      bad = bad || forward(&c) || gradient(&c, pend, 1, gb);
+      bad = bad || forward(&c) || gradient(&c, coef, 1, gb);
       perturb(&c, node, j, 0.0);
       if (bad) {
         st = CABLE_ERR_INPUT;
@@ -370,6 +439,18 @@ int braid_link_ritz(const cable_solution *sol, int refine, int degree, int *n_ou
       }
       for (int i = 0; i < n; i++) K[(size_t)i + (size_t)n * (size_t)col] = (ga[i] - gb[i]) / (2 * fd_eps);
     }
+  if (c.nL >= 0) {
+    perturb_L(&c, fd_eps);
+    int bad = forward(&c) || gradient(&c, coef, 1, ga);
+    perturb_L(&c, -fd_eps);
+    bad = bad || forward(&c) || gradient(&c, coef, 1, gb);
+    perturb_L(&c, 0.0);
+    if (bad) {
+      st = CABLE_ERR_INPUT;
+      goto done;
+    }
+    for (int i = 0; i < n; i++) K[(size_t)i + (size_t)n * (size_t)c.nL] = (ga[i] - gb[i]) / (2 * fd_eps);
+  }
   double hmax = 0.0, amax = 0.0;
   for (int j = 0; j < n; j++)
     for (int i = 0; i < j; i++) {
@@ -415,7 +496,13 @@ int braid_link_ritz(const cable_solution *sol, int refine, int degree, int *n_ou
     }
     (void)r;
   }
-  /* a generator that vanishes (a flat braid: constant fields) is no row */
+  if (c.nL >= 0) M[(size_t)c.nL * (size_t)(n + 1)] = 1.0;   /* any positive number (Sylvester) */
+  /* a generator that vanishes (constant fields) is no row.  The knot's shift
+     moves its seam (strand 1 continues as strand 2) and changes L too: its
+     generator z is d/dt of the fields plus a delta L component; the row w
+     (d/dt of the fields, 0 for L) has w.z = |w|^2 > 0, which is all the
+     removal needs (a kernel vector outside w's orthogonal complement: the
+     index on that complement is Q's, S7) */
   const int shift = sqrt(wn) > 1e-6 * sqrt(fn);
   if (shift) nc++;
   /* compact G to nc rows */

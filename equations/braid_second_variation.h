@@ -1,6 +1,7 @@
-/* The second variation of the braid link's action with its closure
- * constraints kept to first order (doc/stability.md S7): the Ritz matrices in
- * the strain variables (eta, omega2, omega3, xi1', xi2'), for the Morse index
+/* The second variation of the braid's action (links and knots) with its
+ * closure constraints kept to first order (doc/stability.md S7): the Ritz
+ * matrices in the strain variables (eta, omega2, omega3, xi1', xi2', and the
+ * length L of strand 1 for a knot), for the Morse index
  * (continuation/stability.c solves the eigenproblem). */
 #ifndef CABLE_BRAID_SECOND_VARIATION_H
 #define CABLE_BRAID_SECOND_VARIATION_H
@@ -20,14 +21,15 @@ typedef struct braid_sv_info {
 } braid_sv_info;
 
 /* The Ritz matrices on continuous piecewise polynomials of degree `degree`
- * on sol's mesh, every interval cut into `refine` pieces: *n = 5 (nnode)
- * unknowns, K (n x n, the constrained Lagrangian's Hessian, symmetrised), M
+ * on sol's mesh, every interval cut into `refine` pieces, for a link (knot =
+ * 0: braid_link, braid_link_sym) or a knot (knot = 1: braid_knot,
+ * braid_knot_sym; L is one more unknown): *n = 5 nnode (+ 1) unknowns, K (n x n, the constrained Lagrangian's Hessian, symmetrised), M
  * (n x n, the L2 mass form), G (*nc x n, column-major: the 7 constraint
  * gradients, eta(1) = eta(0), and the shift generator's row when it is not
- * zero).  The arrays are malloc'ed, the caller frees them.  info may be NULL.
+ * zero; links only).  The arrays are malloc'ed, the caller frees them.  info may be NULL.
  * 0, or a negative cable_status (a non-braid solution, a state outside the
  * domain, out of memory). */
-int braid_link_ritz(const cable_solution *sol, int refine, int degree, int *n, int *nc, double **K, double **M,
-                    double **G, braid_sv_info *info);
+int braid_ritz(const cable_solution *sol, int knot, int refine, int degree, int *n, int *nc, double **K,
+               double **M, double **G, braid_sv_info *info);
 
 #endif

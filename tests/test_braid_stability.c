@@ -12,7 +12,9 @@
  *    point, and the index changes only at the located branch points, by 2 at
  *    a double one and by 1 at a simple one (the determinant's sign tells
  *    which).  Further up, at this mesh and step, the simple BP at T = 29.81
- *    is stepped over unlocated and the index shows it (doc/stability.md S7). */
+ *    is stepped over unlocated and the index shows it (doc/stability.md S7);
+ *  - the same along the flat (7,2) knot's right arm (runs/knot72/c.knot72 at
+ *    NTST 20, T = 0 to 34): 0, 2, 4, 6, 8 across its four double BPs. */
 #include <lapacke.h>
 #include <math.h>
 #include <stdio.h>
@@ -94,7 +96,7 @@ static void test_buckled_link(void)
   int n, nc;
   double *K, *M, *G;
   braid_sv_info info;
-  int st = braid_link_ritz(sol, 1, 2, &n, &nc, &K, &M, &G, &info);
+  int st = braid_ritz(sol, 0, 1, 2, &n, &nc, &K, &M, &G, &info);
   if (!test_int("link: the Ritz matrices at degree 2", st, 0)) {
     cable_sfile_free(sf);
     return;
@@ -181,20 +183,22 @@ static int brun_point(void *ctx, const cable_point *pt)
   return 0;
 }
 
-static void test_flat_branch(void)
+/* a STAB=1 run of a flat branch; the index must change exactly at the
+   located BPs, by their multiplicity */
+static void flat_branch(const char *what, const char *name, const char *cfile, const char *const *over, int nover,
+                        int want_bp)
 {
-  const cable_problem *tpl = braid_problem_find("braid_link"), *pb = NULL;
+  const cable_problem *tpl = braid_problem_find(name), *pb = NULL;
   cable_constants c;
   cable_error err;
-  int st = cable_constants_parse_file_for("runs/link62/c.link62", tpl, &c, NULL, &err);
-  if (!test_int("flat link: runs/link62/c.link62 read", st, 0)) return;
-  /* NTST 20: the index needs only the eigenvalues' signs away from the BPs */
-  const char *over[] = {"NTST=20", "DS=2", "DSMAX=2", "RL1=25", "NMX=300", "STAB=1"};
-  for (size_t i = 0; i < sizeof over / sizeof *over; i++)
-    st |= cable_constants_parse_override(over[i], &c, NULL, tpl->parnames, tpl->npar, &err);
-  if (!test_int("flat link: overrides", st, 0)) return;
+  char msg[200];
+  int st = cable_constants_parse_file_for(cfile, tpl, &c, NULL, &err);
+  snprintf(msg, sizeof msg, "%s: %s read, overrides", what, cfile);
+  for (int i = 0; i < nover; i++) st |= cable_constants_parse_override(over[i], &c, NULL, tpl->parnames, tpl->npar, &err);
+  if (!test_int(msg, st, 0)) return;
   st = cable_problem_prepare(tpl, &c, 1, &pb, &err);
-  if (!test_int("flat link: the flat (6,2) link prepared", st, 0)) return;
+  snprintf(msg, sizeof msg, "%s: prepared", what);
+  if (!test_int(msg, st, 0)) return;
   brun *r = calloc(1, sizeof *r);
   cable_cont *cc = cable_cont_alloc(pb, &c, &st);
   if (st == CABLE_SUCCESS) st = cable_cont_set_start(cc, NULL);
@@ -203,11 +207,24 @@ static void test_flat_branch(void)
     st = cable_cont_run(cc, &sink, 1, 1, NULL);
   }
   cable_cont_free(cc);
-  printf("# the flat branch: %d points, status %d (%s)\n", r->n, st, cable_status_message(st));
-  test_true("flat link: the STAB=1 run reaches T = 25", st == CABLE_END_BOUNDS);
+  printf("# %s: %d points, status %d (%s)\n", what, r->n, st, cable_status_message(st));
+  snprintf(msg, sizeof msg, "%s: the STAB=1 run reaches RL1", what);
+  test_true(msg, st == CABLE_END_BOUNDS);
+  /* the engine hands a located BP over after the point that stepped past
+     it: order the points by T (monotone on these flat branches) */
+  for (int i = 1; i < r->n; i++)
+    for (int j = i; j > 0 && r->T[j] < r->T[j - 1]; j--) {
+      int ti;
+      double td;
+#define SWAP(a) (ti = a[j], a[j] = a[j - 1], a[j - 1] = ti)
+      SWAP(r->itp); SWAP(r->stab); SWAP(r->index); SWAP(r->det);
+#undef SWAP
+      td = r->T[j], r->T[j] = r->T[j - 1], r->T[j - 1] = td;
+    }
   int nbp = 0, all = 1, ok = 1, first_bp = -1;
   for (int i = 0; i < r->n; i++) all &= r->stab[i] != 0;
-  test_true("flat link: every point has an index", all);
+  snprintf(msg, sizeof msg, "%s: every point has an index", what);
+  test_true(msg, all);
   /* walk the branch: between two located BPs the index is constant; across
      a BP it changes by its multiplicity (the BP's own index is not used:
      an eigenvalue is zero there) */
@@ -217,7 +234,7 @@ static void test_flat_branch(void)
       nbp++;
       if (first_bp < 0) first_bp = i;
       /* the multiplicity's parity from the determinant: it changes sign
-         across a simple BP and keeps it across a double one (D6) */
+         across a simple BP and keeps it across a double one */
       prev_bp_mult = i + 1 < r->n && r->det[i - 1] == r->det[i + 1] ? 2 : 1;
       printf("# BP at T = %.6f (%s), index before %d\n", r->T[i], prev_bp_mult == 2 ? "double" : "simple", prev);
       continue;
@@ -236,18 +253,30 @@ static void test_flat_branch(void)
     }
     prev_bp_mult = 0;
   }
-  test_int("flat link: three branch points located below T = 25 (10.08, 17.55, 23.57)", nbp, 3);
+  snprintf(msg, sizeof msg, "%s: %d branch points located", what, want_bp);
+  test_int(msg, nbp, want_bp);
   int stable = first_bp > 0;
   for (int i = 0; i < first_bp; i++) stable &= r->index[i] == 0 && r->stab[i] == 1;
-  test_true("flat link: stable (index 0) from T = 0 to the first branch point", stable);
-  test_true("flat link: the index changes exactly at the located BPs, by their multiplicity", ok);
+  snprintf(msg, sizeof msg, "%s: stable (index 0) from T = 0 to the first branch point", what);
+  test_true(msg, stable);
+  snprintf(msg, sizeof msg, "%s: the index changes exactly at the located BPs, by their multiplicity", what);
+  test_true(msg, ok);
   free(r);
   cable_problem_release(tpl, pb);
+}
+
+static void test_flat_branches(void)
+{
+  /* NTST 20: the index needs only the eigenvalues' signs away from the BPs */
+  const char *link[] = {"NTST=20", "DS=2", "DSMAX=2", "RL1=25", "NMX=300", "STAB=1"};
+  flat_branch("flat (6,2) link to T = 25", "braid_link", "runs/link62/c.link62", link, 6, 3);
+  const char *knot[] = {"NTST=20", "STAB=1"};
+  flat_branch("flat (7,2) knot, right arm", "braid_knot", "runs/knot72/c.knot72", knot, 2, 4);
 }
 
 int main(void)
 {
   test_buckled_link();
-  test_flat_branch();
+  test_flat_branches();
   return test_summary();
 }
