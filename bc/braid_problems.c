@@ -9,6 +9,7 @@
 #include "braid_pressure.h"
 #include "braid_prepare.h"
 #include "braid_problems.h"
+#include "braid_second_variation.h"
 #include "cable/cable_analysis.h"
 #include "cable/cable_solution.h"
 #include "cable/cable_status.h"
@@ -97,6 +98,25 @@ int braid_pvls(const cable_solution *sol, double *par, void *params)
   return rc;
 }
 
+/* The variational structure (doc/stability.md S7): the Ritz matrices of the
+ * second variation in the strain variables. */
+static int link_ritz(const cable_solution *sol, int refine, int degree, int *n, int *nc, double **K, double **M,
+                     double **G, void *params)
+{
+  (void)params;
+  return braid_ritz(sol, 0, refine, degree, n, nc, K, M, G, NULL);
+}
+
+static int knot_ritz(const cable_solution *sol, int refine, int degree, int *n, int *nc, double **K, double **M,
+                     double **G, void *params)
+{
+  (void)params;
+  return braid_ritz(sol, 1, refine, degree, n, nc, K, M, G, NULL);
+}
+
+static const cable_variational link_var = {.nvar = BSV_NFIELD, .ritz = link_ritz};
+static const cable_variational knot_var = {.nvar = BSV_NFIELD, .ritz = knot_ritz};
+
 #define BRAID_PROBLEM_COMMON                                                           \
   .abi_version = CABLE_PROBLEM_ABI, .struct_size = sizeof(cable_problem), .ndim = BR_NDIM, \
   .nint = 0, .npar = BP_NPAR, .parnames = braid_parnames, .unames = braid_unames,       \
@@ -112,6 +132,7 @@ static const cable_problem knot_template = {
                  "free T, L, L2, eps21)",
   .nbc = BK_NBC,
   .bcnd = braid_knot_bcnd,
+  .variational = &knot_var,
 };
 
 static const cable_problem knot_sym_template = {
@@ -120,6 +141,7 @@ static const cable_problem knot_sym_template = {
   .description = "S0-symmetric knot: braid_knot + F2(0) = 0 (free T, L, L2, eps21, eps13)",
   .nbc = BK_SYM_NBC,
   .bcnd = braid_knot_sym_bcnd,
+  .variational = &knot_var,
 };
 
 static const cable_problem link_template = {
@@ -128,6 +150,7 @@ static const cable_problem link_template = {
   .description = "closed 2-braid forming a two-component link (12.3.24-44; free T, Delta or Phi)",
   .nbc = BL_NBC,
   .bcnd = braid_link_bcnd,
+  .variational = &link_var,
 };
 
 static const cable_problem link_sym_template = {
@@ -136,6 +159,7 @@ static const cable_problem link_sym_template = {
   .description = "S0-symmetric link: braid_link + F2(0) = 0, eps13 on (12.3.36) (free T, eps13)",
   .nbc = BL_SYM_NBC,
   .bcnd = braid_link_sym_bcnd,
+  .variational = &link_var,
 };
 
 const cable_problem *braid_knot_problem(void) { return &knot_template; }

@@ -136,6 +136,8 @@ static int assemble(const cable_problem *pb, const cable_solution *sol, int refi
   return CABLE_SUCCESS;
 }
 
+static int stab_solve(stab_ws *wp, cable_stab_result *res, cable_error *err);
+
 int cable_stability_index(const cable_problem *pb, const cable_solution *sol, int refine, int degree,
                           cable_stab_result *res, cable_error *err)
 {
@@ -146,14 +148,24 @@ int cable_stability_index(const cable_problem *pb, const cable_solution *sol, in
     return cable_error_set(err, CABLE_ERR_INPUT, "", 0, "STAB",
                            "problem '%s' does not declare its variational structure (cable_problem.variational)",
                            pb->name ? pb->name : "?");
-  if (vs->nvar < 1 || vs->ncon < 0 || vs->nvbc < 0 || !vs->hessian || (vs->ncon > 0 && !vs->constraints) ||
-      (vs->nvbc > 0 && !vs->vbc))
+  if (!vs->ritz && (vs->nvar < 1 || vs->ncon < 0 || vs->nvbc < 0 || !vs->hessian ||
+                    (vs->ncon > 0 && !vs->constraints) || (vs->nvbc > 0 && !vs->vbc)))
     return cable_error_set(err, CABLE_ERR_INPUT, "", 0, "STAB", "problem '%s': incomplete cable_variational",
                            pb->name ? pb->name : "?");
   if (refine < 1 || degree < 1 || degree > 10 || sol->ntst < 1 || sol->ncol < 1 || sol->ndim != pb->ndim)
     return cable_error_set(err, CABLE_ERR_INPUT, "", 0, "STAB", "bad sizes (refine %d, degree %d, NDIM %d)", refine,
                            degree, sol->ndim);
   stab_ws w = {0};
+  if (vs->ritz) {
+    /* the problem assembles K, M, G itself (a nonlocal second variation) */
+    int rc = vs->ritz(sol, refine, degree, &w.n, &w.nc, &w.K, &w.M, &w.G, pb->params);
+    if (rc != 0 || !w.K || !w.M || !w.G || w.n < 1 || w.nc < 0) {
+      ws_free(&w);
+      return cable_error_set(err, CABLE_ERR_CALLBACK, "", 0, "STAB",
+                             "the problem's Ritz callback failed (status %d)", rc);
+    }
+    return stab_solve(&w, res, err);
+  }
   w.m = vs->nvar;
   w.k = degree;
   w.nq = degree + 3;
@@ -162,6 +174,7 @@ int cable_stability_index(const cable_problem *pb, const cable_solution *sol, in
   w.nc = vs->nvbc + vs->ncon;
   w.ndim = sol->ndim;
   const int N = w.n, m = w.m, nc = w.nc;
+  (void)nc;
   size_t NN = (size_t)N * (size_t)N;
   w.K = calloc(NN, sizeof *w.K);
   w.M = calloc(NN, sizeof *w.M);
@@ -178,8 +191,6 @@ int cable_stability_index(const cable_problem *pb, const cable_solution *sol, in
   w.dphi = malloc((size_t)((degree + 1) * w.nq) * sizeof *w.dphi);
   w.ls = malloc((size_t)(sol->ncol + 1) * sizeof *w.ls);
   w.dls = malloc((size_t)(sol->ncol + 1) * sizeof *w.dls);
-  double *Q = NULL, *Kz = NULL, *Mz = NULL, *ev = NULL, *tau = NULL;
-  lapack_int *jpvt = NULL;
   int st = CABLE_SUCCESS;
   if (!w.K || !w.M || !w.G || !w.P || !w.C || !w.R || !w.a || !w.b || !w.B || !w.Hb || !w.u || !w.phi || !w.dphi ||
       !w.ls || !w.dls) {
@@ -187,6 +198,20 @@ int cable_stability_index(const cable_problem *pb, const cable_solution *sol, in
     goto done;
   }
   if ((st = assemble(pb, sol, refine, &w, err)) != CABLE_SUCCESS) goto done;
+  return stab_solve(&w, res, err);
+done:
+  ws_free(&w);
+  return st;
+}
+
+/* The spectrum of (S2.1) from w's K, M, G; frees w. */
+static int stab_solve(stab_ws *wp, cable_stab_result *res, cable_error *err)
+{
+  stab_ws w = *wp;
+  const int N = w.n, nc = w.nc;
+  double *Q = NULL, *Kz = NULL, *Mz = NULL, *ev = NULL, *tau = NULL;
+  lapack_int *jpvt = NULL;
+  int st = CABLE_SUCCESS;
   /* the null space of G: QR with column pivoting of G^T (N x nc); the last
      N - rank columns of its Q span it */
   int rank = 0;

@@ -9,6 +9,8 @@
 #include <string.h>
 
 #include "bench_util.h"
+#include "braid_problems.h"
+#include "cable/cable_aufile.h"
 #include "cable/cable_constants.h"
 #include "cable/cable_stability.h"
 #include "engine_util.h"
@@ -41,6 +43,35 @@ static double run_time(int stab, int ntst, int ncol, int nmx, int *npts)
   cable_cont_free(cc);
   *npts = n;
   return t / n;
+}
+
+/* seconds per step of the flat (7,2) knot (runs/knot72/c.knot72 at NTST 20,
+   NCOL 7, nmx steps from T = 0), STAB = 0 or 1; -1 when it cannot run */
+static double knot_time(int stab, int nmx, int *npts)
+{
+  const cable_problem *tpl = braid_problem_find("braid_knot"), *pb = NULL;
+  cable_constants c;
+  cable_error e;
+  char o[3][32];
+  snprintf(o[0], sizeof o[0], "NTST=20");
+  snprintf(o[1], sizeof o[1], "NMX=%d", nmx);
+  snprintf(o[2], sizeof o[2], "STAB=%d", stab);
+  int st = cable_constants_parse_file_for("runs/knot72/c.knot72", tpl, &c, NULL, &e);
+  for (int i = 0; i < 3 && st == 0; i++) st = cable_constants_parse_override(o[i], &c, NULL, tpl->parnames, tpl->npar, &e);
+  c.nthreads = 1;
+  if (st != 0 || cable_problem_prepare(tpl, &c, 1, &pb, &e) != 0) return -1;
+  int n = 0;
+  cable_cont *cc = cable_cont_alloc(pb, &c, &st);
+  double t0 = bench_now();
+  if (cc && cable_cont_set_start(cc, NULL) == 0) {
+    cable_sink sink = {&n, count_point, NULL, NULL};
+    cable_cont_run(cc, &sink, 1, 1, NULL);
+  }
+  double t = bench_now() - t0;
+  cable_cont_free(cc);
+  cable_problem_release(tpl, pb);
+  *npts = n;
+  return n > 0 ? t / n : -1;
 }
 
 int main(int argc, char **argv)
@@ -81,6 +112,28 @@ int main(int argc, char **argv)
     printf("  N = %5d  %.3e s   (%.2f N^3 ns)\n", res.nbasis, t, 1e9 * t / ((double)res.nbasis * res.nbasis * res.nbasis));
     cable_solution_free(s);
   }
+  printf("the braid: the flat (7,2) knot, c.knot72 at NTST 20, NCOL 7 (N = %d), 1 thread, median of %d runs\n",
+         5 * (20 * 7 + 1) + 1, reps);
+  double tk[2];
+  int nk = 0;
+  for (int stab = 0; stab <= 1; stab++) {
+    for (int r = 0; r < reps; r++) v[r] = knot_time(stab, 10, &nk);
+    tk[stab] = bench_median(v, reps);
+  }
+  printf("  points %d  s/step STAB=0 %.3e  s/step STAB=1 %.3e  added %.3e\n", nk, tk[0], tk[1], tk[1] - tk[0]);
+  printf("one braid index (tests/data/s.link62_buckled, NTST 50) against the Ritz degree\n");
+  cable_error e;
+  cable_sfile *sf = cable_sfile_read("tests/data/s.link62_buckled", &e);
+  for (int deg = 1; sf && deg <= 4; deg++) {
+    cable_stab_result res;
+    for (int r = 0; r < reps; r++) {
+      double t0 = bench_now();
+      cable_stability_index(braid_problem_find("braid_link"), cable_sfile_get(sf, 0), 1, deg, &res, &e);
+      v[r] = bench_now() - t0;
+    }
+    printf("  degree %d  N = %5d  %.3e s  index %d\n", deg, res.nbasis, bench_median(v, reps), res.index);
+  }
+  cable_sfile_free(sf);
   free(v);
   return 0;
 }

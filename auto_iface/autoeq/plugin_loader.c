@@ -100,11 +100,11 @@ static int check_keys(const cable_problem *pb, const char *origin, cable_error *
   }
   /* ABI 4: the variational structure (doc/stability.md S4) */
   const cable_variational *v = pb->variational;
-  if (v && (v->nvar < 1 || v->ncon < 0 || v->nvbc < 0 || !v->hessian || (v->ncon > 0 && !v->constraints) ||
-            (v->nvbc > 0 && !v->vbc)))
+  if (v && !v->ritz && (v->nvar < 1 || v->ncon < 0 || v->nvbc < 0 || !v->hessian || (v->ncon > 0 && !v->constraints) ||
+                        (v->nvbc > 0 && !v->vbc)))
     return reject(err, origin, "variational",
-                  "needs nvar >= 1, ncon >= 0, nvbc >= 0, a hessian callback, constraints when ncon > 0 and vbc "
-                  "when nvbc > 0");
+                  "needs a ritz callback, or nvar >= 1, ncon >= 0, nvbc >= 0, a hessian callback, constraints when "
+                  "ncon > 0 and vbc when nvbc > 0");
   return 0;
 }
 

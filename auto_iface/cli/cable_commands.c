@@ -7,6 +7,7 @@
 
 #include "cable/cable_aufile.h"
 #include "cable/cable_analysis.h"
+#include "cable/cable_stability.h"
 #include "braid_state.h"
 #include "cable/cable_names.h"
 #include "cable/cable_session.h"
@@ -244,6 +245,18 @@ static void print_psign(FILE *out, const char *what, const double *x, int n)
 
 int cable_cmd_analyze(const char *sfile, int nlab, char **labels, FILE *out, cable_error *err)
 {
+  /* STAB=1 among the arguments: the Morse index too (doc/stability.md S7) */
+  int stab = 0, nl = 0;
+  for (int i = 0; i < nlab; i++) {
+    if (strncmp(labels[i], "STAB=", 5) == 0) {
+      if (strcmp(labels[i] + 5, "0") != 0 && strcmp(labels[i] + 5, "1") != 0)
+        return cable_error_set(err, CABLE_ERR_INPUT, NULL, 0, "STAB", "STAB=0 or STAB=1, got '%s'", labels[i]);
+      stab = labels[i][5] == '1';
+      continue;
+    }
+    labels[nl++] = labels[i];
+  }
+  nlab = nl;
   cable_sfile *s = cable_sfile_read(sfile, err);
   if (!s) return err->status ? err->status : CABLE_ERR_IO;
   int rc = 0;
@@ -277,6 +290,16 @@ int cable_cmd_analyze(const char *sfile, int nlab, char **labels, FILE *out, cab
     fprintf(out, "  first integrals drift %.2e; material closure %.6f%s\n", a.drift, a.closure,
             a.topo.closure < 0 ? " (pi for a closed material frame)" : "");
     if (a.topo.closure > 0) fprintf(out, "  material closure of strand 2 %.6f\n", a.closure2);
+    if (stab) {
+      cable_stab_result r;
+      const cable_problem *pb = cable_problem_builtin(a.topo.closure < 0 ? "braid_knot" : "braid_link");
+      rc = cable_stability_index(pb, x, 1, x->ncol, &r, err);
+      if (rc) break;
+      fprintf(out, "  stability: Morse index %d (%s), zero eigenvalues %d; smallest eigenvalues", r.index,
+              r.index == 0 && r.nzero == 0 ? "stable" : "unstable", r.nzero);
+      for (int j = 0; j < r.neig && j < 4; j++) fprintf(out, " %.6g", r.eig[j]);
+      fputc('\n', out);
+    }
   }
   cable_sfile_free(s);
   return rc;

@@ -16,7 +16,7 @@ int cable_cmd_info(const char *e, FILE *out, cable_error *err);
 int cable_cmd_table(const char *bfile, FILE *out, cable_error *err);
 /* cable list s.NAME (error estimates from d.NAME when present) */
 int cable_cmd_list(const char *sfile, FILE *out, cable_error *err);
-/* cable analyze s.NAME LABEL... */
+/* cable analyze s.NAME LABEL... [STAB=1] (the argument STAB=1: the Morse index too) */
 int cable_cmd_analyze(const char *sfile, int nlab, char **labels, FILE *out, cable_error *err);
 
 /* cable plot [x=COL] [y=COL] [o=FILE.png|FILE.svg] [title=TEXT] b.NAME ... */

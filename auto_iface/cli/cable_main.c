@@ -41,7 +41,7 @@ static void usage(FILE *out)
         "                     .f or .c in the current directory counts, as for run)\n"
         "  table b.NAME       the branch table of a b-file\n"
         "  list s.NAME        the labelled solutions of an s-file\n"
-        "  analyze s.NAME LABEL...\n"
+        "  analyze s.NAME LABEL... [STAB=1]\n"
         "                     derived quantities of braid solutions (Lk, Tw, Wr, knot type,\n"
         "                     contact pressure, tube overlap, first integrals)\n"
         "  plot [x=COL] [y=COL] [o=FILE.png|.svg] b.NAME ...\n"
@@ -244,7 +244,7 @@ int main(int argc, char **argv)
   if (strcmp(cmd, "render") == 0) return report(cable_cmd_render(argc - 2, argv + 2, &err), &err);
   if (strcmp(cmd, "analyze") == 0) {
     if (argc < 4) {
-      fprintf(stderr, "cable: usage: cable analyze s.NAME LABEL...\n");
+      fprintf(stderr, "cable: usage: cable analyze s.NAME LABEL... [STAB=1]\n");
       return 2;
     }
     return report(cable_cmd_analyze(argv[2], argc - 3, argv + 3, stdout, &err), &err);

@@ -43,8 +43,8 @@ PyObject *pyc_analyze(PyObject *mod, PyObject *args)
 {
   (void)mod;
   PyObject *br;
-  int i;
-  if (!PyArg_ParseTuple(args, "Oi", &br, &i)) return NULL;
+  int i, stab = 0;
+  if (!PyArg_ParseTuple(args, "Oi|i", &br, &i, &stab)) return NULL;
   const cable_solution *s = pyc_solution_arg(br, i);
   if (!s) return NULL;
   cable_braid_analysis *a = PyMem_Malloc(sizeof *a);
@@ -85,12 +85,31 @@ PyObject *pyc_analyze(PyObject *mod, PyObject *args)
             set_num(d, "overlap_length", a->tube.overlap_length) ||
             set_num(d, "axis_kappa_max", a->tube.axis_kappa_max) || set_num(d, "drift", a->drift) ||
             set_num(d, "closure", a->closure) || set_num(d, "closure2", a->closure2) || set_num(d, "err", s->err_est);
+  const double closure_sign = a->topo.closure;
   PyMem_Free(a);
   Py_XDECREF(ov);
   Py_XDECREF(knot);
   if (bad) {
     Py_XDECREF(d);
     return NULL;
+  }
+  if (stab) {
+    /* the Morse index (doc/stability.md S7): 'index', 'nzero', 'sigma' */
+    cable_stab_result r;
+    cable_error err;
+    const cable_problem *pb = cable_problem_builtin(closure_sign < 0 ? "braid_knot" : "braid_link");
+    int st;
+    Py_BEGIN_ALLOW_THREADS
+    st = cable_stability_index(pb, s, 1, s->ncol, &r, &err);
+    Py_END_ALLOW_THREADS
+    if (st) {
+      Py_DECREF(d);
+      return pyc_raise(st, &err);
+    }
+    if (set_int(d, "index", r.index) || set_int(d, "nzero", r.nzero) || set_list(d, "sigma", r.eig, r.neig)) {
+      Py_DECREF(d);
+      return NULL;
+    }
   }
   return d;
 }

@@ -113,6 +113,13 @@ typedef struct cable_variational {
    * NULL when nvbc = 0). */
   int (*vbc)(int ndim, const double *u0, const double *u1, const double *par, int nvar, int nvbc,
              double *B, double *Hb, void *params);
+  /* A problem whose second variation is not of the local form above (the braid: its closure
+   * constraints are integrals of the kinematics, doc/stability.md S7) assembles the Ritz
+   * matrices itself: *n unknowns, K and M (n x n, symmetric, M positive definite), G (*nc x n,
+   * column-major, the linearised constraints G x = 0), malloc'ed, freed by the caller.  When
+   * set, hessian, constraints and vbc are not used (may be NULL) and nvar is ignored. */
+  int (*ritz)(const struct cable_solution *sol, int refine, int degree, int *n, int *nc, double **K, double **M,
+              double **G, void *params);
 } cable_variational;
 
 typedef struct cable_problem {

@@ -423,13 +423,16 @@ class Runner:
             input('Hit <return> to continue')
 
     # --- cable's scene functions ---------------------------------------------------------
-    def analyze(self, sol):
+    def analyze(self, sol, STAB=0):
         """analyze(sol) -> dict: Lk, Tw, Wr, knot type, pressure, tube distance ...
-        (doc/scripts.md)"""
+        (doc/scripts.md); analyze(sol, STAB=1) adds the Morse index: 'index',
+        'nzero', 'sigma' (doc/stability.md S7)"""
         if not isinstance(sol, Solution):
             raise CableTypeError('analyze(sol) takes one solution')
+        if STAB not in (0, 1):
+            raise CableValueError('analyze: STAB=0 or STAB=1, got %r' % (STAB,))
         br, i = sol.branch
-        return _cable.analyze(br, i)
+        return _cable.analyze(br, i, STAB) if STAB else _cable.analyze(br, i)
 
     def plot(self, file=None, names=None, marks=(), x=None, y=None, title=None):
         """plot('fig.png', ['name', ...], marks=[[sol, 'text'], ...], x='T', y='F', title=...):
