@@ -296,7 +296,7 @@ static void test_broken(void)
                 "cable_problem_entry: the plug-in does not export it (define `const cable_problem "
                 "*cable_problem_entry(void)` with external linkage)");
   expect_reject("broken_abi", CABLE_ERR_PLUGIN,
-                "abi_version: built for ABI 99, this cable expects 4 (rebuild the plug-in against "
+                "abi_version: built for ABI 99, this cable expects 5 (rebuild the plug-in against "
                 "this cable's cable_problem.h)");
   char tail[400];
   snprintf(tail, sizeof tail,

@@ -27,8 +27,8 @@
 
 #include <stddef.h>
 
-#define CABLE_PROBLEM_ABI 4        /* bump when the struct layout changes (2: keys, prepare, release;
-                                      3: concurrent; 4: variational) */
+#define CABLE_PROBLEM_ABI 5        /* bump when the struct layout changes (2: keys, prepare, release;
+                                      3: concurrent; 4: variational; 5: variational.ritz) */
 #define CABLE_NPAR_DEFAULT 36      /* AUTO's default NPAR */
 #define CABLE_PROBLEM_ENTRY "cable_problem_entry"
 
