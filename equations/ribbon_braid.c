@@ -13,6 +13,7 @@
 #include "braid_state.h"
 #include "cable/cable_status.h"
 #include "ribbon.h"
+#include "ribbon_fuller.h"
 
 static double dot3(const double *a, const double *b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
@@ -27,7 +28,7 @@ static void cross3(const double *a, const double *b, double *c)
  * plane of the contact curve, p = d1 - (d1.T) T.  Projection makes the rate
  * exact for the interpolated curve, whose d1 is perpendicular to c' only up
  * to the discretisation error. */
-static double braid_twist_rate(const braid_point *q)
+double braid_point_twist_rate(const braid_point *q)
 {
   double sp = sqrt(dot3(q->dc, q->dc));
   double T[3], Tt[3], p[3], pt[3], x[3];
@@ -221,7 +222,7 @@ static double dist2(const double *p, const double *q)
 }
 
 /* Unit tangent T and curvature vector K = dT/da of the contact curve at q. */
-static void tangent_curvature(const braid_point *q, double T[3], double K[3])
+void braid_point_tangent_curvature(const braid_point *q, double T[3], double K[3])
 {
   double sp2 = dot3(q->dc, q->dc), sp = sqrt(sp2);
   for (int i = 0; i < 3; i++) T[i] = q->dc[i] / sp;
@@ -243,8 +244,8 @@ static int refine_pair(axis *x, double a, double b, double span, near_pair *out)
     double ta, tb, Ta[3], Ka[3], Tb[3], Kb[3];
     if (axis_at(x, a - x->A * floor(a / x->A), &ta, &p) != CABLE_SUCCESS) return 0;
     if (axis_at(x, b - x->A * floor(b / x->A), &tb, &q) != CABLE_SUCCESS) return 0;
-    tangent_curvature(&p, Ta, Ka);
-    tangent_curvature(&q, Tb, Kb);
+    braid_point_tangent_curvature(&p, Ta, Ka);
+    braid_point_tangent_curvature(&q, Tb, Kb);
     double D[3] = {p.c[0] - q.c[0], p.c[1] - q.c[1], p.c[2] - q.c[2]};
     double g1 = dot3(D, Ta), g2 = -dot3(D, Tb);
     double h11 = 1.0 + dot3(D, Ka), h22 = 1.0 - dot3(D, Kb), h12 = -dot3(Ta, Tb);
@@ -351,7 +352,7 @@ int braid_ribbon_compute(const cable_solution *sol, int nsamples, braid_ribbon *
       gsl_integration_glfixed_point(a, b, i, &tt, &wgt, tab);
       x.rc = braid_point_eval(sol, tt, &x.hint, &q);
       if (x.rc != CABLE_SUCCESS) break;
-      tws += wgt * braid_twist_rate(&q);
+      tws += wgt * braid_point_twist_rate(&q);
     }
     tw += tws;
     x.arc[j + 1] = x.arc[j] + arc_gl(&x, a, b);
