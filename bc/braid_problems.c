@@ -81,9 +81,9 @@ int braid_pvls(const cable_solution *sol, double *par, void *params)
     if (e != 0) rc = 1;
   }
   if (requested(sol, BP_DMIN)) {
-    tube_distance_result td;
-    int e = braid_tube_distance_solution(sol, 0, &td);
-    par[BP_DMIN] = e == 0 && isfinite(td.dmin) ? td.dmin : 0.0;
+    double dmin = 0.0;
+    int e = braid_tube_dmin_solution(sol, &dmin);
+    par[BP_DMIN] = e == 0 && isfinite(dmin) ? dmin : 0.0;
     if (par[BP_DMIN] == 0.0) rc = 1;
   }
   if ((any_requested(sol, BP_LK, BP_WR) || requested(sol, BP_WRERR)) && track) {
