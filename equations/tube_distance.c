@@ -19,6 +19,7 @@ typedef struct tube_node {
 } tube_node;
 
 typedef struct tube_npair {
+  double lb;                    /* distance bound of the pair (computed when pushed) */
   int a, b;
 } tube_npair;
 
@@ -181,7 +182,7 @@ static int build(tube_workspace *w, const tube_polyline *c, int k, int first, in
 }
 
 /* Lower bound of the distance of two nodes' segments. */
-static double bound(const tube_node *x, const tube_node *y)
+static inline double bound(const tube_node *x, const tube_node *y)
 {
   double d2 = 0;
   for (int j = 0; j < 3; j++) d2 += (x->ctr[j] - y->ctr[j]) * (x->ctr[j] - y->ctr[j]);
@@ -252,14 +253,13 @@ int tube_polylines_distance(tube_workspace *w, int ncurve, const tube_polyline *
   for (int k = 0; k < ncurve; k++)
     for (int l = k; l < ncurve; l++) {
       if (top + 1 > w->maxstack && grow(w)) return CABLE_ERR_ALLOC;
-      w->stack[top++] = (tube_npair){root[k], root[l]};
+      w->stack[top++] = (tube_npair){bound(&w->node[root[k]], &w->node[root[l]]), root[k], root[l]};
     }
   while (top > 0) {
     tube_npair q = w->stack[--top];
     const tube_node *x = &w->node[q.a], *y = &w->node[q.b];
+    if (q.lb > out->dist && q.lb >= overlap) continue;
     if (pos_sep(x->pmid, y->pmid, period) + x->phalf + y->phalf < window) continue;
-    double lb = bound(x, y);
-    if (lb > out->dist && lb >= overlap) continue;
     if (x->child[0] < 0 && y->child[0] < 0) {
       leaf_pair(c, x, y, period, window, overlap, out, flags);
       continue;
@@ -268,24 +268,24 @@ int tube_polylines_distance(tube_workspace *w, int ncurve, const tube_polyline *
     tube_npair kids[4];
     int nk = 0;
     if (q.a == q.b) {
-      kids[nk++] = (tube_npair){x->child[0], x->child[0]};
-      kids[nk++] = (tube_npair){x->child[1], x->child[1]};
-      kids[nk++] = (tube_npair){x->child[0], x->child[1]};
+      kids[nk++] = (tube_npair){0, x->child[0], x->child[0]};
+      kids[nk++] = (tube_npair){0, x->child[1], x->child[1]};
+      kids[nk++] = (tube_npair){0, x->child[0], x->child[1]};
     } else if (y->child[0] < 0 || (x->child[0] >= 0 && x->rad >= y->rad)) {
-      kids[nk++] = (tube_npair){x->child[0], q.b};
-      kids[nk++] = (tube_npair){x->child[1], q.b};
+      kids[nk++] = (tube_npair){0, x->child[0], q.b};
+      kids[nk++] = (tube_npair){0, x->child[1], q.b};
     } else {
-      kids[nk++] = (tube_npair){q.a, y->child[0]};
-      kids[nk++] = (tube_npair){q.a, y->child[1]};
+      kids[nk++] = (tube_npair){0, q.a, y->child[0]};
+      kids[nk++] = (tube_npair){0, q.a, y->child[1]};
     }
-    double kb[4];
-    for (int i = 0; i < nk; i++) kb[i] = bound(&w->node[kids[i].a], &w->node[kids[i].b]);
+    for (int i = 0; i < nk; i++) kids[i].lb = bound(&w->node[kids[i].a], &w->node[kids[i].b]);
     /* push the farthest first: the nearest is taken next */
     for (int i = 0; i < nk; i++)
       for (int j = i + 1; j < nk; j++)
-        if (kb[j] > kb[i]) {
-          double tb = kb[i]; kb[i] = kb[j]; kb[j] = tb;
-          tube_npair tp = kids[i]; kids[i] = kids[j]; kids[j] = tp;
+        if (kids[j].lb > kids[i].lb) {
+          tube_npair tp = kids[i];
+          kids[i] = kids[j];
+          kids[j] = tp;
         }
     if (top + (size_t)nk > w->maxstack && grow(w)) return CABLE_ERR_ALLOC;
     for (int i = 0; i < nk; i++) w->stack[top++] = kids[i];
