@@ -208,6 +208,18 @@ static void leaf_pair(const tube_polyline *c, const tube_node *x, const tube_nod
     int j0 = x == y ? i + 1 : y->first;
     for (int j = j0; j < y->first + y->count; j++) {
       if (pos_sep(pi_, seg_mid_pos(cb, j), period) < window) continue;
+      /* the segments' bounding spheres (centre at the midpoint, radius half
+         the length): a bound below which their distance cannot fall */
+      const double *p0 = ca->xyz + 3 * i, *p1 = p0 + 3, *q0 = cb->xyz + 3 * j, *q1 = q0 + 3;
+      double dm2 = 0, lp2 = 0, lq2 = 0;
+      for (int k = 0; k < 3; k++) {
+        double dm = 0.5 * (p0[k] + p1[k] - q0[k] - q1[k]), dp = p1[k] - p0[k], dq = q1[k] - q0[k];
+        dm2 += dm * dm;
+        lp2 += dp * dp;
+        lq2 += dq * dq;
+      }
+      double lbs = sqrt(dm2) - 0.5 * (sqrt(lp2) + sqrt(lq2));
+      if (lbs > out->dist && lbs >= overlap) continue;
       double s, t;
       double d = seg_seg(ca->xyz + 3 * i, ca->xyz + 3 * i + 3, cb->xyz + 3 * j, cb->xyz + 3 * j + 3, &s, &t);
       if (d < out->dist) *out = (tube_closest){d, x->curve, i, s, y->curve, j, t};
