@@ -10,6 +10,7 @@
 #include "braid_problems.h"
 #include "braid_start.h"
 #include "cable/cable_status.h"
+#include "ribbon_track.h"
 
 typedef struct {
   cable_problem pb;          /* first member: the pointer handed out is the owner */
@@ -41,7 +42,17 @@ int braid_prepare(const cable_problem *tmpl, const cable_constants *c, int from_
   const char *name = tmpl->name;
   *pb = NULL;
   if (!from_stpnt) {
-    *pb = tmpl;   /* restarts read the stored solution: the template serves (params NULL) */
+    /* restarts read the stored solution: the template's callbacks with a
+       start that is never built (stpnt refuses it), and PVLS's Lk tracker */
+    braid_instance *bi = calloc(1, sizeof *bi);
+    if (bi) braid_start_params_init(&bi->sp, BRAID_START_RINGS, 0, 1, 0.0, 0.0, 0.0);
+    if (!bi || !(bi->sp.lk_track = braid_lk_track_alloc())) {
+      free(bi);
+      return cable_error_set(err, CABLE_ERR_ALLOC, NULL, 0, "", "out of memory");
+    }
+    bi->pb = *tmpl;
+    bi->pb.params = &bi->sp;
+    *pb = &bi->pb;
     return CABLE_SUCCESS;
   }
   int knot = strcmp(name, "braid_knot") == 0 || strcmp(name, "braid_knot_sym") == 0;
@@ -93,11 +104,18 @@ int braid_prepare(const cable_problem *tmpl, const cable_constants *c, int from_
     free(bi);
     return cable_error_set(err, rc, NULL, 0, "e", "unknown braid problem '%s'", name);
   }
+  if (!(bi->sp.lk_track = braid_lk_track_alloc())) {
+    free(bi);
+    return cable_error_set(err, CABLE_ERR_ALLOC, NULL, 0, "", "out of memory");
+  }
   *pb = &bi->pb;
   return CABLE_SUCCESS;
 }
 
 void braid_release(const cable_problem *tmpl, const cable_problem *pb)
 {
-  if (pb && pb != tmpl) free((void *)pb); /* pb is the first member of the braid_instance we allocated */
+  if (!pb || pb == tmpl) return;
+  braid_instance *bi = (braid_instance *)(void *)pb; /* pb is the first member of the braid_instance we allocated */
+  braid_lk_track_free(bi->sp.lk_track);
+  free(bi);
 }

@@ -14,6 +14,7 @@
 #include "cable/cable_solution.h"
 #include "cable/cable_status.h"
 #include "ribbon.h"
+#include "ribbon_track.h"
 #include "tube_distance.h"
 
 static const char *const braid_parnames[BP_NPAR] = {
@@ -44,7 +45,8 @@ static int any_requested(const cable_solution *sol, int k0, int k1)
 
 int braid_pvls(const cable_solution *sol, double *par, void *params)
 {
-  (void)params;
+  /* a prepared run's params carry the Lk tracker (NULL for the bare templates) */
+  braid_lk_track *track = params ? ((const braid_start_params *)params)->lk_track : NULL;
   if (sol == NULL || sol->ndim != BR_NDIM || sol->ntst < 1 || sol->ncol < 1 || sol->npar < BP_NPAR)
     return -1;
   braid_material m;
@@ -81,12 +83,21 @@ int braid_pvls(const cable_solution *sol, double *par, void *params)
     if (e != 0) rc = 1;
   }
   if (requested(sol, BP_DMIN)) {
-    cable_tube_distance_result td;
-    int e = cable_braid_tube_distance_solution(sol, 0, &td);
-    par[BP_DMIN] = e == 0 && isfinite(td.dmin) ? td.dmin : 0.0;
+    double dmin = 0.0;
+    int e = braid_tube_dmin_solution(sol, &dmin);
+    par[BP_DMIN] = e == 0 && isfinite(dmin) ? dmin : 0.0;
     if (par[BP_DMIN] == 0.0) rc = 1;
   }
-  if (any_requested(sol, BP_LK, BP_WR) || requested(sol, BP_WRERR)) {
+  if ((any_requested(sol, BP_LK, BP_WR) || requested(sol, BP_WRERR)) && track) {
+    /* along the branch: the update from the previous point (ribbon_track.h) */
+    braid_lk_value v;
+    int e = braid_lk_track_eval(track, sol, &v);
+    par[BP_LK] = e == 0 ? v.lk : 0.0;
+    par[BP_TW] = e == 0 ? v.tw : 0.0;
+    par[BP_WR] = e == 0 ? v.wr : 0.0;
+    par[BP_WRERR] = e == 0 ? v.wr_err : 0.0;
+    if (e != 0) rc = 1;
+  } else if (any_requested(sol, BP_LK, BP_WR) || requested(sol, BP_WRERR)) {
     braid_ribbon rb;
     int e = braid_ribbon_compute(sol, 0, &rb);
     par[BP_LK] = e == 0 ? rb.lk : 0.0;

@@ -64,6 +64,10 @@ typedef struct braid_start_params {
   double fit_rms;   /* rms of the same */
   double fit_rcond; /* min |R_ii| / max |R_ii| of the scaled QR factor (rank check) */
   double par[BP_NPAR]; /* parameter values the stpnt sets (slots up to BP_EPS13) */
+  /* ---- run state (not start data): PVLS's Lk along the branch
+     (equations/ribbon_track.h), owned by the prepared instance; NULL (init):
+     the full writhe at every point */
+  struct braid_lk_track *lk_track;
 } braid_start_params;
 
 /* Fill every input field (material defaults B1 = B2 = 1, C1 = C2 = 1/1.3,

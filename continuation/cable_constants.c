@@ -1,7 +1,9 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
+#define _GNU_SOURCE 1 /* sched_getaffinity, CPU_COUNT */
 #include "cable/cable_constants.h"
 #include "cable/cable_status.h"
 
+#include <sched.h>
 #include <unistd.h>
 
 #include <math.h>
@@ -47,7 +49,12 @@ int cable_threads(const cable_constants *c)
 {
   if (!c) return CABLE_ERR_NULL;
   if (c->nthreads > 0) return c->nthreads;
-  long np = sysconf(_SC_NPROCESSORS_ONLN);
+  /* the processors this process may run on (taskset, cgroup cpusets), not
+     the machine's: more threads than that only wait for each other */
+  long np = 0;
+  cpu_set_t set;
+  if (sched_getaffinity(0, sizeof set, &set) == 0) np = CPU_COUNT(&set);
+  if (np < 1) np = sysconf(_SC_NPROCESSORS_ONLN);
   if (np < 1) np = 1;
-  return np < CABLE_THREADS_DEFAULT_MAX ? (int)np : CABLE_THREADS_DEFAULT_MAX;
+  return np < CABLE_THREADS_MAX ? (int)np : CABLE_THREADS_MAX;
 }

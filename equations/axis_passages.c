@@ -133,6 +133,17 @@ static void swept_box(const double *a, const double *b, int n, int i, double *lo
   }
 }
 
+typedef struct {
+  double lo;   /* the swept box's low x */
+  int i;
+} box_key;
+
+static int box_key_cmp(const void *x, const void *y)
+{
+  const box_key *p = x, *q = y;
+  return p->lo < q->lo ? -1 : (p->lo > q->lo ? 1 : p->i - q->i);
+}
+
 int curve_passages(const double *a, const double *b, const double *pos, int n, double period, double window,
                    cable_axis_passages *out)
 {
@@ -140,16 +151,30 @@ int curve_passages(const double *a, const double *b, const double *pos, int n, d
   for (int k = 0; k < 3 * n; k++)
     if (!isfinite(a[k]) || !isfinite(b[k])) return CABLE_ERR_INPUT;
   double *box = malloc(6 * (size_t)n * sizeof *box);
-  if (!box) return CABLE_ERR_ALLOC;
-  for (int i = 0; i < n; i++) swept_box(a, b, n, i, box + 6 * i, box + 6 * i + 3);
+  box_key *key = malloc((size_t)n * sizeof *key);
+  if (!box || !key) {
+    free(box);
+    free(key);
+    return CABLE_ERR_ALLOC;
+  }
+  for (int i = 0; i < n; i++) {
+    swept_box(a, b, n, i, box + 6 * i, box + 6 * i + 3);
+    key[i] = (box_key){box[6 * i], i};
+  }
+  /* sweep and prune: segments sorted by the low x of their swept boxes; the
+     partners of one are those after it whose low x is below its high x (the
+     pairs whose boxes overlap in x, each once), then the other axes */
+  qsort(key, (size_t)n, sizeof *key, box_key_cmp);
   out->count = out->net = 0;
   out->tau_first = NAN;
-  for (int i = 0; i < n; i++)
-    for (int j = i + 1; j < n; j++) {
+  for (int p = 0; p < n; p++)
+    for (int q = p + 1; q < n && key[q].lo <= box[6 * key[p].i + 3]; q++) {
+      /* in index order: the coplanarity cubic's sign, hence the passage's, depends on it */
+      int i = key[p].i < key[q].i ? key[p].i : key[q].i, j = key[p].i < key[q].i ? key[q].i : key[p].i;
       double sep = fabs(pos[j] - pos[i]);
       if (fmin(sep, period - sep) < window) continue;
       const double *bi = box + 6 * i, *bj = box + 6 * j;
-      if (bi[0] > bj[3] || bj[0] > bi[3] || bi[1] > bj[4] || bj[1] > bi[4] || bi[2] > bj[5] || bj[2] > bi[5]) continue;
+      if (bi[1] > bj[4] || bj[1] > bi[4] || bi[2] > bj[5] || bj[2] > bi[5]) continue;
       double c[4], r[3];
       coplanarity(a, b, n, i, j, c);
       int nr = sign_change_roots(c, r);
@@ -162,6 +187,7 @@ int curve_passages(const double *a, const double *b, const double *pos, int n, d
       }
     }
   free(box);
+  free(key);
   return CABLE_SUCCESS;
 }
 

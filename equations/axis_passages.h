@@ -16,7 +16,8 @@
  * passage.  Segment pairs closer than `window` along the curve are never
  * compared (a curve whose radius of curvature is at least rho cannot meet
  * itself within pi rho of arclength), and pairs whose swept bounding boxes
- * are apart are skipped.
+ * are apart are skipped (found by sweep and prune along x: O(n log n) plus
+ * the pairs whose boxes overlap in x).
  *
  * The homotopy stands for the branch between the two solutions: it is
  * faithful when the shapes are close compared with the distances between

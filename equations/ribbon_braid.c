@@ -15,12 +15,13 @@
 #include "cable/cable_status.h"
 #include "cable_vec3.h"
 #include "ribbon.h"
+#include "ribbon_fuller.h"
 
 /* Twist rate T . (p x p_t) / |p|^2 of the normal d1 projected on the normal
  * plane of the contact curve, p = d1 - (d1.T) T.  Projection makes the rate
  * exact for the interpolated curve, whose d1 is perpendicular to c' only up
  * to the discretisation error. */
-static double braid_twist_rate(const braid_point *q)
+double braid_point_twist_rate(const braid_point *q)
 {
   double sp = sqrt(cable_vec3_dot(q->dc, q->dc));
   double T[3], Tt[3], p[3], pt[3], x[3];
@@ -208,7 +209,7 @@ static int sample_axis(axis *x, const density *D, int n, double *r, double *dr)
 }
 
 /* Unit tangent T and curvature vector K = dT/da of the contact curve at q. */
-static void tangent_curvature(const braid_point *q, double T[3], double K[3])
+void braid_point_tangent_curvature(const braid_point *q, double T[3], double K[3])
 {
   double sp2 = cable_vec3_dot(q->dc, q->dc), sp = sqrt(sp2);
   for (int i = 0; i < 3; i++) T[i] = q->dc[i] / sp;
@@ -230,8 +231,8 @@ static int refine_pair(axis *x, double a, double b, double span, near_pair *out)
     double ta, tb, Ta[3], Ka[3], Tb[3], Kb[3];
     if (axis_at(x, a - x->A * floor(a / x->A), &ta, &p) != CABLE_SUCCESS) return 0;
     if (axis_at(x, b - x->A * floor(b / x->A), &tb, &q) != CABLE_SUCCESS) return 0;
-    tangent_curvature(&p, Ta, Ka);
-    tangent_curvature(&q, Tb, Kb);
+    braid_point_tangent_curvature(&p, Ta, Ka);
+    braid_point_tangent_curvature(&q, Tb, Kb);
     double D[3] = {p.c[0] - q.c[0], p.c[1] - q.c[1], p.c[2] - q.c[2]};
     double g1 = cable_vec3_dot(D, Ta), g2 = -cable_vec3_dot(D, Tb);
     double h11 = 1.0 + cable_vec3_dot(D, Ka), h22 = 1.0 - cable_vec3_dot(D, Kb), h12 = -cable_vec3_dot(Ta, Tb);
@@ -338,7 +339,7 @@ int braid_ribbon_compute(const cable_solution *sol, int nsamples, braid_ribbon *
       gsl_integration_glfixed_point(a, b, i, &tt, &wgt, tab);
       x.rc = braid_point_eval(sol, tt, &x.hint, &q);
       if (x.rc != CABLE_SUCCESS) break;
-      tws += wgt * braid_twist_rate(&q);
+      tws += wgt * braid_point_twist_rate(&q);
     }
     tw += tws;
     x.arc[j + 1] = x.arc[j] + arc_gl(&x, a, b);

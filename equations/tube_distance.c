@@ -8,28 +8,28 @@
 #include "braid_state.h"
 #include "cable/cable_status.h"
 
-/* Segments per chunk: large enough that chunk pairs are few, small enough
- * that the bounding spheres are tight. */
-#define TUBE_CHUNK_MIN 32
-#define TUBE_MAX_CHUNKS 1024
+/* Segments per leaf of the bounding-sphere trees: a leaf pair costs LEAF^2
+ * segment distances, a level of the tree one sphere test per node pair. */
+#define TUBE_LEAF 4
 
-typedef struct tube_chunk {
+typedef struct tube_node {
   int curve, first, count;      /* segments first .. first+count-1 of curve */
+  int child[2];                 /* node indices, -1 for a leaf */
   double ctr[3], rad;           /* bounding sphere */
   double pmid, phalf;           /* midpoint-position range as centre +- half width */
-} tube_chunk;
+} tube_node;
 
-typedef struct tube_cpair {
-  double lb;                    /* lower bound of the distance */
+typedef struct tube_npair {
+  double lb;                    /* distance bound of the pair (computed when pushed) */
   int a, b;
-} tube_cpair;
+} tube_npair;
 
 struct tube_workspace {
   int nseg;
-  tube_chunk *chunk;            /* [TUBE_MAX_CHUNKS + ncurve] */
-  int maxchunk;
-  tube_cpair *pair;             /* [maxchunk (maxchunk + 1) / 2] */
-  size_t maxpair;
+  tube_node *node;              /* [maxnode] */
+  int maxnode;
+  tube_npair *stack;            /* [maxstack], grown on demand */
+  size_t maxstack;
 };
 
 tube_workspace *tube_workspace_alloc(int nseg)
@@ -38,12 +38,13 @@ tube_workspace *tube_workspace_alloc(int nseg)
   tube_workspace *w = calloc(1, sizeof *w);
   if (!w) return NULL;
   w->nseg = nseg;
-  /* ncurve extra chunks: each polyline's last chunk may be short */
-  w->maxchunk = TUBE_MAX_CHUNKS + 64;
-  w->maxpair = (size_t)w->maxchunk * ((size_t)w->maxchunk + 1) / 2;
-  w->chunk = malloc((size_t)w->maxchunk * sizeof *w->chunk);
-  w->pair = malloc(w->maxpair * sizeof *w->pair);
-  if (!w->chunk || !w->pair) {
+  /* a binary tree over m segments with leaves of >= 1 segment has < 2m
+     nodes; one tree per curve (at most 64) */
+  w->maxnode = 2 * nseg + 128;
+  w->maxstack = 1024;
+  w->node = malloc((size_t)w->maxnode * sizeof *w->node);
+  w->stack = malloc(w->maxstack * sizeof *w->stack);
+  if (!w->node || !w->stack) {
     tube_workspace_free(w);
     return NULL;
   }
@@ -53,8 +54,8 @@ tube_workspace *tube_workspace_alloc(int nseg)
 void tube_workspace_free(tube_workspace *w)
 {
   if (!w) return;
-  free(w->chunk);
-  free(w->pair);
+  free(w->node);
+  free(w->stack);
   free(w);
 }
 
@@ -119,13 +120,117 @@ static double seg_seg(const double *p0, const double *p1, const double *q0, cons
   return sqrt(dx);
 }
 
-static int cpair_cmp(const void *x, const void *y)
+static double seg_mid_pos(const tube_polyline *c, int i) { return 0.5 * (c->pos[i] + c->pos[i + 1]); }
+
+/* Node over segments first .. first+count-1 of curve k (a subtree built
+ * below it when count > TUBE_LEAF); returns its index. */
+static int build(tube_workspace *w, const tube_polyline *c, int k, int first, int count, int *nnode)
 {
-  const tube_cpair *a = x, *b = y;
-  return a->lb < b->lb ? -1 : (a->lb > b->lb ? 1 : 0);
+  int id = (*nnode)++;
+  tube_node *nd = &w->node[id];
+  nd->curve = k;
+  nd->first = first;
+  nd->count = count;
+  double m0 = seg_mid_pos(c, first), m1 = seg_mid_pos(c, first + count - 1);
+  nd->pmid = 0.5 * (m0 + m1);
+  nd->phalf = 0.5 * (m1 - m0);
+  nd->child[0] = nd->child[1] = -1;
+  if (count <= TUBE_LEAF) {
+    /* a leaf: the sphere about the centre of its points' box */
+    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    for (int i = first; i <= first + count; i++)
+      for (int j = 0; j < 3; j++) {
+        double v = c->xyz[3 * i + j];
+        if (v < lo[j]) lo[j] = v;
+        if (v > hi[j]) hi[j] = v;
+      }
+    double r2 = 0;
+    for (int j = 0; j < 3; j++) nd->ctr[j] = 0.5 * (lo[j] + hi[j]);
+    for (int i = first; i <= first + count; i++) {
+      double d2 = 0;
+      for (int j = 0; j < 3; j++) {
+        double v = c->xyz[3 * i + j] - nd->ctr[j];
+        d2 += v * v;
+      }
+      if (d2 > r2) r2 = d2;
+    }
+    nd->rad = sqrt(r2);
+    return id;
+  }
+  int half = count / 2;
+  int l = build(w, c, k, first, half, nnode);
+  int r = build(w, c, k, first + half, count - half, nnode);
+  /* an inner node: the smallest sphere holding both children's spheres (a
+     bound as valid as the points' own, built in O(1)) */
+  nd = &w->node[id];
+  nd->child[0] = l;
+  nd->child[1] = r;
+  const tube_node *a = &w->node[l], *b = &w->node[r];
+  double d2 = 0;
+  for (int j = 0; j < 3; j++) d2 += (b->ctr[j] - a->ctr[j]) * (b->ctr[j] - a->ctr[j]);
+  double d = sqrt(d2);
+  if (d + b->rad <= a->rad || d == 0) {
+    for (int j = 0; j < 3; j++) nd->ctr[j] = a->ctr[j];
+    nd->rad = fmax(a->rad, b->rad);
+  } else if (d + a->rad <= b->rad) {
+    for (int j = 0; j < 3; j++) nd->ctr[j] = b->ctr[j];
+    nd->rad = b->rad;
+  } else {
+    nd->rad = 0.5 * (d + a->rad + b->rad);
+    for (int j = 0; j < 3; j++) nd->ctr[j] = a->ctr[j] + (nd->rad - a->rad) / d * (b->ctr[j] - a->ctr[j]);
+  }
+  return id;
 }
 
-static double seg_mid_pos(const tube_polyline *c, int i) { return 0.5 * (c->pos[i] + c->pos[i + 1]); }
+/* Lower bound of the distance of two nodes' segments. */
+static inline double bound(const tube_node *x, const tube_node *y)
+{
+  double d2 = 0;
+  for (int j = 0; j < 3; j++) d2 += (x->ctr[j] - y->ctr[j]) * (x->ctr[j] - y->ctr[j]);
+  return fmax(0.0, sqrt(d2) - x->rad - y->rad);
+}
+
+static int grow(tube_workspace *w)
+{
+  tube_npair *p = realloc(w->stack, 2 * w->maxstack * sizeof *p);
+  if (!p) return 1;
+  w->stack = p;
+  w->maxstack *= 2;
+  return 0;
+}
+
+/* Every admissible segment pair of two leaves (pairs i < j within one leaf). */
+static void leaf_pair(const tube_polyline *c, const tube_node *x, const tube_node *y, double period,
+                      double window, double overlap, tube_closest *out, unsigned char *const *flags)
+{
+  const tube_polyline *ca = &c[x->curve], *cb = &c[y->curve];
+  for (int i = x->first; i < x->first + x->count; i++) {
+    double pi_ = seg_mid_pos(ca, i);
+    int j0 = x == y ? i + 1 : y->first;
+    for (int j = j0; j < y->first + y->count; j++) {
+      if (pos_sep(pi_, seg_mid_pos(cb, j), period) < window) continue;
+      /* the segments' bounding spheres (centre at the midpoint, radius half
+         the length): a bound below which their distance cannot fall */
+      const double *p0 = ca->xyz + 3 * i, *p1 = p0 + 3, *q0 = cb->xyz + 3 * j, *q1 = q0 + 3;
+      double dm2 = 0, lp2 = 0, lq2 = 0;
+      for (int k = 0; k < 3; k++) {
+        double dm = 0.5 * (p0[k] + p1[k] - q0[k] - q1[k]), dp = p1[k] - p0[k], dq = q1[k] - q0[k];
+        dm2 += dm * dm;
+        lp2 += dp * dp;
+        lq2 += dq * dq;
+      }
+      double lbs = sqrt(dm2) - 0.5 * (sqrt(lp2) + sqrt(lq2));
+      if (lbs > out->dist && lbs >= overlap) continue;
+      double s, t;
+      double d = seg_seg(ca->xyz + 3 * i, ca->xyz + 3 * i + 3, cb->xyz + 3 * j, cb->xyz + 3 * j + 3, &s, &t);
+      if (d < out->dist) *out = (tube_closest){d, x->curve, i, s, y->curve, j, t};
+      if (flags && d < overlap) {
+        flags[x->curve][i] = 1;
+        flags[y->curve][j] = 1;
+      }
+    }
+  }
+}
 
 int tube_polylines_distance(tube_workspace *w, int ncurve, const tube_polyline *c, double period,
                             double window, double overlap, tube_closest *out,
@@ -147,75 +252,56 @@ int tube_polylines_distance(tube_workspace *w, int ncurve, const tube_polyline *
     nseg += c[k].n - 1;
   }
   if (nseg > w->nseg) return CABLE_ERR_INPUT;
-  int K = TUBE_CHUNK_MIN;
-  while (nseg / K > TUBE_MAX_CHUNKS) K *= 2;
-  /* chunks with bounding spheres */
-  int nch = 0;
-  for (int k = 0; k < ncurve; k++) {
-    for (int f = 0; f < c[k].n - 1; f += K) {
-      tube_chunk *ch = &w->chunk[nch++];
-      ch->curve = k;
-      ch->first = f;
-      ch->count = f + K <= c[k].n - 1 ? K : c[k].n - 1 - f;
-      double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
-      for (int i = f; i <= f + ch->count; i++)
-        for (int j = 0; j < 3; j++) {
-          lo[j] = fmin(lo[j], c[k].xyz[3 * i + j]);
-          hi[j] = fmax(hi[j], c[k].xyz[3 * i + j]);
-        }
-      double r2 = 0;
-      for (int j = 0; j < 3; j++) ch->ctr[j] = 0.5 * (lo[j] + hi[j]);
-      for (int i = f; i <= f + ch->count; i++) {
-        double d2 = 0;
-        for (int j = 0; j < 3; j++) {
-          double v = c[k].xyz[3 * i + j] - ch->ctr[j];
-          d2 += v * v;
-        }
-        r2 = fmax(r2, d2);
-      }
-      ch->rad = sqrt(r2);
-      double m0 = seg_mid_pos(&c[k], f), m1 = seg_mid_pos(&c[k], f + ch->count - 1);
-      ch->pmid = 0.5 * (m0 + m1);
-      ch->phalf = 0.5 * (m1 - m0);
-    }
-  }
-  /* chunk pairs that hold at least one admissible segment pair, by lower bound */
-  size_t np = 0;
-  for (int a = 0; a < nch; a++)
-    for (int b = a; b < nch; b++) {
-      const tube_chunk *x = &w->chunk[a], *y = &w->chunk[b];
-      if (pos_sep(x->pmid, y->pmid, period) + x->phalf + y->phalf < window) continue;
-      double d2 = 0;
-      for (int j = 0; j < 3; j++) d2 += (x->ctr[j] - y->ctr[j]) * (x->ctr[j] - y->ctr[j]);
-      w->pair[np++] = (tube_cpair){fmax(0.0, sqrt(d2) - x->rad - y->rad), a, b};
-    }
-  qsort(w->pair, np, sizeof *w->pair, cpair_cmp);
+  int nnode = 0, root[64];
+  for (int k = 0; k < ncurve; k++) root[k] = build(w, &c[k], k, 0, c[k].n - 1, &nnode);
   if (flags)
     for (int k = 0; k < ncurve; k++) memset(flags[k], 0, (size_t)(c[k].n - 1));
   out->dist = INFINITY;
   out->curve_a = out->curve_b = out->seg_a = out->seg_b = -1;
   out->u_a = out->u_b = 0;
-  for (size_t q = 0; q < np; q++) {
-    if (w->pair[q].lb > out->dist && w->pair[q].lb >= overlap) break;
-    const tube_chunk *x = &w->chunk[w->pair[q].a], *y = &w->chunk[w->pair[q].b];
-    const tube_polyline *ca = &c[x->curve], *cb = &c[y->curve];
-    for (int i = x->first; i < x->first + x->count; i++) {
-      double pi_ = seg_mid_pos(ca, i);
-      int j0 = x == y ? i + 1 : y->first;
-      for (int j = j0; j < y->first + y->count; j++) {
-        if (pos_sep(pi_, seg_mid_pos(cb, j), period) < window) continue;
-        double s, t;
-        double d = seg_seg(ca->xyz + 3 * i, ca->xyz + 3 * i + 3, cb->xyz + 3 * j, cb->xyz + 3 * j + 3,
-                           &s, &t);
-        if (d < out->dist) {
-          *out = (tube_closest){d, x->curve, i, s, y->curve, j, t};
-        }
-        if (flags && d < overlap) {
-          flags[x->curve][i] = 1;
-          flags[y->curve][j] = 1;
-        }
-      }
+  /* dual-tree descent: a node pair is dropped when no segment pair in it is
+     admissible or when its distance bound exceeds both the best distance
+     found and the overlap distance; nearer child pairs are visited first */
+  size_t top = 0;
+  for (int k = 0; k < ncurve; k++)
+    for (int l = k; l < ncurve; l++) {
+      if (top + 1 > w->maxstack && grow(w)) return CABLE_ERR_ALLOC;
+      w->stack[top++] = (tube_npair){bound(&w->node[root[k]], &w->node[root[l]]), root[k], root[l]};
     }
+  while (top > 0) {
+    tube_npair q = w->stack[--top];
+    const tube_node *x = &w->node[q.a], *y = &w->node[q.b];
+    if (q.lb > out->dist && q.lb >= overlap) continue;
+    if (pos_sep(x->pmid, y->pmid, period) + x->phalf + y->phalf < window) continue;
+    if (x->child[0] < 0 && y->child[0] < 0) {
+      leaf_pair(c, x, y, period, window, overlap, out, flags);
+      continue;
+    }
+    /* split the larger node (both halves of a node paired with itself) */
+    tube_npair kids[4];
+    int nk = 0;
+    if (q.a == q.b) {
+      kids[nk++] = (tube_npair){0, x->child[0], x->child[0]};
+      kids[nk++] = (tube_npair){0, x->child[1], x->child[1]};
+      kids[nk++] = (tube_npair){0, x->child[0], x->child[1]};
+    } else if (y->child[0] < 0 || (x->child[0] >= 0 && x->rad >= y->rad)) {
+      kids[nk++] = (tube_npair){0, x->child[0], q.b};
+      kids[nk++] = (tube_npair){0, x->child[1], q.b};
+    } else {
+      kids[nk++] = (tube_npair){0, q.a, y->child[0]};
+      kids[nk++] = (tube_npair){0, q.a, y->child[1]};
+    }
+    for (int i = 0; i < nk; i++) kids[i].lb = bound(&w->node[kids[i].a], &w->node[kids[i].b]);
+    /* push the farthest first: the nearest is taken next */
+    for (int i = 0; i < nk; i++)
+      for (int j = i + 1; j < nk; j++)
+        if (kids[j].lb > kids[i].lb) {
+          tube_npair tp = kids[i];
+          kids[i] = kids[j];
+          kids[j] = tp;
+        }
+    if (top + (size_t)nk > w->maxstack && grow(w)) return CABLE_ERR_ALLOC;
+    for (int i = 0; i < nk; i++) w->stack[top++] = kids[i];
   }
   return CABLE_SUCCESS;
 }
@@ -227,18 +313,13 @@ static double seg_s(const braid_curves *bc, int seg, double u)
   return bc->s[seg] + u * (bc->s[seg + 1] - bc->s[seg]);
 }
 
-int braid_tube_distance(const braid_curves *bc, cable_tube_distance_result *out)
+/* Positions along the axis (chord length of the sampled contact curve: its
+ * O(h^2) error is immaterial for a neighbour window) into pos[n]; the axis
+ * is closed when it returns to its start within TUBE_CLOSURE_TOL of its
+ * length.  0 or CABLE_ERR_NONFINITE. */
+static int axis_positions(const braid_curves *bc, double *pos, int *closed)
 {
-  if (!bc || !out || bc->n < 2 || !(bc->Delta > 0) || !bc->s || !bc->r1 || !bc->r2 || !bc->c)
-    return CABLE_ERR_INPUT;
-  int n = bc->n, rc = CABLE_SUCCESS;
-  double Delta = bc->Delta;
-  double *pos = malloc((size_t)n * sizeof *pos);
-  unsigned char *f1 = malloc((size_t)n), *f2 = malloc((size_t)n);
-  tube_workspace *w = tube_workspace_alloc(2 * (n - 1));
-  if (!pos || !f1 || !f2 || !w) { rc = CABLE_ERR_ALLOC; goto done; }
-  /* position along the axis: chord length of the sampled contact curve (its
-   * O(h^2) error is immaterial for a neighbour window) */
+  int n = bc->n;
   pos[0] = 0;
   for (int i = 1; i < n; i++) {
     double d2 = 0;
@@ -253,10 +334,28 @@ int braid_tube_distance(const braid_curves *bc, cable_tube_distance_result *out)
     double v = bc->c[3 * (n - 1) + j] - bc->c[j];
     gap2 += v * v;
   }
-  if (!isfinite(len)) { rc = CABLE_ERR_NONFINITE; goto done; }
-  out->closed = sqrt(gap2) <= TUBE_CLOSURE_TOL * len;
+  if (!isfinite(len)) return CABLE_ERR_NONFINITE;
+  *closed = sqrt(gap2) <= TUBE_CLOSURE_TOL * len;
+  return CABLE_SUCCESS;
+}
+
+static int braid_curves_ok(const braid_curves *bc)
+{
+  return bc && bc->n >= 2 && bc->Delta > 0 && bc->s && bc->r1 && bc->r2 && bc->c;
+}
+
+int braid_tube_distance(const braid_curves *bc, cable_tube_distance_result *out)
+{
+  if (!braid_curves_ok(bc) || !out) return CABLE_ERR_INPUT;
+  int n = bc->n, rc = CABLE_SUCCESS;
+  double Delta = bc->Delta;
+  double *pos = malloc((size_t)n * sizeof *pos);
+  unsigned char *f1 = malloc((size_t)n), *f2 = malloc((size_t)n);
+  tube_workspace *w = tube_workspace_alloc(2 * (n - 1));
+  if (!pos || !f1 || !f2 || !w) { rc = CABLE_ERR_ALLOC; goto done; }
+  if ((rc = axis_positions(bc, pos, &out->closed)) != CABLE_SUCCESS) goto done;
   out->axis_kappa_max = NAN;
-  double period = out->closed ? len : 0.0, window = TUBE_WINDOW_FACTOR * Delta;
+  double period = out->closed ? pos[n - 1] : 0.0, window = TUBE_WINDOW_FACTOR * Delta;
   tube_polyline pl[2] = {{n, bc->r1, pos}, {n, bc->r2, pos}};
   unsigned char *fl[2] = {f1, f2};
   tube_closest cl;
@@ -297,16 +396,46 @@ done:
 /* Smallest sample count of the solution variant. */
 #define TUBE_MIN_SAMPLES 1001
 
+static int solution_samples(const cable_solution *sol)
+{
+  double m = ceil(TUBE_SAMPLES_PER_DELTA * sol->par[BP_L] / sol->par[BP_DELTA]) + 1;
+  return m < TUBE_MIN_SAMPLES ? TUBE_MIN_SAMPLES : (m > 1e8 ? 100000000 : (int)m);
+}
+
+int braid_tube_dmin_solution(const cable_solution *sol, double *dmin)
+{
+  if (!sol || !dmin) return CABLE_ERR_NULL;
+  int rc = braid_geometry_check(sol);
+  if (rc != CABLE_SUCCESS) return rc;
+  int n = solution_samples(sol), closed = 0;
+  braid_curves *bc = braid_curves_alloc(n);
+  double *pos = malloc((size_t)n * sizeof *pos);
+  tube_workspace *w = tube_workspace_alloc(2 * (n - 1));
+  rc = bc && pos && w ? CABLE_SUCCESS : CABLE_ERR_ALLOC;
+  if (!rc) rc = braid_curves_from_solution(sol, bc);
+  if (!rc && !braid_curves_ok(bc)) rc = CABLE_ERR_INPUT;
+  if (!rc) rc = axis_positions(bc, pos, &closed);
+  tube_closest cl;
+  if (!rc) {
+    /* overlap 0 and no flags: only the closest pair is wanted */
+    tube_polyline pl[2] = {{n, bc->r1, pos}, {n, bc->r2, pos}};
+    rc = tube_polylines_distance(w, 2, pl, closed ? pos[n - 1] : 0.0, TUBE_WINDOW_FACTOR * bc->Delta, 0.0, &cl,
+                                 NULL);
+  }
+  if (!rc) *dmin = cl.dist / bc->Delta;
+  braid_curves_free(bc);
+  free(pos);
+  tube_workspace_free(w);
+  return rc;
+}
+
 int cable_braid_tube_distance_solution(const cable_solution *sol, int n, cable_tube_distance_result *out)
 {
   if (!sol || !out) return CABLE_ERR_NULL;
   if (n < 0 || n == 1) return CABLE_ERR_INPUT;
   int rc = braid_geometry_check(sol);
   if (rc != CABLE_SUCCESS) return rc;
-  if (n == 0) {
-    double m = ceil(TUBE_SAMPLES_PER_DELTA * sol->par[BP_L] / sol->par[BP_DELTA]) + 1;
-    n = m < TUBE_MIN_SAMPLES ? TUBE_MIN_SAMPLES : (m > 1e8 ? 100000000 : (int)m);
-  }
+  if (n == 0) n = solution_samples(sol);
   braid_curves *bc = braid_curves_alloc(n);
   if (!bc) return CABLE_ERR_ALLOC;
   rc = braid_curves_from_solution(sol, bc);

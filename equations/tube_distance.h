@@ -8,11 +8,16 @@
  * two segments whose midpoint positions differ by less than `window` (modulo
  * the period of a closed axis) are neighbours and never compared.
  *
- * Method: segments are grouped in chunks of consecutive segments with a
- * bounding sphere; chunk pairs are visited in order of their distance lower
- * bound and the exact segment-segment distances computed until the bound
- * exceeds both the best distance found and the overlap distance.  Typical cost
- * O(n log n) for smooth curves (2 x 10^4 segments: a few tens of ms). */
+ * Method: a binary tree of bounding spheres over each polyline's consecutive
+ * segments (leaves of 8), descended in pairs from the roots: a node pair is
+ * dropped when all its segment pairs are neighbours or when its distance
+ * bound exceeds both the best distance found and the overlap distance, and
+ * the exact segment-segment distances are computed for the leaf pairs left.
+ * The result is the brute-force minimum over all admissible pairs (the same
+ * distance function on every pair that can matter).  Near the window edge,
+ * where braids have their closest admissible pairs, the descent reaches
+ * only the leaves within a sphere radius of the best distance: O(n log n)
+ * for smooth curves. */
 #ifndef CABLE_TUBE_DISTANCE_H
 #define CABLE_TUBE_DISTANCE_H
 
@@ -74,6 +79,9 @@ int braid_tube_distance(const braid_curves *bc, cable_tube_distance_result *out)
  * of dmin by Delta/400 (0.25 %). */
 #define TUBE_SAMPLES_PER_DELTA 10
 /* cable_braid_tube_distance_solution: in cable/cable_analysis.h (public). */
+/* Its dmin alone (the same samples, the same value), without the overlap
+ * intervals, the axis's self-distance and its curvature: PVLS's column. */
+int braid_tube_dmin_solution(const cable_solution *sol, double *dmin);
 
 /* Along a branch sampled at n points with torque t[i] and tube distance d[i]
  * (in units of Delta): the stretches where d > 1 (tubes apart), as [from, to]

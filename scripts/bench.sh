@@ -4,6 +4,9 @@
 # knot72 acceptance path and make demo; writes doc/benchmarks.md (never run by
 # make check).  Environment:
 #   BENCH_REPEATS=n   runs per median (default 3)
+#   BENCH_SCENES=0    leave out the link scenes' replays (link62, link43, link102)
+#   BENCH_NMX, BENCH_NTSTS, BENCH_SWEEP_NMX, BENCH_SWEEP_REPEATS, BENCH_GEOM_NMX: smaller
+#                     settings of scripts/bench_compare.py, to check the script quickly
 #   BENCH_FULL=1      also the older studies (per-phase costs, work against
 #                     precision, the whole-path grid, the stress grid), written to
 #                     doc/benchmarks-full.md (they take about 50 minutes)
@@ -83,13 +86,31 @@ path_time() {
   read -r dt dc drc < <(awk '{printf "%.2f %.2f %d\n", $1, $2 + $3, $4}' "$work/demo/time" | tail -1)
   echo "| run | wall time (s) | CPU time (s) |"
   echo "|---|---:|---:|"
-  printf "| acceptance path, NTHREADS default (%s threads here) | %.1f | %.1f |\n" "$(nproc | awk '{print ($1 < 2 ? $1 : 2)}')" "$m2w" "$m2c"
+  printf "| acceptance path, NTHREADS default (%s threads here) | %.1f | %.1f |\n" "$(nproc)" "$m2w" "$m2c"
   printf "| acceptance path, NTHREADS = 1 | %.1f | %.1f |\n" "$m1w" "$m1c"
   printf "| make demo (whole scene, default threads; exit status %d) | %.1f | %.1f |\n" "$drc" "$dt" "$dc"
   echo
   echo "Every acceptance-path run exited with status 0: $([ "$bad" = 0 ] && echo yes || echo NO); the last"
   echo "default-thread run wrote $modes of the 4 mode branches (b.mode1..b.mode4)."
   echo
+  # the link scenes, one replay each on a copy (wall, CPU, peak memory from /usr/bin/time)
+  if [ "${BENCH_SCENES:-1}" != 0 ]; then
+    echo "## The link scenes"
+    echo
+    echo "Each scene replayed once on a copy of its run directory (\`cable replay runs/NAME/NAME.auto\`,"
+    echo "default threads), as \`make scenes\` does; CPU = user + system time, peak memory = the largest"
+    echo "resident set (/usr/bin/time). Issue 30's target: each at most 20 s wall. Load before: $(cut -d' ' -f1-3 /proc/loadavg)."
+    echo
+    echo "| scene | wall time (s) | CPU time (s) | peak memory (MB) | exit status |"
+    echo "|---|---:|---:|---:|---:|"
+    for sc in link62 link43 link102; do
+      rm -rf "$work/scene_$sc" && cp -r "runs/$sc" "$work/scene_$sc"
+      /usr/bin/time -o "$work/scene_$sc/time" -f "%e %U %S %M %x" "$build/cable" replay "$work/scene_$sc/$sc.auto" \
+        > "$work/scene_$sc/log" 2>&1 || true
+      awk -v n="$sc" '{printf "| %s | %.1f | %.1f | %.0f | %d |\n", n, $1, $2 + $3, $4 / 1024, $5}' "$work/scene_$sc/time" | tail -1
+    done
+    echo
+  fi
   # the atlas part (its own script; CABLE_BENCH_ATLAS=0 leaves it out, make bench-atlas runs it alone)
   if [ "${CABLE_BENCH_ATLAS:-1}" != 0 ]; then
     bash scripts/bench-atlas.sh "$build"

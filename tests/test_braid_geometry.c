@@ -479,6 +479,10 @@ static void check_tube_solution(void)
   test_int("no overlap", r.noverlap, 0);
   test_true("dmin above the window-edge bound pi - 1", r.dmin > M_PI - 1);
   test_abs("contact curvature max = 1/R (ntst=80, see above)", r.axis_kappa_max, 1.0, 1e-5);
+  double dmin = -1;
+  test_int("PVLS's dmin alone: status", braid_tube_dmin_solution(sol, &dmin), CABLE_SUCCESS);
+  test_abs("PVLS's dmin alone = the analysis's dmin (same samples)", dmin, r.dmin, 0.0);
+  test_int("PVLS's dmin alone: NULL output", braid_tube_dmin_solution(sol, NULL), CABLE_ERR_NULL);
   test_int("tube distance: n = 1 refused", cable_braid_tube_distance_solution(sol, 1, &r), CABLE_ERR_INPUT);
   test_int("tube distance: NULL output", cable_braid_tube_distance_solution(sol, 0, NULL), CABLE_ERR_NULL);
   cable_solution_free(sol);

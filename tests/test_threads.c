@@ -16,7 +16,10 @@
  * Jacobian block and the FUNC count are identical; a FUNC that fails in
  * some intervals gives the same status for every thread count; a problem
  * that is not concurrent is evaluated on one thread. */
+#define _GNU_SOURCE 1 /* sched_getaffinity, sched_setaffinity */
 #include <math.h>
+#include <sched.h>
+#include <stdio.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
@@ -377,6 +380,58 @@ static void test_matvec(void)
   colloc_jac_free(J);
 }
 
+/* NTHREADS = 0 (the default) takes the processors this process may run on,
+ * without a cap: the count of /proc/self/status's Cpus_allowed_list, and 1
+ * after the process is pinned to one of them (sched_setaffinity). */
+static int allowed_cpus(void)
+{
+  FILE *f = fopen("/proc/self/status", "r");
+  char line[4096];
+  int n = -1;
+  while (f && fgets(line, sizeof line, f))
+    if (strncmp(line, "Cpus_allowed_list:", 18) == 0) {
+      n = 0;
+      for (char *p = line + 18; *p;) {
+        char *end;
+        long a = strtol(p, &end, 10);
+        if (end == p) { p++; continue; }
+        long b = a;
+        if (*end == '-') b = strtol(end + 1, &end, 10);
+        n += (int)(b - a + 1);
+        p = end;
+      }
+    }
+  if (f) fclose(f);
+  return n;
+}
+
+static void test_default_threads(void)
+{
+  cable_constants c;
+  cable_constants_init(&c);
+  int want = allowed_cpus();
+  if (want < 1) {
+    test_skip("default NTHREADS", "no Cpus_allowed_list in /proc/self/status");
+    return;
+  }
+  test_int("default NTHREADS = the processors this process may use (no cap)", cable_threads(&c),
+           want < CABLE_THREADS_MAX ? want : CABLE_THREADS_MAX);
+  cpu_set_t all, one;
+  if (sched_getaffinity(0, sizeof all, &all) != 0) return;
+  CPU_ZERO(&one);
+  for (int k = 0; k < CPU_SETSIZE; k++)
+    if (CPU_ISSET(k, &all)) {
+      CPU_SET(k, &one);
+      break;
+    }
+  if (sched_setaffinity(0, sizeof one, &one) == 0) {
+    test_int("default NTHREADS after pinning to one processor", cable_threads(&c), 1);
+    sched_setaffinity(0, sizeof all, &all);
+  }
+  c.nthreads = 3;
+  test_int("NTHREADS = 3 as set", cable_threads(&c), 3);
+}
+
 int main(void)
 {
   test_team();
@@ -384,5 +439,6 @@ int main(void)
   test_matvec();
   test_passes();
   test_branch();
+  test_default_threads();
   return test_summary();
 }

@@ -201,6 +201,54 @@ static void check_brute_force(void)
   free(pos);
 }
 
+/* Two polylines (the T(5,4) knot and the same knot turned by 0.15 rad about
+ * z, positions shared as for a braid's strands): the tree descent over pairs
+ * of curves against every admissible pair. */
+static void check_brute_force_two(void)
+{
+  int n = 601;
+  double *xyz = malloc(6 * (size_t)n * sizeof *xyz), *pos = malloc((size_t)n * sizeof *pos);
+  double *x2 = xyz + 3 * n;
+  for (int i = 0; i < n; i++) {
+    double u = 2 * M_PI * i / (n - 1), rho = 2 + cos(4 * u);
+    xyz[3 * i] = rho * cos(5 * u); xyz[3 * i + 1] = rho * sin(5 * u); xyz[3 * i + 2] = sin(4 * u);
+    x2[3 * i] = rho * cos(5 * u + 0.15); x2[3 * i + 1] = rho * sin(5 * u + 0.15); x2[3 * i + 2] = sin(4 * u);
+    pos[i] = 30.0 * i / (n - 1);
+  }
+  double period = 30.0, window = 1.0, thr = 0.9;
+  tube_workspace *w = tube_workspace_alloc(2 * (n - 1));
+  tube_polyline pl[2] = {{n, xyz, pos}, {n, x2, pos}};
+  tube_closest cl;
+  unsigned char *f1 = malloc((size_t)n), *f2 = malloc((size_t)n);
+  unsigned char *fl[2] = {f1, f2};
+  test_int("two curves: status", tube_polylines_distance(w, 2, pl, period, window, thr, &cl, fl), CABLE_SUCCESS);
+  double best = INFINITY;
+  int agree = 1, nflag = 0;
+  const double *cv[2] = {xyz, x2};
+  for (int a = 0; a < 2; a++)
+    for (int i = 0; i < n - 1; i++) {
+      int fi = 0;
+      for (int b = 0; b < 2; b++)
+        for (int j = 0; j < n - 1; j++) {
+          double dp = fabs(0.5 * (pos[i] + pos[i + 1]) - 0.5 * (pos[j] + pos[j + 1]));
+          dp = fmin(dp, period - dp);
+          if ((a == b && i == j) || dp < window) continue;
+          double d = seg_brute(cv[a] + 3 * i, cv[a] + 3 * i + 3, cv[b] + 3 * j, cv[b] + 3 * j + 3);
+          best = fmin(best, d);
+          if (d < thr) fi = 1;
+        }
+      nflag += fi;
+      agree = agree && fi == fl[a][i];
+    }
+  test_abs("two curves: tree descent = brute force", cl.dist, best, 1e-12);
+  test_true("two curves: overlap flags = brute force (some set, some not)", agree && nflag > 0 && nflag < 2 * (n - 1));
+  free(f1);
+  free(f2);
+  tube_workspace_free(w);
+  free(xyz);
+  free(pos);
+}
+
 static double now(void)
 {
   struct timespec ts;
@@ -308,6 +356,7 @@ int main(void)
   check_segments();
   check_peanut();
   check_brute_force();
+  check_brute_force_two();
   check_circle_braid(getenv("CABLE_TEST_QUICK") ? 2001 : 10001);
   check_errors();
   return test_summary();

@@ -22,9 +22,8 @@
 #define CABLE_NCOL_MIN 2
 #define CABLE_NCOL_MAX 7
 /* NTHREADS: at most this many; the default (NTHREADS = 0) is the number of
- * processors this process may run on, at most CABLE_THREADS_DEFAULT_MAX */
+ * processors this process may run on (sched_getaffinity), at most this */
 #define CABLE_THREADS_MAX 64
-#define CABLE_THREADS_DEFAULT_MAX 2
 
 typedef struct {
   int par;          /* 0-based parameter index (or -1: unused) */
