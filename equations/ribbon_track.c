@@ -65,11 +65,11 @@ static int update(braid_lk_track *tr, const cable_solution *sol, int closure, br
   const cable_solution *a = tr->prev;
   if (!a || closure == 0 || closure != tr->closure) return 1;
   double tw, dwr, mind;
-  axis_passages ap;
+  cable_axis_passages ap;
   if ((*rc = braid_ribbon_twist(sol, &tw)) != CABLE_SUCCESS) return 0;
   if ((*rc = braid_writhe_change(a, sol, &dwr, &mind)) != CABLE_SUCCESS) return 0;
   if (mind < RIBBON_TRACK_MIN_DOT) return 1;
-  if ((*rc = braid_axis_passages(a, sol, &ap)) != CABLE_SUCCESS) return 0;
+  if ((*rc = cable_braid_axis_passages(a, sol, &ap)) != CABLE_SUCCESS) return 0;
   double wr = tr->wr + dwr + 2.0 * RIBBON_PASSAGE_WR_SIGN * ap.net;
   if (defect(tw + wr, closure) > tr->full_defect + RIBBON_TRACK_DRIFT) return 1;
   *out = (braid_lk_value){tw + wr, tw, wr, tr->wr_err, 1, ap.net};

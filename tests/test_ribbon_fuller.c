@@ -75,7 +75,7 @@ typedef struct {
 } shape;
 
 /* Wr(B) - Wr(A) - F(A, B) and the passages between A and B. */
-static double defect(int trefoil, double ea, double ra, double eb, double rb, axis_passages *ap)
+static double defect(int trefoil, double ea, double ra, double eb, double rb, cable_axis_passages *ap)
 {
   static shape a, b;
   static double pos[N];
@@ -90,7 +90,7 @@ static double defect(int trefoil, double ea, double ra, double eb, double rb, ax
 
 int main(void)
 {
-  axis_passages ap;
+  cable_axis_passages ap;
   /* no passage: Fuller's integral is the whole change (to the writhe
      quadrature's error, below 1e-9 at N = 1024 for these curves) */
   double d = defect(0, 0.3, 0.0, 0.15, 0.4, &ap);
