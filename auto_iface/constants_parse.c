@@ -83,6 +83,14 @@ static int cv_push(cv *v, cv *item)
 
 /* ---------------------------------------------------------------- context */
 
+/* Each key of cable/cable_constants_keys.h by its row: KEY_NTST ... */
+enum {
+#define KEY_ENUM(key, field, kind, def, lo, hi, line) KEY_##key,
+  CABLE_CONSTANTS_KEYS(KEY_ENUM)
+#undef KEY_ENUM
+  KEY_COUNT
+};
+
 typedef struct {
   char key[32];
   int line;
@@ -115,7 +123,7 @@ typedef struct {
   const char *const *parnames;
   int npar_caller;
   const cable_problem *pb;  /* the problem whose keys are accepted (NULL: none) */
-  int line_of[64];          /* line of the statement that set a checked key */
+  int line_of[KEY_COUNT];   /* line of the statement that set a key (cross-checks) */
   thu_entry thu[THU_MAX];
   int nthu, thu_set, thu_line;
   int applied;              /* statements applied (an empty override is an error) */
@@ -445,20 +453,14 @@ static int parse_value(pctx *x, const char *key, cv **out)
 typedef struct key_desc key_desc;
 typedef int key_apply_fn(pctx *x, const key_desc *d, const stmt *s);
 
-enum { KI_NONE = -1 };
-
 struct key_desc {
   const char *key;
   key_apply_fn *apply;
-  size_t off;        /* offset of the int/double/string field (generic handlers) */
-  double lo, hi;     /* apply_int: accepted range; apply_real: lo > 0 asks for a positive value */
+  size_t off;        /* offset of the int/double/string field (generic readers) */
   int pass;          /* 1: applied before the others (names, NPAR) */
-  int slot;          /* index into pctx.line_of for cross-checks, or KI_NONE */
+  double lo, hi;     /* integer kinds: the accepted range */
+  int id;            /* KEY_... (the row), index of pctx.line_of */
 };
-
-/* Slots of pctx.line_of: keys whose line a cross-check reports. */
-enum { L_RL0, L_RL1, L_A0, L_A1, L_DSMIN, L_DSMAX, L_ICP, L_UZR, L_UZSTOP, L_THL, L_NPAR,
-       L_IPLT, L_NDIM, L_STOP };
 
 static const char *describe(const cv *v, char *buf, size_t len)
 {
@@ -519,15 +521,23 @@ static int apply_stab(pctx *x, const key_desc *d, const stmt *s)
   return st;
 }
 
+static int apply_pos(pctx *x, const key_desc *d, const stmt *s);
+
 static int apply_real(pctx *x, const key_desc *d, const stmt *s)
 {
   double val = 0;
   int st = real_value(x, s->key, s->value, s->line, &val);
   if (st) return st;
-  if (d->lo > 0 && !(val > 0))
+  if (d->apply == apply_pos && !(val > 0))
     return perr(x, CABLE_ERR_INPUT, s->line, s->key, "must be positive, got '%s'", s->value->text);
   *(double *)((char *)&x->c + d->off) = val;
   return 0;
+}
+
+/* POS: a real > 0 (apply_real checks the sign for it) */
+static int apply_pos(pctx *x, const key_desc *d, const stmt *s)
+{
+  return apply_real(x, d, s);
 }
 
 static int apply_ips(pctx *x, const key_desc *d, const stmt *s)
@@ -942,62 +952,35 @@ static int apply_linsolver(pctx *x, const key_desc *d, const stmt *s)
 }
 
 #define OFF(f) offsetof(cable_constants, f)
-#define BIG ((double)INT_MAX)
+
+/* A kind of cable/cable_constants_keys.h: its reader, the offset of its field
+ * (for the generic readers INT, REAL, POS, STR; 0 when the reader knows its
+ * fields) and its pass (1: before the other keys, which may use names). */
+#define KIND_INT(f) apply_int, OFF(f), 2
+#define KIND_DIM(f) apply_int, OFF(f), 2
+#define KIND_NPAR(f) apply_int, OFF(f), 1
+#define KIND_IPS(f) apply_ips, OFF(f), 2
+#define KIND_ISW(f) apply_isw, OFF(f), 2
+#define KIND_STAB(f) apply_stab, OFF(f), 2
+#define KIND_REAL(f) apply_real, OFF(f), 2
+#define KIND_POS(f) apply_pos, OFF(f), 2
+#define KIND_DS(f) apply_ds, OFF(f), 2
+#define KIND_STR(f) apply_string, OFF(f), 2
+#define KIND_IRS(f) apply_irs, 0, 2
+#define KIND_ICP(f) apply_icp, 0, 2
+#define KIND_THL(f) apply_thl, 0, 2
+#define KIND_THU(f) apply_thu, 0, 2
+#define KIND_UZR(f) apply_uzr, 0, 2
+#define KIND_UZSTOP(f) apply_uzr, 0, 2
+#define KIND_STOP(f) apply_stop, 0, 2
+#define KIND_PAR(f) apply_par, 0, 2
+#define KIND_NAMES(f) apply_names, 0, 1
+#define KIND_LINSOLVER(f) apply_linsolver, 0, 2
 
 static const key_desc key_table[] = {
-  {"NDIM", apply_int, OFF(ndim), 1, BIG, 2, L_NDIM},
-  {"IPS", apply_ips, OFF(ips), -BIG, BIG, 2, KI_NONE},
-  {"IRS", apply_irs, 0, 0, 0, 2, KI_NONE},
-  {"ILP", apply_int, OFF(ilp), 0, 1, 2, KI_NONE},
-  {"ICP", apply_icp, 0, 0, 0, 2, L_ICP},
-  {"NTST", apply_int, OFF(ntst), 1, BIG, 2, KI_NONE},
-  {"NCOL", apply_int, OFF(ncol), CABLE_NCOL_MIN, CABLE_NCOL_MAX, 2, KI_NONE},
-  {"IAD", apply_int, OFF(iad), 0, BIG, 2, KI_NONE},
-  {"ISP", apply_int, OFF(isp), 0, 4, 2, KI_NONE},
-  {"ISW", apply_isw, OFF(isw), -BIG, BIG, 2, KI_NONE},
-  {"IPLT", apply_int, OFF(iplt), -BIG, BIG, 2, L_IPLT},
-  {"NBC", apply_int, OFF(nbc), 0, BIG, 2, KI_NONE},
-  {"NINT", apply_int, OFF(nint), 0, BIG, 2, KI_NONE},
-  {"NMX", apply_int, OFF(nmx), 0, BIG, 2, KI_NONE},
-  {"RL0", apply_real, OFF(rl0), -1, 0, 2, L_RL0},
-  {"RL1", apply_real, OFF(rl1), -1, 0, 2, L_RL1},
-  {"A0", apply_real, OFF(a0), -1, 0, 2, L_A0},
-  {"A1", apply_real, OFF(a1), -1, 0, 2, L_A1},
-  {"NPR", apply_int, OFF(npr), 0, BIG, 2, KI_NONE},
-  {"DS", apply_ds, OFF(ds), 0, 0, 2, KI_NONE},
-  {"DSMIN", apply_real, OFF(dsmin), 1, 0, 2, L_DSMIN},
-  {"DSMAX", apply_real, OFF(dsmax), 1, 0, 2, L_DSMAX},
-  {"IADS", apply_int, OFF(iads), 0, BIG, 2, KI_NONE},
-  {"EPSL", apply_real, OFF(epsl), 1, 0, 2, KI_NONE},
-  {"EPSU", apply_real, OFF(epsu), 1, 0, 2, KI_NONE},
-  {"EPSS", apply_real, OFF(epss), 1, 0, 2, KI_NONE},
-  {"ITMX", apply_int, OFF(itmx), 1, BIG, 2, KI_NONE},
-  {"ITNW", apply_int, OFF(itnw), 1, BIG, 2, KI_NONE},
-  {"NWTN", apply_int, OFF(nwtn), 1, BIG, 2, KI_NONE},
-  {"JAC", apply_int, OFF(jac), -1, 1, 2, KI_NONE},
-  {"THL", apply_thl, 0, 0, 0, 2, L_THL},
-  {"THU", apply_thu, 0, 0, 0, 2, KI_NONE},
-  {"UZR", apply_uzr, 0, 0, 0, 2, L_UZR},
-  {"UZSTOP", apply_uzr, 0, 0, 0, 2, L_UZSTOP},
-  {"STOP", apply_stop, 0, 0, 0, 2, L_STOP},
-  {"IID", apply_int, OFF(iid), 0, 5, 2, KI_NONE},
-  {"IIS", apply_int, OFF(iis), 0, 3, 2, KI_NONE},
-  {"NPAR", apply_int, OFF(npar), 1, CABLE_NAMES_MAX, 1, L_NPAR},
-  {"parnames", apply_names, 0, 0, 0, 1, KI_NONE},
-  {"unames", apply_names, 0, 0, 0, 1, KI_NONE},
-  {"e", apply_string, OFF(e), 0, 0, 2, KI_NONE},
-  {"s", apply_string, OFF(s), 0, 0, 2, KI_NONE},
-  {"sv", apply_string, OFF(sv), 0, 0, 2, KI_NONE},
-  {"dat", apply_string, OFF(dat), 0, 0, 2, KI_NONE},
-  /* cable extensions */
-  {"LINSOLVER", apply_linsolver, 0, 0, 0, 2, KI_NONE},
-  {"NSV", apply_int, OFF(nsv), 0, BIG, 2, KI_NONE},
-  {"NTHREADS", apply_int, OFF(nthreads), 0, CABLE_THREADS_MAX, 2, KI_NONE},
-  {"BPDIR", apply_int, OFF(bpsym), 0, 1, 2, KI_NONE},
-  {"BPANGLE", apply_real, OFF(bpangle), 0, 0, 2, KI_NONE},
-  {"PREDICTOR", apply_int, OFF(predictor), 1, 2, 2, KI_NONE},
-  {"STAB", apply_stab, OFF(stab), 0, 1, 2, KI_NONE},
-  {"PAR", apply_par, 0, 0, 0, 2, KI_NONE},
+#define KEY_ROW(key, field, kind, def, lo, hi, line) {#key, KIND_##kind(field), lo, hi, KEY_##key},
+  CABLE_CONSTANTS_KEYS(KEY_ROW)
+#undef KEY_ROW
 };
 #define KEY_TABLE_N ((int)(sizeof key_table / sizeof key_table[0]))
 
@@ -1190,7 +1173,7 @@ static int apply_statements(pctx *x)
       int st = d->apply(x, d, &x->st[i]);
       if (st) return st;
       x->applied++;
-      if (d->slot != KI_NONE) x->line_of[d->slot] = x->st[i].line;
+      x->line_of[d->id] = x->st[i].line;
       cable_key_origin *o = strcmp(d->key, "NDIM") == 0 ? &x->c.origin_ndim
                             : strcmp(d->key, "NBC") == 0 ? &x->c.origin_nbc
                             : strcmp(d->key, "NINT") == 0 ? &x->c.origin_nint
@@ -1208,31 +1191,31 @@ static int finalize(pctx *x)
 {
   cable_constants *c = &x->c;
   if (!(c->rl0 < c->rl1))
-    return perr(x, CABLE_ERR_INPUT, x->line_of[L_RL1] ? x->line_of[L_RL1] : x->line_of[L_RL0],
-                x->line_of[L_RL1] ? "RL1" : "RL0", "RL0 (%g) must be less than RL1 (%g)", c->rl0, c->rl1);
+    return perr(x, CABLE_ERR_INPUT, x->line_of[KEY_RL1] ? x->line_of[KEY_RL1] : x->line_of[KEY_RL0],
+                x->line_of[KEY_RL1] ? "RL1" : "RL0", "RL0 (%g) must be less than RL1 (%g)", c->rl0, c->rl1);
   if (!(c->a0 < c->a1))
-    return perr(x, CABLE_ERR_INPUT, x->line_of[L_A1] ? x->line_of[L_A1] : x->line_of[L_A0],
-                x->line_of[L_A1] ? "A1" : "A0", "A0 (%g) must be less than A1 (%g)", c->a0, c->a1);
+    return perr(x, CABLE_ERR_INPUT, x->line_of[KEY_A1] ? x->line_of[KEY_A1] : x->line_of[KEY_A0],
+                x->line_of[KEY_A1] ? "A1" : "A0", "A0 (%g) must be less than A1 (%g)", c->a0, c->a1);
   if (c->dsmin > c->dsmax)
-    return perr(x, CABLE_ERR_INPUT, x->line_of[L_DSMAX] ? x->line_of[L_DSMAX] : x->line_of[L_DSMIN],
-                x->line_of[L_DSMAX] ? "DSMAX" : "DSMIN", "DSMIN (%g) must not exceed DSMAX (%g)", c->dsmin,
+    return perr(x, CABLE_ERR_INPUT, x->line_of[KEY_DSMAX] ? x->line_of[KEY_DSMAX] : x->line_of[KEY_DSMIN],
+                x->line_of[KEY_DSMAX] ? "DSMAX" : "DSMIN", "DSMIN (%g) must not exceed DSMAX (%g)", c->dsmin,
                 c->dsmax);
   for (int k = 0; k < c->nicp; k++)
     if (c->icp[k] >= c->npar)
-      return perr(x, CABLE_ERR_INPUT, x->line_of[L_ICP], "ICP", "PAR(%d) is beyond NPAR=%d", c->icp[k] + 1,
+      return perr(x, CABLE_ERR_INPUT, x->line_of[KEY_ICP], "ICP", "PAR(%d) is beyond NPAR=%d", c->icp[k] + 1,
                   c->npar);
   for (int k = 0; k < c->nuzr; k++)
     if (c->uzr[k].par >= c->npar) {
-      int stop = c->uzr[k].stop && x->line_of[L_UZSTOP];
-      return perr(x, CABLE_ERR_INPUT, x->line_of[stop ? L_UZSTOP : L_UZR], stop ? "UZSTOP" : "UZR",
+      int stop = c->uzr[k].stop && x->line_of[KEY_UZSTOP];
+      return perr(x, CABLE_ERR_INPUT, x->line_of[stop ? KEY_UZSTOP : KEY_UZR], stop ? "UZSTOP" : "UZR",
                   "PAR(%d) is beyond NPAR=%d", c->uzr[k].par + 1, c->npar);
     }
   for (int k = 0; k < c->nthl; k++)
     if (c->thl[k].index >= c->npar)
-      return perr(x, CABLE_ERR_INPUT, x->line_of[L_THL], "THL", "PAR(%d) is beyond NPAR=%d", c->thl[k].index + 1,
+      return perr(x, CABLE_ERR_INPUT, x->line_of[KEY_THL], "THL", "PAR(%d) is beyond NPAR=%d", c->thl[k].index + 1,
                   c->npar);
   if (c->ndim > 0 && (c->iplt < -c->ndim || c->iplt > 3 * c->ndim))
-    return perr(x, CABLE_ERR_INPUT, x->line_of[L_IPLT], "IPLT",
+    return perr(x, CABLE_ERR_INPUT, x->line_of[KEY_IPLT], "IPLT",
                 "IPLT=%d is outside -NDIM..3*NDIM = %d..%d (0: L2-norm; i: max of U(i); -i: min of U(i); NDIM+i: "
                 "integral of U(i); 2*NDIM+i: L2-norm of U(i))", c->iplt, -c->ndim, 3 * c->ndim);
   if (x->thu_set) {

@@ -6,6 +6,7 @@
 #define CABLE_CONSTANTS_H
 
 #include "cable/cable_api.h"
+#include "cable/cable_constants_keys.h"
 #include "cable/cable_error.h"
 #include "cable/cable_names.h"
 #include "cable/cable_problem.h"
@@ -56,48 +57,12 @@ typedef struct {
 typedef enum { CABLE_LINSOLVER_CONDENSE = 0, CABLE_LINSOLVER_KLU = 1 } cable_linsolver;
 
 typedef struct cable_constants {
-  /* problem */
-  int ndim, ips, nbc, nint, npar;
-  int icp[CABLE_MAX_ICP];  int nicp;      /* free + printed parameters */
-  /* discretisation */
-  int ntst, ncol, iad;
-  /* start and switching */
-  int irs;                                /* 0: STPNT; >0 label; <0: -n-th solution */
-  char irs_name[16];                      /* 'BP1', 'UZ2' ... ("" when numeric) */
-  int isw, isp, ilp;
-  /* limits */
-  int nmx, npr, iplt;
-  double rl0, rl1, a0, a1;
-  /* step control */
-  double ds, dsmin, dsmax;
-  int iads;
-  /* Newton */
-  double epsl, epsu, epss;
-  int itmx, itnw, nwtn, jac;
-  /* weights */
-  cable_thl thl[CABLE_MAX_THL]; int nthl;
-  double thu_default;                     /* cable: one weight for all u (AUTO THU) */
-  /* user zeros */
-  cable_uzr uzr[CABLE_MAX_UZR]; int nuzr;
-  /* starting parameter values overriding STPNT / the restart (AUTO-07p's PAR={...}) */
-  cable_parval par_override[CABLE_MAX_THL]; int npar_override;
-  /* output control */
-  int iid, iis;
-  /* cable extensions (documented in doc/constants.md) */
-  cable_linsolver linsolver;              /* LINSOLVER = condense | klu */
-  int nsv;                                /* NSV: singular values tracked for BP test (0: off) */
-  int nthreads;                           /* NTHREADS: threads of the structured solver's
-                                             per-interval stages (0: the default, cable_threads) */
-  int bpsym;                              /* BPDIR: kernel vector index for 2-d kernels */
-  int predictor;                          /* PREDICTOR: 1 tangent (AUTO's), 2 second order */
-  double bpangle;                         /* BPANGLE: direction in a 2-d kernel, degrees from
-                                             the canonical e1 towards e2 (NAN: use BPDIR) */
+  /* the keys: one field (or a few) per line of cable_constants_keys.h */
+#define CABLE_CK_FIELDS(key, field, kind, def, lo, hi, line) CABLE_CK_DECL_##kind(field)
+  CABLE_CONSTANTS_KEYS(CABLE_CK_FIELDS)
+#undef CABLE_CK_FIELDS
   /* problem-specific keys (the problem's cable_problem_key list), as set */
   cable_keyval pkey[CABLE_MAX_PKEYS]; int npkey;
-  /* names */
-  char e[CABLE_NAME_MAX], s[CABLE_NAME_MAX], sv[CABLE_NAME_MAX], dat[CABLE_NAME_MAX];
-  int stop_on[8]; int nstop;              /* STOP=['BP1'...] parsed by type code and count */
-  int stop_count[8];
   /* where NDIM, NBC and NINT were set: a built-in problem's dimensions are
      fixed, and a contradicting value is reported at its line */
   cable_key_origin origin_ndim, origin_nbc, origin_nint;
@@ -115,9 +80,6 @@ typedef struct cable_constants {
      largest component positive).  No key: the session sets it for equations
      from AUTO files (doc/auto-users.md). */
   int bp_orient_auto;
-  /* STAB: 1 computes the Morse index at every point (doc/stability.md; the
-     problem must declare its variational structure), 0 (default) does not */
-  int stab;
   /* AUTO's NDM: the components of an extended problem's solution that the
      L2-NORM and MAX U columns cover (the fold's u, not its null vector);
      0: all NDIM.  No key: set by cable_fold.h. */
