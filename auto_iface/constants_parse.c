@@ -479,12 +479,8 @@ static int int_field(pctx *x, const key_desc *d, const stmt *s, int *out)
   const cv *v = s->value;
   if (v->kind != CV_INT)
     return perr(x, CABLE_ERR_INPUT, s->line, s->key, "must be an integer, got %s", describe(v, b, sizeof b));
-  if ((double)v->i < d->lo || (double)v->i > d->hi) {
-    if (d->hi >= (double)INT_MAX)
-      return perr(x, CABLE_ERR_INPUT, s->line, s->key, "must be an integer >= %d, got %ld", (int)d->lo, v->i);
-    return perr(x, CABLE_ERR_INPUT, s->line, s->key, "must be an integer in %d..%d, got %ld", (int)d->lo,
-                (int)d->hi, v->i);
-  }
+  char m[160];
+  if (cable_int_range_msg(v->i, d->lo, d->hi, m, sizeof m)) return perr(x, CABLE_ERR_INPUT, s->line, s->key, "%s", m);
   *out = (int)v->i;
   return 0;
 }

@@ -98,6 +98,10 @@ static int check_input(const cable_problem *pb, const cable_constants *c, char *
   if (pb->ndim < 1 || pb->nbc < 0 || pb->nint < 0 || pb->npar < 0)
     return snprintf(msg, len, "problem '%s': NDIM=%d, NBC=%d, NINT=%d, npar=%d (need NDIM >= 1, the others >= 0)",
                     pb->name ? pb->name : "?", pb->ndim, pb->nbc, pb->nint, pb->npar), CABLE_ERR_INPUT;
+  /* NTST, NCOL and the other integer keys: the key table's ranges, the
+     parser's rules for a file (constants filled by hand get here unchecked) */
+  int rc = cable_constants_int_ranges(c, msg, len);
+  if (rc) return rc;
   if ((double)pb->ndim * ((double)c->ntst * c->ncol + 1) + pb->nbc + pb->nint > (double)(INT_MAX / 16) ||
       pb->npar > INT_MAX / 16)
     return snprintf(msg, len, "problem '%s' with NTST=%d, NCOL=%d: NDIM=%d, NBC=%d, NINT=%d, npar=%d are too large",
@@ -117,9 +121,6 @@ static int check_input(const cable_problem *pb, const cable_constants *c, char *
   for (int k = 0; k < c->nicp; k++)
     if (c->icp[k] < 0 || c->icp[k] >= npar)
       return snprintf(msg, len, "ICP entry %d is outside 1..NPAR=%d", c->icp[k] + 1, npar), CABLE_ERR_INPUT;
-  if (c->ncol < CABLE_NCOL_MIN || c->ncol > CABLE_NCOL_MAX)
-    return snprintf(msg, len, "NCOL=%d outside %d..%d", c->ncol, CABLE_NCOL_MIN, CABLE_NCOL_MAX), CABLE_ERR_INPUT;
-  if (c->ntst < 1) return snprintf(msg, len, "NTST=%d must be positive", c->ntst), CABLE_ERR_INPUT;
   if (!(c->dsmin > 0) || !(c->dsmax >= c->dsmin) || !(fabs(c->ds) > 0))
     return snprintf(msg, len, "need 0 < DSMIN <= DSMAX and DS != 0"), CABLE_ERR_INPUT;
   if (c->epsl <= 0 || c->epsu <= 0 || c->epss <= 0) return snprintf(msg, len, "EPSL, EPSU, EPSS must be positive"), CABLE_ERR_INPUT;
