@@ -161,7 +161,7 @@ cable_cont *cable_cont_alloc(const cable_problem *pb, const cable_constants *c, 
     return NULL;
   }
   cc->pb = pb;
-  cc->c = *c;
+  cc->c = c;   /* by pointer: the caller keeps it (cable_cont.h) */
   cc->ndim = pb->ndim;
   cc->npar = c->npar > pb->npar ? c->npar : pb->npar;
   cc->nfpr = pb->nbc + pb->nint - pb->ndim + 1;
@@ -272,7 +272,7 @@ static double principal(const cable_cont *cc, const double *x)
  * whose fold curve is even in q). doc/fold-continuation.md. */
 static int start_fixpar(const cable_cont *cc)
 {
-  return (cc->c.isw == 2 || cc->c.isw == -2) && cc->nfpr >= 2 ? 1 : 0;
+  return (cc->c->isw == 2 || cc->c->isw == -2) && cc->nfpr >= 2 ? 1 : 0;
 }
 
 /* A start direction computed at fixed q is oriented as the one at fixed p1
@@ -382,13 +382,13 @@ static int first_point(cable_cont *cc)
     abd_solver_solve(cc->abd, cc->xdot);
     cont_normalize(cc, cc->xdot);
     orient_start_direction(cc, fix);
-    if (cc->c.ds < 0) for (int i = 0; i < cc->n; i++) cc->xdot[i] = -cc->xdot[i];
-    cc->ds = fabs(cc->c.ds);
+    if (cc->c->ds < 0) for (int i = 0; i < cc->n; i++) cc->xdot[i] = -cc->xdot[i];
+    cc->ds = fabs(cc->c->ds);
   } else {
     /* a stored direction; DS < 0 reverses it (AUTO) */
     cont_normalize(cc, cc->xdot);
-    if (cc->c.ds < 0) for (int i = 0; i < cc->n; i++) cc->xdot[i] = -cc->xdot[i];
-    cc->ds = fabs(cc->c.ds);
+    if (cc->c->ds < 0) for (int i = 0; i < cc->n; i++) cc->xdot[i] = -cc->xdot[i];
+    cc->ds = fabs(cc->c->ds);
   }
   /* test functions with the tangent itself as closing row */
   rc = cont_tangent(cc, cc->x, cc->xdot, cc->w3, &cc->tf);
@@ -414,7 +414,7 @@ static int first_point(cable_cont *cc)
      restart, the switched first point at a branch point (ISW = -1) included,
      is not labelled (auto-07p, demo lin: run 2 from BP1 has no EP at PT 1),
      nor is the LP that a fold curve's starting data (ISW = -2) start from */
-  cc->itp = !cc->restart && cc->c.isw != -2 ? CABLE_TY_EP : CABLE_TY_NONE;
+  cc->itp = !cc->restart && cc->c->isw != -2 ? CABLE_TY_EP : CABLE_TY_NONE;
   cc->switch_pending = 0;
   if ((rc = cont_store_solution(cc, cc->itp, 0)) != CABLE_SUCCESS) {
     cc->npt = 0;   /* nothing to store as MX */
@@ -432,9 +432,9 @@ static void check_limits(cable_cont *cc)
   double p0 = principal(cc, cc->x), m = cc->pt.measure;   /* A0, A1 bound IPLT's measure, as in AUTO */
   int end = 0;
   if (cc->uz_stop) end = CABLE_END_UZSTOP;
-  else if (p0 < cc->c.rl0 || p0 > cc->c.rl1 || m < cc->c.a0 || m > cc->c.a1) end = CABLE_END_BOUNDS;
+  else if (p0 < cc->c->rl0 || p0 > cc->c->rl1 || m < cc->c->a0 || m > cc->c->a1) end = CABLE_END_BOUNDS;
   else if (cont_loop_closed(cc)) end = CABLE_END_LOOP;   /* before NMX: the reason that says more */
-  else if (cc->c.nmx > 0 && cc->npt >= cc->c.nmx) end = CABLE_END_NMX;
+  else if (cc->c->nmx > 0 && cc->npt >= cc->c->nmx) end = CABLE_END_NMX;
   if (!end) return;
   if (end != CABLE_END_UZSTOP && cc->itp == CABLE_TY_NONE) {
     cc->itp = CABLE_TY_EP;
@@ -456,13 +456,13 @@ static void swap_ptr(double **a, double **b)
  * iterations. */
 static void control_step(cable_cont *cc, int it, double ds_taken)
 {
-  if (cc->c.iads <= 0 || cc->npt % cc->c.iads != 0) return;
-  int itnw = cc->c.itnw;
+  if (cc->c->iads <= 0 || cc->npt % cc->c->iads != 0) return;
+  int itnw = cc->c->itnw;
   double a = fabs(ds_taken) > 0 ? fabs(ds_taken) : fabs(cc->ds);
   if (it <= CONT_FAST_ITERS) a *= CONT_GROW_FAST;
   else if (it <= itnw / 2) a *= CONT_GROW;
   else if (it >= itnw - 1) a *= CONT_SHRINK;
-  a = fmin(fmax(a, cc->c.dsmin), cc->c.dsmax);
+  a = fmin(fmax(a, cc->c->dsmin), cc->c->dsmax);
   cc->ds = copysign(a, cc->ds);
 }
 
@@ -492,7 +492,7 @@ static void step_predict(cable_cont *cc, double ds, double *xt)
 {
   const int n = cc->n;
   double c2 = 0.0;
-  if (cc->c.predictor == 2 && cc->npt >= 2 && cc->ds_used * ds > 0.0 &&
+  if (cc->c->predictor == 2 && cc->npt >= 2 && cc->ds_used * ds > 0.0 &&
       fabs(ds) <= CONT_PRED2_MAXRATIO * fabs(cc->ds_used))
     c2 = 0.5 * ds * ds / cc->ds_used;
   for (int i = 0; i < n; i++) xt[i] = cc->x[i] + ds * cc->xdot[i];
@@ -615,8 +615,8 @@ int cable_cont_step(cable_cont *cc)
       cc->ended = 1;
       return cc->end_status = rc;
     }
-    if (fabs(ds_step) <= cc->c.dsmin * (1.0 + CONT_DSMIN_SLACK)) {
-      cont_set_error(cc, "no convergence with DSMIN = %g after point %d (%s)", cc->c.dsmin, cc->npt,
+    if (fabs(ds_step) <= cc->c->dsmin * (1.0 + CONT_DSMIN_SLACK)) {
+      cont_set_error(cc, "no convergence with DSMIN = %g after point %d (%s)", cc->c->dsmin, cc->npt,
                      cc->rejected[0] ? cc->rejected : colloc_newton_message(cc->nw));
       cc->ended = 1;
       cc->itp = CABLE_TY_MX;
@@ -624,7 +624,7 @@ int cable_cont_step(cable_cont *cc)
     }
     if (cc->rejected[0])
       snprintf(cc->note, sizeof cc->note, "step DS = %g rejected: %s", ds_step, cc->rejected);
-    cc->ds = ds_step = copysign(fmax(fabs(ds_step) * CONT_FAIL_SHRINK, cc->c.dsmin), ds_step);
+    cc->ds = ds_step = copysign(fmax(fabs(ds_step) * CONT_FAIL_SHRINK, cc->c->dsmin), ds_step);
   }
   cc->ds_prev = cc->ds_used;
   cc->ds_used = ds_step;
@@ -671,7 +671,7 @@ int cable_cont_step(cable_cont *cc)
     return cc->end_status = rc;
   }
   check_limits(cc);
-  if (!cc->ended && cc->c.iad > 0 && !cc->queued && ++cc->nstep_adapt >= cc->c.iad) {
+  if (!cc->ended && cc->c->iad > 0 && !cc->queued && ++cc->nstep_adapt >= cc->c->iad) {
     cc->nstep_adapt = 0;
     if ((rc = cont_adapt_mesh(cc)) != CABLE_SUCCESS) {
       cc->ended = 1;

@@ -29,7 +29,7 @@ static void summary(const cable_cont *cc, double *z)
 {
   const cable_solution *s = cc->sol;
   int k = 0, npts = cable_solution_npts(s);
-  for (int q = 0; q < cc->nfpr; q++) z[k++] = s->par[cc->c.icp[q]];
+  for (int q = 0; q < cc->nfpr; q++) z[k++] = s->par[cc->c->icp[q]];
   for (int i = 0; i < cc->ndim; i++) z[k++] = s->u[i];
   for (int i = 0; i < cc->ndim; i++) z[k++] = s->u[(size_t)(npts - 1) * (size_t)cc->ndim + (size_t)i];
   z[k] = cc->pt.measure;
@@ -84,7 +84,7 @@ int cont_loop_closed(cable_cont *cc)
     if (l->start_lab > 0) snprintf(start, sizeof start, "label %d", l->start_lab);
     else snprintf(start, sizeof start, "its first point");
     cont_set_error(cc, "closed loop: the branch returned to its start (%s, PAR(%d) = %.10g) between points %d "
-                   "and %d; following it further would repeat the loop", start, cc->c.icp[0] + 1, l->z0[0],
+                   "and %d; following it further would repeat the loop", start, cc->c->icp[0] + 1, l->z0[0],
                    cc->npt - 1, cc->npt);
   }
   return closed;

@@ -140,12 +140,12 @@ static void orient_auto(cable_cont *cc, double *v)
   int pick = -1;
   for (int q = 0; q < nfpr && pick < 0; q++) {
     int i = n - nfpr + q;
-    if (fabs(v[i]) / (1.0 + fabs(cc->x[i])) > cc->c.epsl) pick = i;
+    if (fabs(v[i]) / (1.0 + fabs(cc->x[i])) > cc->c->epsl) pick = i;
   }
   size_t last = (size_t)cc->sys->ntst * (size_t)cc->sys->ncol * (size_t)nd; /* the node at t = 1 */
   for (int c = 0; c < nd && pick < 0; c++) {
     size_t i = last + (size_t)c;
-    if (fabs(v[i]) / (1.0 + fabs(cc->x[i])) > cc->c.epsu) pick = (int)i;
+    if (fabs(v[i]) / (1.0 + fabs(cc->x[i])) > cc->c->epsu) pick = (int)i;
   }
   if (pick >= 0 && v[pick] < 0)
     for (int i = 0; i < n; i++) v[i] = -v[i];
@@ -196,9 +196,9 @@ int cont_switch_direction(cable_cont *cc)
                    sv[2]);
     return CABLE_ERR_SWITCH;
   }
-  int angle_set = !isnan(cc->c.bpangle);
-  if (dim == 1 && cc->c.bpsym > 0 && !angle_set) {
-    cont_set_error(cc, "ISW=-1: BPDIR=%d but the kernel at this branch point is %d-dimensional", cc->c.bpsym, dim);
+  int angle_set = !isnan(cc->c->bpangle);
+  if (dim == 1 && cc->c->bpsym > 0 && !angle_set) {
+    cont_set_error(cc, "ISW=-1: BPDIR=%d but the kernel at this branch point is %d-dimensional", cc->c->bpsym, dim);
     return CABLE_ERR_SWITCH;
   }
   int len = snprintf(cc->note, sizeof cc->note, "switching at a %s branch point: singular values %.3e, %.3e, %.3e",
@@ -206,7 +206,7 @@ int cont_switch_direction(cable_cont *cc)
   double *dir = cc->xdot;
   if (dim == 1) {
     memcpy(dir, cc->svec, (size_t)n * sizeof *dir);
-    if (cc->c.bp_orient_auto) {
+    if (cc->c->bp_orient_auto) {
       orient_auto(cc, dir);
     } else {
       /* a deterministic orientation: the largest component (parameters included) positive */
@@ -223,13 +223,13 @@ int cont_switch_direction(cable_cont *cc)
       cont_set_error(cc, "ISW=-1: no solution component distinguishes the two kernel vectors at this double branch point");
       return CABLE_ERR_SWITCH;
     }
-    double phi = angle_set ? cc->c.bpangle * (CONT_PI / 180.0) : (cc->c.bpsym ? 0.5 * CONT_PI : 0.0);
+    double phi = angle_set ? cc->c->bpangle * (CONT_PI / 180.0) : (cc->c->bpsym ? 0.5 * CONT_PI : 0.0);
     for (int i = 0; i < n; i++) dir[i] = cos(phi) * e1[i] + sin(phi) * e2[i];
     snprintf(cc->note + len, sizeof cc->note - (size_t)len, "; %s; following %g degrees from e1 towards e2", how,
              phi * (180.0 / CONT_PI));
   }
   cont_normalize(cc, dir);
-  if (cc->c.ds < 0) for (int i = 0; i < n; i++) dir[i] = -dir[i];
-  cc->ds = fabs(cc->c.ds);
+  if (cc->c->ds < 0) for (int i = 0; i < n; i++) dir[i] = -dir[i];
+  cc->ds = fabs(cc->c->ds);
   return CABLE_SUCCESS;
 }

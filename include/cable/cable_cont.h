@@ -31,7 +31,9 @@ CABLE_API int cable_cont_check(const cable_problem *pb, const cable_constants *c
 
 /* Check (as cable_cont_check) and allocate every workspace.  Returns a
  * usable handle, or NULL with *status (status may be NULL) set and nothing
- * left allocated; cable_cont_check gives the message.  The library changes
+ * left allocated; cable_cont_check gives the message.
+ * Lifetime: the handle keeps pb and c by pointer, it copies neither; both
+ * must stay alive and unchanged until cable_cont_free (as pb always had to).  The library changes
  * no process-wide setting (see cable_blas_single_thread). */
 CABLE_API cable_cont *cable_cont_alloc(const cable_problem *pb, const cable_constants *c, int *status);
 CABLE_API void cable_cont_free(cable_cont *cc);   /* NULL is a no-op */

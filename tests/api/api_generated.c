@@ -36,6 +36,7 @@ typedef struct fx {
   cable_sfile *sf;
   cable_bfile *bf;
   cable_cont *cc;                /* allocated, not started */
+  cable_constants cc_c;          /* its constants: the handle keeps them by pointer */
   cable_fold *fold;              /* the fold problem at the LP */
   cable_sink sink;               /* no callbacks */
   cable_aufile_options aopt;
@@ -154,10 +155,10 @@ static int fx_setup(fx *f)
   f->sf = cable_sfile_read(FX_DIR "/s.gen", NULL);
   f->bf = cable_bfile_read(FX_DIR "/b.gen", NULL);
   int st = 0;
-  cable_constants cc = f->c;
-  cable_constants_take_problem_dims(&cc, f->pb->ndim, f->pb->nbc, f->pb->nint);
-  f->cc = cable_cont_alloc(f->pb, &cc, &st);
-  cable_constants fc = cc;
+  f->cc_c = f->c;
+  cable_constants_take_problem_dims(&f->cc_c, f->pb->ndim, f->pb->nbc, f->pb->nint);
+  f->cc = cable_cont_alloc(f->pb, &f->cc_c, &st);
+  cable_constants fc = f->cc_c;
   fc.isw = 2;
   fc.icp[1] = 1;
   fc.nicp = 2;
