@@ -123,6 +123,13 @@ typedef struct {
   const char *const *parnames;
   int npar_caller;
   const cable_problem *pb;  /* the problem whose keys are accepted (NULL: none) */
+  /* the problem found while reading (cable_constants_parse_file_resolve):
+     called after pass 1 (which applies e), with e_given or the file's e;
+     keys that are not cable's wait for it (defer: statement indices) */
+  cable_constants_resolve_fn *resolve;
+  void *resolve_ctx;
+  const char *e_given;
+  int defer[STMT_MAX], ndefer;
   int line_of[KEY_COUNT];   /* line of the statement that set a key (cross-checks) */
   thu_entry thu[THU_MAX];
   int nthu, thu_set, thu_line;
@@ -899,7 +906,7 @@ static int apply_string(pctx *x, const key_desc *d, const stmt *s)
   if (st) return st;
   if (strlen(v->text) >= CABLE_NAME_MAX)
     return perr(x, CABLE_ERR_INPUT, s->line, s->key, "longer than %d characters", CABLE_NAME_MAX - 1);
-  if (strpbrk(v->text, "/ \t") && strcmp(s->key, "e") == 0)
+  if (strpbrk(v->text, "/ \t") && d->pass == 1)   /* NAME: the problem's */
     return perr(x, CABLE_ERR_INPUT, s->line, s->key, "a problem name may not contain '/' or blanks: '%s'", v->text);
   snprintf((char *)&x->c + d->off, CABLE_NAME_MAX, "%s", v->text);
   return 0;
@@ -962,6 +969,7 @@ static int apply_linsolver(pctx *x, const key_desc *d, const stmt *s)
 #define KIND_POS(f) apply_pos, OFF(f), 2
 #define KIND_DS(f) apply_ds, OFF(f), 2
 #define KIND_STR(f) apply_string, OFF(f), 2
+#define KIND_NAME(f) apply_string, OFF(f), 1
 #define KIND_IRS(f) apply_irs, 0, 2
 #define KIND_ICP(f) apply_icp, 0, 2
 #define KIND_THL(f) apply_thl, 0, 2
@@ -1075,6 +1083,16 @@ static int apply_problem_key(pctx *x, const cable_problem_key *k, const stmt *s)
   return 0;
 }
 
+/* 1 when key is one AUTO accepts and cable ignores or refuses (the lists above) */
+static int key_cable_other(const char *key)
+{
+  for (int i = 0; i < IGNORED_N; i++)
+    if (strcmp(ignored_for_bvp[i], key) == 0) return 1;
+  for (int i = 0; i < UNSUPPORTED_N; i++)
+    if (strcmp(unsupported_table[i].key, key) == 0) return 1;
+  return 0;
+}
+
 static int key_check(pctx *x, const char *key, int line)
 {
   if (key_find(key) || cable_problem_key_find(x->pb, key)) return 0;
@@ -1131,8 +1149,12 @@ static int parse_statements(pctx *x)
         return perr(x, CABLE_ERR_PARSE, line, key, "missing '=' after the key");
       return perr(x, CABLE_ERR_PARSE, line, key, "missing '=' after the key (got '%s')", x->tok);
     }
-    st = key_check(x, key, line);
-    if (st) break;
+    if (x->resolve && !key_find(key) && !key_cable_other(key)) {
+      x->defer[x->ndefer++] = x->nst;   /* perhaps the problem's: checked once it is known */
+    } else {
+      st = key_check(x, key, line);
+      if (st) break;
+    }
     for (int i = 0; i < x->nst; i++)
       if (strcmp(x->st[i].key, key) == 0)
         return perr(x, CABLE_ERR_INPUT, line, key, "duplicate key (first set on line %d)", x->st[i].line);
@@ -1153,9 +1175,34 @@ static int parse_statements(pctx *x)
   return st;
 }
 
+/* The problem, once pass 1 has applied e: its names resolve parameters and
+ * its keys are accepted in pass 2; the keys that waited for it are checked
+ * now, in the file's order. */
+static int resolve_problem(pctx *x)
+{
+  const cable_problem *pb = NULL;
+  const char *e = x->e_given && x->e_given[0] ? x->e_given : x->c.e;
+  int st = x->resolve(x->resolve_ctx, e, &pb, x->err);
+  if (st) return st;
+  x->pb = pb;
+  x->parnames = pb ? pb->parnames : NULL;
+  x->npar_caller = pb ? pb->npar : 0;
+  for (int k = 0; k < x->ndefer; k++) {
+    const stmt *d = &x->st[x->defer[k]];
+    snprintf(x->cur_key, sizeof x->cur_key, "%s", d->key);
+    st = key_check(x, d->key, d->line);
+    if (st) return st;
+  }
+  return 0;
+}
+
 static int apply_statements(pctx *x)
 {
-  for (int pass = 1; pass <= 2; pass++)
+  for (int pass = 1; pass <= 2; pass++) {
+    if (pass == 2 && x->resolve) {
+      int st = resolve_problem(x);
+      if (st) return st;
+    }
     for (int i = 0; i < x->nst; i++) {
       const key_desc *d = key_find(x->st[i].key);
       const cable_problem_key *pk = d ? NULL : cable_problem_key_find(x->pb, x->st[i].key);
@@ -1179,6 +1226,7 @@ static int apply_statements(pctx *x)
         o->line = x->origin ? 0 : x->st[i].line;
       }
     }
+  }
   return 0;
 }
 
@@ -1266,6 +1314,13 @@ static pctx *pctx_new(const char *file, const char *src, cable_error *err)
   return x;
 }
 
+/* How a parse finds its problem: a resolver (the session's), or none. */
+typedef struct {
+  cable_constants_resolve_fn *fn;
+  void *ctx;
+  const char *e;
+} resolver;
+
 static int run(pctx *x, const char *const *parnames, int npar, const cable_problem *pb)
 {
   x->parnames = parnames;
@@ -1279,11 +1334,16 @@ static int run(pctx *x, const char *const *parnames, int npar, const cable_probl
 }
 
 static int parse_string(const char *name, const char *text, const cable_problem *pb, const char *const *parnames,
-                        int npar, cable_constants *c, cable_names *names, cable_error *err)
+                        int npar, const resolver *rs, cable_constants *c, cable_names *names, cable_error *err)
 {
   if (!text || !c) return cable_error_set(err, CABLE_ERR_INPUT, name, 0, "", "no text to parse");
   pctx *x = pctx_new(name ? name : "", text, err);
   if (!x) return CABLE_ERR_ALLOC;
+  if (rs) {
+    x->resolve = rs->fn;
+    x->resolve_ctx = rs->ctx;
+    x->e_given = rs->e;
+  }
   cable_constants_init(&x->c);
   cable_names_init(&x->names);
   int st = run(x, parnames, npar, pb);
@@ -1303,18 +1363,18 @@ int cable_constants_parse_string(const char *name, const char *text, cable_const
                                  cable_error *err)
 {
   if (!text || !c) return cable_error_set(err, CABLE_ERR_NULL, name, 0, "", "cable_constants_parse_string: %s is NULL", !text ? "the text" : "the constants");
-  return parse_string(name, text, NULL, parnames, npar, c, names, err);
+  return parse_string(name, text, NULL, parnames, npar, NULL, c, names, err);
 }
 
 int cable_constants_parse_string_for(const char *name, const char *text, const cable_problem *pb,
                                      cable_constants *c, cable_names *names, cable_error *err)
 {
   if (!text || !c) return cable_error_set(err, CABLE_ERR_NULL, name, 0, "", "cable_constants_parse_string_for: %s is NULL", !text ? "the text" : "the constants");
-  return parse_string(name, text, pb, pb ? pb->parnames : NULL, pb ? pb->npar : 0, c, names, err);
+  return parse_string(name, text, pb, pb ? pb->parnames : NULL, pb ? pb->npar : 0, NULL, c, names, err);
 }
 
 static int parse_file(const char *path, const cable_problem *pb, const char *const *parnames, int npar,
-                      cable_constants *c, cable_names *names, cable_error *err)
+                      const resolver *rs, cable_constants *c, cable_names *names, cable_error *err)
 {
   if (!path || !c) return cable_error_set(err, CABLE_ERR_NULL, "", 0, "", "%s is NULL", !path ? "the constants file name" : "the constants");
   FILE *f = fopen(path, "rb");
@@ -1337,7 +1397,7 @@ static int parse_file(const char *path, const cable_problem *pb, const char *con
     st = cable_error_set(err, CABLE_ERR_PARSE, path, 0, "", "file contains NUL bytes: not a constants file");
   } else {
     buf[n] = '\0';
-    st = parse_string(path, buf, pb, parnames, npar, c, names, err);
+    st = parse_string(path, buf, pb, parnames, npar, rs, c, names, err);
   }
   free(buf);
   return st;
@@ -1346,13 +1406,21 @@ static int parse_file(const char *path, const cable_problem *pb, const char *con
 int cable_constants_parse_file(const char *path, cable_constants *c, cable_names *names,
                                const char *const *parnames, int npar, cable_error *err)
 {
-  return parse_file(path, NULL, parnames, npar, c, names, err);
+  return parse_file(path, NULL, parnames, npar, NULL, c, names, err);
 }
 
 int cable_constants_parse_file_for(const char *path, const cable_problem *pb, cable_constants *c,
                                    cable_names *names, cable_error *err)
 {
-  return parse_file(path, pb, pb ? pb->parnames : NULL, pb ? pb->npar : 0, c, names, err);
+  return parse_file(path, pb, pb ? pb->parnames : NULL, pb ? pb->npar : 0, NULL, c, names, err);
+}
+
+int cable_constants_parse_file_resolve(const char *path, const char *e, cable_constants_resolve_fn *resolve, void *ctx,
+                                       cable_constants *c, cable_names *names, cable_error *err)
+{
+  if (!resolve) return cable_error_set(err, CABLE_ERR_NULL, path, 0, "", "cable_constants_parse_file_resolve: no resolver");
+  resolver rs = {resolve, ctx, e};
+  return parse_file(path, NULL, NULL, 0, &rs, c, names, err);
 }
 
 static int parse_override(const char *keyvalue, const cable_problem *pb, const char *const *parnames, int npar,

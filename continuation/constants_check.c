@@ -90,6 +90,7 @@ int cable_int_range_msg(long v, double lo, double hi, char *msg, size_t len)
 #define RANGE_POS 0
 #define RANGE_DS 0
 #define RANGE_STR 0
+#define RANGE_NAME 0
 #define RANGE_NAMES 0
 #define RANGE_PAR 0
 #define RANGE_IRS 0

@@ -26,7 +26,7 @@ ROW = re.compile(r'^\s*X\(([^)]*)\)')
 KIND_TYPE = {
     'INT': 'integer', 'DIM': 'integer', 'NPAR': 'integer', 'IPS': 'integer',
     'ISW': 'integer', 'STAB': 'integer', 'REAL': 'real', 'POS': 'real',
-    'DS': "real or `'-'`", 'STR': 'string', 'NAMES': "`{index: 'name'}`",
+    'DS': "real or `'-'`", 'STR': 'string', 'NAME': 'string (a problem name)', 'NAMES': "`{index: 'name'}`",
     'PAR': '`{par: value}`', 'IRS': "label number or name (`'BP1'`)",
     'ICP': 'list of parameters', 'THL': '`{par: weight}`',
     'THU': '`{component: weight}`', 'UZR': '`{par: value or [values]}`',
@@ -34,12 +34,12 @@ KIND_TYPE = {
     'LINSOLVER': "`'condense'` or `'klu'`",
 }
 KIND_DEFAULT = {
-    'STR': "`''`", 'NAMES': '`{}`', 'PAR': '`{}`', 'ICP': 'none', 'THL': '`{}`',
+    'STR': "`''`", 'NAME': "`''`", 'NAMES': '`{}`', 'PAR': '`{}`', 'ICP': 'none', 'THL': '`{}`',
     'THU': '`{}` (all 1)', 'UZR': '`{}`', 'UZSTOP': '`{}`', 'STOP': '`[]`',
     'LINSOLVER': "`'condense'`",
 }
 KIND_RANGE = {
-    'REAL': 'finite', 'POS': '> 0', 'DS': "non-zero; `'-'` reverses",
+    'REAL': 'finite', 'POS': '> 0', 'NAME': "no `/` or blanks", 'DS': "non-zero; `'-'` reverses",
     'IPS': '4 only (cable solves boundary-value problems)',
     'ISW': '1, -1 or 2',
 }

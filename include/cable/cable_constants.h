@@ -145,6 +145,20 @@ CABLE_API int cable_constants_parse_file_for(const char *path, const cable_probl
 CABLE_API int cable_constants_parse_string_for(const char *name, const char *text, const cable_problem *pb,
                                                cable_constants *c, cable_names *names, cable_error *err);
 
+/* The same for a run that finds its problem by name (the session): one read
+ * of the file yields the problem's name and the constants.  After the keys
+ * that do not depend on the problem (e, NPAR, parnames, unames) are applied,
+ * resolve(ctx, name, &pb, err) is called once with `e` when it is given and
+ * not "" (a keyword wins over the file), else the file's e ("" when it names
+ * none); it returns 0 with *pb (NULL: no problem, names and keys of none) or
+ * an error status with err set, which the parse returns.  The problem's names
+ * then resolve parameter names and its keys are accepted (as
+ * cable_constants_parse_file_for); the key a file sets that is neither
+ * cable's nor the problem's is reported after the problem is known. */
+typedef int cable_constants_resolve_fn(void *ctx, const char *name, const cable_problem **pb, cable_error *err);
+CABLE_API int cable_constants_parse_file_resolve(const char *path, const char *e, cable_constants_resolve_fn *resolve,
+                                                 void *ctx, cable_constants *c, cable_names *names, cable_error *err);
+
 /* Merge `KEY=VALUE` (e.g. from `cable run DS=-0.01` or a script keyword) into
  * an already filled *c: the key's old value is replaced (UZR replaces the user
  * zeros, UZSTOP the stopping ones); DS='-' reverses the current DS.  Several

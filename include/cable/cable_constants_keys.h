@@ -23,6 +23,8 @@
  *            REAL    double, any finite number
  *            POS     double, a finite number > 0
  *            STR     char[CABLE_NAME_MAX], a UTF-8 string
+ *            NAME    as STR, a problem name (no '/' or blanks), read before the
+ *                    other keys: it names the problem whose keys they may be
  *            and one kind per key of its own shape (IPS, ISW, STAB, DS, IRS,
  *            ICP, THL, THU, UZR, UZSTOP, STOP, PAR, NAMES, LINSOLVER, ...)
  *   default  the value cable_constants_init gives it (AUTO-07p's unless
@@ -41,7 +43,7 @@
 
 /* clang-format off */
 #define CABLE_CONSTANTS_KEYS(X)                                                    \
-  X(e,         e,            STR,       0,        0, 0,                 1)          \
+  X(e,         e,            NAME,      0,        0, 0,                 1)          \
   X(s,         s,            STR,       0,        0, 0,                 1)          \
   X(dat,       dat,          STR,       0,        0, 0,                 1)          \
   X(sv,        sv,           STR,       0,        0, 0,                 1)          \
@@ -107,6 +109,7 @@
 #define CABLE_CK_DECL_DS(f) double f;
 #define CABLE_CK_DECL_THU(f) double f; /* one weight for all u (AUTO's THU) */
 #define CABLE_CK_DECL_STR(f) char f[CABLE_NAME_MAX];
+#define CABLE_CK_DECL_NAME(f) char f[CABLE_NAME_MAX];
 #define CABLE_CK_DECL_LINSOLVER(f) cable_linsolver f;
 /* 0: STPNT; >0 label; <0: -n-th solution; f##_name: 'BP1', 'UZ2' ... ("" when numeric) */
 #define CABLE_CK_DECL_IRS(f) int f; char f##_name[16];
@@ -136,6 +139,7 @@
 #define CABLE_CK_INIT_LINSOLVER CABLE_CK_INIT_SCALAR
 #define CABLE_CK_INIT_IRS CABLE_CK_INIT_SCALAR
 #define CABLE_CK_INIT_STR CABLE_CK_INIT_NONE
+#define CABLE_CK_INIT_NAME CABLE_CK_INIT_NONE
 #define CABLE_CK_INIT_ICP CABLE_CK_INIT_NONE
 #define CABLE_CK_INIT_THL CABLE_CK_INIT_NONE
 #define CABLE_CK_INIT_UZR CABLE_CK_INIT_NONE
