@@ -85,7 +85,7 @@ static int cv_push(cv *v, cv *item)
 
 /* Each key of cable/cable_constants_keys.h by its row: KEY_NTST ... */
 enum {
-#define KEY_ENUM(key, field, kind, def, lo, hi, line) KEY_##key,
+#define KEY_ENUM(key, field, kind, who, def, lo, hi, line) KEY_##key,
   CABLE_CONSTANTS_KEYS(KEY_ENUM)
 #undef KEY_ENUM
   KEY_COUNT
@@ -982,7 +982,7 @@ static int apply_linsolver(pctx *x, const key_desc *d, const stmt *s)
 #define KIND_LINSOLVER(f) apply_linsolver, 0, 2
 
 static const key_desc key_table[] = {
-#define KEY_ROW(key, field, kind, def, lo, hi, line) {#key, KIND_##kind(field), lo, hi, KEY_##key},
+#define KEY_ROW(key, field, kind, who, def, lo, hi, line) {#key, KIND_##kind(field), lo, hi, KEY_##key},
   CABLE_CONSTANTS_KEYS(KEY_ROW)
 #undef KEY_ROW
 };

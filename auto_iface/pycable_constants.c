@@ -217,7 +217,7 @@ PyObject *pyc_constants_dict(const cable_constants *c, const cable_names *n, con
   if (!d) return NULL;
   int rc = 0;
   /* the keys in the table's order; those on no printed line (0) are not shown */
-#define PY_ROW(key, field, kind, def, lo, hi, line) \
+#define PY_ROW(key, field, kind, who, def, lo, hi, line) \
   if (!rc && (line) > 0) rc = PY_##kind(#key, field);
   CABLE_CONSTANTS_KEYS(PY_ROW)
 #undef PY_ROW
@@ -237,7 +237,7 @@ PyObject *pyc_constants_layout(PyObject *self, PyObject *unused)
     const char *key;
     int line;
   } rows[] = {
-#define LAYOUT_ROW(key, field, kind, def, lo, hi, line) {#key, line},
+#define LAYOUT_ROW(key, field, kind, who, def, lo, hi, line) {#key, line},
       CABLE_CONSTANTS_KEYS(LAYOUT_ROW)
 #undef LAYOUT_ROW
   };

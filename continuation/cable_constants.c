@@ -16,7 +16,7 @@ void cable_constants_init(cable_constants *c)
      NDIM = 0 ("take it from the problem") and ICP (none: a run must name its
      parameters), doc/constants.md.  IPS = 1 is AUTO's default
      (algebraic equilibria), which cable does not solve: the run refuses it. */
-#define CABLE_CK_DEFAULT(key, field, kind, def, lo, hi, line) CABLE_CK_INIT_##kind(c, field, def)
+#define CABLE_CK_DEFAULT(key, field, kind, who, def, lo, hi, line) CABLE_CK_INIT_##kind(c, field, def)
   CABLE_CONSTANTS_KEYS(CABLE_CK_DEFAULT)
 #undef CABLE_CK_DEFAULT
 }

@@ -111,7 +111,7 @@ int cable_int_range_msg(long v, double lo, double hi, char *msg, size_t len)
 int cable_constants_int_ranges(const cable_constants *c, char *msg, size_t len)
 {
   char m[160];
-#define RANGE_ROW(key, field, kind, def, lo, hi, line)                                         \
+#define RANGE_ROW(key, field, kind, who, def, lo, hi, line)                                         \
   if (RANGE_##kind) {                                                                          \
     long v = FIELD(RANGE_##kind, c, field);                                                   \
     if (!(RANGE_##kind == 2 && v == 0) && cable_int_range_msg(v, lo, hi, m, sizeof m))          \

@@ -57,7 +57,7 @@ def defines():
 
 
 def rows():
-    """The table's rows: dicts of key, field, kind, default, lo, hi, line."""
+    """The table's rows: dicts of key, field, kind, who, default, lo, hi, line."""
     out = []
     with open(HEADER, encoding='utf-8') as f:
         for text in f:
@@ -65,9 +65,9 @@ def rows():
             if not m:
                 continue
             cols = [c.strip() for c in m.group(1).split(',')]
-            if len(cols) != 7:
-                raise SystemExit('%s: a row with %d columns, not 7: %s' % (HEADER, len(cols), text.strip()))
-            out.append(dict(zip(('key', 'field', 'kind', 'default', 'lo', 'hi', 'line'), cols)))
+            if len(cols) != 8:
+                raise SystemExit('%s: a row with %d columns, not 8: %s' % (HEADER, len(cols), text.strip()))
+            out.append(dict(zip(('key', 'field', 'kind', 'who', 'default', 'lo', 'hi', 'line'), cols)))
     return out
 
 
@@ -108,11 +108,11 @@ def default(r):
 def table():
     defs = defines()
     lines = [BEGIN, '',
-             '| key | value | default | accepted | printed (`pr()`) line |',
-             '|---|---|---|---|---|']
+             '| key | value | default | accepted | read by | printed (`pr()`) line |',
+             '|---|---|---|---|---|---|']
     for r in rows():
-        lines.append('| `%s` | %s | %s | %s | %s |' % (
-            r['key'], KIND_TYPE[r['kind']], default(r), accepted(r, defs),
+        lines.append('| `%s` | %s | %s | %s | %s | %s |' % (
+            r['key'], KIND_TYPE[r['kind']], default(r), accepted(r, defs), r['who'].lower(),
             r['line'] if r['line'] != '0' else 'not shown'))
     lines += ['', END]
     return '\n'.join(lines)

@@ -57,22 +57,11 @@ typedef struct {
 typedef enum { CABLE_LINSOLVER_CONDENSE = 0, CABLE_LINSOLVER_KLU = 1 } cable_linsolver;
 
 typedef struct cable_constants {
-  /* the keys: one field (or a few) per line of cable_constants_keys.h */
-#define CABLE_CK_FIELDS(key, field, kind, def, lo, hi, line) CABLE_CK_DECL_##kind(field)
-  CABLE_CONSTANTS_KEYS(CABLE_CK_FIELDS)
-#undef CABLE_CK_FIELDS
+  /* ---- the engine's settings: what continuation/ (and a problem's
+     prepare) reads.  The keys: the ENGINE rows of cable_constants_keys.h */
+  CABLE_CONSTANTS_KEYS(CABLE_CK_ENGINE_FIELDS)
   /* problem-specific keys (the problem's cable_problem_key list), as set */
   cable_keyval pkey[CABLE_MAX_PKEYS]; int npkey;
-  /* where NDIM, NBC and NINT were set: a built-in problem's dimensions are
-     fixed, and a contradicting value is reported at its line */
-  cable_key_origin origin_ndim, origin_nbc, origin_nint;
-  /* where IPS was set; when no file or override sets it (AUTO's default
-     IPS=1, which cable does not solve), the constants file read last, line 0,
-     so that the run's refusal names it */
-  cable_key_origin origin_ips;
-  /* keys AUTO accepts and ignores for boundary-value problems (MXBF, ...),
-     "KEY (line N)" separated by ", ", for the run's log; "" when none */
-  char ignored[256];
   /* 1: ISW=-1 at a simple branch point orients the kernel vector by AUTO's
      rule (its STDRBV): the first free parameter whose component is not
      negligible (|PAR'| / (1 + |PAR|) > EPSL) increases, else the first U(i)
@@ -91,6 +80,21 @@ typedef struct cable_constants {
   /* AUTO's NPARI: the extended problem's own parameter slots after NPAR (the
      s-file header's); 0: none.  Set with ndm. */
   int npari;
+
+  /* ---- the session's bookkeeping: file names, the restart label, output
+     settings, where keys were set.  The engine never reads them.  The keys:
+     the SESSION rows of cable_constants_keys.h */
+  CABLE_CONSTANTS_KEYS(CABLE_CK_SESSION_FIELDS)
+  /* where NDIM, NBC and NINT were set: a built-in problem's dimensions are
+     fixed, and a contradicting value is reported at its line */
+  cable_key_origin origin_ndim, origin_nbc, origin_nint;
+  /* where IPS was set; when no file or override sets it (AUTO's default
+     IPS=1, which cable does not solve), the constants file read last, line 0,
+     so that the run's refusal names it */
+  cable_key_origin origin_ips;
+  /* keys AUTO accepts and ignores for boundary-value problems (MXBF, ...),
+     "KEY (line N)" separated by ", ", for the run's log; "" when none */
+  char ignored[256];
 } cable_constants;
 
 /* AUTO-07p defaults (no problem key set). */
@@ -154,7 +158,8 @@ CABLE_API int cable_constants_parse_string_for(const char *name, const char *tex
  * an error status with err set, which the parse returns.  The problem's names
  * then resolve parameter names and its keys are accepted (as
  * cable_constants_parse_file_for); the key a file sets that is neither
- * cable's nor the problem's is reported after the problem is known. */
+ * cable's nor the problem's is reported after the problem is known.
+ * e, ctx, names and err may be NULL; path, resolve and c may not. */
 typedef int cable_constants_resolve_fn(void *ctx, const char *name, const cable_problem **pb, cable_error *err);
 CABLE_API int cable_constants_parse_file_resolve(const char *path, const char *e, cable_constants_resolve_fn *resolve,
                                                  void *ctx, cable_constants *c, cable_names *names, cable_error *err);

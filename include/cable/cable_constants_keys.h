@@ -12,7 +12,7 @@
  * CABLE_CK_INIT_ macros below, its reader in constants_parse.c (KIND_...) and
  * its Python value in pycable_constants.c (PY_...).
  *
- * X(KEY, field, KIND, default, lo, hi, line)
+ * X(KEY, field, KIND, WHO, default, lo, hi, line)
  *   KEY      the key as written in a constants file (case-sensitive, AUTO's)
  *   field    the member of cable_constants it sets
  *   KIND     how it is stored, read, checked and shown:
@@ -27,6 +27,12 @@
  *                    other keys: it names the problem whose keys they may be
  *            and one kind per key of its own shape (IPS, ISW, STAB, DS, IRS,
  *            ICP, THL, THU, UZR, UZSTOP, STOP, PAR, NAMES, LINSOLVER, ...)
+ *   WHO      who reads it: ENGINE (the continuation engine, continuation/,
+ *            and the problems' prepare) or SESSION (only the session and the
+ *            file writers: file names, the restart label, output settings).
+ *            The struct keeps the two apart (cable_constants.h), and
+ *            tests/python/test_constants_doc.py fails when a file of
+ *            continuation/, equations/, bc/ or graphics/ reads a SESSION field
  *   default  the value cable_constants_init gives it (AUTO-07p's unless
  *            doc/constants.md says otherwise); 0 for kinds without one
  *   lo, hi   the accepted range of the integer kinds (INT, DIM, NPAR, IPS, ISW,
@@ -42,60 +48,71 @@
 #define CABLE_CK_BIG INT_MAX
 
 /* clang-format off */
-#define CABLE_CONSTANTS_KEYS(X)                                                    \
-  X(e,         e,            NAME,      0,        0, 0,                 1)          \
-  X(s,         s,            STR,       0,        0, 0,                 1)          \
-  X(dat,       dat,          STR,       0,        0, 0,                 1)          \
-  X(sv,        sv,           STR,       0,        0, 0,                 1)          \
-  X(unames,    unames,       NAMES,     0,        0, 0,                 2)          \
-  X(parnames,  parnames,     NAMES,     0,        0, 0,                 3)          \
-  X(PAR,       par_override, PAR,       0,        0, 0,                 4)          \
-  X(NDIM,      ndim,         DIM,       0,        1, CABLE_CK_BIG,      5)          \
-  X(IPS,       ips,          IPS,       1,        -CABLE_CK_BIG, CABLE_CK_BIG, 5)          \
-  X(IRS,       irs,          IRS,       0,        0, 0,                 5)          \
-  X(ILP,       ilp,          INT,       1,        0, 1,                 5)          \
-  X(ICP,       icp,          ICP,       0,        0, 0,                 6)          \
-  X(NTST,      ntst,         INT,       20,       1, CABLE_CK_BIG,      7)          \
-  X(NCOL,      ncol,         INT,       4,        CABLE_NCOL_MIN, CABLE_NCOL_MAX, 7) \
-  X(IAD,       iad,          INT,       3,        0, CABLE_CK_BIG,      7)          \
-  X(ISP,       isp,          INT,       2,        0, 4,                 7)          \
-  X(ISW,       isw,          ISW,       1,        -CABLE_CK_BIG, CABLE_CK_BIG, 7)          \
-  X(IPLT,      iplt,         INT,       0,        -CABLE_CK_BIG, CABLE_CK_BIG, 7)   \
-  X(NBC,       nbc,          DIM,       0,        0, CABLE_CK_BIG,      7)          \
-  X(NINT,      nint,         DIM,       0,        0, CABLE_CK_BIG,      7)          \
-  X(NMX,       nmx,          INT,       0,        0, CABLE_CK_BIG,      8)          \
-  X(NPR,       npr,          INT,       0,        0, CABLE_CK_BIG,      8)          \
-  X(IID,       iid,          INT,       2,        0, 5,                 8)          \
-  X(ITMX,      itmx,         INT,       9,        1, CABLE_CK_BIG,      8)          \
-  X(ITNW,      itnw,         INT,       5,        1, CABLE_CK_BIG,      8)          \
-  X(NWTN,      nwtn,         INT,       3,        1, CABLE_CK_BIG,      8)          \
-  X(JAC,       jac,          INT,       0,        -1, 1,                8)          \
-  X(EPSL,      epsl,         POS,       1e-7,     0, 0,                 9)          \
-  X(EPSU,      epsu,         POS,       1e-7,     0, 0,                 9)          \
-  X(EPSS,      epss,         POS,       1e-5,     0, 0,                 9)          \
-  X(DS,        ds,           DS,        0.01,     0, 0,                 10)         \
-  X(DSMIN,     dsmin,        POS,       0.005,    0, 0,                 10)         \
-  X(DSMAX,     dsmax,        POS,       0.1,      0, 0,                 10)         \
-  X(IADS,      iads,         INT,       1,        0, CABLE_CK_BIG,      10)         \
-  X(NPAR,      npar,         NPAR,      36,       1, CABLE_NAMES_MAX,   11)         \
-  X(THL,       thl,          THL,       0,        0, 0,                 11)         \
-  X(THU,       thu_default,  THU,       1.0,      0, 0,                 11)         \
-  X(IIS,       iis,          INT,       3,        0, 3,                 12)         \
-  X(UZR,       uzr,          UZR,       0,        0, 0,                 13)         \
-  X(UZSTOP,    uzr,          UZSTOP,    0,        0, 0,                 14)         \
-  X(STOP,      stop_on,      STOP,      0,        0, 0,                 15)         \
-  X(RL0,       rl0,          REAL,      -1e300,   0, 0,                 16)         \
-  X(RL1,       rl1,          REAL,      1e300,    0, 0,                 16)         \
-  X(A0,        a0,           REAL,      -1e300,   0, 0,                 16)         \
-  X(A1,        a1,           REAL,      1e300,    0, 0,                 16)         \
-  X(LINSOLVER, linsolver,    LINSOLVER, CABLE_LINSOLVER_CONDENSE, 0, 0, 17)         \
-  X(NSV,       nsv,          INT,       0,        0, CABLE_CK_BIG,      17)         \
-  X(NTHREADS,  nthreads,     INT,       0,        0, CABLE_THREADS_MAX, 17)         \
-  X(BPDIR,     bpsym,        INT,       0,        0, 1,                 17)         \
-  X(BPANGLE,   bpangle,      REAL,      NAN,      0, 0,                 17)         \
-  X(PREDICTOR, predictor,    INT,       1,        1, 2,                 17)         \
-  X(STAB,      stab,         STAB,      0,        0, 1,                 0)
+#define CABLE_CONSTANTS_KEYS(X)                                                                                   \
+  X(e,         e,            NAME,      SESSION, 0,                        0,              0,                 1)  \
+  X(s,         s,            STR,       SESSION, 0,                        0,              0,                 1)  \
+  X(dat,       dat,          STR,       SESSION, 0,                        0,              0,                 1)  \
+  X(sv,        sv,           STR,       SESSION, 0,                        0,              0,                 1)  \
+  X(unames,    unames,       NAMES,     SESSION, 0,                        0,              0,                 2)  \
+  X(parnames,  parnames,     NAMES,     SESSION, 0,                        0,              0,                 3)  \
+  X(PAR,       par_override, PAR,       ENGINE,  0,                        0,              0,                 4)  \
+  X(NDIM,      ndim,         DIM,       ENGINE,  0,                        1,              CABLE_CK_BIG,      5)  \
+  X(IPS,       ips,          IPS,       ENGINE,  1,                        -CABLE_CK_BIG,  CABLE_CK_BIG,      5)  \
+  X(IRS,       irs,          IRS,       SESSION, 0,                        0,              0,                 5)  \
+  X(ILP,       ilp,          INT,       ENGINE,  1,                        0,              1,                 5)  \
+  X(ICP,       icp,          ICP,       ENGINE,  0,                        0,              0,                 6)  \
+  X(NTST,      ntst,         INT,       ENGINE,  20,                       1,              CABLE_CK_BIG,      7)  \
+  X(NCOL,      ncol,         INT,       ENGINE,  4,                        CABLE_NCOL_MIN, CABLE_NCOL_MAX,    7)  \
+  X(IAD,       iad,          INT,       ENGINE,  3,                        0,              CABLE_CK_BIG,      7)  \
+  X(ISP,       isp,          INT,       ENGINE,  2,                        0,              4,                 7)  \
+  X(ISW,       isw,          ISW,       ENGINE,  1,                        -CABLE_CK_BIG,  CABLE_CK_BIG,      7)  \
+  X(IPLT,      iplt,         INT,       ENGINE,  0,                        -CABLE_CK_BIG,  CABLE_CK_BIG,      7)  \
+  X(NBC,       nbc,          DIM,       ENGINE,  0,                        0,              CABLE_CK_BIG,      7)  \
+  X(NINT,      nint,         DIM,       ENGINE,  0,                        0,              CABLE_CK_BIG,      7)  \
+  X(NMX,       nmx,          INT,       ENGINE,  0,                        0,              CABLE_CK_BIG,      8)  \
+  X(NPR,       npr,          INT,       ENGINE,  0,                        0,              CABLE_CK_BIG,      8)  \
+  X(IID,       iid,          INT,       SESSION, 2,                        0,              5,                 8)  \
+  X(ITMX,      itmx,         INT,       ENGINE,  9,                        1,              CABLE_CK_BIG,      8)  \
+  X(ITNW,      itnw,         INT,       ENGINE,  5,                        1,              CABLE_CK_BIG,      8)  \
+  X(NWTN,      nwtn,         INT,       ENGINE,  3,                        1,              CABLE_CK_BIG,      8)  \
+  X(JAC,       jac,          INT,       ENGINE,  0,                        -1,             1,                 8)  \
+  X(EPSL,      epsl,         POS,       ENGINE,  1e-7,                     0,              0,                 9)  \
+  X(EPSU,      epsu,         POS,       ENGINE,  1e-7,                     0,              0,                 9)  \
+  X(EPSS,      epss,         POS,       ENGINE,  1e-5,                     0,              0,                 9)  \
+  X(DS,        ds,           DS,        ENGINE,  0.01,                     0,              0,                 10) \
+  X(DSMIN,     dsmin,        POS,       ENGINE,  0.005,                    0,              0,                 10) \
+  X(DSMAX,     dsmax,        POS,       ENGINE,  0.1,                      0,              0,                 10) \
+  X(IADS,      iads,         INT,       ENGINE,  1,                        0,              CABLE_CK_BIG,      10) \
+  X(NPAR,      npar,         NPAR,      ENGINE,  36,                       1,              CABLE_NAMES_MAX,   11) \
+  X(THL,       thl,          THL,       ENGINE,  0,                        0,              0,                 11) \
+  X(THU,       thu_default,  THU,       ENGINE,  1.0,                      0,              0,                 11) \
+  X(IIS,       iis,          INT,       SESSION, 3,                        0,              3,                 12) \
+  X(UZR,       uzr,          UZR,       ENGINE,  0,                        0,              0,                 13) \
+  X(UZSTOP,    uzr,          UZSTOP,    ENGINE,  0,                        0,              0,                 14) \
+  X(STOP,      stop_on,      STOP,      ENGINE,  0,                        0,              0,                 15) \
+  X(RL0,       rl0,          REAL,      ENGINE,  -1e300,                   0,              0,                 16) \
+  X(RL1,       rl1,          REAL,      ENGINE,  1e300,                    0,              0,                 16) \
+  X(A0,        a0,           REAL,      ENGINE,  -1e300,                   0,              0,                 16) \
+  X(A1,        a1,           REAL,      ENGINE,  1e300,                    0,              0,                 16) \
+  X(LINSOLVER, linsolver,    LINSOLVER, ENGINE,  CABLE_LINSOLVER_CONDENSE, 0,              0,                 17) \
+  X(NSV,       nsv,          INT,       ENGINE,  0,                        0,              CABLE_CK_BIG,      17) \
+  X(NTHREADS,  nthreads,     INT,       ENGINE,  0,                        0,              CABLE_THREADS_MAX, 17) \
+  X(BPDIR,     bpsym,        INT,       ENGINE,  0,                        0,              1,                 17) \
+  X(BPANGLE,   bpangle,      REAL,      ENGINE,  NAN,                      0,              0,                 17) \
+  X(PREDICTOR, predictor,    INT,       ENGINE,  1,                        1,              2,                 17) \
+  X(STAB,      stab,         STAB,      ENGINE,  0,                        0,              1,                 0)
 /* clang-format on */
+
+/* The fields of the ENGINE rows, or of the SESSION rows (the struct's two
+ * parts): X(key, field, kind, who, ...) gives the fields when who matches. */
+#define CABLE_CK_ONLY_ENGINE_ENGINE(decl) decl
+#define CABLE_CK_ONLY_ENGINE_SESSION(decl)
+#define CABLE_CK_ONLY_SESSION_ENGINE(decl)
+#define CABLE_CK_ONLY_SESSION_SESSION(decl) decl
+#define CABLE_CK_ENGINE_FIELDS(key, field, kind, who, def, lo, hi, line) \
+  CABLE_CK_ONLY_ENGINE_##who(CABLE_CK_DECL_##kind(field))
+#define CABLE_CK_SESSION_FIELDS(key, field, kind, who, def, lo, hi, line) \
+  CABLE_CK_ONLY_SESSION_##who(CABLE_CK_DECL_##kind(field))
 
 /* The fields a kind declares in cable_constants. */
 #define CABLE_CK_DECL_INT(f) int f;

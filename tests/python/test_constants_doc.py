@@ -65,3 +65,34 @@ def test_every_key_is_described():
             described.update(re.findall(r'`([A-Za-z0-9_]+)`', line.split('|')[1]))
     missing = [r['key'] for r in gen_constants_doc.rows() if r['key'] not in described]
     assert not missing, missing
+
+
+# the fields a SESSION row declares (cable_constants_keys.h's CABLE_CK_DECL_)
+SESSION_EXTRA = {'IRS': ['irs', 'irs_name']}
+# the session's other bookkeeping fields (cable_constants.h, after the keys)
+SESSION_OTHER = ['origin_ndim', 'origin_nbc', 'origin_nint', 'origin_ips', 'ignored']
+
+
+def test_engine_reads_no_session_field():
+    """continuation/, equations/, bc/ and graphics/ read only the engine's
+    part of cable_constants: no file that names the constants (a
+    cable_constants or the engine handle's cc->c) reads a SESSION row's
+    field.  constants_check.c checks every field of a struct filled by hand
+    (terminated strings) and is the one exception."""
+    fields = list(SESSION_OTHER)
+    for r in gen_constants_doc.rows():
+        if r['who'] == 'SESSION' and r['kind'] != 'NAMES':
+            fields += SESSION_EXTRA.get(r['key'], [r['field']])
+    assert 'sv' in fields and 'e' in fields and 'iid' in fields
+    pat = re.compile(r'(\bc|cc->c|f->c|crun|\bk)(->|\.)(%s)\b' % '|'.join(fields))
+    hits = []
+    for folder in ('continuation', 'equations', 'bc', 'graphics'):
+        for name in sorted(os.listdir(os.path.join(ROOT, folder))):
+            if not name.endswith('.c') or name == 'constants_check.c':
+                continue
+            with open(os.path.join(ROOT, folder, name), encoding='utf-8') as f:
+                text = f.read()
+            if 'cable_constants' not in text and 'cc->c' not in text:
+                continue
+            hits += ['%s/%s:%d' % (folder, name, text[:m.start()].count('\n') + 1) for m in pat.finditer(text)]
+    assert not hits, hits
