@@ -77,6 +77,7 @@ void cable_cont_free(cable_cont *cc)
   colloc_system_free(cc->sys);
   colloc_jac_free(cc->J);
   abd_solver_free(cc->abd);
+  cable_team_free(cc->team);   /* after the three that borrowed it */
   double *v[] = {cc->x, cc->xdot, cc->xp, cc->xdotp, cc->xt, cc->xdott, cc->w1, cc->w2, cc->w3,
                  cc->xlo, cc->xhi, cc->svec, cc->umax, cc->xq, cc->xdotq};
   for (size_t i = 0; i < sizeof v / sizeof v[0]; i++) free(v[i]);
@@ -167,15 +168,27 @@ cable_cont *cable_cont_alloc(const cable_problem *pb, const cable_constants *c, 
   cc->nfpr = pb->nbc + pb->nint - pb->ndim + 1;
   cc->ntst = c->ntst;
   cc->ncol = c->ncol;
-  cc->sys = colloc_system_alloc(pb, c, c->ntst, c->ncol, c->icp, cc->nfpr, &rc);
+  /* One thread team per handle, of the run's thread count: the Newton
+     solver's and the tangent's factorisations and solves and (when the
+     problem's loops have as many workers) the residual and Jacobian loops use
+     it in turn.  Every team job ends on the engine's thread before the next
+     starts and none starts another (no nesting), and a loop's partition
+     depends only on the team's size: the same bits as with a team each. */
+  int nthreads = cable_threads(c);
+  if (nthreads > 1 && !(cc->team = cable_team_alloc(nthreads))) {
+    rc = CABLE_ERR_ALLOC;
+    goto fail;
+  }
+  cc->sys = colloc_system_alloc_team(pb, c, c->ntst, c->ncol, c->icp, cc->nfpr, cc->team, &rc);
   if (!cc->sys) goto fail;
   cc->n = cc->sys->n;
-  cc->nw = colloc_newton_alloc(cc->sys, c, &rc);
+  cc->nw = colloc_newton_alloc_team(cc->sys, c, cc->team, &rc);
   if (!cc->nw) goto fail;
   rc = CABLE_ERR_ALLOC;
   cc->J = colloc_jac_alloc(cc->ndim, cc->ntst, cc->ncol, cc->nfpr, pb->nbc, pb->nint);
   cc->abd = abd_solver_alloc(cc->ndim, cc->ntst, cc->ncol, cc->nfpr, pb->nbc, pb->nint);
-  abd_solver_set_threads(cc->abd, cable_threads(c));
+  if (cc->team) abd_solver_use_team(cc->abd, cc->team);
+  else abd_solver_set_threads(cc->abd, nthreads);
   size_t n = (size_t)cc->n;
   cc->x = calloc(n, sizeof(double)); cc->xdot = calloc(n, sizeof(double));
   cc->xp = calloc(n, sizeof(double)); cc->xdotp = calloc(n, sizeof(double));

@@ -49,6 +49,8 @@ struct cable_cont {
                                    the handle lives (cable_cont.h) */
   int ndim, npar, nfpr, n;
   int ntst, ncol;
+  struct cable_team *team;      /* the handle's one thread team (NULL: one thread), lent to
+                                   sys, nw and abd (cable_cont_alloc) */
   colloc_system *sys;           /* discretisation (mesh, closing equation) */
   colloc_newton *nw;            /* KINSOL Newton solver */
   colloc_jac *J;                /* Newton matrix for tangents and test functions */
