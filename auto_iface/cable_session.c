@@ -452,6 +452,7 @@ static int build_setup(cable_session *r, const cable_run_args *a, rp_setup *s, c
     s->c.irs = 0;
     s->c.irs_name[0] = '\0';
     s->c.npar_override = 0;
+    s->c.lab = 0;   /* nor LAB (bifDiag's nonekeys) */
   } else {
     s->c = r->cur;
     s->names = r->cur_names;
@@ -970,8 +971,9 @@ static int engine_run(cable_session *r, rp_setup *s, const char *out_name, int o
   col.out_name = out_name;
   if (guard) guard_where(guard, &col, s->e, out_name);
   cable_sink sink = {&col, collect_point, collect_solution, collect_diag};
-  int next = s->mlab + 1;
-  st = cable_cont_run(cc, &sink, ibr, s->mlab + 1, &next);
+  /* LAB > 0: the run's first label (AUTO's LAB), else NEWLAB's MLAB + 1 */
+  int first_lab = s->c.lab > 0 ? s->c.lab : s->mlab + 1, next = first_lab;
+  st = cable_cont_run(cc, &sink, ibr, first_lab, &next);
   char why[512], end_note[600], fatal[1200] = "";
   /* an error's message, or the closed loop's (it names the point the branch returned to) */
   snprintf(why, sizeof why, "%s", st < 0 || st == CABLE_END_LOOP ? cable_cont_error(cc) : "");

@@ -1000,7 +1000,6 @@ static const struct {
   const char *why;
 } unsupported_table[] = {
   {"IBR", "branch numbers are assigned by the run driver"},
-  {"LAB", "labels are assigned by the run driver"},
   {"TY", "branch types (TY) are not used by cable's IPS=4 runs"},
   {"SP", "use ILP and ISP to switch fold and branch-point detection on or off"},
   {"U", "starting values (U) belong in the problem's STPNT or a restart solution"},

@@ -84,6 +84,7 @@
   X(DSMAX,     dsmax,        POS,       ENGINE,  0.1,                      0,              0,                 10) \
   X(IADS,      iads,         INT,       ENGINE,  1,                        0,              CABLE_CK_BIG,      10) \
   X(NPAR,      npar,         NPAR,      ENGINE,  36,                       1,              CABLE_NAMES_MAX,   11) \
+  X(LAB,       lab,          INT,       SESSION, 0,                        0,              CABLE_CK_BIG,      11) \
   X(THL,       thl,          THL,       ENGINE,  0,                        0,              0,                 11) \
   X(THU,       thu_default,  THU,       ENGINE,  1.0,                      0,              0,                 11) \
   X(IIS,       iis,          INT,       SESSION, 3,                        0,              3,                 12) \
