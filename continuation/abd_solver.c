@@ -67,6 +67,7 @@ struct abd_solver {
   /* per-interval results of the parallel stages, reduced in interval order
      (the same numbers for every thread count) */
   cable_team *team;                /* threads for the per-interval stages (NULL: none) */
+  int team_borrowed;               /* 1: team is the caller's (abd_solver_use_team), not freed here */
   int *iv_status;                  /* [N] 0 ok, 1 singular, -1 LAPACK, -2 non-finite, -3 band overflow */
   int *iv_sign;                    /* [N] sign of the interval's pivots and interchanges */
   double *iv_logabs;               /* [N] sum of log |pivot| */
@@ -345,7 +346,7 @@ void abd_solver_free(abd_solver *s)
   free(s->w_oo);
   free(s->prep);
   free(s->prep_k);
-  cable_team_free(s->team);
+  if (!s->team_borrowed) cable_team_free(s->team);
   sv_free(s);
   free(s);
 }
@@ -357,14 +358,23 @@ int abd_solver_set_threads(abd_solver *s, int nthreads)
   if (!s) return ABD_ERR_SIZE;
   if (nthreads < 1) nthreads = 1;
   if (cable_team_size(s->team) == nthreads) return ABD_OK;
-  cable_team_free(s->team);
+  if (!s->team_borrowed) cable_team_free(s->team);
   s->team = NULL;
+  s->team_borrowed = 0;
   if (nthreads == 1) return ABD_OK;
   s->team = cable_team_alloc(nthreads);
   return s->team ? ABD_OK : ABD_ERR_MEM;
 }
 
 int abd_solver_threads(const abd_solver *s) { return s ? cable_team_size(s->team) : 0; }
+
+void abd_solver_use_team(abd_solver *s, struct cable_team *t)
+{
+  if (!s || !t) return;
+  if (!s->team_borrowed) cable_team_free(s->team);
+  s->team = t;
+  s->team_borrowed = 1;
+}
 
 cable_team *abd_solver_team(const abd_solver *s) { return s ? s->team : NULL; }
 

@@ -95,6 +95,10 @@ double abd_solver_growth(const abd_solver *s);
  * one thread). */
 int abd_solver_set_threads(abd_solver *s, int nthreads);
 int abd_solver_threads(const abd_solver *s);
+/* The same with the caller's team t (not NULL), which the solver uses and
+ * never frees: t outlives the solver; one team may serve several solvers
+ * that run one after another (the engine handle's). */
+void abd_solver_use_team(abd_solver *s, struct cable_team *t);
 /* The solver's thread team (NULL: one thread), for per-interval work that
  * goes with its solves (colloc_jac_matvec_team); used by one thread at a time
  * like the solver. */

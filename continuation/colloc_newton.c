@@ -105,6 +105,12 @@ void colloc_newton_free(colloc_newton *nw)
 
 colloc_newton *colloc_newton_alloc(colloc_system *sys, const cable_constants *c, int *status)
 {
+  return colloc_newton_alloc_team(sys, c, NULL, status);
+}
+
+colloc_newton *colloc_newton_alloc_team(colloc_system *sys, const cable_constants *c, struct cable_team *t,
+                                        int *status)
+{
   *status = CABLE_ERR_ALLOC;
   colloc_newton *nw = calloc(1, sizeof *nw);
   if (!nw) return NULL;
@@ -131,7 +137,8 @@ colloc_newton *colloc_newton_alloc(colloc_system *sys, const cable_constants *c,
   } else {
     nw->A = SUNMat_Colloc(nw->J, nw->ctx);
     if (nw->A) nw->LS = SUNLinSol_Colloc(nw->x, nw->A, nw->ctx);
-    if (nw->LS) abd_solver_set_threads(SUNLinSol_Colloc_Solver(nw->LS), cable_threads(c));
+    if (nw->LS && t) abd_solver_use_team(SUNLinSol_Colloc_Solver(nw->LS), t);
+    else if (nw->LS) abd_solver_set_threads(SUNLinSol_Colloc_Solver(nw->LS), cable_threads(c));
     /* the continuation's tangent comes with every Newton solve
        (colloc_newton_tangent_unit); off when there is no room for it */
     if (nw->LS) SUNLinSol_Colloc_SolveLastUnit(nw->LS, 1);

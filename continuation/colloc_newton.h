@@ -23,6 +23,10 @@
 typedef struct colloc_newton colloc_newton;
 
 colloc_newton *colloc_newton_alloc(colloc_system *sys, const cable_constants *c, int *status);
+/* The same with the caller's thread team t for the structured solver (t NULL:
+ * its own, of cable_threads(c) threads); t outlives the solver. */
+colloc_newton *colloc_newton_alloc_team(colloc_system *sys, const cable_constants *c, struct cable_team *t,
+                                        int *status);
 void colloc_newton_free(colloc_newton *nw);
 
 /* Solve F(x) = 0 starting from x (overwritten with the solution).

@@ -23,6 +23,12 @@ static void *xcalloc(size_t n, size_t size, int *fail)
 colloc_system *colloc_system_alloc(const cable_problem *pb, const cable_constants *c,
                                    int ntst, int ncol, const int *icp, int nfpr, int *status)
 {
+  return colloc_system_alloc_team(pb, c, ntst, ncol, icp, nfpr, NULL, status);
+}
+
+colloc_system *colloc_system_alloc_team(const cable_problem *pb, const cable_constants *c, int ntst, int ncol,
+                                        const int *icp, int nfpr, struct cable_team *t, int *status)
+{
   *status = CABLE_ERR_INPUT;
   if (!pb || !pb->func || ntst < 1 || nfpr < 1 || nfpr > CABLE_MAX_ICP) return NULL;
   if (nfpr != pb->nbc + pb->nint - pb->ndim + 1) return NULL;
@@ -69,7 +75,12 @@ colloc_system *colloc_system_alloc(const cable_problem *pb, const cable_constant
     w->dfdp = xcalloc((size_t)nd * (size_t)np, sizeof(double), &fail);
     w->par = xcalloc((size_t)np, sizeof(double), &fail);
   }
-  if (!fail && s->nwork > 1 && !(s->team = cable_team_alloc(s->nwork))) fail = 1;
+  if (!fail && s->nwork > 1 && t && cable_team_size(t) == s->nwork) {
+    s->team = t;
+    s->team_borrowed = 1;
+  } else if (!fail && s->nwork > 1 && !(s->team = cable_team_alloc(s->nwork))) {
+    fail = 1;
+  }
   s->w_fb = xcalloc((size_t)nb, sizeof(double), &fail);
   s->w_fbp = xcalloc((size_t)nb, sizeof(double), &fail);
   s->w_dbc = xcalloc((size_t)nb * (size_t)(2 * nd + np), sizeof(double), &fail);
@@ -103,7 +114,7 @@ void colloc_system_free(colloc_system *s)
                     s->w_fb, s->w_fbp, s->w_dbc, s->w_fi,
                     s->w_fip, s->w_dint, s->w_uold, s->w_udot, s->w_upold, s->w_parp};
   for (size_t i = 0; i < sizeof bufs / sizeof bufs[0]; i++) free(bufs[i]);
-  cable_team_free(s->team);
+  if (!s->team_borrowed) cable_team_free(s->team);
   for (int k = 0; s->work && k < s->nwork; k++) {
     colloc_work *w = &s->work[k];
     double *wb[] = {w->u, w->du, w->f, w->fp, w->dfdu, w->dfdp, w->par};

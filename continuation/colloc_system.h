@@ -66,7 +66,8 @@ typedef struct colloc_system {
      results do not depend on the number of threads. */
   int nwork;
   colloc_work *work;          /* [nwork] (owned) */
-  struct cable_team *team;    /* owned; NULL when nwork = 1 */
+  struct cable_team *team;    /* NULL when nwork = 1 */
+  int team_borrowed;          /* 1: the caller's (colloc_system_alloc_team), not freed here */
   /* workspace (owned) */
   double *w_u, *w_fb, *w_fbp, *w_dbc;
   double *w_fi, *w_fip, *w_dint, *w_uold, *w_udot, *w_upold;
@@ -76,6 +77,11 @@ typedef struct colloc_system {
 /* nfpr = nbc + nint - ndim + 1 free parameters icp[0..nfpr-1]. */
 colloc_system *colloc_system_alloc(const cable_problem *pb, const cable_constants *c,
                                    int ntst, int ncol, const int *icp, int nfpr, int *status);
+/* The same with the caller's thread team t (may be NULL), used when its size
+ * is the system's worker count (else the system builds its own); t outlives
+ * the system. */
+colloc_system *colloc_system_alloc_team(const cable_problem *pb, const cable_constants *c, int ntst, int ncol,
+                                        const int *icp, int nfpr, struct cable_team *t, int *status);
 void colloc_system_free(colloc_system *s);
 
 /* Uniform mesh. */

@@ -69,6 +69,60 @@ int cable_constants_consistent(const cable_constants *c, int npar, cable_error *
   return 0;
 }
 
+int cable_int_range_msg(long v, double lo, double hi, char *msg, size_t len)
+{
+  if ((double)v >= lo && (double)v <= hi) return 0;
+  if (hi >= (double)CABLE_CK_BIG)
+    snprintf(msg, len, "must be an integer >= %d, got %ld", (int)lo, v);
+  else
+    snprintf(msg, len, "must be an integer in %d..%d, got %ld", (int)lo, (int)hi, v);
+  return 1;
+}
+
+/* which kinds of the key table cable_constants_int_ranges checks: 1 the
+   range, 2 the range or 0 */
+#define RANGE_INT 1
+#define RANGE_NPAR 1
+#define RANGE_STAB 1
+#define RANGE_DIM 2
+#define RANGE_IPS 0
+#define RANGE_ISW 0
+#define RANGE_REAL 0
+#define RANGE_POS 0
+#define RANGE_DS 0
+#define RANGE_STR 0
+#define RANGE_NAME 0
+#define RANGE_NAMES 0
+#define RANGE_PAR 0
+#define RANGE_IRS 0
+#define RANGE_ICP 0
+#define RANGE_THL 0
+#define RANGE_THU 0
+#define RANGE_UZR 0
+#define RANGE_UZSTOP 0
+#define RANGE_STOP 0
+#define RANGE_LINSOLVER 0
+/* the value of an integer kind's field (0 for the others, never read) */
+#define FIELD_1(c, f) (long)(c)->f
+#define FIELD_2(c, f) (long)(c)->f
+#define FIELD_0(c, f) 0L
+#define FIELD_(r, c, f) FIELD_##r(c, f)
+#define FIELD(r, c, f) FIELD_(r, c, f)
+
+int cable_constants_int_ranges(const cable_constants *c, char *msg, size_t len)
+{
+  char m[160];
+#define RANGE_ROW(key, field, kind, who, def, lo, hi, line)                                         \
+  if (RANGE_##kind) {                                                                          \
+    long v = FIELD(RANGE_##kind, c, field);                                                   \
+    if (!(RANGE_##kind == 2 && v == 0) && cable_int_range_msg(v, lo, hi, m, sizeof m))          \
+      return snprintf(msg, len, "%s: %s", #key, m), CABLE_ERR_INPUT;                          \
+  }
+  CABLE_CONSTANTS_KEYS(RANGE_ROW)
+#undef RANGE_ROW
+  return 0;
+}
+
 int cable_ext_alloc_check(const char *fn, const cable_problem *pb, const cable_constants *c, char *msg, size_t len)
 {
   if (!pb || !c) {

@@ -18,6 +18,18 @@
  * at most CABLE_NAMES_MAX is used). */
 int cable_constants_consistent(const cable_constants *c, int npar, cable_error *err);
 
+/* The one wording of an integer key outside its range (the key table's lo,
+ * hi; hi = CABLE_CK_BIG: no upper bound), for the parser's file:line:key
+ * messages and the engine's check alike: 0 when lo <= v <= hi, else 1 with
+ * "must be an integer >= lo, got v" or "... in lo..hi, got v" in msg. */
+int cable_int_range_msg(long v, double lo, double hi, char *msg, size_t len);
+
+/* The ranges of the integer keys (the table's INT, NPAR and STAB rows; DIM
+ * rows may also be 0, "the problem's") of constants filled by hand, the
+ * rules the parser applies to a file: 0, or CABLE_ERR_INPUT with
+ * "KEY: must be an integer ..." in msg. */
+int cable_constants_int_ranges(const cable_constants *c, char *msg, size_t len);
+
 /* The common arguments of an extended problem's alloc (cable_fold_alloc,
  * cable_bpcont_alloc): pb and c given, c consistent for pb's parameters.
  * 0, or CABLE_ERR_NULL or the consistency status with msg (fn names the call). */

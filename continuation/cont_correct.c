@@ -77,8 +77,8 @@ static int pvls_at(cable_cont *cc, const double *x)
     sol->par[s->icp[q]] = p[q];
     sol->icp[q] = s->icp[q];
   }
-  sol->pvls_icp = cc->c.icp;
-  sol->pvls_nicp = cc->c.nicp;
+  sol->pvls_icp = cc->c->icp;
+  sol->pvls_nicp = cc->c->nicp;
   sol->err_est = -1.0;
   return cc->pb->pvls(sol, sol->par, cc->pb->params);
 }
@@ -86,15 +86,15 @@ static int pvls_at(cable_cont *cc, const double *x)
 void cont_tests_fill(cable_cont *cc, const double *x, const double *xdot, cont_tests *tf)
 {
   tf->lp = xdot[cc->n - cc->nfpr];
-  int pvst = cc->pvsol && cc->c.nuzr > 0 ? pvls_at(cc, x) : 1;
+  int pvst = cc->pvsol && cc->c->nuzr > 0 ? pvls_at(cc, x) : 1;
   int pv = pvst == 0;
   if (pvst < 0 && !cc->pvls_fatal) cc->pvls_fatal = pvst;   /* fatal: reported when the point is stored */
-  for (int k = 0; k < cc->c.nuzr; k++) {
-    int j = cc->c.uzr[k].par;
+  for (int k = 0; k < cc->c->nuzr; k++) {
+    int j = cc->c->uzr[k].par;
     double v = param_value(cc, x, j);
     int free_par = 0;
     for (int q = 0; q < cc->nfpr; q++) free_par |= cc->sys->icp[q] == j;
     if (pv && !free_par) v = cc->pvsol->par[j];
-    tf->uz[k] = v - cc->c.uzr[k].value;
+    tf->uz[k] = v - cc->c->uzr[k].value;
   }
 }

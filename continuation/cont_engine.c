@@ -70,6 +70,7 @@ void cable_cont_free(cable_cont *cc)
   colloc_system_free(cc->sys);
   colloc_jac_free(cc->J);
   abd_solver_free(cc->abd);
+  cable_team_free(cc->team);   /* after the three that borrowed it */
   double *v[] = {cc->x, cc->xdot, cc->xp, cc->xdotp, cc->xt, cc->xdott, cc->w1, cc->w2, cc->w3,
                  cc->xlo, cc->xhi, cc->svec, cc->umax, cc->xq, cc->xdotq};
   for (size_t i = 0; i < sizeof v / sizeof v[0]; i++) free(v[i]);
@@ -91,6 +92,10 @@ static int check_input(const cable_problem *pb, const cable_constants *c, char *
   if (pb->ndim < 1 || pb->nbc < 0 || pb->nint < 0 || pb->npar < 0)
     return snprintf(msg, len, "problem '%s': NDIM=%d, NBC=%d, NINT=%d, npar=%d (need NDIM >= 1, the others >= 0)",
                     pb->name ? pb->name : "?", pb->ndim, pb->nbc, pb->nint, pb->npar), CABLE_ERR_INPUT;
+  /* NTST, NCOL and the other integer keys: the key table's ranges, the
+     parser's rules for a file (constants filled by hand get here unchecked) */
+  int rc = cable_constants_int_ranges(c, msg, len);
+  if (rc) return rc;
   if ((double)pb->ndim * ((double)c->ntst * c->ncol + 1) + pb->nbc + pb->nint > (double)(INT_MAX / 16) ||
       pb->npar > INT_MAX / 16)
     return snprintf(msg, len, "problem '%s' with NTST=%d, NCOL=%d: NDIM=%d, NBC=%d, NINT=%d, npar=%d are too large",
@@ -110,9 +115,6 @@ static int check_input(const cable_problem *pb, const cable_constants *c, char *
   for (int k = 0; k < c->nicp; k++)
     if (c->icp[k] < 0 || c->icp[k] >= npar)
       return snprintf(msg, len, "ICP entry %d is outside 1..NPAR=%d", c->icp[k] + 1, npar), CABLE_ERR_INPUT;
-  if (c->ncol < CABLE_NCOL_MIN || c->ncol > CABLE_NCOL_MAX)
-    return snprintf(msg, len, "NCOL=%d outside %d..%d", c->ncol, CABLE_NCOL_MIN, CABLE_NCOL_MAX), CABLE_ERR_INPUT;
-  if (c->ntst < 1) return snprintf(msg, len, "NTST=%d must be positive", c->ntst), CABLE_ERR_INPUT;
   if (!(c->dsmin > 0) || !(c->dsmax >= c->dsmin) || !(fabs(c->ds) > 0))
     return snprintf(msg, len, "need 0 < DSMIN <= DSMAX and DS != 0"), CABLE_ERR_INPUT;
   if (c->epsl <= 0 || c->epsu <= 0 || c->epss <= 0) return snprintf(msg, len, "EPSL, EPSU, EPSS must be positive"), CABLE_ERR_INPUT;
@@ -154,21 +156,33 @@ cable_cont *cable_cont_alloc(const cable_problem *pb, const cable_constants *c, 
     return NULL;
   }
   cc->pb = pb;
-  cc->c = *c;
+  cc->c = c;   /* by pointer: the caller keeps it (cable_cont.h) */
   cc->ndim = pb->ndim;
   cc->npar = c->npar > pb->npar ? c->npar : pb->npar;
   cc->nfpr = pb->nbc + pb->nint - pb->ndim + 1;
   cc->ntst = c->ntst;
   cc->ncol = c->ncol;
-  cc->sys = colloc_system_alloc(pb, c, c->ntst, c->ncol, c->icp, cc->nfpr, &rc);
+  /* One thread team per handle, of the run's thread count: the Newton
+     solver's and the tangent's factorisations and solves and (when the
+     problem's loops have as many workers) the residual and Jacobian loops use
+     it in turn.  Every team job ends on the engine's thread before the next
+     starts and none starts another (no nesting), and a loop's partition
+     depends only on the team's size: the same bits as with a team each. */
+  int nthreads = cable_threads(c);
+  if (nthreads > 1 && !(cc->team = cable_team_alloc(nthreads))) {
+    rc = CABLE_ERR_ALLOC;
+    goto fail;
+  }
+  cc->sys = colloc_system_alloc_team(pb, c, c->ntst, c->ncol, c->icp, cc->nfpr, cc->team, &rc);
   if (!cc->sys) goto fail;
   cc->n = cc->sys->n;
-  cc->nw = colloc_newton_alloc(cc->sys, c, &rc);
+  cc->nw = colloc_newton_alloc_team(cc->sys, c, cc->team, &rc);
   if (!cc->nw) goto fail;
   rc = CABLE_ERR_ALLOC;
   cc->J = colloc_jac_alloc(cc->ndim, cc->ntst, cc->ncol, cc->nfpr, pb->nbc, pb->nint);
   cc->abd = abd_solver_alloc(cc->ndim, cc->ntst, cc->ncol, cc->nfpr, pb->nbc, pb->nint);
-  abd_solver_set_threads(cc->abd, cable_threads(c));
+  if (cc->team) abd_solver_use_team(cc->abd, cc->team);
+  else abd_solver_set_threads(cc->abd, nthreads);
   size_t n = (size_t)cc->n;
   cc->x = calloc(n, sizeof(double)); cc->xdot = calloc(n, sizeof(double));
   cc->xp = calloc(n, sizeof(double)); cc->xdotp = calloc(n, sizeof(double));
@@ -221,7 +235,7 @@ static double principal(const cable_cont *cc, const double *x)
  * whose fold curve is even in q). doc/fold-continuation.md. */
 static int start_fixpar(const cable_cont *cc)
 {
-  return (cc->c.isw == 2 || cc->c.isw == -2) && cc->nfpr >= 2 ? 1 : 0;
+  return (cc->c->isw == 2 || cc->c->isw == -2) && cc->nfpr >= 2 ? 1 : 0;
 }
 
 /* A start direction computed at fixed q is oriented as the one at fixed p1
@@ -331,13 +345,13 @@ static int first_point(cable_cont *cc)
     abd_solver_solve(cc->abd, cc->xdot);
     cont_normalize(cc, cc->xdot);
     orient_start_direction(cc, fix);
-    if (cc->c.ds < 0) for (int i = 0; i < cc->n; i++) cc->xdot[i] = -cc->xdot[i];
-    cc->ds = fabs(cc->c.ds);
+    if (cc->c->ds < 0) for (int i = 0; i < cc->n; i++) cc->xdot[i] = -cc->xdot[i];
+    cc->ds = fabs(cc->c->ds);
   } else {
     /* a stored direction; DS < 0 reverses it (AUTO) */
     cont_normalize(cc, cc->xdot);
-    if (cc->c.ds < 0) for (int i = 0; i < cc->n; i++) cc->xdot[i] = -cc->xdot[i];
-    cc->ds = fabs(cc->c.ds);
+    if (cc->c->ds < 0) for (int i = 0; i < cc->n; i++) cc->xdot[i] = -cc->xdot[i];
+    cc->ds = fabs(cc->c->ds);
   }
   /* test functions with the tangent itself as closing row */
   rc = cont_tangent(cc, cc->x, cc->xdot, cc->w3, &cc->tf);
@@ -363,7 +377,7 @@ static int first_point(cable_cont *cc)
      restart, the switched first point at a branch point (ISW = -1) included,
      is not labelled (auto-07p, demo lin: run 2 from BP1 has no EP at PT 1),
      nor is the LP that a fold curve's starting data (ISW = -2) start from */
-  cc->itp = !cc->restart && cc->c.isw != -2 ? CABLE_TY_EP : CABLE_TY_NONE;
+  cc->itp = !cc->restart && cc->c->isw != -2 ? CABLE_TY_EP : CABLE_TY_NONE;
   cc->switch_pending = 0;
   if ((rc = cont_store_solution(cc, cc->itp, 0)) != CABLE_SUCCESS) {
     cc->npt = 0;   /* nothing to store as MX */
@@ -381,10 +395,10 @@ static void check_limits(cable_cont *cc)
   double p0 = principal(cc, cc->x), m = cc->pt.measure;   /* A0, A1 bound IPLT's measure, as in AUTO */
   int end = 0;
   if (cc->uz_stop) end = CABLE_END_UZSTOP;
-  else if (p0 < cc->c.rl0 || p0 > cc->c.rl1 || m < cc->c.a0 || m > cc->c.a1) end = CABLE_END_BOUNDS;
+  else if (p0 < cc->c->rl0 || p0 > cc->c->rl1 || m < cc->c->a0 || m > cc->c->a1) end = CABLE_END_BOUNDS;
   else if (cont_loop_closed(cc)) end = CABLE_END_LOOP;   /* before NMX: the reason that says more */
   else if (cont_loop_known(cc)) end = CABLE_END_LOOP;
-  else if (cc->c.nmx > 0 && cc->npt >= cc->c.nmx) end = CABLE_END_NMX;
+  else if (cc->c->nmx > 0 && cc->npt >= cc->c->nmx) end = CABLE_END_NMX;
   if (!end) return;
   if (end != CABLE_END_UZSTOP && cc->itp == CABLE_TY_NONE) {
     cc->itp = CABLE_TY_EP;
@@ -406,13 +420,13 @@ static void swap_ptr(double **a, double **b)
  * iterations. */
 static void control_step(cable_cont *cc, int it, double ds_taken)
 {
-  if (cc->c.iads <= 0 || cc->npt % cc->c.iads != 0) return;
-  int itnw = cc->c.itnw;
+  if (cc->c->iads <= 0 || cc->npt % cc->c->iads != 0) return;
+  int itnw = cc->c->itnw;
   double a = fabs(ds_taken) > 0 ? fabs(ds_taken) : fabs(cc->ds);
   if (it <= CONT_FAST_ITERS) a *= CONT_GROW_FAST;
   else if (it <= itnw / 2) a *= CONT_GROW;
   else if (it >= itnw - 1) a *= CONT_SHRINK;
-  a = fmin(fmax(a, cc->c.dsmin), cc->c.dsmax);
+  a = fmin(fmax(a, cc->c->dsmin), cc->c->dsmax);
   cc->ds = copysign(a, cc->ds);
 }
 
@@ -442,7 +456,7 @@ static void step_predict(cable_cont *cc, double ds, double *xt)
 {
   const int n = cc->n;
   double c2 = 0.0;
-  if (cc->c.predictor == 2 && cc->npt >= 2 && cc->ds_used * ds > 0.0 &&
+  if (cc->c->predictor == 2 && cc->npt >= 2 && cc->ds_used * ds > 0.0 &&
       fabs(ds) <= CONT_PRED2_MAXRATIO * fabs(cc->ds_used))
     c2 = 0.5 * ds * ds / cc->ds_used;
   for (int i = 0; i < n; i++) xt[i] = cc->x[i] + ds * cc->xdot[i];
@@ -565,8 +579,8 @@ int cont_step(cable_cont *cc)
       cc->ended = 1;
       return cc->end_status = rc;
     }
-    if (fabs(ds_step) <= cc->c.dsmin * (1.0 + CONT_DSMIN_SLACK)) {
-      cont_set_error(cc, "no convergence with DSMIN = %g after point %d (%s)", cc->c.dsmin, cc->npt,
+    if (fabs(ds_step) <= cc->c->dsmin * (1.0 + CONT_DSMIN_SLACK)) {
+      cont_set_error(cc, "no convergence with DSMIN = %g after point %d (%s)", cc->c->dsmin, cc->npt,
                      cc->rejected[0] ? cc->rejected : colloc_newton_message(cc->nw));
       cc->ended = 1;
       cc->itp = CABLE_TY_MX;
@@ -574,7 +588,7 @@ int cont_step(cable_cont *cc)
     }
     if (cc->rejected[0])
       snprintf(cc->note, sizeof cc->note, "step DS = %g rejected: %s", ds_step, cc->rejected);
-    cc->ds = ds_step = copysign(fmax(fabs(ds_step) * CONT_FAIL_SHRINK, cc->c.dsmin), ds_step);
+    cc->ds = ds_step = copysign(fmax(fabs(ds_step) * CONT_FAIL_SHRINK, cc->c->dsmin), ds_step);
   }
   cc->ds_prev = cc->ds_used;
   cc->ds_used = ds_step;
@@ -621,7 +635,7 @@ int cont_step(cable_cont *cc)
     return cc->end_status = rc;
   }
   check_limits(cc);
-  if (!cc->ended && cc->c.iad > 0 && !cc->queued && ++cc->nstep_adapt >= cc->c.iad) {
+  if (!cc->ended && cc->c->iad > 0 && !cc->queued && ++cc->nstep_adapt >= cc->c->iad) {
     cc->nstep_adapt = 0;
     if ((rc = cont_adapt_mesh(cc)) != CABLE_SUCCESS) {
       cc->ended = 1;

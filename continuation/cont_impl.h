@@ -54,9 +54,12 @@ typedef struct cont_loop {
 
 struct cable_cont {
   const cable_problem *pb;      /* not owned */
-  cable_constants c;            /* copy of the constants */
+  const cable_constants *c;     /* the caller's, not owned: alive and unchanged while
+                                   the handle lives (cable_cont.h) */
   int ndim, npar, nfpr, n;
   int ntst, ncol;
+  struct cable_team *team;      /* the handle's one thread team (NULL: one thread), lent to
+                                   sys, nw and abd (cable_cont_alloc) */
   colloc_system *sys;           /* discretisation (mesh, closing equation) */
   colloc_newton *nw;            /* KINSOL Newton solver */
   colloc_jac *J;                /* Newton matrix for tangents and test functions */
@@ -158,7 +161,7 @@ double cont_bp_value(const cable_cont *cc, const cont_tests *t);
  * elastica: BPs at (n pi)^2 with ISP=2, 3, none with ISP=1, 4) */
 static inline int cont_bp_detect(const cable_cont *cc)
 {
-  return cc->c.isp == 2 || cc->c.isp == 3 || cc->c.isp == -2 || cc->c.isp == -3;
+  return cc->c->isp == 2 || cc->c->isp == 3 || cc->c->isp == -2 || cc->c->isp == -3;
 }
 /* seed: a first guess of the arclength of the special point (NAN: none) */
 int cont_locate(cable_cont *cc, int type, int which, double seed);

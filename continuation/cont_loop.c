@@ -37,7 +37,7 @@ static void summary(const cable_cont *cc, double *z)
 {
   const cable_solution *s = cc->sol;
   int k = 0, npts = cable_solution_npts(s);
-  for (int q = 0; q < cc->nfpr; q++) z[k++] = s->par[cc->c.icp[q]];
+  for (int q = 0; q < cc->nfpr; q++) z[k++] = s->par[cc->c->icp[q]];
   for (int i = 0; i < cc->ndim; i++) z[k++] = s->u[i];
   for (int i = 0; i < cc->ndim; i++) z[k++] = s->u[(size_t)(npts - 1) * (size_t)cc->ndim + (size_t)i];
   z[k] = cc->pt.measure;
@@ -92,7 +92,7 @@ int cont_loop_closed(cable_cont *cc)
     if (l->start_lab > 0) snprintf(start, sizeof start, "label %d", l->start_lab);
     else snprintf(start, sizeof start, "its first point");
     cont_set_error(cc, "closed loop: the branch returned to its start (%s, PAR(%d) = %.10g) between points %d "
-                   "and %d; following it further would repeat the loop", start, cc->c.icp[0] + 1, l->z0[0],
+                   "and %d; following it further would repeat the loop", start, cc->c->icp[0] + 1, l->z0[0],
                    cc->npt - 1, cc->npt);
   }
   return closed;
@@ -103,7 +103,7 @@ int cont_loop_closed(cable_cont *cc)
 static void solution_summary(const cable_cont *cc, const cable_solution *s, double *z)
 {
   int k = 0, npts = cable_solution_npts(s);
-  for (int q = 0; q < cc->nfpr; q++) z[k++] = s->par[cc->c.icp[q]];
+  for (int q = 0; q < cc->nfpr; q++) z[k++] = s->par[cc->c->icp[q]];
   for (int i = 0; i < cc->ndim; i++) z[k++] = s->u[i];
   for (int i = 0; i < cc->ndim; i++) z[k++] = s->u[(size_t)(npts - 1) * (size_t)cc->ndim + (size_t)i];
 }
@@ -111,7 +111,7 @@ static void solution_summary(const cable_cont *cc, const cable_solution *s, doub
 int cable_cont_add_known_point(cable_cont *cc, const cable_solution *s, const char *name)
 {
   if (!cc || !s) return CABLE_ERR_NULL;
-  if (s->ndim != cc->ndim || s->npar <= cc->c.icp[cc->nfpr - 1]) return CABLE_ERR_INPUT;
+  if (s->ndim != cc->ndim || s->npar <= cc->c->icp[cc->nfpr - 1]) return CABLE_ERR_INPUT;
   cont_loop *l = &cc->loop;
   int m = cc->nfpr + 2 * cc->ndim;
   double *k = realloc(l->known, (size_t)(l->nknown + 1) * (size_t)m * sizeof *k);
@@ -139,7 +139,7 @@ int cont_loop_known(cable_cont *cc)
     for (int j = 0; j < m; j++) d = fmax(d, fabs(z[j] - kq[j]) / (1.0 + fabs(kq[j])));
     if (d <= CONT_KNOWN_TOL) {
       cont_set_error(cc, "joins a known branch: the branch point at point %d (PAR(%d) = %.10g) is %s (distance "
-                     "%.1e); following it further would repeat a computed branch", cc->npt, cc->c.icp[0] + 1, z[0],
+                     "%.1e); following it further would repeat a computed branch", cc->npt, cc->c->icp[0] + 1, z[0],
                      l->known_name[q], d);
       return 1;
     }

@@ -152,12 +152,12 @@ int cont_adapt_mesh(cable_cont *cc)
      without singular values (NSV = 0 and no branch-point test) it is skipped:
      the other test functions come from x and xdot (a fifth of the
      factorisations of a run with IAD = 3, doc/benchmarks.md). */
-  int need_factor = cc->c.nsv > 0 || cont_bp_detect(cc) || old.det_sign == 0;
+  int need_factor = cc->c->nsv > 0 || cont_bp_detect(cc) || old.det_sign == 0;
   rc = need_factor ? cont_tangent(cc, cc->x, cc->xdotp, tmp, &cc->tf) : CABLE_SUCCESS;
   if (rc == CABLE_SUCCESS) {
     cont_tests_fill(cc, cc->x, cc->xdot, &cc->tf);
     cc->tf.lp = copysign(fabs(cc->tf.lp), old.lp);
-    for (int k = 0; k < cc->c.nuzr; k++) cc->tf.uz[k] = copysign(fabs(cc->tf.uz[k]), old.uz[k]);
+    for (int k = 0; k < cc->c->nuzr; k++) cc->tf.uz[k] = copysign(fabs(cc->tf.uz[k]), old.uz[k]);
     if (old.det_sign != 0) cc->tf.det_sign = old.det_sign;
   }
 done:
@@ -216,7 +216,7 @@ int cont_store_solution(cable_cont *cc, int itp, int lab)
   /* AUTO's convention: the step is DS times the stored direction, so the
      direction of travel is stored multiplied by the sign of DS (a restart
      with DS < 0 from a run made with DS < 0 goes on, cont_engine.c) */
-  double dsign = cc->c.ds < 0 ? -1.0 : 1.0;
+  double dsign = cc->c->ds < 0 ? -1.0 : 1.0;
   for (size_t i = 0; i < (size_t)npts * (size_t)nd; i++) sol->udot[i] = dsign * cc->xdot[i];
   const double *p = cc->x + (cc->n - cc->nfpr), *pd = cc->xdot + (cc->n - cc->nfpr);
   for (int q = 0; q < cc->nfpr; q++) s->par[s->icp[q]] = p[q];
@@ -229,10 +229,10 @@ int cont_store_solution(cable_cont *cc, int itp, int lab)
   sol->itp = itp;
   sol->lab = lab;
   sol->bp_kind = itp == CABLE_TY_BP ? cc->bp_kind : CABLE_BP_UNKNOWN;
-  sol->isw = cc->c.isw;
+  sol->isw = cc->c->isw;
   sol->err_est = cont_error_estimate(cc, cc->x);
-  sol->pvls_icp = cc->c.icp;   /* PVLS computes only the columns the run prints */
-  sol->pvls_nicp = cc->c.nicp;
+  sol->pvls_icp = cc->c->icp;   /* PVLS computes only the columns the run prints */
+  sol->pvls_nicp = cc->c->nicp;
   sol->pvls_ds = cc->ds_used;
   sol->pvls_fld = cc->tf.lp;
   sol->pvls_bif = cont_bp_value(cc, &cc->tf);
@@ -250,7 +250,7 @@ int cont_store_solution(cable_cont *cc, int itp, int lab)
   /* an extended problem's columns cover its first NDM components (AUTO's
      NDM: a fold's u, not its null vector) */
   int nd_all = nd;
-  if (cc->c.ndm > 0 && cc->c.ndm < nd) nd = cc->c.ndm;
+  if (cc->c->ndm > 0 && cc->c->ndm < nd) nd = cc->c->ndm;
   double l2 = 0.0;
   for (int i = 0; i < nd; i++) cc->umax[i] = sol->u[i];
   for (int j = 0; j < s->ntst; j++) {
@@ -271,11 +271,11 @@ int cont_store_solution(cable_cont *cc, int itp, int lab)
   pt->lab = lab;
   pt->ndim = nd;
   pt->npar = cc->npar;
-  pt->nicp = cc->c.nicp;
-  pt->icp = cc->c.icp;
+  pt->nicp = cc->c->nicp;
+  pt->icp = cc->c->icp;
   pt->par = sol->par;
   pt->l2norm = sqrt(l2);
-  pt->measure = cable_solution_measure(sol, cc->c.iplt, pt->l2norm);
+  pt->measure = cable_solution_measure(sol, cc->c->iplt, pt->l2norm);
   pt->umax = cc->umax;
   pt->newton_iters = cc->newton_iters;
   pt->ds = cc->ds_used;

@@ -59,7 +59,7 @@ int cont_set_start(cable_cont *cc, const cable_solution *start)
     if ((rc = cont_load_solution(cc, start)) != CABLE_SUCCESS) return rc;
     cc->restart = 1;
     cc->loop.start_lab = start->lab;
-    if (cc->c.isw == -1) {
+    if (cc->c->isw == -1) {
       if (start->itp % 10 != CABLE_TY_BP) {
         cont_set_error(cc, "ISW=-1 needs a branch point (BP) to start from; label %d has type %d",
                        start->lab, start->itp);
@@ -75,9 +75,9 @@ int cont_set_start(cable_cont *cc, const cable_solution *start)
      A branch switch (ISW=-1) happens at the stored branch point itself,
      which a changed parameter would move: refused. */
   cc->restart_moved = 0;
-  for (int k = 0; k < cc->c.npar_override; k++) {
-    int i = cc->c.par_override[k].index;
-    double v = cc->c.par_override[k].value;
+  for (int k = 0; k < cc->c->npar_override; k++) {
+    int i = cc->c->par_override[k].index;
+    double v = cc->c->par_override[k].value;
     if (start && s->par[i] != v) {
       if (cc->switch_pending) {
         cont_set_error_key(cc, "PAR",
@@ -144,28 +144,28 @@ static int emit(cable_cont *cc, const cable_sink *sink, int ibr, int *lab)
 {
   cable_point *pt = &cc->pt;
   int labelled = pt->itp != CABLE_TY_NONE;
-  if (!labelled && cc->c.npr > 0 && pt->pt % cc->c.npr == 0) {
+  if (!labelled && cc->c->npr > 0 && pt->pt % cc->c->npr == 0) {
     pt->itp = CABLE_TY_RG;
     labelled = 1;
   }
   /* AUTO's types on a fold curve or a curve of branch points (ISW = 2): the
      point's type + 10 ITPST */
-  if (cc->c.itpst > 0 && pt->itp != CABLE_TY_NONE && abs(pt->itp) < 10)
-    pt->itp += pt->itp > 0 ? 10 * cc->c.itpst : -10 * cc->c.itpst;
+  if (cc->c->itpst > 0 && pt->itp != CABLE_TY_NONE && abs(pt->itp) < 10)
+    pt->itp += pt->itp > 0 ? 10 * cc->c->itpst : -10 * cc->c->itpst;
   pt->ibr = ibr;
   pt->lab = labelled ? (*lab)++ : 0;
   pt->note = cc->note[0] ? cc->note : NULL;
   cc->sol->ibr = ibr;
   cc->sol->lab = pt->lab;
   cc->sol->itp = pt->itp;
-  if (cc->c.stab) stab_point(cc, sink);
+  if (cc->c->stab) stab_point(cc, sink);
   int stop = sink && sink->point ? sink->point(sink->ctx, pt) : 0;
   if (labelled && sink && sink->solution) sink->solution(sink->ctx, pt, cc->sol);
   if (sink && sink->diag) {
     char line[320];
     snprintf(line, sizeof line,
              "BR %d PT %d TY %s LAB %d PAR(%d)=%.10g ds=%.4g newton=%d err=%.3g det=%+d sv1=%.3e sv2=%.3e", ibr,
-             pt->pt, type_name(pt->itp), pt->lab, cc->c.icp[0] + 1, pt->par[cc->c.icp[0]], pt->ds,
+             pt->pt, type_name(pt->itp), pt->lab, cc->c->icp[0] + 1, pt->par[cc->c->icp[0]], pt->ds,
              pt->newton_iters, pt->err_est, pt->det_sign, pt->sv1, pt->sv2);
     sink->diag(sink->ctx, line);
     if (pt->stab) {
@@ -184,8 +184,8 @@ static int stop_reached(const cable_cont *cc, int *seen)
 {
   if (cc->ended || cc->npt <= 1 || cc->pt.itp == CABLE_TY_NONE) return 0;
   int itp = cc->pt.itp, base = itp >= 0 ? itp % 10 : -((-itp) % 10);
-  for (int k = 0; k < cc->c.nstop; k++)
-    if (base == cc->c.stop_on[k] && ++seen[k] == cc->c.stop_count[k]) return 1;
+  for (int k = 0; k < cc->c->nstop; k++)
+    if (base == cc->c->stop_on[k] && ++seen[k] == cc->c->stop_count[k]) return 1;
   return 0;
 }
 
@@ -198,7 +198,7 @@ int cont_run(cable_cont *cc, const cable_sink *sink, int ibr, int first_label, i
     return CABLE_ERR_STATE;
   }
   int lab = first_label, rc;
-  int seen[sizeof cc->c.stop_on / sizeof cc->c.stop_on[0]] = {0};
+  int seen[sizeof cc->c->stop_on / sizeof cc->c->stop_on[0]] = {0};
   while ((rc = cont_step(cc)) == CABLE_SUCCESS) {
     if (emit(cc, sink, ibr, &lab)) {
       rc = CABLE_ERR_INTERRUPTED;   /* the caller stopped the run (its files stay as they were) */

@@ -46,7 +46,7 @@ static double bp_test(const cont_tests *t) { return t->det_sign * (t->sv1 > 0 ? 
 
 double cont_bp_value(const cable_cont *cc, const cont_tests *t)
 {
-  return (cont_bp_detect(cc) || cc->c.nsv > 0) ? bp_test(t) : 0.0;
+  return (cont_bp_detect(cc) || cc->c->nsv > 0) ? bp_test(t) : 0.0;
 }
 
 static double test_value(const cont_tests *t, int type, int which)
@@ -76,9 +76,9 @@ static int find_event(const cable_cont *cc, const cont_tests *a, const cont_test
       if (f < bestf) { bestf = f; best = TYPE; *which = W; }                \
     }                                                                       \
   } while (0)
-  if (cc->c.ilp > 0 && !uz_only) CONSIDER(CABLE_TY_LP, -1);
+  if (cc->c->ilp > 0 && !uz_only) CONSIDER(CABLE_TY_LP, -1);
   if (cont_bp_detect(cc) && a->det_sign != b->det_sign && !uz_only) CONSIDER(CABLE_TY_BP, -1);
-  for (int k = 0; k < cc->c.nuzr; k++) CONSIDER(CABLE_TY_UZ, k);
+  for (int k = 0; k < cc->c->nuzr; k++) CONSIDER(CABLE_TY_UZ, k);
 #undef CONSIDER
   return best;
 }
@@ -137,9 +137,9 @@ static int locate_accept(cable_cont *cc, int type, int which, double s, const do
        list it) is passed, and any of them may ask to stop */
     cc->uz_hit = which;
     cc->uz_stop = 0;
-    const cable_uzr *z = &cc->c.uzr[which];
-    for (int k = 0; k < cc->c.nuzr; k++) {
-      const cable_uzr *y = &cc->c.uzr[k];
+    const cable_uzr *z = &cc->c->uzr[which];
+    for (int k = 0; k < cc->c->nuzr; k++) {
+      const cable_uzr *y = &cc->c->uzr[k];
       if (y->par != z->par || y->value != z->value) continue;
       ts.uz[k] = copysign(fabs(ts.uz[k]), test_value(&cc->tft, CABLE_TY_UZ, k));
       cc->uz_stop |= y->stop;
@@ -195,7 +195,7 @@ static int locate(cable_cont *cc, int type, int which, double seed, int plain)
   memcpy(cc->xlo, cc->x, (size_t)cc->n * sizeof *cc->x);
   memcpy(cc->xhi, cc->xt, (size_t)cc->n * sizeof *cc->xt);
   const char *what = type == CABLE_TY_LP ? "fold" : type == CABLE_TY_BP ? "branch point" : "user zero";
-  double tol = cc->c.epss * fabs(cc->ds_used);
+  double tol = cc->c->epss * fabs(cc->ds_used);
   if (f1 == 0.0) {
     /* The trial point lies exactly on the zero (a UZR value on the step
        grid: the elastica's straight branch from P = 20 with DS = 0.5 lands
@@ -208,7 +208,7 @@ static int locate(cable_cont *cc, int type, int which, double seed, int plain)
     memcpy(xds, cc->xdott, (size_t)cc->n * sizeof *xds);
     return locate_accept(cc, type, which, s1, xs, xds, cc->tft, far);
   }
-  for (int it = 0; it < cc->c.itmx; it++) {
+  for (int it = 0; it < cc->c->itmx; it++) {
     double lo = fmin(s0, s1), hi = fmax(s0, s1);
     /* Dekker's rule: the secant through the last two iterates, kept inside
        the bracket; else the Illinois regula falsi on the bracket; else its
@@ -339,11 +339,11 @@ static int locate(cable_cont *cc, int type, int which, double seed, int plain)
     snprintf(cc->note, sizeof cc->note,
              "branch point located to %.3e of arclength (sigma1 = %.3e, %.3e, sigma2 = %.3e, %.3e at the ends, "
              "sigma1 = %.3e at the step's; ITMX = %d iterations did not shrink the bracket to the tolerance %.3e)",
-             fabs(s1 - s0), fabs(g0), fabs(g1), tlo.sv2, thi.sv2, gstep, cc->c.itmx, tol);
+             fabs(s1 - s0), fabs(g0), fabs(g1), tlo.sv2, thi.sv2, gstep, cc->c->itmx, tol);
     return locate_accept(cc, type, which, s, xs, xds, ts, far);
   }
   cont_set_error(cc, "could not locate the %s within ITMX=%d iterations: it lies within %.3e of arclength", what,
-                 cc->c.itmx, fabs(s1 - s0));
+                 cc->c->itmx, fabs(s1 - s0));
   return CABLE_ERR_NEWTON;
 }
 
@@ -395,7 +395,7 @@ int cont_locate_events(cable_cont *cc, int type, int which, double seed, int *it
   *itp = type;
   if (type == CABLE_TY_BP) cc->bp_kind = CABLE_BP_SIMPLE; /* det changed sign */
   if (CONT_EVENTS_MAX < 2) return rc;
-  if (type == CABLE_TY_BP && cc->c.ilp > 0) {
+  if (type == CABLE_TY_BP && cc->c->ilp > 0) {
     /* At the located BP the tangent is the interpolated one (branch_tangent):
        its principal-parameter component is no fold test when a fold is
        closer than the step's curvature error (a BP 0.005 from an LP: the
@@ -414,7 +414,7 @@ int cont_locate_events(cable_cont *cc, int type, int which, double seed, int *it
      next step, which starts before it, finds it again.  Each round moves
      to a strictly earlier zero, so there are at most as many rounds as test
      functions; the points come out in order along the branch. */
-  int max_rounds = cc->c.nuzr + 2;
+  int max_rounds = cc->c->nuzr + 2;
   for (int round = 0; round < max_rounds; round++) {
     /* the zero just located counts as passed at the located point: mask
        it, and any user zero that vanishes there too (it is at the point,
@@ -422,10 +422,10 @@ int cont_locate_events(cable_cont *cc, int type, int which, double seed, int *it
     cont_tests seen = cc->tft;
     if (type == CABLE_TY_LP) seen.lp = cc->tf.lp;
     else if (type == CABLE_TY_BP) seen.det_sign = cc->tf.det_sign;
-    for (int k = 0; k < cc->c.nuzr; k++)
+    for (int k = 0; k < cc->c->nuzr; k++)
       if (seen.uz[k] == 0.0 ||
-          (type == CABLE_TY_UZ && cc->c.uzr[k].par == cc->c.uzr[which].par &&
-           cc->c.uzr[k].value == cc->c.uzr[which].value))
+          (type == CABLE_TY_UZ && cc->c->uzr[k].par == cc->c->uzr[which].par &&
+           cc->c->uzr[k].value == cc->c->uzr[which].value))
         seen.uz[k] = cc->tf.uz[k];
     int which2 = -1, type2 = find_event(cc, &cc->tf, &seen, round > 0, &which2);
     if (type2 == CABLE_TY_NONE) return CABLE_SUCCESS;
@@ -571,7 +571,7 @@ static int dip_minimise(cable_cont *cc, double lo, double mid, double fm, double
   /* half the location tolerance of a sign change (EPSS |ds|): the vertex
      test below bounds the distance to the minimum by about tol */
   vee_min_result r;
-  vee_min(dip_fn_sq, &ctx, lo, a * a, mid, fm * fm, hi, b * b, 0.5 * cc->c.epss * fabs(cc->ds_used), CONT_DIP_MAXIT,
+  vee_min(dip_fn_sq, &ctx, lo, a * a, mid, fm * fm, hi, b * b, 0.5 * cc->c->epss * fabs(cc->ds_used), CONT_DIP_MAXIT,
           &r);
   double smin = r.s;
   /* the point, its tangent and tests in w1, w2 and ctx.t: from the last

@@ -142,12 +142,12 @@ static void orient_auto(cable_cont *cc, double *v)
   int pick = -1;
   for (int q = 0; q < nfpr && pick < 0; q++) {
     int i = n - nfpr + q;
-    if (fabs(v[i]) / (1.0 + fabs(cc->x[i])) > cc->c.epsl) pick = i;
+    if (fabs(v[i]) / (1.0 + fabs(cc->x[i])) > cc->c->epsl) pick = i;
   }
   size_t last = (size_t)cc->sys->ntst * (size_t)cc->sys->ncol * (size_t)nd; /* the node at t = 1 */
   for (int c = 0; c < nd && pick < 0; c++) {
     size_t i = last + (size_t)c;
-    if (fabs(v[i]) / (1.0 + fabs(cc->x[i])) > cc->c.epsu) pick = (int)i;
+    if (fabs(v[i]) / (1.0 + fabs(cc->x[i])) > cc->c->epsu) pick = (int)i;
   }
   if (pick >= 0 && v[pick] < 0)
     for (int i = 0; i < n; i++) v[i] = -v[i];
@@ -209,9 +209,9 @@ int cont_switch_direction(cable_cont *cc)
                    sv[2]);
     return CABLE_ERR_SWITCH;
   }
-  int angle_set = !isnan(cc->c.bpangle);
-  if (dim == 1 && cc->c.bpsym > 0 && !angle_set) {
-    cont_set_error(cc, "ISW=-1: BPDIR=%d but the kernel at this branch point is %d-dimensional", cc->c.bpsym, dim);
+  int angle_set = !isnan(cc->c->bpangle);
+  if (dim == 1 && cc->c->bpsym > 0 && !angle_set) {
+    cont_set_error(cc, "ISW=-1: BPDIR=%d but the kernel at this branch point is %d-dimensional", cc->c->bpsym, dim);
     return CABLE_ERR_SWITCH;
   }
   int len = snprintf(cc->note, sizeof cc->note, "switching at a %s branch point: singular values %.3e, %.3e, %.3e",
@@ -219,7 +219,7 @@ int cont_switch_direction(cable_cont *cc)
   double *dir = cc->xdot;
   if (dim == 1) {
     memcpy(dir, cc->svec, (size_t)n * sizeof *dir);
-    if (cc->c.bp_orient_auto) {
+    if (cc->c->bp_orient_auto) {
       orient_auto(cc, dir);
     } else {
       /* a deterministic orientation: the largest component (parameters included) positive */
@@ -236,7 +236,7 @@ int cont_switch_direction(cable_cont *cc)
       cont_set_error(cc, "ISW=-1: no solution component distinguishes the two kernel vectors at this double branch point");
       return CABLE_ERR_SWITCH;
     }
-    if (!angle_set && cc->c.bpsym == 0) {
+    if (!angle_set && cc->c->bpsym == 0) {
       /* the branch directions (cont_branches.c); A = cc->J still holds
          [F_x; theta q0^T] with q0 the stored tangent, now in dir */
       double *q0 = cc->w3;
@@ -244,7 +244,7 @@ int cont_switch_direction(cable_cont *cc)
       memcpy(q0, dir, (size_t)n * sizeof *q0);
       int arc = cont_branches_compute(cc, q0, e1, e2, abe, sizeof abe);
       if (arc != CABLE_SUCCESS) return arc;
-      int k = cc->c.branch > 0 ? cc->c.branch : 1;
+      int k = cc->c->branch > 0 ? cc->c->branch : 1;
       if (cc->nbr > 0 && k <= cc->nbr) {
         const cable_branch_dir *b = &cc->br[k - 1];
         for (int i = 0; i < n; i++) dir[i] = b->a[0] * q0[i] + b->a[1] * e1[i] + b->a[2] * e2[i];
@@ -252,21 +252,21 @@ int cont_switch_direction(cable_cont *cc)
                  "towards e2%s)", how, abe, k, b->phi, b->a[0] != 0 ? ", with the known tangent" : "");
         goto oriented;
       }
-      if (cc->c.branch > 1 || cc->nbr > 0) {
+      if (cc->c->branch > 1 || cc->nbr > 0) {
         cont_set_error(cc, "ISW=-1: BRANCH=%d but the bifurcation equations give %d direction%s (%s)", k,
                        cc->nbr < 0 ? 0 : cc->nbr, cc->nbr == 1 ? "" : "s", abe);
         return CABLE_ERR_SWITCH;
       }
       len += snprintf(cc->note + len, sizeof cc->note - (size_t)len, "; %s; the canonical basis instead", abe);
     }
-    double phi = angle_set ? cc->c.bpangle * (CONT_PI / 180.0) : (cc->c.bpsym ? 0.5 * CONT_PI : 0.0);
+    double phi = angle_set ? cc->c->bpangle * (CONT_PI / 180.0) : (cc->c->bpsym ? 0.5 * CONT_PI : 0.0);
     for (int i = 0; i < n; i++) dir[i] = cos(phi) * e1[i] + sin(phi) * e2[i];
     snprintf(cc->note + len, sizeof cc->note - (size_t)len, "; %s; following %g degrees from e1 towards e2", how,
              phi * (180.0 / CONT_PI));
   }
 oriented:
   cont_normalize(cc, dir);
-  if (cc->c.ds < 0) for (int i = 0; i < n; i++) dir[i] = -dir[i];
-  cc->ds = fabs(cc->c.ds);
+  if (cc->c->ds < 0) for (int i = 0; i < n; i++) dir[i] = -dir[i];
+  cc->ds = fabs(cc->c->ds);
   return CABLE_SUCCESS;
 }

@@ -59,7 +59,7 @@ static int tangent_from(cable_cont *cc, abd_solver *abd, colloc_jac *J, const do
   tf->det_sign = sign;
   tf->det_log = logdet;
   tf->sv1 = tf->sv2 = 0.0;
-  if (cc->c.nsv > 0 || cont_bp_detect(cc)) {
+  if (cc->c->nsv > 0 || cont_bp_detect(cc)) {
     double sv[2] = {0, 0};
     /* two values: the second tells a double branch point from a simple one;
        ABD_NOT_CONVERGED (2) still leaves usable estimates */

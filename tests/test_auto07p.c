@@ -58,6 +58,9 @@ static const case_t cases[] = {
   {"bratu_iplt", "bratu.auto", "bratu", {"bratu.f90", "c.bratu", "bratu.auto", NULL}},
   {"bratu_dat", "dat.auto", "bratudat", {"bratu.f90", "bratu.dat", "c.bratudat", "dat.auto"}},
   {"numbering", "numbering.auto", "numbering", {"elastica.f", "c.elastica", "c.numb6", "numbering.auto", NULL}},
+  /* LAB: a run's first label, from STPNT and on a restart; a solution does
+     not carry it (doc/constants.md) */
+  {"labkey", "lab.auto", "lab", {"bratu.f90", "c.bratu", "lab.auto", NULL}},
   /* ISW=2 at an LP: the starting-data run (one EP label, type 59) and the
      fold curve from it both ways (doc/fold-continuation.md, "AUTO's runs") */
   {"foldstart", "foldstart.auto", "bf", {"bf.f90", "c.bf", "foldstart.auto", NULL}},

@@ -497,6 +497,33 @@ static cable_bfile *bcol(const char *path, const char *col, const double **v, in
  * runs br2.f90 for run('br2') although c.br2 says e='nosuch'), and s.NAME
  * only when it exists.  Here c.bratu names another problem and there is no
  * s.bratu: the run must be Bratu's (its fold at lambda* = 3.5138307191). */
+/* One read of a constants file gives the problem's name and the constants:
+ * e as a bare word (the syntax reads it as a string) names the problem
+ * whose parameter names ICP uses.  (A second, lighter reader that ran before
+ * the parser saw only quoted names: ICP = ['lambda'] was an unknown name.) */
+static void test_one_parse(void)
+{
+  char out[8192];
+  FILE *f = fopen(wpath("c.bare"), "w");
+  if (f) {
+    fputs("NDIM = 2, NBC = 2, IPS = 4\nICP = ['lambda']   # lambda: the problem's name for PAR(1)\n"
+          "e = bratu\nNTST = 10, NCOL = 4, JAC = 1\n"
+          "ILP = 1, DS = 0.1, DSMIN = 1e-5, DSMAX = 0.5, NMX = 40, RL1 = 5\n", f);
+    fclose(f);
+  }
+  int rc = cli(out, sizeof out, "run c=bare sv=bare");
+  test_int("e = bratu (a bare word, after ICP = ['lambda']): exit 0", rc, 0);
+  const double *lam;
+  int n;
+  cable_bfile *b = bcol(wpath("b.bare"), "lambda", &lam, &n);
+  double lmax = -1;
+  for (int i = 0; i < n; i++) lmax = lam[i] > lmax ? lam[i] : lmax;
+  /* NTST = 10, NCOL = 4: the fold's discretisation error O(h^8) ~ 1e-8 */
+  test_rel("e = bratu: Bratu's fold", lmax, 3.5138307191251612, 1e-7);
+  cable_bfile_free(b);
+  remove_outputs("bare");
+}
+
 static void test_run_name(void)
 {
   char out[8192];
@@ -613,6 +640,7 @@ int main(int argc, char **argv)
   test_cfile_s_sv();
   test_run_overrides();
   test_run_name();
+  test_one_parse();
   char cmd[4 * PATH_MAX];
   snprintf(cmd, sizeof cmd, "rm -rf '%s'", work);
   (void)!system(cmd);

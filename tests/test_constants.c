@@ -15,6 +15,8 @@
 #include "cable/cable_constants.h"
 #include "harness.h"
 #include "cable/cable_names.h"
+#include "cable/cable_cont.h"
+#include "test_problems.h"
 
 #define CASEDIR "tests/tmp/constants"
 
@@ -374,8 +376,51 @@ static void test_par_update(void)
             st == 0 && c.npar_override == 4 && found[0] == 1 && found[1] == 1 && found[2] == 1 && found[4] == 1);
 }
 
+/* An integer key's range is written once, in the key table: the engine's
+ * check of constants filled by hand gives the parser's words for NTST, NCOL
+ * and the other integer keys, and refuses what a file could not set. */
+static void test_ranges_once(void)
+{
+  const cable_problem *pb = cable_testproblem_bratu();
+  cable_constants c, f;
+  cable_error err, perr_;
+  struct {
+    const char *file, *key, *engine;
+  } cases[] = {
+    {"NTST = -5", "NTST", "NTST: must be an integer >= 1, got -5"},
+    {"NCOL = 9", "NCOL", "NCOL: must be an integer in 2..7, got 9"},
+    {"ILP = 3", "ILP", "ILP: must be an integer in 0..1, got 3"},
+    {"NPR = -1", "NPR", "NPR: must be an integer >= 0, got -1"},
+  };
+  for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+    int pst = cable_constants_parse_string("c.r", cases[k].file, &f, NULL, NULL, 0, &perr_);
+    cable_constants_init(&c);
+    c.ips = 4;
+    c.icp[0] = 0;
+    c.nicp = 1;
+    int value = 0;
+    sscanf(strchr(cases[k].file, '=') + 1, "%d", &value);
+    if (strcmp(cases[k].key, "NTST") == 0) c.ntst = value;
+    if (strcmp(cases[k].key, "NCOL") == 0) c.ncol = value;
+    if (strcmp(cases[k].key, "ILP") == 0) c.ilp = value;
+    if (strcmp(cases[k].key, "NPR") == 0) c.npr = value;
+    int est = cable_cont_check(pb, &c, &err);
+    /* the file's error: key NTST, message "must be ..."; the engine's: "NTST: must be ..." */
+    test_true(cases[k].engine, pst == CABLE_ERR_INPUT && est == CABLE_ERR_INPUT &&
+                                   strcmp(err.msg, cases[k].engine) == 0 && strcmp(perr_.key, cases[k].key) == 0 &&
+                                   strcmp(perr_.msg, strchr(cases[k].engine, ':') + 2) == 0);
+  }
+  cable_constants_init(&c);
+  c.ips = 4;
+  c.icp[0] = 0;
+  c.nicp = 1;
+  test_true("defaults pass the engine's ranges (NDIM, NBC, NINT 0: the problem's)",
+            cable_cont_check(pb, &c, &err) == 0);
+}
+
 int main(void)
 {
+  test_ranges_once();
   test_par_update();
   test_every_key();
   test_bad_cases();

@@ -17,6 +17,7 @@
  * some intervals gives the same status for every thread count; a problem
  * that is not concurrent is evaluated on one thread. */
 #define _GNU_SOURCE 1 /* sched_getaffinity, sched_setaffinity */
+#include <dirent.h>
 #include <math.h>
 #include <sched.h>
 #include <stdio.h>
@@ -430,10 +431,49 @@ static void test_default_threads(void)
   }
   c.nthreads = 3;
   test_int("NTHREADS = 3 as set", cable_threads(&c), 3);
+/* The threads of this process (/proc/self/task). */
+static int process_threads(void)
+{
+  DIR *d = opendir("/proc/self/task");
+  if (!d) return -1;
+  int n = 0;
+  for (struct dirent *e; (e = readdir(d)) != NULL;) n += e->d_name[0] != '.';
+  closedir(d);
+  return n;
+}
+
+/* One thread team per engine handle: NTHREADS = 3 on a concurrent problem
+ * (the braid knot: its residual and Jacobian loops run on the team too)
+ * starts 2 workers, not 2 for each of the Newton solver, the tangent solver
+ * and the collocation loops. */
+static void test_one_team(void)
+{
+  braid_start_params sp;
+  braid_start_params_init(&sp, BRAID_START_TORUS, 7, 1, 0.0051364907419, 1.98889, 0.0);
+  cable_problem pb;
+  int ok = braid_start_prepare(&sp) == 0 && braid_problem_instance("braid_knot", &sp, &pb) == 0;
+  test_true("one team: the braid knot is a concurrent problem", ok && pb.concurrent);
+  if (!ok) return;
+  cable_constants c;
+  cable_constants_init(&c);
+  c.ips = 4;
+  const int icp[] = {BP_T, BP_L, BP_L2, BP_EPS21, BP_F};
+  for (int k = 0; k < 5; k++) c.icp[k] = icp[k];
+  c.nicp = 5;
+  c.ntst = 20;
+  c.nthreads = 3;
+  int before = process_threads(), st;
+  cable_cont *cc = cable_cont_alloc(&pb, &c, &st);
+  int during = process_threads();
+  cable_cont_free(cc);
+  int after = process_threads();
+  test_int("one team: NTHREADS=3 starts 2 worker threads per handle", during - before, 2);
+  test_int("one team: cable_cont_free ends them", after, before);
 }
 
 int main(void)
 {
+  test_one_team();
   test_team();
   test_team_ordered();
   test_matvec();

@@ -84,6 +84,14 @@ static int cv_push(cv *v, cv *item)
 
 /* ---------------------------------------------------------------- context */
 
+/* Each key of cable/cable_constants_keys.h by its row: KEY_NTST ... */
+enum {
+#define KEY_ENUM(key, field, kind, who, def, lo, hi, line) KEY_##key,
+  CABLE_CONSTANTS_KEYS(KEY_ENUM)
+#undef KEY_ENUM
+  KEY_COUNT
+};
+
 typedef struct {
   char key[32];
   int line;
@@ -116,7 +124,14 @@ typedef struct {
   const char *const *parnames;
   int npar_caller;
   const cable_problem *pb;  /* the problem whose keys are accepted (NULL: none) */
-  int line_of[64];          /* line of the statement that set a checked key */
+  /* the problem found while reading (cable_constants_parse_file_resolve):
+     called after pass 1 (which applies e), with e_given or the file's e;
+     keys that are not cable's wait for it (defer: statement indices) */
+  cable_constants_resolve_fn *resolve;
+  void *resolve_ctx;
+  const char *e_given;
+  int defer[STMT_MAX], ndefer;
+  int line_of[KEY_COUNT];   /* line of the statement that set a key (cross-checks) */
   thu_entry thu[THU_MAX];
   int nthu, thu_set, thu_line;
   int applied;              /* statements applied (an empty override is an error) */
@@ -446,20 +461,14 @@ static int parse_value(pctx *x, const char *key, cv **out)
 typedef struct key_desc key_desc;
 typedef int key_apply_fn(pctx *x, const key_desc *d, const stmt *s);
 
-enum { KI_NONE = -1 };
-
 struct key_desc {
   const char *key;
   key_apply_fn *apply;
-  size_t off;        /* offset of the int/double/string field (generic handlers) */
-  double lo, hi;     /* apply_int: accepted range; apply_real: lo > 0 asks for a positive value */
+  size_t off;        /* offset of the int/double/string field (generic readers) */
   int pass;          /* 1: applied before the others (names, NPAR) */
-  int slot;          /* index into pctx.line_of for cross-checks, or KI_NONE */
+  double lo, hi;     /* integer kinds: the accepted range */
+  int id;            /* KEY_... (the row), index of pctx.line_of */
 };
-
-/* Slots of pctx.line_of: keys whose line a cross-check reports. */
-enum { L_RL0, L_RL1, L_A0, L_A1, L_DSMIN, L_DSMAX, L_ICP, L_UZR, L_UZSTOP, L_THL, L_NPAR,
-       L_IPLT, L_NDIM, L_STOP };
 
 static const char *describe(const cv *v, char *buf, size_t len)
 {
@@ -478,12 +487,8 @@ static int int_field(pctx *x, const key_desc *d, const stmt *s, int *out)
   const cv *v = s->value;
   if (v->kind != CV_INT)
     return perr(x, CABLE_ERR_INPUT, s->line, s->key, "must be an integer, got %s", describe(v, b, sizeof b));
-  if ((double)v->i < d->lo || (double)v->i > d->hi) {
-    if (d->hi >= (double)INT_MAX)
-      return perr(x, CABLE_ERR_INPUT, s->line, s->key, "must be an integer >= %d, got %ld", (int)d->lo, v->i);
-    return perr(x, CABLE_ERR_INPUT, s->line, s->key, "must be an integer in %d..%d, got %ld", (int)d->lo,
-                (int)d->hi, v->i);
-  }
+  char m[160];
+  if (cable_int_range_msg(v->i, d->lo, d->hi, m, sizeof m)) return perr(x, CABLE_ERR_INPUT, s->line, s->key, "%s", m);
   *out = (int)v->i;
   return 0;
 }
@@ -520,15 +525,23 @@ static int apply_stab(pctx *x, const key_desc *d, const stmt *s)
   return st;
 }
 
+static int apply_pos(pctx *x, const key_desc *d, const stmt *s);
+
 static int apply_real(pctx *x, const key_desc *d, const stmt *s)
 {
   double val = 0;
   int st = real_value(x, s->key, s->value, s->line, &val);
   if (st) return st;
-  if (d->lo > 0 && !(val > 0))
+  if (d->apply == apply_pos && !(val > 0))
     return perr(x, CABLE_ERR_INPUT, s->line, s->key, "must be positive, got '%s'", s->value->text);
   *(double *)((char *)&x->c + d->off) = val;
   return 0;
+}
+
+/* POS: a real > 0 (apply_real checks the sign for it) */
+static int apply_pos(pctx *x, const key_desc *d, const stmt *s)
+{
+  return apply_real(x, d, s);
 }
 
 static int apply_ips(pctx *x, const key_desc *d, const stmt *s)
@@ -894,7 +907,7 @@ static int apply_string(pctx *x, const key_desc *d, const stmt *s)
   if (st) return st;
   if (strlen(v->text) >= CABLE_NAME_MAX)
     return perr(x, CABLE_ERR_INPUT, s->line, s->key, "longer than %d characters", CABLE_NAME_MAX - 1);
-  if (strpbrk(v->text, "/ \t") && strcmp(s->key, "e") == 0)
+  if (strpbrk(v->text, "/ \t") && d->pass == 1)   /* NAME: the problem's */
     return perr(x, CABLE_ERR_INPUT, s->line, s->key, "a problem name may not contain '/' or blanks: '%s'", v->text);
   snprintf((char *)&x->c + d->off, CABLE_NAME_MAX, "%s", v->text);
   return 0;
@@ -943,63 +956,36 @@ static int apply_linsolver(pctx *x, const key_desc *d, const stmt *s)
 }
 
 #define OFF(f) offsetof(cable_constants, f)
-#define BIG ((double)INT_MAX)
+
+/* A kind of cable/cable_constants_keys.h: its reader, the offset of its field
+ * (for the generic readers INT, REAL, POS, STR; 0 when the reader knows its
+ * fields) and its pass (1: before the other keys, which may use names). */
+#define KIND_INT(f) apply_int, OFF(f), 2
+#define KIND_DIM(f) apply_int, OFF(f), 2
+#define KIND_NPAR(f) apply_int, OFF(f), 1
+#define KIND_IPS(f) apply_ips, OFF(f), 2
+#define KIND_ISW(f) apply_isw, OFF(f), 2
+#define KIND_STAB(f) apply_stab, OFF(f), 2
+#define KIND_REAL(f) apply_real, OFF(f), 2
+#define KIND_POS(f) apply_pos, OFF(f), 2
+#define KIND_DS(f) apply_ds, OFF(f), 2
+#define KIND_STR(f) apply_string, OFF(f), 2
+#define KIND_NAME(f) apply_string, OFF(f), 1
+#define KIND_IRS(f) apply_irs, 0, 2
+#define KIND_ICP(f) apply_icp, 0, 2
+#define KIND_THL(f) apply_thl, 0, 2
+#define KIND_THU(f) apply_thu, 0, 2
+#define KIND_UZR(f) apply_uzr, 0, 2
+#define KIND_UZSTOP(f) apply_uzr, 0, 2
+#define KIND_STOP(f) apply_stop, 0, 2
+#define KIND_PAR(f) apply_par, 0, 2
+#define KIND_NAMES(f) apply_names, 0, 1
+#define KIND_LINSOLVER(f) apply_linsolver, 0, 2
 
 static const key_desc key_table[] = {
-  {"NDIM", apply_int, OFF(ndim), 1, BIG, 2, L_NDIM},
-  {"IPS", apply_ips, OFF(ips), -BIG, BIG, 2, KI_NONE},
-  {"IRS", apply_irs, 0, 0, 0, 2, KI_NONE},
-  {"ILP", apply_int, OFF(ilp), 0, 1, 2, KI_NONE},
-  {"ICP", apply_icp, 0, 0, 0, 2, L_ICP},
-  {"NTST", apply_int, OFF(ntst), 1, BIG, 2, KI_NONE},
-  {"NCOL", apply_int, OFF(ncol), CABLE_NCOL_MIN, CABLE_NCOL_MAX, 2, KI_NONE},
-  {"IAD", apply_int, OFF(iad), 0, BIG, 2, KI_NONE},
-  {"ISP", apply_int, OFF(isp), 0, 4, 2, KI_NONE},
-  {"ISW", apply_isw, OFF(isw), -BIG, BIG, 2, KI_NONE},
-  {"IPLT", apply_int, OFF(iplt), -BIG, BIG, 2, L_IPLT},
-  {"NBC", apply_int, OFF(nbc), 0, BIG, 2, KI_NONE},
-  {"NINT", apply_int, OFF(nint), 0, BIG, 2, KI_NONE},
-  {"NMX", apply_int, OFF(nmx), 0, BIG, 2, KI_NONE},
-  {"RL0", apply_real, OFF(rl0), -1, 0, 2, L_RL0},
-  {"RL1", apply_real, OFF(rl1), -1, 0, 2, L_RL1},
-  {"A0", apply_real, OFF(a0), -1, 0, 2, L_A0},
-  {"A1", apply_real, OFF(a1), -1, 0, 2, L_A1},
-  {"NPR", apply_int, OFF(npr), 0, BIG, 2, KI_NONE},
-  {"DS", apply_ds, OFF(ds), 0, 0, 2, KI_NONE},
-  {"DSMIN", apply_real, OFF(dsmin), 1, 0, 2, L_DSMIN},
-  {"DSMAX", apply_real, OFF(dsmax), 1, 0, 2, L_DSMAX},
-  {"IADS", apply_int, OFF(iads), 0, BIG, 2, KI_NONE},
-  {"EPSL", apply_real, OFF(epsl), 1, 0, 2, KI_NONE},
-  {"EPSU", apply_real, OFF(epsu), 1, 0, 2, KI_NONE},
-  {"EPSS", apply_real, OFF(epss), 1, 0, 2, KI_NONE},
-  {"ITMX", apply_int, OFF(itmx), 1, BIG, 2, KI_NONE},
-  {"ITNW", apply_int, OFF(itnw), 1, BIG, 2, KI_NONE},
-  {"NWTN", apply_int, OFF(nwtn), 1, BIG, 2, KI_NONE},
-  {"JAC", apply_int, OFF(jac), -1, 1, 2, KI_NONE},
-  {"THL", apply_thl, 0, 0, 0, 2, L_THL},
-  {"THU", apply_thu, 0, 0, 0, 2, KI_NONE},
-  {"UZR", apply_uzr, 0, 0, 0, 2, L_UZR},
-  {"UZSTOP", apply_uzr, 0, 0, 0, 2, L_UZSTOP},
-  {"STOP", apply_stop, 0, 0, 0, 2, L_STOP},
-  {"IID", apply_int, OFF(iid), 0, 5, 2, KI_NONE},
-  {"IIS", apply_int, OFF(iis), 0, 3, 2, KI_NONE},
-  {"NPAR", apply_int, OFF(npar), 1, CABLE_NAMES_MAX, 1, L_NPAR},
-  {"parnames", apply_names, 0, 0, 0, 1, KI_NONE},
-  {"unames", apply_names, 0, 0, 0, 1, KI_NONE},
-  {"e", apply_string, OFF(e), 0, 0, 2, KI_NONE},
-  {"s", apply_string, OFF(s), 0, 0, 2, KI_NONE},
-  {"sv", apply_string, OFF(sv), 0, 0, 2, KI_NONE},
-  {"dat", apply_string, OFF(dat), 0, 0, 2, KI_NONE},
-  /* cable extensions */
-  {"LINSOLVER", apply_linsolver, 0, 0, 0, 2, KI_NONE},
-  {"NSV", apply_int, OFF(nsv), 0, BIG, 2, KI_NONE},
-  {"NTHREADS", apply_int, OFF(nthreads), 0, CABLE_THREADS_MAX, 2, KI_NONE},
-  {"BPDIR", apply_int, OFF(bpsym), 0, 1, 2, KI_NONE},
-  {"BPANGLE", apply_real, OFF(bpangle), 0, 0, 2, KI_NONE},
-  {"BRANCH", apply_int, OFF(branch), 0, CABLE_MAX_BRANCHES, 2, KI_NONE},
-  {"PREDICTOR", apply_int, OFF(predictor), 1, 2, 2, KI_NONE},
-  {"STAB", apply_stab, OFF(stab), 0, 1, 2, KI_NONE},
-  {"PAR", apply_par, 0, 0, 0, 2, KI_NONE},
+#define KEY_ROW(key, field, kind, who, def, lo, hi, line) {#key, KIND_##kind(field), lo, hi, KEY_##key},
+  CABLE_CONSTANTS_KEYS(KEY_ROW)
+#undef KEY_ROW
 };
 #define KEY_TABLE_N ((int)(sizeof key_table / sizeof key_table[0]))
 
@@ -1015,7 +1001,6 @@ static const struct {
   const char *why;
 } unsupported_table[] = {
   {"IBR", "branch numbers are assigned by the run driver"},
-  {"LAB", "labels are assigned by the run driver"},
   {"TY", "branch types (TY) are not used by cable's IPS=4 runs"},
   {"SP", "use ILP and ISP to switch fold and branch-point detection on or off"},
   {"U", "starting values (U) belong in the problem's STPNT or a restart solution"},
@@ -1098,6 +1083,16 @@ static int apply_problem_key(pctx *x, const cable_problem_key *k, const stmt *s)
   return 0;
 }
 
+/* 1 when key is one AUTO accepts and cable ignores or refuses (the lists above) */
+static int key_cable_other(const char *key)
+{
+  for (int i = 0; i < IGNORED_N; i++)
+    if (strcmp(ignored_for_bvp[i], key) == 0) return 1;
+  for (int i = 0; i < UNSUPPORTED_N; i++)
+    if (strcmp(unsupported_table[i].key, key) == 0) return 1;
+  return 0;
+}
+
 static int key_check(pctx *x, const char *key, int line)
 {
   if (key_find(key) || cable_problem_key_find(x->pb, key)) return 0;
@@ -1154,8 +1149,12 @@ static int parse_statements(pctx *x)
         return perr(x, CABLE_ERR_PARSE, line, key, "missing '=' after the key");
       return perr(x, CABLE_ERR_PARSE, line, key, "missing '=' after the key (got '%s')", x->tok);
     }
-    st = key_check(x, key, line);
-    if (st) break;
+    if (x->resolve && !key_find(key) && !key_cable_other(key)) {
+      x->defer[x->ndefer++] = x->nst;   /* perhaps the problem's: checked once it is known */
+    } else {
+      st = key_check(x, key, line);
+      if (st) break;
+    }
     for (int i = 0; i < x->nst; i++)
       if (strcmp(x->st[i].key, key) == 0)
         return perr(x, CABLE_ERR_INPUT, line, key, "duplicate key (first set on line %d)", x->st[i].line);
@@ -1176,9 +1175,34 @@ static int parse_statements(pctx *x)
   return st;
 }
 
+/* The problem, once pass 1 has applied e: its names resolve parameters and
+ * its keys are accepted in pass 2; the keys that waited for it are checked
+ * now, in the file's order. */
+static int resolve_problem(pctx *x)
+{
+  const cable_problem *pb = NULL;
+  const char *e = x->e_given && x->e_given[0] ? x->e_given : x->c.e;
+  int st = x->resolve(x->resolve_ctx, e, &pb, x->err);
+  if (st) return st;
+  x->pb = pb;
+  x->parnames = pb ? pb->parnames : NULL;
+  x->npar_caller = pb ? pb->npar : 0;
+  for (int k = 0; k < x->ndefer; k++) {
+    const stmt *d = &x->st[x->defer[k]];
+    snprintf(x->cur_key, sizeof x->cur_key, "%s", d->key);
+    st = key_check(x, d->key, d->line);
+    if (st) return st;
+  }
+  return 0;
+}
+
 static int apply_statements(pctx *x)
 {
-  for (int pass = 1; pass <= 2; pass++)
+  for (int pass = 1; pass <= 2; pass++) {
+    if (pass == 2 && x->resolve) {
+      int st = resolve_problem(x);
+      if (st) return st;
+    }
     for (int i = 0; i < x->nst; i++) {
       const key_desc *d = key_find(x->st[i].key);
       const cable_problem_key *pk = d ? NULL : cable_problem_key_find(x->pb, x->st[i].key);
@@ -1192,7 +1216,7 @@ static int apply_statements(pctx *x)
       int st = d->apply(x, d, &x->st[i]);
       if (st) return st;
       x->applied++;
-      if (d->slot != KI_NONE) x->line_of[d->slot] = x->st[i].line;
+      x->line_of[d->id] = x->st[i].line;
       cable_key_origin *o = strcmp(d->key, "NDIM") == 0 ? &x->c.origin_ndim
                             : strcmp(d->key, "NBC") == 0 ? &x->c.origin_nbc
                             : strcmp(d->key, "NINT") == 0 ? &x->c.origin_nint
@@ -1202,6 +1226,7 @@ static int apply_statements(pctx *x)
         o->line = x->origin ? 0 : x->st[i].line;
       }
     }
+  }
   return 0;
 }
 
@@ -1210,31 +1235,31 @@ static int finalize(pctx *x)
 {
   cable_constants *c = &x->c;
   if (!(c->rl0 < c->rl1))
-    return perr(x, CABLE_ERR_INPUT, x->line_of[L_RL1] ? x->line_of[L_RL1] : x->line_of[L_RL0],
-                x->line_of[L_RL1] ? "RL1" : "RL0", "RL0 (%g) must be less than RL1 (%g)", c->rl0, c->rl1);
+    return perr(x, CABLE_ERR_INPUT, x->line_of[KEY_RL1] ? x->line_of[KEY_RL1] : x->line_of[KEY_RL0],
+                x->line_of[KEY_RL1] ? "RL1" : "RL0", "RL0 (%g) must be less than RL1 (%g)", c->rl0, c->rl1);
   if (!(c->a0 < c->a1))
-    return perr(x, CABLE_ERR_INPUT, x->line_of[L_A1] ? x->line_of[L_A1] : x->line_of[L_A0],
-                x->line_of[L_A1] ? "A1" : "A0", "A0 (%g) must be less than A1 (%g)", c->a0, c->a1);
+    return perr(x, CABLE_ERR_INPUT, x->line_of[KEY_A1] ? x->line_of[KEY_A1] : x->line_of[KEY_A0],
+                x->line_of[KEY_A1] ? "A1" : "A0", "A0 (%g) must be less than A1 (%g)", c->a0, c->a1);
   if (c->dsmin > c->dsmax)
-    return perr(x, CABLE_ERR_INPUT, x->line_of[L_DSMAX] ? x->line_of[L_DSMAX] : x->line_of[L_DSMIN],
-                x->line_of[L_DSMAX] ? "DSMAX" : "DSMIN", "DSMIN (%g) must not exceed DSMAX (%g)", c->dsmin,
+    return perr(x, CABLE_ERR_INPUT, x->line_of[KEY_DSMAX] ? x->line_of[KEY_DSMAX] : x->line_of[KEY_DSMIN],
+                x->line_of[KEY_DSMAX] ? "DSMAX" : "DSMIN", "DSMIN (%g) must not exceed DSMAX (%g)", c->dsmin,
                 c->dsmax);
   for (int k = 0; k < c->nicp; k++)
     if (c->icp[k] >= c->npar)
-      return perr(x, CABLE_ERR_INPUT, x->line_of[L_ICP], "ICP", "PAR(%d) is beyond NPAR=%d", c->icp[k] + 1,
+      return perr(x, CABLE_ERR_INPUT, x->line_of[KEY_ICP], "ICP", "PAR(%d) is beyond NPAR=%d", c->icp[k] + 1,
                   c->npar);
   for (int k = 0; k < c->nuzr; k++)
     if (c->uzr[k].par >= c->npar) {
-      int stop = c->uzr[k].stop && x->line_of[L_UZSTOP];
-      return perr(x, CABLE_ERR_INPUT, x->line_of[stop ? L_UZSTOP : L_UZR], stop ? "UZSTOP" : "UZR",
+      int stop = c->uzr[k].stop && x->line_of[KEY_UZSTOP];
+      return perr(x, CABLE_ERR_INPUT, x->line_of[stop ? KEY_UZSTOP : KEY_UZR], stop ? "UZSTOP" : "UZR",
                   "PAR(%d) is beyond NPAR=%d", c->uzr[k].par + 1, c->npar);
     }
   for (int k = 0; k < c->nthl; k++)
     if (c->thl[k].index >= c->npar)
-      return perr(x, CABLE_ERR_INPUT, x->line_of[L_THL], "THL", "PAR(%d) is beyond NPAR=%d", c->thl[k].index + 1,
+      return perr(x, CABLE_ERR_INPUT, x->line_of[KEY_THL], "THL", "PAR(%d) is beyond NPAR=%d", c->thl[k].index + 1,
                   c->npar);
   if (c->ndim > 0 && (c->iplt < -c->ndim || c->iplt > 3 * c->ndim))
-    return perr(x, CABLE_ERR_INPUT, x->line_of[L_IPLT], "IPLT",
+    return perr(x, CABLE_ERR_INPUT, x->line_of[KEY_IPLT], "IPLT",
                 "IPLT=%d is outside -NDIM..3*NDIM = %d..%d (0: L2-norm; i: max of U(i); -i: min of U(i); NDIM+i: "
                 "integral of U(i); 2*NDIM+i: L2-norm of U(i))", c->iplt, -c->ndim, 3 * c->ndim);
   if (x->thu_set) {
@@ -1289,6 +1314,13 @@ static pctx *pctx_new(const char *file, const char *src, cable_error *err)
   return x;
 }
 
+/* How a parse finds its problem: a resolver (the session's), or none. */
+typedef struct {
+  cable_constants_resolve_fn *fn;
+  void *ctx;
+  const char *e;
+} resolver;
+
 static int run(pctx *x, const char *const *parnames, int npar, const cable_problem *pb)
 {
   x->parnames = parnames;
@@ -1302,11 +1334,16 @@ static int run(pctx *x, const char *const *parnames, int npar, const cable_probl
 }
 
 static int parse_string(const char *name, const char *text, const cable_problem *pb, const char *const *parnames,
-                        int npar, cable_constants *c, cable_names *names, cable_error *err)
+                        int npar, const resolver *rs, cable_constants *c, cable_names *names, cable_error *err)
 {
   if (!text || !c) return cable_error_set(err, CABLE_ERR_INPUT, name, 0, "", "no text to parse");
   pctx *x = pctx_new(name ? name : "", text, err);
   if (!x) return CABLE_ERR_ALLOC;
+  if (rs) {
+    x->resolve = rs->fn;
+    x->resolve_ctx = rs->ctx;
+    x->e_given = rs->e;
+  }
   cable_constants_init(&x->c);
   cable_names_init(&x->names);
   int st = run(x, parnames, npar, pb);
@@ -1326,18 +1363,18 @@ int cable_constants_parse_string(const char *name, const char *text, cable_const
                                  cable_error *err)
 {
   if (!text || !c) return cable_error_set(err, CABLE_ERR_NULL, name, 0, "", "cable_constants_parse_string: %s is NULL", !text ? "the text" : "the constants");
-  return parse_string(name, text, NULL, parnames, npar, c, names, err);
+  return parse_string(name, text, NULL, parnames, npar, NULL, c, names, err);
 }
 
 int cable_constants_parse_string_for(const char *name, const char *text, const cable_problem *pb,
                                      cable_constants *c, cable_names *names, cable_error *err)
 {
   if (!text || !c) return cable_error_set(err, CABLE_ERR_NULL, name, 0, "", "cable_constants_parse_string_for: %s is NULL", !text ? "the text" : "the constants");
-  return parse_string(name, text, pb, pb ? pb->parnames : NULL, pb ? pb->npar : 0, c, names, err);
+  return parse_string(name, text, pb, pb ? pb->parnames : NULL, pb ? pb->npar : 0, NULL, c, names, err);
 }
 
 static int parse_file(const char *path, const cable_problem *pb, const char *const *parnames, int npar,
-                      cable_constants *c, cable_names *names, cable_error *err)
+                      const resolver *rs, cable_constants *c, cable_names *names, cable_error *err)
 {
   if (!path || !c) return cable_error_set(err, CABLE_ERR_NULL, "", 0, "", "%s is NULL", !path ? "the constants file name" : "the constants");
   FILE *f = fopen(path, "rb");
@@ -1360,7 +1397,7 @@ static int parse_file(const char *path, const cable_problem *pb, const char *con
     st = cable_error_set(err, CABLE_ERR_PARSE, path, 0, "", "file contains NUL bytes: not a constants file");
   } else {
     buf[n] = '\0';
-    st = parse_string(path, buf, pb, parnames, npar, c, names, err);
+    st = parse_string(path, buf, pb, parnames, npar, rs, c, names, err);
   }
   free(buf);
   return st;
@@ -1369,13 +1406,21 @@ static int parse_file(const char *path, const cable_problem *pb, const char *con
 int cable_constants_parse_file(const char *path, cable_constants *c, cable_names *names,
                                const char *const *parnames, int npar, cable_error *err)
 {
-  return parse_file(path, NULL, parnames, npar, c, names, err);
+  return parse_file(path, NULL, parnames, npar, NULL, c, names, err);
 }
 
 int cable_constants_parse_file_for(const char *path, const cable_problem *pb, cable_constants *c,
                                    cable_names *names, cable_error *err)
 {
-  return parse_file(path, pb, pb ? pb->parnames : NULL, pb ? pb->npar : 0, c, names, err);
+  return parse_file(path, pb, pb ? pb->parnames : NULL, pb ? pb->npar : 0, NULL, c, names, err);
+}
+
+int cable_constants_parse_file_resolve(const char *path, const char *e, cable_constants_resolve_fn *resolve, void *ctx,
+                                       cable_constants *c, cable_names *names, cable_error *err)
+{
+  if (!resolve) return cable_error_set(err, CABLE_ERR_NULL, path, 0, "", "cable_constants_parse_file_resolve: no resolver");
+  resolver rs = {resolve, ctx, e};
+  return parse_file(path, NULL, NULL, 0, &rs, c, names, err);
 }
 
 static int parse_override(const char *keyvalue, const cable_problem *pb, const char *const *parnames, int npar,

@@ -34,6 +34,8 @@ const cable_solution *pyc_solution_arg(PyObject *branch, int i);
 /* AUTO constants as a dict with AUTO's keys (pycable_constants.c); names
  * name the parameters (NULL: indices); e the problem (NULL: c->e). */
 PyObject *pyc_constants_dict(const cable_constants *c, const cable_names *names, const char *e);
+/* _cable.constants_layout(): the keys of each printed line, from the key table */
+PyObject *pyc_constants_layout(PyObject *self, PyObject *unused);
 
 PyObject *pyc_analyze(PyObject *mod, PyObject *args);
 PyObject *pyc_passages(PyObject *mod, PyObject *args);

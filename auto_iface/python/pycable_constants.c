@@ -6,7 +6,8 @@
  * index), IRS as its label name ('BP1') or number, STOP as ['BP1', ...].
  * A key that is not set is None (AUTO's parseC does the same): NDIM, NBC,
  * NINT until a constants file sets them (0: the problem's), BPANGLE when
- * BPDIR chooses the direction. */
+ * BPDIR chooses the direction.  The keys, their order and their kinds are
+ * the rows of cable/cable_constants_keys.h. */
 #include <math.h>
 #include <string.h>
 
@@ -169,70 +170,95 @@ static PyObject *key_value(double v)
   return PyFloat_FromDouble(v);
 }
 
+/* unames (n->u) or parnames (n->par): shown when one is named */
+static int put_names(PyObject *d, const char *key, const cable_names *n)
+{
+  if (!n) return 0;
+  PyObject *v = names_dict(strcmp(key, "unames") == 0 ? n->u : n->par);
+  if (v && PyDict_Size(v) > 0) return put(d, key, v);
+  Py_XDECREF(v);
+  return v ? 0 : -1;
+}
+
+/* A real that is NaN is not set (BPANGLE when BPDIR chooses): None. */
+static int put_real_or_none(PyObject *d, const char *key, double v)
+{
+  if (!isnan(v)) return put_real(d, key, v);
+  Py_INCREF(Py_None);
+  return put(d, key, Py_None);
+}
+
+/* Each kind of cable/cable_constants_keys.h as a Python value: a new entry
+ * d[key], 0 or -1 with an exception. */
+#define PY_INT(key, f) put_int(d, key, c->f)
+#define PY_NPAR PY_INT
+#define PY_IPS PY_INT
+#define PY_ISW PY_INT
+#define PY_STAB PY_INT
+#define PY_DIM(key, f) put_dim(d, key, c->f, &c->origin_##f)
+#define PY_REAL(key, f) put_real_or_none(d, key, c->f)
+#define PY_POS(key, f) put_real(d, key, c->f)
+#define PY_DS PY_POS
+#define PY_STR(key, f) put_str(d, key, c->f)
+#define PY_NAME(key, f) put_str(d, key, e && e[0] ? e : c->f)
+#define PY_NAMES(key, f) put_names(d, key, n)
+#define PY_PAR(key, f) (c->n##f > 0 ? put(d, key, par_dict(c, n)) : 0)
+#define PY_IRS(key, f) (c->f##_name[0] ? put_str(d, key, c->f##_name) : put_int(d, key, c->f))
+#define PY_ICP(key, f) put(d, key, icp_list(c, n))
+#define PY_THL(key, f) put(d, key, thl_dict(c, n))
+#define PY_THU(key, f) put(d, key, thu_dict(c))
+#define PY_UZR(key, f) put(d, key, uzr_dict(c, n, 0))
+#define PY_UZSTOP(key, f) put(d, key, uzr_dict(c, n, 1))
+#define PY_STOP(key, f) put(d, key, stop_list(c))
+#define PY_LINSOLVER(key, f) put_str(d, key, c->f == CABLE_LINSOLVER_KLU ? "klu" : "condense")
+
 PyObject *pyc_constants_dict(const cable_constants *c, const cable_names *n, const char *e)
 {
   PyObject *d = PyDict_New();
   if (!d) return NULL;
-  int rc = put_str(d, "e", e && e[0] ? e : c->e);
-  if (!rc) rc = put_str(d, "s", c->s);
-  if (!rc) rc = put_str(d, "dat", c->dat);
-  if (!rc) rc = put_str(d, "sv", c->sv);
-  if (!rc && n) {
-    PyObject *u = names_dict(n->u), *p = names_dict(n->par);
-    if (u && PyDict_Size(u) > 0) rc = put(d, "unames", u);
-    else Py_XDECREF(u);
-    if (p && PyDict_Size(p) > 0 && !rc) rc = put(d, "parnames", p);
-    else Py_XDECREF(p);
-    if (!u || !p) rc = -1;
-  }
-  if (!rc && c->npar_override > 0) rc = put(d, "PAR", par_dict(c, n));
-  if (!rc) rc = put_dim(d, "NDIM", c->ndim, &c->origin_ndim);
-  if (!rc) rc = put_int(d, "IPS", c->ips);
-  if (!rc) rc = c->irs_name[0] ? put_str(d, "IRS", c->irs_name) : put_int(d, "IRS", c->irs);
-  if (!rc) rc = put_int(d, "ILP", c->ilp);
-  if (!rc) rc = put(d, "ICP", icp_list(c, n));
-  const struct {
-    const char *key;
-    int v;
-  } ints[] = {{"NTST", c->ntst}, {"NCOL", c->ncol}, {"IAD", c->iad},   {"ISP", c->isp},   {"ISW", c->isw},
-              {"IPLT", c->iplt}, {"NMX", c->nmx},   {"NPR", c->npr},   {"IID", c->iid},   {"ITMX", c->itmx},
-              {"ITNW", c->itnw}, {"NWTN", c->nwtn}, {"JAC", c->jac}};
-  for (size_t k = 0; !rc && k < sizeof ints / sizeof ints[0]; k++) {
-    rc = put_int(d, ints[k].key, ints[k].v);
-    if (!rc && strcmp(ints[k].key, "IPLT") == 0) rc = put_dim(d, "NBC", c->nbc, &c->origin_nbc);
-    if (!rc && strcmp(ints[k].key, "IPLT") == 0) rc = put_dim(d, "NINT", c->nint, &c->origin_nint);
-  }
-  const struct {
-    const char *key;
-    double v;
-  } reals[] = {{"EPSL", c->epsl}, {"EPSU", c->epsu}, {"EPSS", c->epss}, {"DS", c->ds}, {"DSMIN", c->dsmin},
-               {"DSMAX", c->dsmax}};
-  for (size_t k = 0; !rc && k < sizeof reals / sizeof reals[0]; k++) rc = put_real(d, reals[k].key, reals[k].v);
-  if (!rc) rc = put_int(d, "IADS", c->iads);
-  if (!rc) rc = put_int(d, "NPAR", c->npar);
-  if (!rc) rc = put(d, "THL", thl_dict(c, n));
-  if (!rc) rc = put(d, "THU", thu_dict(c));
-  if (!rc) rc = put_int(d, "IIS", c->iis);
-  if (!rc) rc = put(d, "UZR", uzr_dict(c, n, 0));
-  if (!rc) rc = put(d, "UZSTOP", uzr_dict(c, n, 1));
-  if (!rc) rc = put(d, "STOP", stop_list(c));
-  if (!rc) rc = put_real(d, "RL0", c->rl0);
-  if (!rc) rc = put_real(d, "RL1", c->rl1);
-  if (!rc) rc = put_real(d, "A0", c->a0);
-  if (!rc) rc = put_real(d, "A1", c->a1);
-  /* cable's own keys (doc/constants.md) and the problem's keys as set */
-  if (!rc) rc = put_str(d, "LINSOLVER", c->linsolver == CABLE_LINSOLVER_KLU ? "klu" : "condense");
-  if (!rc) rc = put_int(d, "NSV", c->nsv);
-  if (!rc) rc = put_int(d, "NTHREADS", c->nthreads);
-  if (!rc) rc = put_int(d, "BPDIR", c->bpsym);
-  if (!rc) rc = put_int(d, "PREDICTOR", c->predictor);
-  if (!rc && isnan(c->bpangle)) {
-    Py_INCREF(Py_None);
-    rc = put(d, "BPANGLE", Py_None);
-  } else if (!rc) {
-    rc = put_real(d, "BPANGLE", c->bpangle);
-  }
+  int rc = 0;
+  /* the keys in the table's order; those on no printed line (0) are not shown */
+#define PY_ROW(key, field, kind, who, def, lo, hi, line) \
+  if (!rc && (line) > 0) rc = PY_##kind(#key, field);
+  CABLE_CONSTANTS_KEYS(PY_ROW)
+#undef PY_ROW
+  /* the problem's keys as set */
   for (int k = 0; !rc && k < c->npkey && k < CABLE_MAX_PKEYS; k++) rc = put(d, c->pkey[k].name, key_value(c->pkey[k].value));
   if (rc) Py_CLEAR(d);
   return d;
+}
+
+/* The printed layout (python/cable/constants.py): a tuple of lines, each a
+ * tuple of the keys on it, from the table's line column. */
+PyObject *pyc_constants_layout(PyObject *self, PyObject *unused)
+{
+  (void)self;
+  (void)unused;
+  static const struct {
+    const char *key;
+    int line;
+  } rows[] = {
+#define LAYOUT_ROW(key, field, kind, who, def, lo, hi, line) {#key, line},
+      CABLE_CONSTANTS_KEYS(LAYOUT_ROW)
+#undef LAYOUT_ROW
+  };
+  enum { NROWS = (int)(sizeof rows / sizeof rows[0]) };
+  int nlines = 0;
+  for (int k = 0; k < NROWS; k++)
+    if (rows[k].line > nlines) nlines = rows[k].line;
+  PyObject *out = PyTuple_New(nlines);
+  for (int l = 1; out && l <= nlines; l++) {
+    PyObject *keys = PyList_New(0);
+    for (int k = 0; keys && k < NROWS; k++) {
+      if (rows[k].line != l) continue;
+      PyObject *v = PyUnicode_FromString(rows[k].key);
+      if (!v || PyList_Append(keys, v) < 0) Py_CLEAR(keys);
+      Py_XDECREF(v);
+    }
+    PyObject *t = keys ? PyList_AsTuple(keys) : NULL;
+    Py_XDECREF(keys);
+    if (!t) Py_CLEAR(out);
+    else PyTuple_SET_ITEM(out, l - 1, t);
+  }
+  return out;
 }

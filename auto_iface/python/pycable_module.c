@@ -82,6 +82,8 @@ static PyMethodDef module_methods[] = {
      "strands(branch, i) -> the strand centre lines and contact pressures (bytes of doubles)"},
     {"render", (PyCFunction)(void (*)(void))pyc_render, METH_VARARGS,
      "render(branch, i, out, view, size, thicken, pressure, vtp, ply)"},
+    {"constants_layout", pyc_constants_layout, METH_NOARGS,
+     "constants_layout() -> the keys of each line of printed constants (cable/cable_constants_keys.h)"},
     {NULL, NULL, 0, NULL}};
 
 static struct PyModuleDef module_def = {PyModuleDef_HEAD_INIT, "cable._cable",

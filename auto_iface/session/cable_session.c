@@ -223,88 +223,86 @@ typedef struct rp_setup {
   char sfpath[1024];             /* its path */
   char sv[CABLE_NAME_MAX], ap[CABLE_NAME_MAX];
   int mbr, mlab;                 /* AUTO's MBR, MLAB: the restart data's largest branch number and label */
+  rp_problem found;              /* the problem found_e names, looked up once per run (setup_problem) */
+  char found_e[CABLE_NAME_MAX];
 } rp_setup;
 
-static void setup_free(rp_setup *s)
+static void setup_free(cable_session *r, rp_setup *s)
 {
   if (!s->sf_borrowed) cable_sfile_free(s->sf);
   s->sf = NULL;
   s->sf_borrowed = 0;
+  problem_release(r, &s->found);
+  s->found_e[0] = '\0';
 }
 
-/* The problem's parameter names, for constants that name parameters.  A
- * problem that cannot be had (unknown name, rejected plug-in) is reported
- * here, before its constants are read.  Release p after use. */
-static int problem_names(cable_session *r, const char *e, rp_problem *p, const char *const **parnames,
-                         int *npar, cable_error *err)
+/* The problem e names, for its parameter names and keys (no constants yet):
+ * looked up once per run and kept in s until setup_free; *pb NULL for
+ * e "".  A problem that cannot be had (unknown name, rejected plug-in) is
+ * an error naming e. */
+static int setup_problem(cable_session *r, rp_setup *s, const char *e, const cable_problem **pb, cable_error *err)
 {
-  *parnames = NULL;
-  *npar = 0;
-  p->pb = NULL;
-  p->user = 0;
+  *pb = NULL;
   if (!e[0]) return 0;
-  int rc = find_problem(r, e, NULL, 0, p, err);
-  if (rc) return rc;
-  *parnames = p->pb->parnames;
-  *npar = p->pb->npar;
+  if (!s->found.tmpl || strcmp(s->found_e, e) != 0) {
+    problem_release(r, &s->found);
+    s->found_e[0] = '\0';
+    int rc = find_problem(r, e, NULL, 0, &s->found, err);
+    if (rc) return rc;
+    snprintf(s->found_e, sizeof s->found_e, "%s", e);
+  }
+  *pb = s->found.pb;
   return 0;
 }
 
-/* The problem a constants file names (e = 'NAME'), found before parsing it,
- * because the parser needs the problem's parameter names to read ICP=['T'].
- * A light scan: statements start a line or follow ',' or ';'; comments are
- * skipped.  Leaves e unchanged when there is none (the parser then says what
- * it cannot resolve). */
-static void peek_problem_name(const char *path, char *e, size_t len)
+/* The problem instance a run uses: the one setup_problem found, prepared
+ * for c, when what it is does not depend on the constants (a built-in or
+ * plug-in problem); a user's (opt.problems) or an AUTO equation file's is
+ * made for c (its dimensions come from them).  Release out after use. */
+static int run_problem(cable_session *r, rp_setup *s, const cable_constants *c, int from_stpnt, rp_problem *out,
+                       cable_error *err)
 {
-  FILE *f = fopen(path, "r");
-  if (!f) return;
-  char line[1024];
-  while (fgets(line, sizeof line, f)) {
-    char *hash = strpbrk(line, "#!");
-    if (hash) *hash = '\0';
-    for (char *p = line; *p; p++) {
-      if (p != line && p[-1] != ',' && p[-1] != ';' && p[-1] != ' ' && p[-1] != '\t') continue;
-      if (*p != 'e') continue;
-      char *q = p + 1;
-      while (*q == ' ' || *q == '\t') q++;
-      if (*q != '=') continue;
-      q++;
-      while (*q == ' ' || *q == '\t') q++;
-      if (*q != '\'' && *q != '"') continue;
-      char quote = *q++, *end = strchr(q, quote);
-      if (!end || end == q || (size_t)(end - q) >= len) continue;
-      snprintf(e, len, "%.*s", (int)(end - q), q);
-      fclose(f);
-      return;
-    }
-  }
-  fclose(f);
+  if (!s->found.tmpl || s->found.user || s->found.autoeq || strcmp(s->found_e, s->e) != 0)
+    return find_problem(r, s->e, c, from_stpnt, out, err);
+  memset(out, 0, sizeof *out);
+  const cable_problem *inst = NULL;
+  int rc = cable_problem_prepare(s->found.tmpl, c, from_stpnt, &inst, err);
+  if (rc) return rc;
+  out->tmpl = s->found.tmpl;
+  out->pb = inst;
+  return 0;
 }
 
+/* The session's way to find the problem a constants file names, for the
+ * parser (cable_constants_parse_file_resolve). */
+typedef struct {
+  cable_session *r;
+  rp_setup *s;
+} resolve_ctx;
+
+static int resolve_in_session(void *ctx, const char *e, const cable_problem **pb, cable_error *err)
+{
+  const resolve_ctx *x = ctx;
+  return setup_problem(x->r, x->s, e, pb, err);
+}
+
+/* c.NAME, read once: the parser asks for the problem (the run's e, else the
+ * file's) as soon as it knows its name, and reads the rest of the file with
+ * its parameter names and keys. */
 static int read_constants_file(cable_session *r, const char *name, rp_setup *s, int required,
                                cable_error *err)
 {
   char path[1024];
   rp_path(r, "c", name, path, sizeof path);
   if (!required && !file_exists(path)) return 0;
-  if (!s->e[0]) peek_problem_name(path, s->e, sizeof s->e);
-  const char *const *parnames;
-  int npar;
-  rp_problem p;
-  int rc = problem_names(r, s->e, &p, &parnames, &npar, err);
+  resolve_ctx ctx = {r, s};
+  int rc = cable_constants_parse_file_resolve(path, s->e, resolve_in_session, &ctx, &s->c, &s->names, err);
   if (rc) return rc;
-  (void)parnames, (void)npar;
-  rc = cable_constants_parse_file_for(path, p.pb, &s->c, &s->names, err);
+  if (!s->e[0]) snprintf(s->e, sizeof s->e, "%s", s->c.e);
   /* the file's names win; the problem names the rest (sol['lambda']) */
-  if (!rc && p.pb) cable_names_fill(&s->names, p.pb->parnames, p.pb->npar, p.pb->unames, p.pb->ndim);
-  problem_release(r, &p);
-  if (!rc && s->c.e[0] && !s->e[0]) {
-    snprintf(s->e, sizeof s->e, "%s", s->c.e);
-    rc = problem_names(r, s->e, &p, &parnames, &npar, err);
-    if (!rc) cable_names_fill(&s->names, p.pb->parnames, p.pb->npar, p.pb->unames, p.pb->ndim);
-    problem_release(r, &p);
-  }
+  const cable_problem *pb = NULL;
+  rc = setup_problem(r, s, s->e, &pb, err);
+  if (!rc && pb) cable_names_fill(&s->names, pb->parnames, pb->npar, pb->unames, pb->ndim);
   return rc;
 }
 
@@ -455,6 +453,7 @@ static int build_setup(cable_session *r, const cable_run_args *a, rp_setup *s, c
     s->c.irs = 0;
     s->c.irs_name[0] = '\0';
     s->c.npar_override = 0;
+    s->c.lab = 0;   /* nor LAB (bifDiag's nonekeys) */
   } else {
     s->c = r->cur;
     s->names = r->cur_names;
@@ -475,11 +474,10 @@ static int build_setup(cable_session *r, const cable_run_args *a, rp_setup *s, c
     char name[CABLE_NAME_MAX];
     rc = name_arg("run", a->name, name, sizeof name, err);
     if (!rc && !a->e) {
-      rp_problem p;
+      const cable_problem *pb;
       s->e[0] = '\0';
-      rc = find_problem(r, name, NULL, 0, &p, err);
+      rc = setup_problem(r, s, name, &pb, err);
       if (rc == 0) snprintf(s->e, sizeof s->e, "%s", name);
-      problem_release(r, &p);
       if (rc == CABLE_ERR_NOTFOUND) {
         rc = 0;
         cable_error_clear(err);
@@ -531,10 +529,8 @@ static int build_setup(cable_session *r, const cable_run_args *a, rp_setup *s, c
   if (!rc && cfile_sv[0] && !s->sv[0] && !s->ap[0]) snprintf(s->sv, sizeof s->sv, "%s", cfile_sv);
   if (!rc) snprintf(s->c.sv, sizeof s->c.sv, "%s", s->sv);   /* the b-file header says where it went */
   if (rc) return rc;
-  const char *const *parnames;
-  int npar;
-  rp_problem p;
-  rc = problem_names(r, s->e, &p, &parnames, &npar, err);
+  const cable_problem *pb = NULL;
+  rc = setup_problem(r, s, s->e, &pb, err);
   /* A first run from nothing but keywords (no constants file, no start, no
      earlier run or load whose constants the runner keeps) takes its
      problem's recommended constants as defaults, under the keywords: the
@@ -544,18 +540,17 @@ static int build_setup(cable_session *r, const cable_run_args *a, rp_setup *s, c
   if (a->name) rp_path(r, "c", a->name, cpath, sizeof cpath);
   int cfile = a->c || (a->name && file_exists(cpath));
   if (!rc && rec && !cfile && !a->sol_branch && a->nbranch == 0 && !a->s && !cfile_s[0] && !r->cur_e[0]) {
-    rc = cable_constants_parse_override_for(rec, p.pb, &s->c, &s->names, err);
+    rc = cable_constants_parse_override_for(rec, pb, &s->c, &s->names, err);
     if (!rc) fprintf(rp_log(r), "  %s: no constants file: the problem's recommended constants apply under the "
                      "keywords (cable info e=%s)\n", s->e, s->e);
   }
   for (int i = 0; i < a->nover && !rc; i++) {
-    rc = cable_constants_parse_override_for(a->over[i], p.pb, &s->c, &s->names, err);
+    rc = cable_constants_parse_override_for(a->over[i], pb, &s->c, &s->names, err);
     if (rc && err && !err->file[0] && a->over_file) {
       snprintf(err->file, sizeof err->file, "%s", a->over_file);
       err->line = 0;   /* the message quotes the argument */
     }
   }
-  problem_release(r, &p);
   if (rc) return rc;
   snprintf(s->c.e, sizeof s->c.e, "%s", s->e);
   int irs_given = s->c.irs != 0 || s->c.irs_name[0];
@@ -796,7 +791,7 @@ static int engine_run(cable_session *r, rp_setup *s, const char *out_name, int o
   }
   note_double_switch(r, s);
   rp_problem prob;
-  int rc = find_problem(r, s->e, &s->c, s->start == NULL, &prob, err);
+  int rc = run_problem(r, s, &s->c, s->start == NULL, &prob, err);
   if (rc) return rc;
   const cable_problem *pb = prob.pb;
   if (!prob.autoeq) {
@@ -980,8 +975,9 @@ static int engine_run(cable_session *r, rp_setup *s, const char *out_name, int o
   col.out_name = out_name;
   if (guard) guard_where(guard, &col, s->e, out_name);
   cable_sink sink = {&col, collect_point, collect_solution, collect_diag};
-  int next = s->mlab + 1;
-  st = cable_cont_run(cc, &sink, ibr, s->mlab + 1, &next);
+  /* LAB > 0: the run's first label (AUTO's LAB), else NEWLAB's MLAB + 1 */
+  int first_lab = s->c.lab > 0 ? s->c.lab : s->mlab + 1, next = first_lab;
+  st = cable_cont_run(cc, &sink, ibr, first_lab, &next);
   char why[512], end_note[600], fatal[1200] = "";
   /* an error's message, or the closed loop's (it names the point the branch returned to) */
   snprintf(why, sizeof why, "%s", st < 0 || st == CABLE_END_LOOP ? cable_cont_error(cc) : "");
@@ -1143,7 +1139,7 @@ int rp_session_run(cable_session *r, const cable_run_args *a, cable_branch **out
     rc = cable_error_set(err, s.fatal, NULL, 0, NULL, "%s%s%s", s.fatal_msg,
                          s.sv[0] || s.ap[0] ? "; its points are saved to b./s./d." : "", s.sv[0] ? s.sv : s.ap);
   fflush(rp_log(r));
-  setup_free(&s);
+  setup_free(r, &s);
   if (rc && rc != CABLE_ERR_INTERRUPTED) rp_branch_decref(b);
   else *out = b;
   return rc;
@@ -1201,6 +1197,7 @@ static int read_named(cable_session *r, const char *name, rp_result **res, cable
     snprintf(s.c.e, sizeof s.c.e, "%s", e);
   }
   if (!rc) rc = rp_result_read(r, nm, &s.c, &s.names, s.e, res, err);
+  setup_free(r, &s);
   return rc;
 }
 
@@ -1274,7 +1271,7 @@ int rp_session_load(cable_session *r, const cable_run_args *a, cable_branch **ou
     }
   }
   if (!rc) remember(r, &s);
-  setup_free(&s);
+  setup_free(r, &s);
   return rc;
 }
 

@@ -7,6 +7,7 @@
 #define CABLE_CONSTANTS_H
 
 #include "cable/cable_api.h"
+#include "cable/cable_constants_keys.h"
 #include "cable/cable_error.h"
 #include "cable/cable_names.h"
 #include "cable/cable_problem.h"
@@ -57,60 +58,11 @@ typedef struct {
 typedef enum { CABLE_LINSOLVER_CONDENSE = 0, CABLE_LINSOLVER_KLU = 1 } cable_linsolver;
 
 typedef struct cable_constants {
-  /* problem */
-  int ndim, ips, nbc, nint, npar;
-  int icp[CABLE_MAX_ICP];  int nicp;      /* free + printed parameters */
-  /* discretisation */
-  int ntst, ncol, iad;
-  /* start and switching */
-  int irs;                                /* 0: STPNT; >0 label; <0: -n-th solution */
-  char irs_name[16];                      /* 'BP1', 'UZ2' ... ("" when numeric) */
-  int isw, isp, ilp;
-  /* limits */
-  int nmx, npr, iplt;
-  double rl0, rl1, a0, a1;
-  /* step control */
-  double ds, dsmin, dsmax;
-  int iads;
-  /* Newton */
-  double epsl, epsu, epss;
-  int itmx, itnw, nwtn, jac;
-  /* weights */
-  cable_thl thl[CABLE_MAX_THL]; int nthl;
-  double thu_default;                     /* cable: one weight for all u (AUTO THU) */
-  /* user zeros */
-  cable_uzr uzr[CABLE_MAX_UZR]; int nuzr;
-  /* starting parameter values overriding STPNT / the restart (AUTO-07p's PAR={...}) */
-  cable_parval par_override[CABLE_MAX_THL]; int npar_override;
-  /* output control */
-  int iid, iis;
-  /* cable extensions (documented in doc/constants.md) */
-  cable_linsolver linsolver;              /* LINSOLVER = condense | klu */
-  int nsv;                                /* NSV: singular values tracked for BP test (0: off) */
-  int nthreads;                           /* NTHREADS: threads of the structured solver's
-                                             per-interval stages (0: the default, cable_threads) */
-  int bpsym;                              /* BPDIR: kernel vector index for 2-d kernels */
-  int predictor;                          /* PREDICTOR: 1 tangent (AUTO's), 2 second order */
-  double bpangle;                         /* BPANGLE: direction in a 2-d kernel, degrees from
-                                             the canonical e1 towards e2 (NAN: use BPDIR) */
-  int branch;                             /* BRANCH: the k-th direction of the ABE at a double BP
-                                             (0: the first; doc/engine.md) */
+  /* ---- the engine's settings: what continuation/ (and a problem's
+     prepare) reads.  The keys: the ENGINE rows of cable_constants_keys.h */
+  CABLE_CONSTANTS_KEYS(CABLE_CK_ENGINE_FIELDS)
   /* problem-specific keys (the problem's cable_problem_key list), as set */
   cable_keyval pkey[CABLE_MAX_PKEYS]; int npkey;
-  /* names */
-  char e[CABLE_NAME_MAX], s[CABLE_NAME_MAX], sv[CABLE_NAME_MAX], dat[CABLE_NAME_MAX];
-  int stop_on[8]; int nstop;              /* STOP=['BP1'...] parsed by type code and count */
-  int stop_count[8];
-  /* where NDIM, NBC and NINT were set: a built-in problem's dimensions are
-     fixed, and a contradicting value is reported at its line */
-  cable_key_origin origin_ndim, origin_nbc, origin_nint;
-  /* where IPS was set; when no file or override sets it (AUTO's default
-     IPS=1, which cable does not solve), the constants file read last, line 0,
-     so that the run's refusal names it */
-  cable_key_origin origin_ips;
-  /* keys AUTO accepts and ignores for boundary-value problems (MXBF, ...),
-     "KEY (line N)" separated by ", ", for the run's log; "" when none */
-  char ignored[256];
   /* 1: ISW=-1 at a simple branch point orients the kernel vector by AUTO's
      rule (its STDRBV): the first free parameter whose component is not
      negligible (|PAR'| / (1 + |PAR|) > EPSL) increases, else the first U(i)
@@ -118,9 +70,6 @@ typedef struct cable_constants {
      largest component positive).  No key: the session sets it for equations
      from AUTO files (doc/auto-users.md). */
   int bp_orient_auto;
-  /* STAB: 1 computes the Morse index at every point (doc/stability.md; the
-     problem must declare its variational structure), 0 (default) does not */
-  int stab;
   /* AUTO's NDM: the components of an extended problem's solution that the
      L2-NORM and MAX U columns cover (the fold's u, not its null vector);
      0: all NDIM.  No key: set by cable_fold.h. */
@@ -132,6 +81,21 @@ typedef struct cable_constants {
   /* AUTO's NPARI: the extended problem's own parameter slots after NPAR (the
      s-file header's); 0: none.  Set with ndm. */
   int npari;
+
+  /* ---- the session's bookkeeping: file names, the restart label, output
+     settings, where keys were set.  The engine never reads them.  The keys:
+     the SESSION rows of cable_constants_keys.h */
+  CABLE_CONSTANTS_KEYS(CABLE_CK_SESSION_FIELDS)
+  /* where NDIM, NBC and NINT were set: a built-in problem's dimensions are
+     fixed, and a contradicting value is reported at its line */
+  cable_key_origin origin_ndim, origin_nbc, origin_nint;
+  /* where IPS was set; when no file or override sets it (AUTO's default
+     IPS=1, which cable does not solve), the constants file read last, line 0,
+     so that the run's refusal names it */
+  cable_key_origin origin_ips;
+  /* keys AUTO accepts and ignores for boundary-value problems (MXBF, ...),
+     "KEY (line N)" separated by ", ", for the run's log; "" when none */
+  char ignored[256];
 } cable_constants;
 
 /* AUTO-07p defaults (no problem key set). */
@@ -185,6 +149,21 @@ CABLE_API int cable_constants_parse_file_for(const char *path, const cable_probl
                                              cable_names *names, cable_error *err);
 CABLE_API int cable_constants_parse_string_for(const char *name, const char *text, const cable_problem *pb,
                                                cable_constants *c, cable_names *names, cable_error *err);
+
+/* The same for a run that finds its problem by name (the session): one read
+ * of the file yields the problem's name and the constants.  After the keys
+ * that do not depend on the problem (e, NPAR, parnames, unames) are applied,
+ * resolve(ctx, name, &pb, err) is called once with `e` when it is given and
+ * not "" (a keyword wins over the file), else the file's e ("" when it names
+ * none); it returns 0 with *pb (NULL: no problem, names and keys of none) or
+ * an error status with err set, which the parse returns.  The problem's names
+ * then resolve parameter names and its keys are accepted (as
+ * cable_constants_parse_file_for); the key a file sets that is neither
+ * cable's nor the problem's is reported after the problem is known.
+ * e, ctx, names and err may be NULL; path, resolve and c may not. */
+typedef int cable_constants_resolve_fn(void *ctx, const char *name, const cable_problem **pb, cable_error *err);
+CABLE_API int cable_constants_parse_file_resolve(const char *path, const char *e, cable_constants_resolve_fn *resolve,
+                                                 void *ctx, cable_constants *c, cable_names *names, cable_error *err);
 
 /* Merge `KEY=VALUE` (e.g. from `cable run DS=-0.01` or a script keyword) into
  * an already filled *c: the key's old value is replaced (UZR replaces the user

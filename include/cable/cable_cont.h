@@ -33,7 +33,9 @@ CABLE_API int cable_cont_check(const cable_problem *pb, const cable_constants *c
 /* Check (as cable_cont_check) and allocate every workspace: *out a usable
  * handle, and 0; or *out NULL, nothing left allocated, and a status with
  * the reason in err (may be NULL).  The library changes no process-wide
- * setting (see cable_blas_single_thread). */
+ * setting (see cable_blas_single_thread).
+ * Lifetime: the handle keeps pb and c by pointer, it copies neither; both
+ * must stay alive and unchanged until cable_cont_free (as pb always had to). */
 CABLE_API int cable_cont_create(const cable_problem *pb, const cable_constants *c, cable_cont **out,
                                 cable_error *err);
 /* The same, older form: the handle or NULL with *status (status may be

@@ -9,30 +9,13 @@ way) and is not printed.
 
 __all__ = ['layout', 'Constants']
 
-from ._cable import CableError
+from ._cable import CableError, constants_layout
 from .errors import CableKeyError
 
-# the keys of one line of the printed file, in a constants file's order; the
+# the keys of one line of the printed file, in a constants file's order: the
+# line column of the C key table (include/cable/cable_constants_keys.h); the
 # problem's own keys (TORUS, HAND ...) follow on a line of their own
-_LINES = (
-    ('e', 's', 'dat', 'sv'),
-    ('unames',),
-    ('parnames',),
-    ('PAR',),
-    ('NDIM', 'IPS', 'IRS', 'ILP'),
-    ('ICP',),
-    ('NTST', 'NCOL', 'IAD', 'ISP', 'ISW', 'IPLT', 'NBC', 'NINT'),
-    ('NMX', 'NPR', 'IID', 'ITMX', 'ITNW', 'NWTN', 'JAC'),
-    ('EPSL', 'EPSU', 'EPSS'),
-    ('DS', 'DSMIN', 'DSMAX', 'IADS'),
-    ('NPAR', 'THL', 'THU'),
-    ('IIS',),
-    ('UZR',),
-    ('UZSTOP',),
-    ('STOP',),
-    ('RL0', 'RL1', 'A0', 'A1'),
-    ('LINSOLVER', 'NSV', 'NTHREADS', 'BPDIR', 'BPANGLE', 'BRANCH', 'PREDICTOR'),
-)
+_LINES = constants_layout()
 _KNOWN = frozenset(k for line in _LINES for k in line)
 
 

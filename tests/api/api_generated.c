@@ -20,6 +20,16 @@
 #define FX_DIR "tests/tmp/api_gen"
 
 /* Valid objects for the arguments that are not NULL in a case. */
+/* A problem resolver for cable_constants_parse_file_resolve: no problem. */
+static int fx_resolve(void *ctx, const char *name, const cable_problem **pb, cable_error *err)
+{
+  (void)ctx;
+  (void)name;
+  (void)err;
+  *pb = NULL;
+  return 0;
+}
+
 typedef struct fx {
   cable_error err;
   cable_constants c;
@@ -42,6 +52,7 @@ typedef struct fx {
   cable_solution *sol_out;       /* cable_solution_create's, cable_fold_create's, cable_bpcont_create's */
   cable_fold *fold_out;
   cable_bpcont *bpc_out;
+  cable_constants cc_c;          /* its constants: the handle keeps them by pointer */
   cable_fold *fold;              /* the fold problem at the LP */
   cable_sink sink;               /* no callbacks */
   cable_aufile_options aopt;
@@ -170,10 +181,10 @@ static int fx_setup(fx *f)
   f->sf = cable_sfile_read(FX_DIR "/s.gen", NULL);
   f->bf = cable_bfile_read(FX_DIR "/b.gen", NULL);
   int st = 0;
-  cable_constants cc = f->c;
-  cable_constants_take_problem_dims(&cc, f->pb->ndim, f->pb->nbc, f->pb->nint);
-  f->cc = cable_cont_alloc(f->pb, &cc, &st);
-  cable_constants fc = cc;
+  f->cc_c = f->c;
+  cable_constants_take_problem_dims(&f->cc_c, f->pb->ndim, f->pb->nbc, f->pb->nint);
+  f->cc = cable_cont_alloc(f->pb, &f->cc_c, &st);
+  cable_constants fc = f->cc_c;
   fc.isw = 2;
   fc.icp[1] = 1;
   fc.nicp = 2;

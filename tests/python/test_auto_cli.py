@@ -36,7 +36,7 @@ PR_LINES = ["e = 'bratu'",
             'NMX = 60, NPR = 10, IID = 2, ITMX = 9, ITNW = 5, NWTN = 3, JAC = 1',
             'EPSL = 1e-08, EPSU = 1e-08, EPSS = 1e-07',
             'DS = -0.1, DSMIN = 1e-05, DSMAX = 0.5, IADS = 1',
-            'NPAR = 36, THL = {}, THU = {}',
+            'NPAR = 36, LAB = 0, THL = {}, THU = {}',   # LAB: AUTO's parseC prints it there too
             'IIS = 3',
             'UZR = {}',
             'UZSTOP = {}',
