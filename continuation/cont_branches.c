@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* The branch directions at a double branch point: the algebraic bifurcation
  * equations (ABE) of the Lyapunov-Schmidt reduction, derived in
  * doc/engine.md ("Multiple branch points").  Only the residual F is

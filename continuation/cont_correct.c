@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* The corrector and the test functions at one point: Newton on the
  * collocation system closed by the pseudo-arclength equation, the check of
  * the converged nodes, and the LP and UZ test functions (cont_special.c

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* The status-returning constructors (doc/api.md, One error channel): the
  * object in *out and 0, or *out NULL and a status with its message in err,
  * for the objects whose older constructors answer NULL (cable_solution_alloc)

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* The continuation handle's error channel (doc/api.md, One error channel):
  * the public calls that work on a handle return a status; the report behind
  * an error (status, key, message) is cable_cont_last_error's, and a handler

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* The braid link's constrained second variation on a Ritz space of strain
  * variations (doc/stability.md S7).  The action is local in the strains, the
  * closure constraints are not: they are the end values of the kinematics

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* The second variation of the braid's action (links and knots) with its
  * closure constraints kept to first order (doc/stability.md S7): the Ritz
  * matrices in the strain variables (eta, omega2, omega3, xi1', xi2', and the

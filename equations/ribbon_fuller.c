@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 #include "ribbon_fuller.h"
 
 #include <math.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* The writhe of the braid ribbon along a branch by updates (doc/geometry.md,
  * "Lk along a branch"): between two shapes A and B of the contact curve,
  * matched at equal braid parameter t,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Lk of the braid ribbon along a branch (doc/geometry.md, "Lk along a
  * branch"): the first point gets the full computation (braid_ribbon_compute),
  * every later one the update from the previous point by Fuller's integral and

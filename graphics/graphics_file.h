@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Pictures written through the one atomic-file module (continuation/base/atomic_file.h):
  * everything goes to a temporary file in the destination's directory, renamed
  * over the destination only when the whole file was written, so a reader

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Write the key table of doc/constants.md from the one table of constants
 keys, include/cable/cable_constants_keys.h (its X(...) lines).
 

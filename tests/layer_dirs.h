@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* The source folders of the layers, lowest first (doc/api.md, Layers; the
  * Makefile's LAYERS): test_layers.c checks their #include lines,
  * test_file_circles.c their calls.  continuation/base is the ground floor;

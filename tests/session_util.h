@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Runs for the C tests on a session (cable/cable_session.h, auto_iface/session/), written as
  * `cable run` argument lines: "e=braid_knot c=pvls NMX=3 sv=pvls".  Words are
  * separated by blanks outside brackets and quotes; e, c, s, sv, ap name

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* AUTO-format equation files (cable/cable_autoeq.h, auto_iface/autoeq/) run through e='NAME':
  * Fortran (free and fixed form) and C files written for these tests, for
  * problems with closed-form answers; the build cache; and bad files, which

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* cable_braid_analysis_compute on converged braid solutions whose answers are known
  * without the code under test:
  *  - the flat (7,2) knot presses its strands together at T = 2: pmin > 0,

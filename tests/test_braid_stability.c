@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* The Morse index of the braid link (doc/stability.md S7):
  *  - at a buckled (6,2) link (tests/data/s.link62_buckled) the Ritz matrices
  *    of the second variation in the strain variables: the first variation on

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* The branch directions at double branch points (continuation/cont_branches.c,
  * doc/engine.md "Multiple branch points") on problems whose bifurcation
  * equations are solved in closed form.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* No circle between files of different jobs (doc/api.md, Layers).
  *
  * test_layers.c checks the #include lines; this test checks the calls, from

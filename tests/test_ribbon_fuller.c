@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Fuller's writhe update with counted passages (equations/ribbon_fuller.h) on
  * closed-form curves: Wr(B) - Wr(A) against F(A, B) + 2 sign N(A, B), both
  * sides computed independently (the writhe by ribbon_writhe_samples' Gauss

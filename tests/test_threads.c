@@ -431,6 +431,8 @@ static void test_default_threads(void)
   }
   c.nthreads = 3;
   test_int("NTHREADS = 3 as set", cable_threads(&c), 3);
+}
+
 /* The threads of this process (/proc/self/task). */
 static int process_threads(void)
 {

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* The picture commands of the command line, `cable plot` and `cable render`:
  * their options read into the calls of the public picture API
  * (cable/cable_pictures.h). */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* The `cable` subcommands (auto_iface/cli/cable_main.c dispatches to these).
  * Each returns 0 or a negative cable_status with err filled. */
 #ifndef CABLE_COMMANDS_H

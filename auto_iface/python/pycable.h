@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Internals of the extension module cable._cable (auto_iface/python/pycable_*.c).
  * It uses libcable's public API only (include/cable/). */
 #ifndef CABLE_PYCABLE_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* The engine's notes and BP records on the labelled points of a d-file
  * (d.NAME), read back for the solutions of s.NAME: a branch point's kind
  * (cable_solution.bp_kind) is not in AUTO's s-file format, but the d-file

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* The session's error channel (doc/api.md, One error channel): every public
  * call on a session returns a status and fills the caller's cable_error;
  * the session's handler (cable_session_options.on_error) is told the same

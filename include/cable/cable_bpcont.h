@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Branch-point continuation of a boundary-value problem (AUTO's ISW = 2 at
  * a BP, the non-generic case), with or without integral conditions:
  * doc/fold-continuation.md, "Branch-point continuation", derives it.

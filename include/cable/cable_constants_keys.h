@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* The AUTO constants keys cable accepts: ONE line per key.  Everything else
  * comes from this table: the fields of struct cable_constants
  * (cable_constants.h), the defaults (cable_constants_init), the parser's key

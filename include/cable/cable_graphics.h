@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* The graphics layer's own public types (graphics/): the marks a diagram
  * carries and the options of a 3-D picture.  The picture functions
  * (cable/cable_pictures.h) take them; the graphics folder needs nothing

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* One error channel (doc/api.md): a status with its report (status, file,
  * line, key, message), and an error handler installed per handle that is
  * told the report before the call returns: a session's

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* What the engine found, in fields (issue 27): a branch point's kind and
  * multiplicity on its point (cable_point.bp_kind, .bp_mult) and solution,
  * in memory and read back from the d-file's BP record, never from the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* One namespace (issue 27): every symbol libcable.so exports starts with
  * cable_, and every name the public headers give a program (functions,
  * types, struct and enum tags, enum constants, macros) starts with cable_ or

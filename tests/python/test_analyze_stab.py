@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """analyze(sol, STAB=1) and `cable analyze s.NAME LAB STAB=1`: the Morse index
 of a braid solution (doc/stability.md S7).  On the flat (7,2) knot below its
 first branch point (T = 11.08) the index is 0, and at every labelled point it

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """doc/constants.md's key table is the one table of constants keys
 (include/cable/cable_constants_keys.h) as scripts/gen_constants_doc.py writes
 it: it cannot drift from the keys the parser, the defaults and the Python

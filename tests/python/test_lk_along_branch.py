@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """PVLS's Lk along a branch (issue 30, doc/geometry.md "Lk along a branch"): the
 b-file's Lk column, filled at every step by the update from the previous point
 (Fuller's integral plus the counted axis passages, equations/ribbon_track.c)
