@@ -7,16 +7,16 @@
 #include <gsl/gsl_integration.h>
 
 #include "braid_state.h"
+#include "cable_vec3.h"
 #include "cable/cable_status.h"
 #include "ribbon.h"
 
-static double dot3(const double *a, const double *b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-
 double ribbon_fuller_density(const double ta[3], const double dta[3], const double tb[3], const double dtb[3])
 {
-  double x[3] = {ta[1] * tb[2] - ta[2] * tb[1], ta[2] * tb[0] - ta[0] * tb[2], ta[0] * tb[1] - ta[1] * tb[0]};
+  double x[3];
+  cable_vec3_cross(ta, tb, x);
   double s[3] = {dta[0] + dtb[0], dta[1] + dtb[1], dta[2] + dtb[2]};
-  return dot3(x, s) / (1.0 + dot3(ta, tb)) / (2.0 * M_PI);
+  return cable_vec3_dot(x, s) / (1.0 + cable_vec3_dot(ta, tb)) / (2.0 * M_PI);
 }
 
 int braid_ribbon_twist(const cable_solution *sol, double *tw)
@@ -53,7 +53,7 @@ static void tangent_dt(const braid_point *q, double T[3], double dT[3])
 {
   double K[3];
   braid_point_tangent_curvature(q, T, K);
-  double sp = sqrt(dot3(q->dc, q->dc));
+  double sp = sqrt(cable_vec3_dot(q->dc, q->dc));
   for (int k = 0; k < 3; k++) dT[k] = K[k] * sp;
 }
 
@@ -66,9 +66,9 @@ static void geodesic(const double *u, const double *v, double sg, double T[3], d
     x[k] = (1 - sg) * u[k] + sg * v[k];
     w[k] = v[k] - u[k];
   }
-  double nx = sqrt(dot3(x, x));
+  double nx = sqrt(cable_vec3_dot(x, x));
   for (int k = 0; k < 3; k++) T[k] = x[k] / nx;
-  double tw = dot3(T, w);
+  double tw = cable_vec3_dot(T, w);
   for (int k = 0; k < 3; k++) dT[k] = (w[k] - tw * T[k]) / nx;
 }
 
@@ -92,7 +92,7 @@ static int corner(const cable_solution *a, const cable_solution *b, double tl, d
     gsl_integration_glfixed_point(0.0, 1.0, i, &sg, &wgt, tab);
     geodesic(T[0], T[1], sg, Ta, dTa);
     geodesic(T[2], T[3], sg, Tb, dTb);
-    if (dot3(Ta, Tb) > -1.0 + 1e-12) *sum += wgt * ribbon_fuller_density(Ta, dTa, Tb, dTb);
+    if (cable_vec3_dot(Ta, Tb) > -1.0 + 1e-12) *sum += wgt * ribbon_fuller_density(Ta, dTa, Tb, dTb);
   }
   return CABLE_SUCCESS;
 }
@@ -131,7 +131,7 @@ int braid_writhe_change(const cable_solution *a, const cable_solution *b, double
       if (rc) break;
       tangent_dt(&p, Ta, dTa);
       tangent_dt(&q, Tb, dTb);
-      double d = dot3(Ta, Tb);
+      double d = cable_vec3_dot(Ta, Tb);
       if (d < mind) mind = d;
       /* near antiparallel tangents the formula does not hold: the caller
          checks min_dot; keep the sum finite */

@@ -14,6 +14,12 @@ import os
 import re
 import sys
 
+# cable's one atomic writer (python/cable/atomic.py), loaded as a file: the
+# package itself needs the extension, which this script does not
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'python', 'cable'))
+sys.dont_write_bytecode = True
+from atomic import write_text  # noqa: E402
+
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 HEADER = os.path.join(ROOT, 'include', 'cable', 'cable_constants_keys.h')
 DOC = os.path.join(ROOT, 'doc', 'constants.md')
@@ -133,9 +139,7 @@ def main(argv):
             return 1
         return 0
     if new != doc:
-        with open(doc_path + '.tmp', 'w', encoding='utf-8') as f:
-            f.write(new)
-        os.replace(doc_path + '.tmp', doc_path)
+        write_text(doc_path, new)
     return 0
 
 

@@ -101,7 +101,7 @@
   X(NTHREADS,  nthreads,     INT,       ENGINE,  0,                        0,              CABLE_THREADS_MAX, 17) \
   X(BPDIR,     bpsym,        INT,       ENGINE,  0,                        0,              1,                 17) \
   X(BPANGLE,   bpangle,      REAL,      ENGINE,  NAN,                      0,              0,                 17) \
-  X(BRANCH,    branch,       INT,       ENGINE,  0,                        0,              CABLE_MAX_BRANCHES, 17) \
+  X(BRANCH,    branch,       INT,       ENGINE,  0,                        0,              CABLE_MAX_BRANCHES, 0)  \
   X(PREDICTOR, predictor,    INT,       ENGINE,  1,                        1,              2,                 17) \
   X(STAB,      stab,         STAB,      ENGINE,  0,                        0,              1,                 0)
 /* clang-format on */
