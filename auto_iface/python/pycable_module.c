@@ -20,25 +20,71 @@
 #define PY_ARRAY_UNIQUE_SYMBOL cable_pycable_ARRAY_API
 #include <numpy/arrayobject.h>
 
+#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
+#include <unistd.h>
 
 
 /* ---- errors ------------------------------------------------------------------ */
 
 static PyObject *cable_error_type;   /* cable.CableError, created once at import */
 
+/* The class of cable.errors that is also the built-in a Python program
+ * catches for this kind of error (python/cable/errors.py), or NULL for
+ * CableError itself: a bad value (ValueError), a missing argument
+ * (TypeError), no such label, key or problem (KeyError), a file the error
+ * names that does not exist (FileNotFoundError). */
+static const char *error_class(int status, const cable_error *err)
+{
+  switch (status) {
+  case CABLE_ERR_INPUT:
+  case CABLE_ERR_PARSE:
+  case CABLE_ERR_RANGE:
+  case CABLE_ERR_SIZE:
+    return "CableValueError";
+  case CABLE_ERR_NULL:
+    return "CableTypeError";
+  case CABLE_ERR_NOTFOUND:
+    return "CableKeyError";
+  case CABLE_ERR_IO:
+    if (err && err->file[0] && access(err->file, F_OK) != 0 && errno == ENOENT) return "CableFileNotFoundError";
+    return NULL;
+  default:
+    return NULL;
+  }
+}
+
+/* cable.errors' class by name, or CableError when the module is not there
+ * (the extension used on its own); a new reference */
+static PyObject *error_type(const char *name)
+{
+  PyObject *type = NULL;
+  PyObject *mod = name ? PyImport_ImportModule("cable.errors") : NULL;
+  if (mod) type = PyObject_GetAttrString(mod, name);
+  Py_XDECREF(mod);
+  if (!type || !PyType_Check(type) || PyObject_IsSubclass(type, cable_error_type) != 1) {
+    PyErr_Clear();
+    Py_XDECREF(type);
+    type = cable_error_type;
+    Py_INCREF(type);
+  }
+  return type;
+}
+
 PyObject *pyc_raise(int status, const cable_error *err)
 {
   if (status == CABLE_ERR_INTERRUPTED && PyErr_Occurred()) return NULL;   /* KeyboardInterrupt */
   char buf[1400];
   const char *msg = err && err->msg[0] ? cable_error_format(err, buf, sizeof buf) : cable_status_message(status);
-  PyObject *exc = PyObject_CallFunction(cable_error_type, "s", msg);
+  PyObject *type = error_type(error_class(status, err));
+  PyObject *exc = PyObject_CallFunction(type, "s", msg);
   PyObject *st = exc ? PyLong_FromLong(status) : NULL;
-  if (st && PyObject_SetAttrString(exc, "status", st) == 0) PyErr_SetObject(cable_error_type, exc);
+  if (st && PyObject_SetAttrString(exc, "status", st) == 0) PyErr_SetObject(type, exc);
   Py_XDECREF(st);
   Py_XDECREF(exc);
+  Py_DECREF(type);
   return NULL;
 }
 

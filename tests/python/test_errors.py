@@ -57,3 +57,40 @@ def test_script_report_unchanged(work):
     assert rc == 1
     assert 't.auto:2: loadbd: loadbd needs a name (files b.NAME, s.NAME)' in out + err, out + err
     assert 'CableTypeError' not in out + err and 'TypeError' not in out + err
+
+
+# Errors the library reports (the C extension raises them): the class follows
+# the status, so a bad constant is a ValueError, an unknown problem a KeyError
+# and a missing file a FileNotFoundError, each with cable's file:line:key words.
+def test_library_value_error(work):
+    with open('c.bad', 'w') as f:
+        f.write("e = 'bratu'\nICP = ['lambda']\nNTST = -5\n")
+    e = _caught(ValueError, lambda: cable.run(c='bad', NMX=3))
+    assert isinstance(e, cable.CableValueError)
+    assert 'c.bad:3' in str(e) and 'NTST' in str(e), str(e)
+    e = _caught(ValueError, lambda: cable.run(e='bratu', ICP=['lambda'], NMX=3, BRANCH=99))
+    assert 'BRANCH' in str(e) and '0..8' in str(e), str(e)
+
+
+def test_library_key_error(work):
+    e = _caught(KeyError, lambda: cable.run(e='nosuchproblem', NMX=3))
+    assert isinstance(e, cable.CableKeyError)
+    assert str(e).startswith("run: e: unknown problem 'nosuchproblem'"), str(e)
+
+
+def test_library_file_not_found_error(work):
+    e = _caught(FileNotFoundError, lambda: cable.run(e='bratu', c='nosuchfile', NMX=3))
+    assert str(e) == 'run: c.nosuchfile: cannot open constants file: No such file or directory'
+    e = _caught(FileNotFoundError, lambda: cable.loadbd('nosuch'))
+    assert 's.nosuch' in str(e)
+
+
+def test_library_io_error_of_an_existing_file_is_not_file_not_found(work):
+    """A file that exists but cannot be read as a constants file is not a
+    FileNotFoundError (the error names a file that is there)."""
+    with open('c.dir', 'w') as f:
+        f.write("e = 'bratu'\nICP = ['lambda'\n")
+    with pytest.raises(cable.CableError) as info:
+        cable.run(c='dir', NMX=3)
+    assert not isinstance(info.value, FileNotFoundError)
+    assert 'c.dir' in str(info.value)
