@@ -7,7 +7,7 @@ by the companion knot type and Lk the branch reaches: cell_outcome) and
 OUT/summary.md (counts and the picture)."""
 
 __all__ = ['finished_results', 'table_rows', 'csv_text', 'read_csv',
-           'cell_outcome', 'summary_svg', 'summary_md', 'write_outputs']
+           'cell_outcome', 'load_matplotlib', 'summary_svg', 'summary_md', 'write_outputs']
 
 import csv
 import importlib.util
@@ -96,6 +96,20 @@ def cell_outcome(rows):
         return 'no overlap-free stretch'
     r = max(free, key=lambda x: (round(abs(x['passages'])), -x['segment']))
     return '%s (Lk %g)' % (r['companion'], round(2 * r['Lk']) / 2)
+
+
+def load_matplotlib():
+    """Imports what summary_svg draws with.  A sweep calls it before its first
+    task: the first import of matplotlib takes a second or two, and a Ctrl-C
+    that lands inside it leaves the module half-imported, so that the table
+    written on the way out (the points computed so far) would fail."""
+    try:
+        import matplotlib  # noqa: F401
+        from matplotlib.backends.backend_svg import FigureCanvasSVG  # noqa: F401
+        from matplotlib.figure import Figure  # noqa: F401
+        from matplotlib.patches import Patch, Rectangle  # noqa: F401
+    except ImportError:
+        pass   # summary_svg says what is missing
 
 
 def summary_svg(results, tasks=None):

@@ -21,7 +21,7 @@ import shutil
 import sys
 import time
 
-from .atlas_output import write_outputs
+from .atlas_output import load_matplotlib, write_outputs
 from .atlas_task import flat_dir, flat_has_solutions, run_flat, run_task
 
 
@@ -160,6 +160,7 @@ def run_sweep(sweep, scheduler=None, workers=None, retry_failed=False, stream=No
     # noqa: the name differs between versions
     from distributed.client import TimeoutError as DaskTimeout
     stream = stream or sys.stderr
+    load_matplotlib()   # before any task, so that an interrupt cannot land in its import
     os.makedirs(os.path.join(sweep.output, 'tasks'), exist_ok=True)
     remove_stale_partials(sweep)
     todo, skipped, failed_earlier = [], 0, 0
