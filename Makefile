@@ -116,6 +116,10 @@ $(LIB_OBJS): $(BUILD)/%.o: %.c | $(DEPS_OK)
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) $(LIBFLAGS) $(call layer_incs,$<) -c $< -o $@
 
+# The writhe's double sum (equations/ribbon.c): sqrt as one instruction, without
+# the errno check (its argument, a squared distance, is never negative)
+$(BUILD)/equations/ribbon.o: CFLAGS += -fno-math-errno
+
 # The extension sees the public headers and its own folder only.
 $(PY_OBJS): $(BUILD)/%.o: %.c | $(DEPS_OK)
 	@mkdir -p $(dir $@)

@@ -15,7 +15,21 @@
 typedef struct {
   cable_problem pb;          /* first member: the pointer handed out is the owner */
   braid_start_params sp;
+  cable_symmetry s0;         /* the template's S0 with multiplicity TORUS */
 } braid_instance;
+
+/* The declared S0 (braid_problems.c) with multiplicity TORUS, when the
+ * constants give it: the rotations of the (p,2) torus knot or link carry a
+ * symmetric branch into p copies. */
+static void declare_s0(braid_instance *bi, const cable_problem *tmpl, const cable_constants *c)
+{
+  if (!tmpl->symmetries || tmpl->nsym != 1) return;
+  bi->s0 = tmpl->symmetries[0];
+  int p = (int)cable_constants_key(c, tmpl, "TORUS");
+  bi->s0.multiplicity = p > 0 ? p : 0;
+  bi->pb.symmetries = &bi->s0;
+  bi->pb.nsym = 1;
+}
 
 static int override(const cable_constants *c, int index, double *value)
 {
@@ -52,6 +66,7 @@ int braid_prepare(const cable_problem *tmpl, const cable_constants *c, int from_
     }
     bi->pb = *tmpl;
     bi->pb.params = &bi->sp;
+    declare_s0(bi, tmpl, c);
     *pb = &bi->pb;
     return CABLE_SUCCESS;
   }
@@ -108,6 +123,7 @@ int braid_prepare(const cable_problem *tmpl, const cable_constants *c, int from_
     free(bi);
     return cable_error_set(err, CABLE_ERR_ALLOC, NULL, 0, "", "out of memory");
   }
+  declare_s0(bi, tmpl, c);
   *pb = &bi->pb;
   return CABLE_SUCCESS;
 }

@@ -115,18 +115,41 @@ static int link_ritz(const cable_solution *sol, int refine, int degree, int *n, 
                      double **G, void *params)
 {
   (void)params;
-  return braid_ritz(sol, 0, refine, degree, n, nc, K, M, G, NULL);
+  return braid_ritz(sol, BSV_LINK, refine, degree < BSV_DEGREE_MAX ? degree : BSV_DEGREE_MAX, n, nc, K, M, G, NULL);
 }
 
 static int knot_ritz(const cable_solution *sol, int refine, int degree, int *n, int *nc, double **K, double **M,
                      double **G, void *params)
 {
   (void)params;
-  return braid_ritz(sol, 1, refine, degree, n, nc, K, M, G, NULL);
+  return braid_ritz(sol, BSV_KNOT, refine, degree < BSV_DEGREE_MAX ? degree : BSV_DEGREE_MAX, n, nc, K, M, G, NULL);
+}
+
+/* braid_knot_sym: its solutions (the mode branches) carry the family that
+ * changes F2(0), removed by the row delta F2(0) = 0 (doc/stability.md S7.3) */
+static int knot_sym_ritz(const cable_solution *sol, int refine, int degree, int *n, int *nc, double **K, double **M,
+                         double **G, void *params)
+{
+  (void)params;
+  return braid_ritz(sol, BSV_KNOT_SYM, refine, degree < BSV_DEGREE_MAX ? degree : BSV_DEGREE_MAX, n, nc, K, M, G, NULL);
 }
 
 static const cable_variational link_var = {.nvar = BSV_NFIELD, .ritz = link_ritz};
 static const cable_variational knot_var = {.nvar = BSV_NFIELD, .ritz = knot_ritz};
+static const cable_variational knot_sym_var = {.nvar = BSV_NFIELD, .ritz = knot_sym_ritz};
+
+/* The S0 symmetry (doc/braid-boundary-conditions.md, doc/links.md): F2(0) is
+ * odd under it, and braid_knot_sym / braid_link_sym impose F2(0) = 0 with the
+ * unfolding parameter eps13 on the closure condition x1(L) (BK_XL, BL_XL).
+ * Declared on the full problems, it lets the engine switch at their double
+ * branch points into the S0-symmetric branch (the restriction is exactly the
+ * symmetric formulation).  The multiplicity, TORUS (the rotations of the
+ * torus knot or link carry a symmetric branch into TORUS copies), is set by
+ * the prepared instance (braid_prepare.c); 0 here: unknown. */
+const cable_symmetry braid_knot_s0 = {.name = "S0", .act = NULL, .odd_comp = BR_F2, .odd_at = 0,
+                                      .unfold_bc = BK_XL, .unfold_par = BP_EPS13, .multiplicity = 0};
+const cable_symmetry braid_link_s0 = {.name = "S0", .act = NULL, .odd_comp = BR_F2, .odd_at = 0,
+                                      .unfold_bc = BL_XL, .unfold_par = BP_EPS13, .multiplicity = 0};
 
 #define BRAID_PROBLEM_COMMON                                                           \
   .abi_version = CABLE_PROBLEM_ABI, .struct_size = sizeof(cable_problem), .ndim = BR_NDIM, \
@@ -144,6 +167,7 @@ static const cable_problem knot_template = {
   .nbc = BK_NBC,
   .bcnd = braid_knot_bcnd,
   .variational = &knot_var,
+  .symmetries = &braid_knot_s0, .nsym = 1,
 };
 
 static const cable_problem knot_sym_template = {
@@ -152,7 +176,7 @@ static const cable_problem knot_sym_template = {
   .description = "S0-symmetric knot: braid_knot + F2(0) = 0 (free T, L, L2, eps21, eps13)",
   .nbc = BK_SYM_NBC,
   .bcnd = braid_knot_sym_bcnd,
-  .variational = &knot_var,
+  .variational = &knot_sym_var,
 };
 
 static const cable_problem link_template = {
@@ -162,6 +186,7 @@ static const cable_problem link_template = {
   .nbc = BL_NBC,
   .bcnd = braid_link_bcnd,
   .variational = &link_var,
+  .symmetries = &braid_link_s0, .nsym = 1,
 };
 
 static const cable_problem link_sym_template = {

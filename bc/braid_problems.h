@@ -45,4 +45,8 @@ int braid_problem_instance(const char *name, const braid_start_params *sp, cable
  * model's domain; -1 for a solution of the wrong size. */
 int braid_pvls(const struct cable_solution *sol, double *par, void *params);
 
+/* The S0 symmetry braid_knot and braid_link declare (multiplicity 0: the
+ * prepared instance sets TORUS). */
+extern const cable_symmetry braid_knot_s0, braid_link_s0;
+
 #endif

@@ -6,8 +6,13 @@
 #ifndef CABLE_ABD_BAND_H
 #define CABLE_ABD_BAND_H
 
+#include <stddef.h>
+
 typedef struct abd_band {
   int n, kl, ku;
+  int ring;           /* columns of the band storage (abd_band_set_ring; n: all of them) */
+  size_t ucap, lcap;  /* capacity of uc/uv and li/lv, grown by the factorisation */
+  int oom;            /* the factorisation in progress ran out of memory */
   int *ipiv;          /* [n] 0-based row interchanges */
   int *nzl;           /* [kl + 1] work */
   double *ud;         /* [n] diagonal of U */
@@ -20,9 +25,21 @@ typedef struct abd_band {
                                    so far, last column updated, first zero pivot + 1 */
 } abd_band;
 
-/* 0, or -1 when out of memory (then abd_band_free is still safe). */
+/* 0, or -1 when out of memory (then abd_band_free is still safe).  The
+ * compressed factors start at a quarter of the band's places and grow (by
+ * half) when a factorisation fills more: the first factorisations of a run
+ * may allocate, later ones of the same matrix structure do not. */
 int abd_band_alloc(abd_band *f, int n, int kl, int ku);
 void abd_band_free(abd_band *f);
+
+/* Band storage as a ring of ncols columns (ncols >= kl + ku + 1; default and
+ * ncols >= n: one storage column per matrix column): column c lives in
+ * storage column c mod ncols.  The caller keeps at most ncols consecutive
+ * columns alive at once (not yet eliminated, or written ahead of the
+ * elimination): column c may be written only when the elimination has passed
+ * column c - ncols, whose storage it has left zero (abd_solver.c bounds its
+ * pipeline's lookahead for this).  The factors are the same bits. */
+void abd_band_set_ring(abd_band *f, int ncols);
 
 /* Factor the n x n band matrix with kl sub- and ku superdiagonals held in
  * LAPACK's band storage for factorisation (ldab >= 2 kl + ku + 1; element
@@ -36,6 +53,7 @@ void abd_band_free(abd_band *f);
  * first such j; the factorisation runs to the end, as LAPACK's; solves with
  * such a factorisation are not allowed). */
 int abd_band_factor(abd_band *f, double *ab, int ldab);
+/* (it returns -1 when the compressed factors could not grow: out of memory) */
 
 /* The same factorisation in pieces, for a caller that fills the matrix
  * while it is being factored: begin, then upto(jend) any number of times

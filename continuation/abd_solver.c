@@ -34,6 +34,16 @@
 
 enum { STATE_NONE = 0, STATE_OK = 1, STATE_SINGULAR = 2 };
 
+/* Intervals the condensation may run ahead of the band elimination
+ * (cable_team_run_ordered_window).  The band storage holds the columns of
+ * ABD_LOOKAHEAD + 1 intervals as a ring (abd_band_set_ring): interval j
+ * writes the columns of z_j and z_{j+1}, the elimination after interval i
+ * has left the columns of z_0..z_i zero, so the live columns span at most
+ * (ABD_LOOKAHEAD + 1) m (and m + kl + ku for the elimination's own reach).
+ * On the flat (7,2) knot at NTST 150: 0.9 MB of band storage instead of
+ * 7.8 MB. */
+#define ABD_LOOKAHEAD 16
+
 
 
 struct abd_solver {
@@ -53,7 +63,8 @@ struct abd_solver {
   size_t loc_size;                 /* doubles per local block, r*(nI+nO) */
   double *loc;                     /* [N] local blocks after condensation: L\U | X over S */
   lapack_int *loc_piv;             /* [N*nI] local row interchanges */
-  double *ab;                      /* [ldab*nband] banded LU */
+  double *ab;                      /* [ldab*ring] banded LU, a ring of columns (ABD_LOOKAHEAD) */
+  int ring;                        /* its columns */
   abd_band band;                   /* its LU factors, compressed (abd_band.h) */
   double *w_rhs;                   /* [nband] band right-hand side, per vector of a block */
   double *w_piv;                   /* [N*nI] transformed pivot-row right-hand sides, per vector */
@@ -84,6 +95,7 @@ struct abd_solver {
   /* smallest_sv workspace, grown on demand */
   int sv_k;
   double *sv_v, *sv_w, *sv_b, *sv_r, *sv_x, *sv_yt, *sv_s, *sv_work, *sv_vec, *sv_res, *sv_rn;
+  double *sv_rest, *sv_pair;       /* J^T residuals, colloc_jac_matvec_pair_team's scratch */
   lapack_int sv_lwork;
 };
 
@@ -94,13 +106,28 @@ static int grow_base(const abd_solver *s, int j) { return s->a + j * s->m; }
 static int end_base(const abd_solver *s) { return s->a + s->N * s->m; }
 static double *loc_block(const abd_solver *s, int j) { return s->loc + (size_t)j * s->loc_size; }
 
-/* Writes one band entry; 1 when it falls outside kl/ku (internal error). */
-static int band_set(const abd_solver *s, int row, int col, double v)
+/* Writes one band entry into the ring's storage column sc of column col; 1
+ * when it falls outside kl/ku (internal error). */
+static int band_set_slot(const abd_solver *s, int row, int col, size_t sc, double v)
 {
   int d = row - col;
   if (d > s->kl || -d > s->ku) return 1;
-  s->ab[(size_t)col * (size_t)s->ldab + (size_t)(s->kl + s->ku + d)] = v;
+  s->ab[sc * (size_t)s->ldab + (size_t)(s->kl + s->ku + d)] = v;
   return 0;
+}
+
+static int band_set(const abd_solver *s, int row, int col, double v)
+{
+  return band_set_slot(s, row, col, (size_t)(col % s->ring), v);
+}
+
+/* Interval j's entries (columns j m .. j m + 2 m - 1 < j m + ring): the
+ * storage column from the slot of column j m, without a division. */
+static int band_set_iv(const abd_solver *s, size_t base, int j, int row, int col, double v)
+{
+  size_t sc = base + (size_t)(col - j * s->m);
+  if (sc >= (size_t)s->ring) sc -= (size_t)s->ring;
+  return band_set_slot(s, row, col, sc, v);
 }
 
 static void band_put(abd_solver *s, int row, int col, double v)
@@ -279,7 +306,12 @@ abd_solver *abd_solver_alloc(int ndim, int ntst, int ncol, int nfpr, int nbc, in
   size_t nIt = (size_t)ntst * (size_t)s->nI;
   s->loc = malloc((size_t)ntst * s->loc_size * sizeof(double));
   s->loc_piv = malloc((nIt ? nIt : 1) * sizeof(lapack_int));
-  s->ab = calloc((size_t)s->ldab * (size_t)s->nband, sizeof(double));
+  {
+    long ring = (long)(ABD_LOOKAHEAD + 1) * s->m, reach = (long)s->m + s->kl + s->ku + 1;
+    if (ring < reach) ring = reach;
+    s->ring = ring < s->nband ? (int)ring : s->nband;
+  }
+  s->ab = calloc((size_t)s->ldab * (size_t)s->ring, sizeof(double));
   s->w_rhs = malloc(ABD_SOLVE_BLOCK * (size_t)s->nband * sizeof(double));
   s->w_piv = malloc(ABD_SOLVE_BLOCK * (nIt ? nIt : 1) * sizeof(double));
   s->w_loc = malloc((size_t)s->r * sizeof(double));
@@ -294,6 +326,7 @@ abd_solver *abd_solver_alloc(int ndim, int ntst, int ncol, int nfpr, int nbc, in
   s->prep = malloc(ABD_SOLVE_BLOCK * (size_t)s->n * sizeof(double));
   s->prep_k = calloc(1, sizeof *s->prep_k);
   if (abd_band_alloc(&s->band, s->nband, s->kl, s->ku) != 0) goto fail;
+  abd_band_set_ring(&s->band, s->ring);
   if (!s->loc || !s->loc_piv || !s->ab || !s->w_rhs || !s->w_piv || !s->w_loc || !s->w_o ||
       !s->iv_status || !s->iv_sign || !s->iv_logabs || !s->iv_amax || !s->iv_sumsq || !s->w_g || !s->w_oo ||
       !s->prep || !s->prep_k)
@@ -319,6 +352,9 @@ static void sv_free(abd_solver *s)
   free(s->sv_work);
   free(s->sv_vec);
   free(s->sv_res);
+  free(s->sv_rest);
+  free(s->sv_pair);
+  s->sv_rest = s->sv_pair = NULL;
   free(s->sv_rn);
   s->sv_v = s->sv_w = s->sv_b = s->sv_r = s->sv_x = s->sv_yt = s->sv_s = s->sv_work = s->sv_vec = s->sv_res = NULL;
   s->sv_rn = NULL;
@@ -387,10 +423,12 @@ void abd_solver_bandwidths(const abd_solver *s, int *kl, int *ku)
 void abd_solver_space(const abd_solver *s, long *ndoubles, long *nints)
 {
   long nIt = (long)s->N * s->nI;
-  *ndoubles = (long)s->N * (long)s->loc_size + (long)s->ldab * s->nband + ABD_SOLVE_BLOCK * (s->nband + nIt) + s->r +
+  *ndoubles = (long)s->N * (long)s->loc_size + (long)s->ldab * s->ring + ABD_SOLVE_BLOCK * (s->nband + nIt) + s->r +
               s->nO + 2L * s->N + ABD_SOLVE_BLOCK * (long)s->N * (s->r + s->nO) +
-              (s->sv_k ? (long)s->sv_k * (5L * s->n + 3L * s->sv_k + 3) : 0L) + (long)s->sv_lwork;
-  long nu = (long)s->nband * (s->kl + s->ku) + 1, nl = (long)s->nband * s->kl + 1; /* compressed factors */
+              (s->sv_k ? (long)s->sv_k * (6L * s->n + 3L * s->sv_k + 3) +
+                             (long)s->N * s->sv_k * (2L * (s->nc + 1) * s->nd + s->nf) : 0L) +
+              (long)s->sv_lwork;
+  long nu = (long)s->band.ucap, nl = (long)s->band.lcap; /* compressed factors, as grown so far */
   *ndoubles += s->nband + nu + nl + ABD_SOLVE_BLOCK * (long)s->n; /* + the prepared right-hand sides */
   *nints = s->nO + nIt + s->nband + s->kl + 1 + 2L * (s->nband + 1) + nu + nl + 2L * s->N + 1;
 }
@@ -516,16 +554,17 @@ static void factor_interval(void *ctx, int j)
   }
   if (status >= 0) {
     int over = 0, g = grow_base(s, j);
+    const size_t b = (size_t)(((long)j * s->m) % s->ring);
     for (int k = 0; k < r - nI; k++)
       for (int o = 0; o < nO; o++)
-        over |= band_set(s, g + nd + nf + k, j * s->m + s->omap[o], O[(size_t)o * (size_t)r + (size_t)(nI + k)]);
+        over |= band_set_iv(s, b, j, g + nd + nf + k, j * s->m + s->omap[o], O[(size_t)o * (size_t)r + (size_t)(nI + k)]);
     for (int i = 0; i < nd; i++) {
-      over |= band_set(s, g + i, zcol(s, j, s->off_c, i), -1.0);
-      over |= band_set(s, g + i, zcol(s, j + 1, s->off_c, i), 1.0);
+      over |= band_set_iv(s, b, j, g + i, zcol(s, j, s->off_c, i), -1.0);
+      over |= band_set_iv(s, b, j, g + i, zcol(s, j + 1, s->off_c, i), 1.0);
     }
     for (int p = 0; p < nf; p++) {
-      over |= band_set(s, g + nd + p, zcol(s, j, s->off_q, p), -1.0);
-      over |= band_set(s, g + nd + p, zcol(s, j + 1, s->off_q, p), 1.0);
+      over |= band_set_iv(s, b, j, g + nd + p, zcol(s, j, s->off_q, p), -1.0);
+      over |= band_set_iv(s, b, j, g + nd + p, zcol(s, j + 1, s->off_q, p), 1.0);
     }
     if (over) status = -3;
   }
@@ -539,11 +578,34 @@ static void factor_interval(void *ctx, int j)
   s->iv_amax[j] = amax;
 }
 
+/* The boundary and dense rows, in z_N's columns: written once the last
+ * interval is condensed (the ring's storage of z_N's columns is free only
+ * then; the interval stages write those columns in other rows). */
+static void put_end_rows(abd_solver *s, const colloc_jac *J)
+{
+  const int nd = s->nd, nf = s->nf, nq = s->nq, N = s->N;
+  const int e = end_base(s), nb = s->nb;
+  for (int b = 0; b < nb; b++) {
+    for (int i = 0; i < nd; i++) {
+      band_put(s, e + b, zcol(s, N, s->off_c, i), J->bc[(size_t)i * (size_t)nb + (size_t)b]);
+      band_put(s, e + b, zcol(s, N, s->off_u, i), J->bc[(size_t)(nd + i) * (size_t)nb + (size_t)b]);
+    }
+    for (int p = 0; p < nf; p++)
+      band_put(s, e + b, zcol(s, N, s->off_q, p), J->bc[(size_t)(2 * nd + p) * (size_t)nb + (size_t)b]);
+  }
+  for (int d = 0; d < nq; d++) {
+    for (int p = 0; p < nf; p++)
+      band_put(s, e + nb + d, zcol(s, N, s->off_q, p), J->dense_par[(size_t)p * (size_t)nq + (size_t)d]);
+    band_put(s, e + nb + d, zcol(s, N, s->off_s, d), 1.0);
+  }
+}
+
 /* The band columns of z_j, once intervals 0..j are condensed. */
 static void band_eliminate(void *ctx, int j)
 {
   const factor_ctx *fc = ctx;
   abd_solver *s = fc->s;
+  if (j == s->N - 1) put_end_rows(s, fc->J);
   abd_band_factor_upto(&s->band, s->ab, s->ldab, (j + 1) * s->m);
 }
 
@@ -583,7 +645,7 @@ static int factor(abd_solver *s, const colloc_jac *J, const double *B, int k)
   double amax = end_maxabs(J);
   if (isnan(amax)) return ABD_ERR_NONFINITE;
 
-  const int nd = s->nd, nf = s->nf, nq = s->nq, N = s->N;
+  const int nd = s->nd, nq = s->nq, N = s->N;
   int sign = s->perm_sign, singular = 0;
   double logabs = 0.0;
 
@@ -601,31 +663,19 @@ static int factor(abd_solver *s, const colloc_jac *J, const double *B, int k)
   }
   for (int d = 0; d < nq; d++) band_put(s, nd + d, zcol(s, 0, s->off_s, d), 1.0);
 
-  /* the end rows touch only z_N's columns, which the interval stages below
-     write only in other rows */
-  const int e = end_base(s), nb = s->nb;
-  for (int b = 0; b < nb; b++) {
-    for (int i = 0; i < nd; i++) {
-      band_put(s, e + b, zcol(s, N, s->off_c, i), J->bc[(size_t)i * (size_t)nb + (size_t)b]);
-      band_put(s, e + b, zcol(s, N, s->off_u, i), J->bc[(size_t)(nd + i) * (size_t)nb + (size_t)b]);
-    }
-    for (int p = 0; p < nf; p++)
-      band_put(s, e + b, zcol(s, N, s->off_q, p), J->bc[(size_t)(2 * nd + p) * (size_t)nb + (size_t)b]);
-  }
-  for (int d = 0; d < nq; d++) {
-    for (int p = 0; p < nf; p++)
-      band_put(s, e + nb + d, zcol(s, N, s->off_q, p), J->dense_par[(size_t)p * (size_t)nq + (size_t)d]);
-    band_put(s, e + nb + d, zcol(s, N, s->off_s, d), 1.0);
-  }
-
   /* The band LU runs behind the interval stages (the pipeline of
      cable_team.h): once intervals 0..j are condensed, the columns of
      z_0..z_j are final and the rows of intervals > j are still zero in
      them, so band_eliminate may factor them while later intervals are
      condensed (abd_band.h, abd_band_factor_upto). */
   abd_band_factor_begin(&s->band);
-  cable_team_run_ordered(s->team, factor_interval, &fc, N, band_eliminate, &fc);
-  if (abd_band_factor_end(&s->band, s->ab, s->ldab) > 0) singular = 1;
+  cable_team_run_ordered_window(s->team, factor_interval, &fc, N, band_eliminate, &fc, ABD_LOOKAHEAD);
+  int binfo = abd_band_factor_end(&s->band, s->ab, s->ldab);
+  if (binfo < 0) { /* the elimination stopped part way: clear its storage for the next matrix */
+    memset(s->ab, 0, (size_t)s->ldab * (size_t)s->ring * sizeof(double));
+    return ABD_ERR_MEM;
+  }
+  if (binfo > 0) singular = 1;
   if (s->band_overflow) return ABD_ERR_LAPACK;
   /* reduce in interval order */
   for (int j = 0; j < N; j++) {
@@ -867,36 +917,16 @@ double abd_solver_growth(const abd_solver *s)
 
 /* ---- smallest singular values ----------------------------------------- */
 
-/* Sum of squares of J's collocation block j, into iv_sumsq[j] (run by the
- * team): four independent chains in a fixed order, the same for every thread
- * count (one chain of dependent additions was the limit, a sequential pass of
- * it over the 11 MB of blocks 5 % of an ISP=2 step). */
-typedef struct {
-  const abd_solver *s;
-  const colloc_jac *J;
-} fro_ctx;
-
-static void coll_sumsq(void *p, int j)
-{
-  const fro_ctx *c = p;
-  const double *a = colloc_jac_coll_block(c->J, j);
-  const size_t n = c->J->coll_stride;
-  double q[4] = {0, 0, 0, 0};
-  size_t i = 0;
-  for (; i + 4 <= n; i += 4)
-    for (int t = 0; t < 4; t++) q[t] += a[i + t] * a[i + t];
-  for (; i < n; i++) q[0] += a[i] * a[i];
-  c->s->iv_sumsq[j] = (q[0] + q[1]) + (q[2] + q[3]);
-}
-
-/* ||J||_F: the collocation blocks on the team, summed in interval order
- * (contributions of two intervals to a mesh point in a dense row add before
- * squaring). */
+/* ||J||_F from the sums of squares of the collocation blocks in iv_sumsq
+ * (computed on the team by colloc_jac_matvec_pair_team along with the first
+ * residuals of the iteration, while each block is in cache: four independent
+ * chains in a fixed order, the same for every thread count; a pass of its own
+ * over the 11 MB of blocks was 3 % of an ISP=2 step), summed in interval
+ * order (contributions of two intervals to a mesh point in a dense row add
+ * before squaring). */
 static double jac_frobenius(const abd_solver *s, const colloc_jac *J)
 {
   const int nd = J->ndim, nc = J->ncol, nq = J->ndense;
-  fro_ctx fc = {s, J};
-  cable_team_run(s->team, coll_sumsq, &fc, J->ntst);
   double sum = 0.0;
   for (int j = 0; j < J->ntst; j++) sum += s->iv_sumsq[j];
   size_t nbcv = (size_t)J->nbc * (size_t)(2 * nd + J->nfpr);
@@ -951,8 +981,12 @@ static int sv_reserve(abd_solver *s, int k)
   s->sv_s = malloc((size_t)k * sizeof(double));
   s->sv_vec = malloc(nk * sizeof(double));
   s->sv_res = malloc(nk * sizeof(double));
+  s->sv_rest = malloc(nk * sizeof(double));
+  s->sv_pair = malloc((size_t)s->N * (size_t)k * (2 * (size_t)(s->nc + 1) * (size_t)s->nd + (size_t)s->nf) *
+                      sizeof(double));
   s->sv_rn = malloc(2 * (size_t)k * sizeof(double));
-  if (!s->sv_v || !s->sv_w || !s->sv_b || !s->sv_r || !s->sv_x || !s->sv_yt || !s->sv_s || !s->sv_vec || !s->sv_res || !s->sv_rn) {
+  if (!s->sv_v || !s->sv_w || !s->sv_b || !s->sv_r || !s->sv_x || !s->sv_yt || !s->sv_s || !s->sv_vec || !s->sv_res || !s->sv_rn ||
+      !s->sv_rest || !s->sv_pair) {
     sv_free(s);
     return -1;
   }
@@ -998,7 +1032,7 @@ int abd_solver_smallest_svd(abd_solver *s, const colloc_jac *J, int k, const dou
   const int n = s->n;
   double *V = s->sv_v, *W = s->sv_w, *QL = s->sv_b, *R = s->sv_r, *X = s->sv_x, *YT = s->sv_yt, *S = s->sv_s;
   double *U = s->sv_vec, *res = s->sv_res;
-  const double normF = jac_frobenius(s, J);
+  double normF = -1.0; /* from the first residual pass */
 
   if (start) memcpy(V, start, (size_t)n * (size_t)k * sizeof(double));
   else sv_start(n, k, V);
@@ -1038,12 +1072,13 @@ int abd_solver_smallest_svd(abd_solver *s, const colloc_jac *J, int k, const dou
       sv[i] = 1.0 / S[i];
     }
     double *rn[2] = {s->sv_rn, s->sv_rn + k};
+    /* J V and J^T U in one pass over J (and ||J||_F in the first) */
+    colloc_jac_matvec_pair_team(J, s->team, k, V, res, U, s->sv_rest, s->sv_pair, normF < 0 ? s->iv_sumsq : NULL);
+    if (normF < 0) normF = jac_frobenius(s, J);
     for (int pass = 0; pass < 2; pass++) {
       /* pass 0: J v_i - sigma_i u_i; pass 1: J^T u_i - sigma_i v_i */
-      if (pass == 0) colloc_jac_matvec_many_team(J, s->team, k, V, res);
-      else colloc_jac_matvec_transpose_many(J, k, U, res);
       for (int i = 0; i < k; i++) {
-        double *ri = res + (size_t)i * (size_t)n;
+        double *ri = (pass == 0 ? res : s->sv_rest) + (size_t)i * (size_t)n;
         cblas_daxpy(n, -sv[i], (pass == 0 ? U : V) + (size_t)i * (size_t)n, 1, ri, 1);
         rn[pass][i] = cblas_dnrm2(n, ri, 1);
       }

@@ -177,6 +177,104 @@ void colloc_jac_matvec_transpose_many(const colloc_jac *J, int k, const double *
   }
 }
 
+size_t colloc_jac_pair_scratch(const colloc_jac *J, int k)
+{
+  const size_t nn = (size_t)(J->ncol + 1) * (size_t)J->ndim;
+  return (size_t)J->ntst * (size_t)k * (2 * nn + (size_t)J->nfpr);
+}
+
+typedef struct {
+  matvec_ctx mv;
+  const double *XT;
+  double *scratch, *sumsq;
+} pair_ctx;
+
+/* Interval j: its rows of J X (matvec_interval), its transposed
+ * contributions C_j^T xt_j (nodes, then parameters) and D_j^T xt_d into
+ * scratch, and its block's sum of squares. */
+static void pair_interval(void *p, int j)
+{
+  const pair_ctx *c = p;
+  const colloc_jac *J = c->mv.J;
+  const int nd = J->ndim, nc = J->ncol, nf = J->nfpr, nq = J->ndense, nb = J->nbc;
+  const int nr = nc * nd, nn = (nc + 1) * nd;
+  const size_t n = (size_t)J->n, rb = jac_bc_row(J), per = 2 * (size_t)nn + (size_t)nf;
+  const double *C = colloc_jac_coll_block(J, j);
+  if (c->sumsq) {
+    const size_t len = J->coll_stride;
+    double q[4] = {0, 0, 0, 0};
+    size_t i = 0;
+    for (; i + 4 <= len; i += 4)
+      for (int t = 0; t < 4; t++) q[t] += C[i + t] * C[i + t];
+    for (; i < len; i++) q[0] += C[i] * C[i];
+    c->sumsq[j] = (q[0] + q[1]) + (q[2] + q[3]);
+  }
+  matvec_interval((void *)&c->mv, j);
+  for (int v = 0; v < c->mv.k; v++) {
+    const double *x = c->XT + (size_t)v * n, *xd = x + rb + (size_t)nb;
+    const double *xj = x + (size_t)j * (size_t)nr;
+    double *t = c->scratch + ((size_t)j * (size_t)c->mv.k + (size_t)v) * per;
+    cblas_dgemv(CblasColMajor, CblasTrans, nr, nn, 1.0, C, nr, xj, 1, 0.0, t, 1);
+    if (nf > 0) cblas_dgemv(CblasColMajor, CblasTrans, nr, nf, 1.0, C + (size_t)nn * (size_t)nr, nr, xj, 1, 0.0, t + nn, 1);
+    cblas_dgemv(CblasColMajor, CblasTrans, nq, nn, 1.0, colloc_jac_dense_block(J, j), nq, xd, 1, 0.0, t + nn + nf, 1);
+  }
+}
+
+void colloc_jac_matvec_pair_team(const colloc_jac *J, cable_team *team, int k, const double *X, double *Y,
+                                 const double *XT, double *YT, double *scratch, double *sumsq)
+{
+  const int nd = J->ndim, nc = J->ncol, nf = J->nfpr, nb = J->nbc, nq = J->ndense;
+  const int nn = (nc + 1) * nd;
+  const size_t n = (size_t)J->n, rb = jac_bc_row(J), per = 2 * (size_t)nn + (size_t)nf;
+  pair_ctx pc = {{J, k, X, Y}, XT, scratch, sumsq};
+  cable_team_run(team, pair_interval, &pc, J->ntst);
+  /* J X: the boundary and dense rows, as colloc_jac_matvec_many_team */
+  for (int v = 0; v < k; v++) {
+    const double *x = X + (size_t)v * n, *p = x + jac_par(J);
+    double *y = Y + (size_t)v * n;
+    if (nb > 0) {
+      double *yb = y + rb;
+      cblas_dgemv(CblasColMajor, CblasNoTrans, nb, nd, 1.0, J->bc, nb, x, 1, 0.0, yb, 1);
+      cblas_dgemv(CblasColMajor, CblasNoTrans, nb, nd, 1.0, J->bc + (size_t)nd * (size_t)nb, nb,
+                  x + jac_node(J, J->ntst), 1, 1.0, yb, 1);
+      if (nf > 0)
+        cblas_dgemv(CblasColMajor, CblasNoTrans, nb, nf, 1.0, J->bc + (size_t)(2 * nd) * (size_t)nb, nb, p, 1, 1.0,
+                    yb, 1);
+    }
+    double *yd = y + rb + (size_t)nb;
+    for (int d = 0; d < nq; d++) yd[d] = 0.0;
+    for (int j = 0; j < J->ntst; j++)
+      cblas_dgemv(CblasColMajor, CblasNoTrans, nq, nn, 1.0, colloc_jac_dense_block(J, j), nq, x + jac_node(J, j), 1,
+                  1.0, yd, 1);
+    if (nf > 0) cblas_dgemv(CblasColMajor, CblasNoTrans, nq, nf, 1.0, J->dense_par, nq, p, 1, 1.0, yd, 1);
+  }
+  /* J^T XT: the intervals' contributions in interval order (as
+     colloc_jac_matvec_transpose_many adds them), then the end rows */
+  memset(YT, 0, (size_t)k * n * sizeof(double));
+  for (int j = 0; j < J->ntst; j++)
+    for (int v = 0; v < k; v++) {
+      const double *t = scratch + ((size_t)j * (size_t)k + (size_t)v) * per;
+      double *y = YT + (size_t)v * n, *yn = y + jac_node(J, j), *p = y + jac_par(J);
+      for (int i = 0; i < nn; i++) yn[i] += t[i];
+      for (int q = 0; q < nf; q++) p[q] += t[nn + q];
+      for (int i = 0; i < nn; i++) yn[i] += t[nn + nf + i];
+    }
+  for (int v = 0; v < k; v++) {
+    const double *x = XT + (size_t)v * n, *xd = x + rb + (size_t)nb;
+    double *y = YT + (size_t)v * n, *p = y + jac_par(J);
+    if (nb > 0) {
+      const double *xb = x + rb;
+      cblas_dgemv(CblasColMajor, CblasTrans, nb, nd, 1.0, J->bc, nb, xb, 1, 1.0, y, 1);
+      cblas_dgemv(CblasColMajor, CblasTrans, nb, nd, 1.0, J->bc + (size_t)nd * (size_t)nb, nb, xb, 1, 1.0,
+                  y + jac_node(J, J->ntst), 1);
+      if (nf > 0)
+        cblas_dgemv(CblasColMajor, CblasTrans, nb, nf, 1.0, J->bc + (size_t)(2 * nd) * (size_t)nb, nb, xb, 1, 1.0, p,
+                    1);
+    }
+    if (nf > 0) cblas_dgemv(CblasColMajor, CblasTrans, nq, nf, 1.0, J->dense_par, nq, xd, 1, 1.0, p, 1);
+  }
+}
+
 void colloc_jac_matvec_transpose(const colloc_jac *J, const double *x, double *y)
 {
   colloc_jac_matvec_transpose_many(J, 1, x, y);

@@ -61,6 +61,17 @@ void colloc_jac_matvec_transpose_many(const colloc_jac *J, int k, const double *
  * for bit, for every team size, and the same as the calls above. */
 void colloc_jac_matvec_team(const colloc_jac *J, cable_team *team, const double *x, double *y);
 void colloc_jac_matvec_many_team(const colloc_jac *J, cable_team *team, int k, const double *X, double *Y);
+/* Y = J X and YT = J^T XT (k vectors each) in one pass over the collocation
+ * blocks, on the team: each interval's block is read once for both products
+ * (and for its sum of squares into sumsq[j] when sumsq is not NULL: the
+ * 4-way sum of abd_solver.c's ||J||_F).  The transposed contributions go to
+ * scratch (colloc_jac_pair_scratch doubles) and are added in interval order
+ * afterwards, so Y is bit for bit colloc_jac_matvec_many_team's and YT
+ * colloc_jac_matvec_transpose_many's (the BLAS adds a column's dot product
+ * to y as y + dot; tests/test_colloc.c compares them), for every team size. */
+size_t colloc_jac_pair_scratch(const colloc_jac *J, int k);
+void colloc_jac_matvec_pair_team(const colloc_jac *J, cable_team *team, int k, const double *X, double *Y,
+                                 const double *XT, double *YT, double *scratch, double *sumsq);
 /* Dense n x n column-major copy (tests and small problems). */
 void colloc_jac_to_dense(const colloc_jac *J, double *A);
 

@@ -275,6 +275,17 @@ int colloc_newton_factorization(colloc_newton *nw, struct abd_solver **abd, coll
   return *abd ? 0 : -1;
 }
 
+int colloc_newton_storage(colloc_newton *nw, struct abd_solver **abd, colloc_jac **J)
+{
+  if (nw->kind != CABLE_LINSOLVER_CONDENSE) return -1;
+  *abd = SUNLinSol_Colloc_Solver(nw->LS);
+  *J = nw->J;
+  return *abd ? 0 : -1;
+}
+
+/* the last factorisation is no longer the last solve's (nw->iters >= 0) */
+void colloc_newton_forget(colloc_newton *nw) { nw->last_setup_iter = -1; }
+
 const double *colloc_newton_tangent_unit(colloc_newton *nw)
 {
   struct abd_solver *abd;

@@ -54,4 +54,15 @@ int colloc_newton_factorization(colloc_newton *nw, struct abd_solver **abd, coll
  * has none or the last solve did not use it.  Valid until the next solve. */
 const double *colloc_newton_tangent_unit(colloc_newton *nw);
 
+/* The Newton solver's matrix and structured solver, for a caller that
+ * factors other matrices in the same storage between solves (the
+ * continuation's tangents and test functions: one set of storage instead of
+ * two).  0 with LINSOLVER=condense; -1 (nothing shared) with KLU.  Every
+ * solve assembles and factors afresh, so what the caller leaves there does
+ * not reach it; the caller calls colloc_newton_forget after overwriting
+ * them, so that colloc_newton_factorization no longer hands out the
+ * overwritten factorisation. */
+int colloc_newton_storage(colloc_newton *nw, struct abd_solver **abd, colloc_jac **J);
+void colloc_newton_forget(colloc_newton *nw);
+
 #endif

@@ -3,6 +3,7 @@
 #include "constants_check.h"
 
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "cable/cable_status.h"
@@ -123,16 +124,30 @@ int cable_constants_int_ranges(const cable_constants *c, char *msg, size_t len)
   return 0;
 }
 
-int cable_ext_alloc_check(const char *fn, const cable_problem *pb, const cable_constants *c, char *msg, size_t len)
+void *cable_ext_alloc_open(const char *fn, const cable_problem *pb, const cable_constants *c, size_t size,
+                           cable_ext_sink *sink, int **status, char **msg, size_t *len)
 {
+  if (!*status) *status = &sink->status;
+  if (!*msg) {
+    *msg = sink->msg;
+    *len = sizeof sink->msg;
+  }
   if (!pb || !c) {
-    snprintf(msg, len, "%s: %s is NULL", fn, !pb ? "the problem" : "the constants");
-    return CABLE_ERR_NULL;
+    snprintf(*msg, *len, "%s: %s is NULL", fn, !pb ? "the problem" : "the constants");
+    **status = CABLE_ERR_NULL;
+    return NULL;
   }
   cable_error cerr;
-  int st = cable_constants_consistent(c, c->npar > pb->npar ? c->npar : pb->npar, &cerr);
-  if (st) snprintf(msg, len, "%s", cerr.msg);
-  return st;
+  if ((**status = cable_constants_consistent(c, c->npar > pb->npar ? c->npar : pb->npar, &cerr)) != 0) {
+    snprintf(*msg, *len, "%s", cerr.msg);
+    return NULL;
+  }
+  void *f = calloc(1, size);
+  if (!f) {
+    **status = CABLE_ERR_ALLOC;
+    snprintf(*msg, *len, "out of memory");
+  }
+  return f;
 }
 
 void cable_ext_icp_order(const cable_constants *c, int k, cable_constants *out)

@@ -30,10 +30,30 @@ int cable_int_range_msg(long v, double lo, double hi, char *msg, size_t len);
  * "KEY: must be an integer ..." in msg. */
 int cable_constants_int_ranges(const cable_constants *c, char *msg, size_t len);
 
-/* The common arguments of an extended problem's alloc (cable_fold_alloc,
- * cable_bpcont_alloc): pb and c given, c consistent for pb's parameters.
- * 0, or CABLE_ERR_NULL or the consistency status with msg (fn names the call). */
-int cable_ext_alloc_check(const char *fn, const cable_problem *pb, const cable_constants *c, char *msg, size_t len);
+/* Where an extended problem's alloc writes its status and message when the
+ * caller passed NULL for them (not wanted). */
+typedef struct {
+  int status;
+  char msg[8];
+} cable_ext_sink;
+
+/* The common opening of an extended problem's alloc (cable_fold_alloc,
+ * cable_bpcont_alloc): points a NULL *status / *msg at sink, checks that pb
+ * and c are given and c is consistent for pb's parameters, and returns a
+ * zeroed block of size bytes for the caller to own; NULL with **status and
+ * *msg set (fn names the call) otherwise. */
+void *cable_ext_alloc_open(const char *fn, const cable_problem *pb, const cable_constants *c, size_t size,
+                           cable_ext_sink *sink, int **status, char **msg, size_t *len);
+
+/* Inside an extended problem's alloc (status, msg, len and the half-built f
+ * in scope): set the status and message, free f with freefn, return NULL. */
+#define CABLE_EXT_FAIL(freefn, st, ...)  \
+  do {                                   \
+    snprintf(msg, len, __VA_ARGS__);     \
+    *status = (st);                      \
+    freefn(f);                           \
+    return NULL;                         \
+  } while (0)
 
 /* out = c with the user's ICP in AUTO's order for ISW = 2, [p1, ..., pk, q,
  * printed...], turned into the extended problems' internal order [p1, q,

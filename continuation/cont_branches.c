@@ -267,6 +267,11 @@ int cont_branches_compute(cable_cont *cc, const double *q0, double *e1, double *
     free(mem);
     return CABLE_SUCCESS;
   }
+  /* kept for the restriction to Fix(S) (cont_restrict.c picks the unfolding
+     row from the antisymmetric left null vector) */
+  if (!cc->abe_psi) cc->abe_psi = malloc(2 * (size_t)n * sizeof *cc->abe_psi);
+  if (cc->abe_psi) memcpy(cc->abe_psi, aw.U, 2 * (size_t)n * sizeof *cc->abe_psi);
+  memset(cc->abe_L, 0, sizeof cc->abe_L);
   double f0[2];
   rc = proj(&aw, q0, 0.0, NULL, 0, NULL, 0, f0, F0);
   /* every coefficient at two step sizes: the Richardson combination
@@ -308,6 +313,7 @@ int cont_branches_compute(cable_cont *cc, const double *q0, double *e1, double *
       }
   }
   free(mem);
+  memcpy(cc->abe_L, eq.L, sizeof cc->abe_L);
   cc->abe_order = eq.nd;
   if (!(lmax > CONT_ABE_NOL * nmax)) {
     snprintf(msg, len, "ABE (%s): L vanishes (max %.2e, N %.2e): no transversal crossing, no directions",
@@ -346,6 +352,7 @@ int cont_branches_compute(cable_cont *cc, const double *q0, double *e1, double *
     cable_branch_dir *b = &cc->br[nb++];
     memset(b, 0, sizeof *b);
     b->phi = phi * (180.0 / CONT_ABE_PI);
+    b->multiplicity = 1;
     double Lv[2], Nv[2];
     for (int i = 0; i < 2; i++) {
       Lv[i] = form(eq.L[i], 1, phi);

@@ -311,32 +311,15 @@ static cable_solution *widen_start(const cable_solution *src, int npar)
   return s;
 }
 
-#define FAIL(st, ...)                  \
-  do {                                 \
-    snprintf(msg, len, __VA_ARGS__);   \
-    *status = (st);                    \
-    cable_fold_free(f);                \
-    return NULL;                       \
-  } while (0)
+#define FAIL(st, ...) CABLE_EXT_FAIL(cable_fold_free, st, __VA_ARGS__)
 
 cable_fold *cable_fold_alloc(const cable_problem *pb, const cable_constants *c, const cable_solution *start,
                              int *status, char *msg, size_t len)
 {
   /* status and msg may be NULL (not wanted) */
-  int dummy_status;
-  char dummy_msg[8];
-  if (!status) status = &dummy_status;
-  if (!msg) {
-    msg = dummy_msg;
-    len = sizeof dummy_msg;
-  }
-  if ((*status = cable_ext_alloc_check("cable_fold_alloc", pb, c, msg, len)) != 0) return NULL;
-  cable_fold *f = calloc(1, sizeof *f);
-  if (!f) {
-    *status = CABLE_ERR_ALLOC;
-    snprintf(msg, len, "out of memory");
-    return NULL;
-  }
+  cable_ext_sink sink;
+  cable_fold *f = cable_ext_alloc_open("cable_fold_alloc", pb, c, sizeof *f, &sink, &status, &msg, &len);
+  if (!f) return NULL;
   int n = pb->ndim, k = pb->nbc + pb->nint - pb->ndim + 1;
   f->orig = pb;
   f->n = n;

@@ -64,6 +64,7 @@ struct cable_cont {
   colloc_newton *nw;            /* KINSOL Newton solver */
   colloc_jac *J;                /* Newton matrix for tangents and test functions */
   abd_solver *abd;              /* its factorisation */
+  int linalg_shared;            /* 1: J and abd are the Newton solver's (colloc_newton_storage), not owned */
   double *x, *xdot;             /* current accepted point and its unit tangent */
   double *xp, *xdotp;           /* previous accepted point and tangent */
   double *xt, *xdott;           /* trial point and tangent */
@@ -100,7 +101,7 @@ struct cable_cont {
   int itp_q, bp_kind_q, uz_hit_q, uz_stop_q;
   double ds_q;
   int dip_at_x;                 /* the current point is a located dip */
-  char note[600];               /* remark on the current point for the d-file ("" none) */
+  char note[1200];              /* remark on the current point for the d-file ("" none) */
   int itp;                      /* type of the current point (0 regular) */
   int itp_x;                    /* type found for x when it was accepted (located points) */
   int bp_kind;                  /* enum cable_bp_kind of the current point when it is a BP */
@@ -138,6 +139,14 @@ struct cable_cont {
   cable_branch_dir br[CABLE_MAX_BRANCHES];
   int nbr;                      /* -1: not computed */
   int abe_order;                /* 2 quadratic, 3 cubic ABE, 0 none */
+  double *abe_psi;              /* [2n] the left kernel the ABE used (NULL: not computed) */
+  double abe_L[2][2];           /* L_i = abe_L[i][0] cos + abe_L[i][1] sin on the kernel */
+  /* the restriction to Fix(S) (cont_symmetry.c, cont_restrict.c): a request
+     from the switch (rs_sym >= 0: symmetries[rs_sym], rs_vec = e_s, e_a,
+     psi_a [3n]), then the restricted problem the handle runs (owned) */
+  int rs_sym, rs_comp, rs_at;   /* the symmetry, the odd quantity's component and end */
+  double *rs_vec;
+  struct cont_restricted *rs;
 };
 
 /* cont_tangent.c */
@@ -216,8 +225,45 @@ int cont_load_solution(cable_cont *cc, const cable_solution *s);
  * is set; the point is not stored). */
 int cont_store_solution(cable_cont *cc, int itp, int lab);
 
+/* cont_loop.c: the known branch points of from, for a handle on the problem
+   restricted to Fix(S) (its extra free parameters are 0 at them) */
+int cont_loop_transfer_known(const cable_cont *from, cable_cont *to);
+
+/* cont_symmetry.c: a declared reflection on the kernel and on the branch list */
+/* S v for a discretised vector (pointwise act on the nodes' states; the
+   parameters unchanged) */
+void cont_sym_apply(const cable_cont *cc, const cable_symmetry *sy, const double *v, double *out);
+/* the odd quantity of sy at a discretised vector (u_c at t = 0 or 1; with
+   act, (v - S v)_c at the end where the kernel's antisymmetric direction is
+   largest, chosen by cont_sym_split into *comp, *at) */
+double cont_sym_odd(const cable_cont *cc, const cable_symmetry *sy, int comp, int at, const double *v);
+/* Splits the kernel span{e1, e2} (theta-orthonormal) into e_s (in Fix(S)) and
+   e_a (orthogonal): *phi_s their angle from e1 (radians); *comp, *at the odd
+   quantity's component and end.  0, or -1 when S does not split the kernel
+   (msg says why). */
+int cont_sym_split(cable_cont *cc, const cable_symmetry *sy, const double *e1, const double *e2, double *es,
+                   double *ea, double *phi_s, int *comp, int *at, char *msg, size_t len);
+/* Marks the directions of cc->br in a declared Fix(S) and merges those that a
+   declared act maps onto each other (multiplicity) */
+void cont_sym_merge(cable_cont *cc, const double *e1, const double *e2);
+
+/* cont_restrict.c: the problem restricted to Fix(S) */
+typedef struct cont_restricted cont_restricted;
+/* builds it from the request in cc (rs_sym, rs_vec); NULL with msg on failure */
+cont_restricted *cont_restrict_build(const cable_cont *cc, char *msg, size_t len);
+const cable_problem *cont_restrict_problem(const cont_restricted *r);
+const cable_constants *cont_restrict_constants(const cont_restricted *r);
+/* the unfolding parameter's slot and its boundary-condition row; a one-line account */
+int cont_restrict_unfold_par(const cont_restricted *r);
+const char *cont_restrict_describe(const cont_restricted *r);
+void cont_restrict_free(cont_restricted *r);
+
 /* cont_switch.c: the direction of the bifurcating branch at a BP start */
 int cont_switch_direction(cable_cont *cc);
+/* cont_switch_direction's answer when the branch asked for lies in a declared
+   Fix(S) and needs the restricted problem (cc->rs_sym, cc->rs_vec set): the
+   step rebuilds the handle on it and switches again */
+#define CONT_SWITCH_RESTRICT 1
 
 /* cont_branches.c: the ABE at a double BP (x = cc->x, A = cc->J factored in
  * cc->abd with closing row theta q0^T; e1, e2 are made theta-orthonormal in

@@ -159,3 +159,34 @@ void cont_loop_free(cable_cont *cc)
   free(cc->loop.z);
   cc->loop.z0 = cc->loop.zp = cc->loop.z = NULL;
 }
+
+int cont_loop_transfer_known(const cable_cont *from, cable_cont *to)
+{
+  const cont_loop *a = &from->loop;
+  cont_loop *b = &to->loop;
+  if (a->nknown == 0) return CABLE_SUCCESS;
+  int ma = from->nfpr + 2 * from->ndim, mb = to->nfpr + 2 * to->ndim;
+  double *k = malloc((size_t)a->nknown * (size_t)mb * sizeof *k);
+  char(*nm)[64] = malloc((size_t)a->nknown * sizeof *nm);
+  if (!k || !nm) {
+    free(k);
+    free(nm);
+    return CABLE_ERR_ALLOC;
+  }
+  for (int q = 0; q < a->nknown; q++) {
+    const double *src = a->known + (size_t)q * (size_t)ma;
+    double *dst = k + (size_t)q * (size_t)mb;
+    int j = 0;
+    /* the free parameters the handles share, then the new ones (the restricted
+       problem's unfolding parameter: 0 on the known branches), then U(0), U(1) */
+    for (int p = 0; p < to->nfpr; p++) dst[j++] = p < from->nfpr ? src[p] : 0.0;
+    for (int i = from->nfpr; i < ma; i++) dst[j++] = src[i];
+    memcpy(nm[q], a->known_name[q], sizeof nm[q]);
+  }
+  free(b->known);
+  free(b->known_name);
+  b->known = k;
+  b->known_name = nm;
+  b->nknown = a->nknown;
+  return CABLE_SUCCESS;
+}

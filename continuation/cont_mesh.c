@@ -8,6 +8,7 @@
  * interpolation-error constant of the equally spaced nodes.  Adaptation
  * equidistributes |u^(NCOL+1)|^(1/(NCOL+1)) over [0,1], which equalises
  * that local error. */
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -24,6 +25,15 @@
  * (below 1e-5 for NCOL <= 7), far below the estimate's own uncertainty
  * (a factor 1-9, doc/engine.md). */
 #define CONT_KAPPA_SAMPLES 2000
+/* Below this many rounding units (relative to max(1, max|u|)) the error
+ * estimate is rounding noise, not truncation error: differences of the
+ * NCOL-th derivative of an exact or trivial solution (u = 0, u linear).
+ * Equidistributing noise moves the mesh at random, and with it the point
+ * values by the interpolation error of the remap: on elasz.f90 (u = 0 on
+ * the trivial branch) at DS = 0.1 the second branch point moved by 2e-6
+ * from one build to another.  1e3 covers the sums over NCOL+1 nodes
+ * divided by h^NCOL at NTST <= 1000 with a margin. */
+#define CONT_MESH_NOISE 1.0e3
 
 /* max over components of |u^(ncol+1)| estimated on each interval, into e[ntst] */
 static void high_derivative(const colloc_system *s, const double *x, double *e, double *dn)
@@ -112,13 +122,16 @@ int cont_adapt_mesh(cable_cont *cc)
   int rc = CABLE_ERR_ALLOC;
   if (!e || !dn || !cum || !told || !newmesh || !tmp) goto done;
   high_derivative(s, cc->x, e, dn);
-  double emax = 0.0;
+  double emax = 0.0, est = 0.0, kap = kappa(nc), umax = 1.0;
   for (int j = 0; j < nt; j++) {
+    est = fmax(est, kap * pow(s->mesh[j + 1] - s->mesh[j], nc + 1) * e[j]);
     e[j] = pow(e[j], 1.0 / (nc + 1));
     emax = fmax(emax, e[j]);
   }
+  for (size_t i = 0; i < npts * (size_t)nd; i++) umax = fmax(umax, fabs(cc->x[i]));
   rc = CABLE_SUCCESS;
   if (!(emax > 0) || !isfinite(emax)) goto done; /* nothing to equidistribute */
+  if (est <= CONT_MESH_NOISE * DBL_EPSILON * umax) goto done; /* only rounding noise */
   cum[0] = 0.0;
   for (int j = 0; j < nt; j++)
     cum[j + 1] = cum[j] + fmax(e[j], CONT_MONITOR_FLOOR * emax) * (s->mesh[j + 1] - s->mesh[j]);

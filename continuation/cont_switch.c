@@ -26,6 +26,7 @@
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "cont_impl.h"
@@ -179,6 +180,89 @@ static void note_append(cable_cont *cc, const char *fmt, ...)
   va_end(ap);
 }
 
+/* The branch list with the problem's declared reflections: a list from the
+ * ABE is merged (cont_sym_merge); when the ABE gave none (degenerate, e.g. a
+ * rotation-type symmetry), each reflection that splits the kernel gives its
+ * symmetric direction, to be followed in the restricted problem.  Appends to
+ * abe what it did. */
+static int symmetric_list(cable_cont *cc, const double *e1, const double *e2, char *abe, size_t len)
+{
+  const cable_problem *pb = cc->pb;
+  size_t l = strlen(abe);
+  if (cc->nbr > 0) {
+    int before = cc->nbr;
+    cont_sym_merge(cc, e1, e2);
+    l += (size_t)snprintf(abe + l, len - l, "; symmetry classes: %d of %d directions", cc->nbr, before);
+    for (int k = 0; k < cc->nbr && l < len; k++)
+      l += (size_t)snprintf(abe + l, len - l, "%s %.4g (x%d%s)", k ? "," : "", cc->br[k].phi, cc->br[k].multiplicity,
+                            cc->br[k].sym ? ", symmetric" : "");
+    return CABLE_SUCCESS;
+  }
+  if (!cc->abe_psi) return CABLE_SUCCESS;
+  int n = cc->n, nb = 0;
+  double *es = malloc(2 * (size_t)n * sizeof *es);
+  if (!es) return CABLE_ERR_ALLOC;
+  double *ea = es + n;
+  for (int j = 0; j < pb->nsym && nb < CABLE_MAX_BRANCHES && l < len; j++) {
+    double phi;
+    int comp, at;
+    char why[200];
+    if (cont_sym_split(cc, &pb->symmetries[j], e1, e2, es, ea, &phi, &comp, &at, why, sizeof why) != 0) {
+      l += (size_t)snprintf(abe + l, len - l, "; %s", why);
+      continue;
+    }
+    double deg = phi * (180.0 / CONT_PI);
+    if (deg < -0.125) deg += 180.0;
+    int dup = 0;
+    for (int k = 0; k < nb; k++) dup |= fabs(cc->br[k].phi - deg) < 1e-6;
+    if (dup) continue;
+    cable_branch_dir *b = &cc->br[nb++];
+    memset(b, 0, sizeof *b);
+    b->phi = deg;
+    b->a[1] = cos(deg * (CONT_PI / 180.0));
+    b->a[2] = sin(deg * (CONT_PI / 180.0));
+    b->mu = (double)NAN;
+    b->multiplicity = pb->symmetries[j].multiplicity > 1 ? pb->symmetries[j].multiplicity : 1;
+    b->sym = j + 1;
+    b->restricted = 1;
+    l += (size_t)snprintf(abe + l, len - l, "; Fix(%s) holds the kernel direction at %.4g degrees (x%d)",
+                          pb->symmetries[j].name ? pb->symmetries[j].name : "S", deg, b->multiplicity);
+  }
+  free(es);
+  if (nb > 0) cc->nbr = nb;
+  return CABLE_SUCCESS;
+}
+
+/* Asks the step to rebuild the handle on the problem restricted to Fix(S)
+ * of the k-th entry's symmetry: e_s, e_a and the antisymmetric left null
+ * vector psi_a = L_2(e_s) psi_1 - L_1(e_s) psi_2 (psi_a^T F_xx[q0, e_s] = 0)
+ * into cc->rs_vec. */
+static int request_restriction(cable_cont *cc, int k, const double *e1, const double *e2)
+{
+  int n = cc->n, j = cc->br[k].sym - 1;
+  if (!cc->rs_vec && !(cc->rs_vec = malloc(3 * (size_t)n * sizeof *cc->rs_vec))) return CABLE_ERR_ALLOC;
+  double *es = cc->rs_vec, *ea = es + n, *pa = ea + n, phi;
+  char why[200];
+  if (cont_sym_split(cc, &cc->pb->symmetries[j], e1, e2, es, ea, &phi, &cc->rs_comp, &cc->rs_at, why, sizeof why)) {
+    cont_set_error(cc, "ISW=-1: %s", why);
+    return CABLE_ERR_SWITCH;
+  }
+  double cs = cos(phi), sn = sin(phi);
+  double l1 = cc->abe_L[0][0] * cs + cc->abe_L[0][1] * sn, l2 = cc->abe_L[1][0] * cs + cc->abe_L[1][1] * sn;
+  const double *p1 = cc->abe_psi, *p2 = cc->abe_psi + n;
+  double nr = 0.0;
+  for (int i = 0; i < n; i++) {
+    pa[i] = l2 * p1[i] - l1 * p2[i];
+    nr = fmax(nr, fabs(pa[i]));
+  }
+  if (!(nr > 0)) {
+    cont_set_error(cc, "ISW=-1: L vanishes on the symmetric kernel direction (no transversal crossing)");
+    return CABLE_ERR_SWITCH;
+  }
+  cc->rs_sym = j;
+  return CONT_SWITCH_RESTRICT;
+}
+
 int cont_switch_direction(cable_cont *cc)
 {
   int n = cc->n;
@@ -240,11 +324,20 @@ int cont_switch_direction(cable_cont *cc)
       /* the branch directions (cont_branches.c); A = cc->J still holds
          [F_x; theta q0^T] with q0 the stored tangent, now in dir */
       double *q0 = cc->w3;
-      char abe[300];
+      char abe[500];
       memcpy(q0, dir, (size_t)n * sizeof *q0);
       int arc = cont_branches_compute(cc, q0, e1, e2, abe, sizeof abe);
       if (arc != CABLE_SUCCESS) return arc;
       int k = cc->c->branch > 0 ? cc->c->branch : 1;
+      if (cc->pb->symmetries && cc->pb->nsym > 0) {
+        int rrc = symmetric_list(cc, e1, e2, abe, sizeof abe);
+        if (rrc != CABLE_SUCCESS) return rrc;
+        if (cc->nbr > 0 && k <= cc->nbr && cc->br[k - 1].restricted) {
+          note_append(cc, "; %s; %s; following branch %d (%.4g degrees from e1 towards e2)", how, abe, k,
+                      cc->br[k - 1].phi);
+          return request_restriction(cc, k - 1, e1, e2);
+        }
+      }
       if (cc->nbr > 0 && k <= cc->nbr) {
         const cable_branch_dir *b = &cc->br[k - 1];
         for (int i = 0; i < n; i++) dir[i] = b->a[0] * q0[i] + b->a[1] * e1[i] + b->a[2] * e2[i];

@@ -17,8 +17,11 @@
 int cont_factor_at(cable_cont *cc, const double *x, double *logdet, int *sign)
 {
   int rc = colloc_system_jacobian(cc->sys, x, cc->J);
+  if (cc->linalg_shared) colloc_newton_forget(cc->nw); /* its matrix is overwritten */
   if (rc != 0) return rc > 0 ? CABLE_ERR_RECOVERABLE : CABLE_ERR_CALLBACK;
   rc = abd_solver_factor(cc->abd, cc->J);
+  /* the Newton solver's factorisation is gone (shared storage) */
+  if (cc->linalg_shared) colloc_newton_forget(cc->nw);
   if (rc != 0) return CABLE_ERR_LINSOLVE;
   if (sign) abd_solver_det(cc->abd, sign, logdet);
   return CABLE_SUCCESS;

@@ -318,12 +318,13 @@ int braid_ritz(const cable_solution *sol, int knot, int refine, int degree, int 
   c.L = c.Lb = sol->par[BP_L];
   c.Ltot = sol->par[BP_LTOT];
   c.knot = knot != 0;
+  const int f2row = knot == BSV_KNOT_SYM;
   c.L2 = sol->par[BP_L2];
   c.T = sol->par[BP_T];
   c.k = degree;
   c.refine = refine;
   c.npiece = sol->ntst * refine;
-  c.ns = 2 * degree;   /* Simpson steps per piece */
+  c.ns = BSV_STEPS * degree;   /* RK4/Simpson steps per piece (S7.2) */
   c.nstep = c.npiece * c.ns;
   c.nnode = c.npiece * degree + 1;
   c.n = BSV_NFIELD * c.nnode + c.knot;
@@ -340,7 +341,7 @@ int braid_ritz(const cable_solution *sol, int knot, int refine, int degree, int 
   c.y = malloc((size_t)(c.nstep + 1) * NY * sizeof *c.y);
   c.Fy = malloc((size_t)(c.nstep + 1) * NY * sizeof *c.Fy);
   c.p = malloc((size_t)(c.nstep + 1) * NY * sizeof *c.p);
-  const int ncmax = BSV_NCON + 2;
+  const int ncmax = BSV_NCON + 3;
   double *K = calloc((size_t)n * (size_t)n, sizeof *K), *M = calloc((size_t)n * (size_t)n, sizeof *M);
   double *G = calloc((size_t)ncmax * (size_t)n, sizeof *G);
   double *ga = malloc((size_t)n * sizeof *ga), *gb = malloc((size_t)n * sizeof *gb);
@@ -506,6 +507,62 @@ int braid_ritz(const cable_solution *sol, int knot, int refine, int degree, int 
      index on that complement is Q's, S7) */
   const int shift = sqrt(wn) > 1e-6 * sqrt(fn);
   if (shift) nc++;
+  /* braid_knot_sym: delta F2(0) = 0 (S7.3).  F is the multiplier of the
+     closure of r1, F2(0) = lambda_r . d1(0); for a variation v the
+     multipliers' first-order change is (G G^T)^-1 G K v (the derivative of
+     the least-squares multipliers at a stationary point, G the 8 rows
+     above), so the row is x^T G K with (G G^T) x = (d1(0), 0, ..., 0).  On
+     the mode branches it removes the family that changes F2(0) (its tangent
+     z has K z = G^T dlambda, so the row is dF2(0) != 0 on z) */
+  double f2val = 0.0;
+  if (f2row) {
+    const int ng = BSV_NCON + 1;
+    const double *q = c.q0;
+    const double d1[3] = {2 * (q[1] * q[2] - q[0] * q[3]), q[0] * q[0] - q[1] * q[1] + q[2] * q[2] - q[3] * q[3],
+                          2 * (q[2] * q[3] + q[0] * q[1])};
+    double GG[(BSV_NCON + 1) * (BSV_NCON + 1)], x[BSV_NCON + 1] = {0};
+    lapack_int ipiv[BSV_NCON + 1];
+    for (int a = 0; a < ng; a++)
+      for (int b = 0; b < ng; b++) {
+        double v = 0.0;
+        for (int i = 0; i < n; i++) v += G[(size_t)a + (size_t)ncmax * (size_t)i] * G[(size_t)b + (size_t)ncmax * (size_t)i];
+        GG[a + ng * b] = v;
+      }
+    for (int r = 0; r < 3; r++) {
+      x[r] = d1[r];
+      f2val += d1[r] * lambda[r];
+    }
+    if (LAPACKE_dgesv(LAPACK_COL_MAJOR, ng, 1, GG, ng, ipiv, x, ng) != 0) {
+      st = CABLE_ERR_LINSOLVE;
+      goto done;
+    }
+    /* gx = G^T x, then the row K gx (K symmetric), scaled to the largest
+       constraint row's norm (the rank test of stability.c is relative) */
+    for (int i = 0; i < n; i++) {
+      double v = 0.0;
+      for (int r = 0; r < ng; r++) v += G[(size_t)r + (size_t)ncmax * (size_t)i] * x[r];
+      ga[i] = v;
+    }
+    double rn = 0.0, gmax = 0.0;
+    for (int r = 0; r < nc; r++) {
+      double g2 = 0.0;
+      for (int i = 0; i < n; i++) g2 += G[(size_t)r + (size_t)ncmax * (size_t)i] * G[(size_t)r + (size_t)ncmax * (size_t)i];
+      gmax = fmax(gmax, sqrt(g2));
+    }
+    for (int j = 0; j < n; j++) {
+      double v = 0.0;
+      for (int i = 0; i < n; i++) v += K[(size_t)i + (size_t)n * (size_t)j] * ga[i];
+      gb[j] = v;
+      rn += v * v;
+    }
+    rn = sqrt(rn);
+    if (!(rn > 0.0)) {
+      st = CABLE_ERR_INPUT;
+      goto done;
+    }
+    for (int j = 0; j < n; j++) G[(size_t)nc + (size_t)ncmax * (size_t)j] = gb[j] * gmax / rn;
+    nc++;
+  }
   /* compact G to nc rows */
   for (int i = 0; i < n; i++)
     for (int r = 0; r < nc; r++) G[(size_t)r + (size_t)nc * (size_t)i] = G[(size_t)r + (size_t)ncmax * (size_t)i];
@@ -514,6 +571,8 @@ int braid_ritz(const cable_solution *sol, int knot, int refine, int degree, int 
     info->stat_res = an > 0 ? sqrt(res / an) : 0.0;
     info->asym = hmax > 0 ? amax / hmax : 0.0;
     info->shift_row = shift;
+    info->f2_row = f2row;
+    info->f2 = f2val;
     info->closure = cl;
   }
   *n_out = n;

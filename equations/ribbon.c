@@ -39,11 +39,23 @@ int ribbon_writhe_samples(int n, double period, const double *r, const double *d
   int half = n / 2;
   double a1 = 0.0, a2 = 0.0, a4 = 0.0;
   for (int j = 1; j <= half; j++) {
-    double s = 0.0;
-    for (int i = 0; i < n; i++) {
-      int k = i + j < n ? i + j : i + j - n;
-      s += gauss_kernel(r + 3 * i, dr + 3 * i, r + 3 * k, dr + 3 * k);
+    /* the pairs (i, i + j) without the wrap, then (i, i + j - n): two loops
+     * without a branch, each summed in two interleaved partial sums (the
+     * kernel's square root and division are the cost; ribbon.o is built
+     * with -fno-math-errno, so that the square root is one instruction) */
+    double s0 = 0.0, s1 = 0.0;
+    int i = 0;
+    for (; i + 1 < n - j; i += 2) {
+      s0 += gauss_kernel(r + 3 * i, dr + 3 * i, r + 3 * (i + j), dr + 3 * (i + j));
+      s1 += gauss_kernel(r + 3 * (i + 1), dr + 3 * (i + 1), r + 3 * (i + 1 + j), dr + 3 * (i + 1 + j));
     }
+    for (; i < n - j; i++) s0 += gauss_kernel(r + 3 * i, dr + 3 * i, r + 3 * (i + j), dr + 3 * (i + j));
+    for (; i + 1 < n; i += 2) {
+      s0 += gauss_kernel(r + 3 * i, dr + 3 * i, r + 3 * (i + j - n), dr + 3 * (i + j - n));
+      s1 += gauss_kernel(r + 3 * (i + 1), dr + 3 * (i + 1), r + 3 * (i + 1 + j - n), dr + 3 * (i + 1 + j - n));
+    }
+    for (; i < n; i++) s0 += gauss_kernel(r + 3 * i, dr + 3 * i, r + 3 * (i + j - n), dr + 3 * (i + j - n));
+    double s = s0 + s1;
     double wgt = j < half ? 2.0 : 1.0;
     a1 += wgt * s;
     if (j % 2 == 0) a2 += wgt * s;

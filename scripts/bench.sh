@@ -5,6 +5,8 @@
 # make check).  Environment:
 #   BENCH_REPEATS=n   runs per median (default 3)
 #   BENCH_SCENES=0    leave out the link scenes' replays (link62, link43, link102)
+#   BENCH_EXPLORE=0   leave out `cable explore` on the (7,2) knot (scripts/bench_explore.sh)
+#   BENCH_STAB=0      leave out what STAB=1 costs (tests/bench_stability)
 #   BENCH_NMX, BENCH_NTSTS, BENCH_SWEEP_NMX, BENCH_SWEEP_REPEATS, BENCH_GEOM_NMX: smaller
 #                     settings of scripts/bench_compare.py, to check the script quickly
 #   BENCH_FULL=1      also the older studies (per-phase costs, work against
@@ -109,6 +111,26 @@ path_time() {
         > "$work/scene_$sc/log" 2>&1 || true
       awk -v n="$sc" '{printf "| %s | %.1f | %.1f | %.0f | %d |\n", n, $1, $2 + $3, $4 / 1024, $5}' "$work/scene_$sc/time" | tail -1
     done
+    echo
+  fi
+  # cable explore on the (7,2) knot next to the knot72 scene (its own script; BENCH_EXPLORE=0
+  # leaves it out)
+  if [ "${BENCH_EXPLORE:-1}" != 0 ]; then
+    bash scripts/bench_explore.sh "$build"
+    echo
+  fi
+  # what STAB=1 costs per step and per index (doc/stability.md S2, S7.6)
+  if [ "${BENCH_STAB:-1}" != 0 ]; then
+    echo "## What STAB=1 costs"
+    echo
+    echo "\`tests/bench_stability $reps\` (one thread, medians of $reps runs): seconds per continuation step"
+    echo "with STAB = 0 and 1 (the Euler column and the flat (7,2) knot), one index against the basis"
+    echo "size N and, for the braid, against the Ritz degree (doc/stability.md S2, S7.6). A run"
+    echo "without STAB computes nothing of it. Load before: $(cut -d' ' -f1-3 /proc/loadavg)."
+    echo
+    echo '```'
+    "$build/tests/bench_stability" "$reps"
+    echo '```'
     echo
   fi
   # the atlas part (its own script; CABLE_BENCH_ATLAS=0 leaves it out, make bench-atlas runs it alone)

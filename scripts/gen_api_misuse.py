@@ -121,7 +121,8 @@ RESULT = {
     'cable_problem_validate': 'neg', 'cable_branch_number': 'zero', 'cable_branch_npoints': 'zero',
     'cable_branch_nsolutions': 'zero', 'cable_solution_measure': 'any',
     'cable_autoeq_find': 'neg', 'cable_bp_kind_code': 'zero', 'cable_branch_end_status': 'zero',
-    'cable_cont_branches': 'neg', 'cable_cont_note': 'nonnull',
+    'cable_cont_branches': 'neg', 'cable_cont_note': 'nonnull', 'cable_session_nknown': 'zero',
+    'cable_branch_switch_directions': 'neg',
 }
 
 # Arguments that may be NULL (documented): the call must survive, its result
@@ -164,7 +165,8 @@ OPTIONAL = {
     'cable_session_loadbd': {'err'}, 'cable_session_transform': {'err'},
     'cable_session_transform_files': {'err'},
     'cable_session_constants': {'c', 'names', 'e', 'err'},
-    'cable_session_path': {'type'},
+    'cable_session_path': {'type'}, 'cable_session_add_known': {'err'},
+    'cable_branch_switch_directions': {'out', 'order'},
 }
 
 # Functions that take their handle over (free it): given a fresh one.

@@ -10,6 +10,7 @@
 
 #include "bench_util.h"
 #include "braid_problems.h"
+#include "braid_second_variation.h"
 #include "cable/cable_aufile.h"
 #include "cable/cable_constants.h"
 #include "cable/cable_stability.h"
@@ -112,8 +113,8 @@ int main(int argc, char **argv)
     printf("  N = %5d  %.3e s   (%.2f N^3 ns)\n", res.nbasis, t, 1e9 * t / ((double)res.nbasis * res.nbasis * res.nbasis));
     cable_solution_free(s);
   }
-  printf("the braid: the flat (7,2) knot, c.knot72 at NTST 20, NCOL 7 (N = %d), 1 thread, median of %d runs\n",
-         5 * (20 * 7 + 1) + 1, reps);
+  printf("the braid: the flat (7,2) knot, c.knot72 at NTST 20, NCOL 7 (Ritz degree %d, N = %d), 1 thread, median of "
+         "%d runs\n", BSV_DEGREE_MAX, 5 * (20 * BSV_DEGREE_MAX + 1) + 1, reps);
   double tk[2];
   int nk = 0;
   for (int stab = 0; stab <= 1; stab++) {
@@ -134,6 +135,21 @@ int main(int argc, char **argv)
     printf("  degree %d  N = %5d  %.3e s  index %d\n", deg, res.nbasis, bench_median(v, reps), res.index);
   }
   cable_sfile_free(sf);
+  /* a mode-branch knot: (a) of the paper (NTST 30), braid_knot_sym (the
+     F2(0) row), at the degree a run uses (NCOL 7 capped) */
+  sf = cable_sfile_read("tests/data/s.knot72_mode1_a", &e);
+  if (sf) {
+    cable_stab_result res;
+    const cable_solution *sa = cable_sfile_get(sf, 0);
+    for (int r = 0; r < reps; r++) {
+      double t0 = bench_now();
+      cable_stability_index(braid_problem_find("braid_knot_sym"), sa, 1, sa->ncol, &res, &e);
+      v[r] = bench_now() - t0;
+    }
+    printf("one index at (a), tests/data/s.knot72_mode1_a (NTST 30, braid_knot_sym): N = %d  %.3e s  index %d  "
+           "zero %d\n", res.nbasis, bench_median(v, reps), res.index, res.nzero);
+    cable_sfile_free(sf);
+  }
   free(v);
   return 0;
 }

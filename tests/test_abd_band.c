@@ -5,7 +5,10 @@
  * one-call factorisation bit for bit, and the zero invariant: the storage is
  * all zero after every factorisation, singular ones included, so that a
  * second matrix factored in the same storage gives the factors of a fresh
- * one. */
+ * one; the ring storage (abd_band_set_ring: KL + KU + 1 storage columns,
+ * each matrix column written just before the elimination reaches it) against
+ * the full storage, bit for bit, and the compressed factors' growth from a
+ * small first capacity. */
 #include <lapacke.h>
 #include <math.h>
 #include <stdlib.h>
@@ -145,9 +148,49 @@ static void test_pieces_and_reuse(void)
   abd_band_free(&fresh);
 }
 
+/* The ring: storage of R = KL + KU + 1 columns; matrix column c is copied in
+ * before the elimination of column c - KL - KU (which may reach it), once
+ * column c - R has been eliminated and left its storage zero. */
+static void test_ring(void)
+{
+  enum { R = KL + KU + 1 };
+  double ab[LDAB * N], full[LDAB * N], ring[LDAB * R];
+  abd_band one, rf;
+  if (abd_band_alloc(&one, N, KL, KU) || abd_band_alloc(&rf, N, KL, KU)) {
+    test_true("abd_band_alloc", 0);
+    return;
+  }
+  abd_band_set_ring(&rf, R);
+  int same = 1, zero = 1, grew = 0;
+  size_t cap0 = rf.ucap + rf.lcap;
+  memset(ring, 0, sizeof ring);
+  for (int trial = 0; trial < 10; trial++) {
+    random_band(ab, 900 + (unsigned long)trial, trial % 4 == 1 ? 23 + trial : -1);
+    memcpy(full, ab, sizeof full);
+    int info1 = abd_band_factor(&one, full, LDAB);
+    abd_band_factor_begin(&rf);
+    int written = 0;
+    for (int jend = 1; jend <= N; jend++) {
+      for (; written < N && written < jend + KL + KU; written++)
+        memcpy(ring + (size_t)(written % R) * LDAB, ab + (size_t)written * LDAB, LDAB * sizeof(double));
+      abd_band_factor_upto(&rf, ring, LDAB, jend);
+    }
+    int info2 = abd_band_factor_end(&rf, ring, LDAB);
+    same &= info1 == info2 && (info1 != 0 || same_factors(&one, &rf));
+    for (int i = 0; i < LDAB * R; i++) zero &= ring[i] == 0.0;
+  }
+  grew = rf.ucap + rf.lcap > cap0;
+  test_true("ring storage of KL + KU + 1 columns: the factors and info of the full storage, bit for bit "
+            "(10 matrices, 3 exactly singular), and the ring is all zero afterwards", same && zero);
+  test_true("the compressed factors grew from their first capacity (a quarter of the band) as needed", grew);
+  abd_band_free(&one);
+  abd_band_free(&rf);
+}
+
 int main(void)
 {
   test_against_lapack();
   test_pieces_and_reuse();
+  test_ring();
   return test_summary();
 }

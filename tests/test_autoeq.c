@@ -696,6 +696,20 @@ static void auto_declarations(void)
   }
   cable_bfile_free(bf);
   cable_sfile_free(sf);
+  /* The trivial branch at small steps: u = 0 exactly, so the mesh monitor sees
+   * only rounding noise.  Adapting to it moved the second branch point by 2e-6
+   * (39.47849888) before cont_mesh.c's noise floor (CONT_MESH_NOISE). */
+  const char *small[] = {"DS=0.1", "DSMAX=0.1", "NMX=500", "NPR=500"};
+  rc = replay_over("complex_f90", "elasz", "elasz", "elasz_small", 4, small, &err);
+  test_report(rc == 0, "elasz.f90 at DS = DSMAX = 0.1: runs (%s)", rc ? cable_error_format(&err, buf, sizeof buf) : "ok");
+  bf = cable_bfile_read(TMP "/complex_f90/b.elasz_small", &err);
+  if (test_true("b.elasz_small was written", bf != NULL)) {
+    const cable_bfile_branch *br = &bf->branch[0];
+    test_rel("elasz.f90 at DS = 0.1: first BP at P = pi^2", col(br, "PAR(1)", row_of(br, 6, 0)), PI * PI, 1e-8);
+    test_rel("elasz.f90 at DS = 0.1: second BP at P = (2 pi)^2", col(br, "PAR(1)", row_of(br, 6, 1)), 4 * PI * PI,
+             1e-8);
+  }
+  cable_bfile_free(bf);
 
   const char *fi[] = {"bratuimp.f", "c.bratuimp", "bratuimp.auto", NULL};
   stage("implicit_f", fi);

@@ -22,6 +22,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "braid_bc.h"
 #include "braid_model.h"
 #include "braid_problems.h"
 #include "braid_second_variation.h"
@@ -275,8 +276,228 @@ static void test_flat_branches(void)
   flat_branch("flat (7,2) knot, right arm", "braid_knot", "runs/knot72/c.knot72", knot, 2, 4);
 }
 
+/* ------------------------------------------------ the mode branches' family */
+
+/* braid_knot_sym with F2(0) = Phi instead of F2(0) = 0 (Phi is unused by
+   knots): continuing in Phi at fixed T pushes a solution along the family
+   that changes F2(0); eps13 (the unfolding of (12.3.13)) stays zero exactly
+   when the pushed states are solutions of the plain knot problem */
+static int push_bcnd(int ndim, const double *par, const int *icp, int nbc, const double *u0, const double *u1,
+                     int ijac, double *fb, double *dbc, void *params)
+{
+  int rc = braid_knot_sym_bcnd(ndim, par, icp, nbc, u0, u1, ijac, fb, dbc, params);
+  if (rc != 0) return rc;
+  fb[BK_F20] -= par[BP_PHI];
+  if (ijac >= 2) dbc[BK_F20 + nbc * (2 * BR_NDIM + BP_PHI)] = -1.0;
+  return 0;
+}
+
+typedef struct {
+  int n;
+  double phi[16], eps13[16], T[16];
+} push_run;
+
+static int push_point(void *ctx, const cable_point *pt)
+{
+  push_run *r = ctx;
+  if (r->n < 16) {
+    r->phi[r->n] = pt->par[BP_PHI];
+    r->eps13[r->n] = pt->par[BP_EPS13];
+    r->T[r->n] = pt->par[BP_T];
+    r->n++;
+  }
+  return 0;
+}
+
+/* |d eps13 / d F2(0)| along the push, from a start (start == NULL: the
+   flat knot of cfile's STPNT) */
+static double push_slope(const char *what, const char *cfile, const cable_solution *start)
+{
+  const cable_problem *tpl = braid_problem_find("braid_knot_sym"), *inst = NULL;
+  cable_constants c;
+  cable_error err;
+  const char *over[] = {"ICP=['Phi', 'L', 'L2', 'eps21', 'eps13']", "ISW=1", "NMX=5", "DS=2", "DSMAX=2", "NPR=0",
+                        "RL0=-100", "RL1=100", "ISP=0", "ILP=0", "NTST=30", "NCOL=7"};
+  int st = cable_constants_parse_file_for(cfile, tpl, &c, NULL, &err);
+  for (size_t i = 0; i < sizeof over / sizeof *over; i++)
+    st |= cable_constants_parse_override(over[i], &c, NULL, tpl->parnames, tpl->npar, &err);
+  if (st == 0) st = cable_problem_prepare(tpl, &c, start == NULL, &inst, &err);
+  char msg[200];
+  snprintf(msg, sizeof msg, "push %s: constants and problem", what);
+  if (!test_int(msg, st, 0)) return NAN;
+  cable_problem pb = *inst;
+  pb.bcnd = push_bcnd;
+  cable_solution *s0 = start ? cable_solution_clone(start) : NULL;
+  if (s0) s0->par[BP_PHI] = 0.0;
+  push_run r = {0};
+  cable_cont *cc = cable_cont_alloc(&pb, &c, &st);
+  if (st == CABLE_SUCCESS) st = cable_cont_set_start(cc, s0);
+  if (st == CABLE_SUCCESS) {
+    cable_sink sink = {&r, push_point, NULL, NULL};
+    st = cable_cont_run(cc, &sink, 1, 1, NULL);
+  }
+  cable_cont_free(cc);
+  cable_solution_free(s0);
+  cable_problem_release(tpl, inst);
+  double slope = 0.0, phimax = 0.0, dT = 0.0;
+  for (int i = 1; i < r.n; i++) {
+    slope = fmax(slope, fabs((r.eps13[i] - r.eps13[0]) / (r.phi[i] - r.phi[0])));
+    phimax = fmax(phimax, fabs(r.phi[i]));
+    dT = fmax(dT, fabs(r.T[i] - r.T[0]));
+  }
+  printf("# push %s: %d points, status %d, F2(0) up to %.3g, |d eps13 / d F2(0)| = %.3e, T moved %.1e\n", what, r.n,
+         st, phimax, slope, dT);
+  snprintf(msg, sizeof msg, "push %s: the continuation in F2(0) at fixed T takes its steps", what);
+  test_true(msg, r.n >= 4 && phimax > 4.0 && dT == 0.0);
+  return slope;
+}
+
+/* (a) of the paper, point UZ of the mode-1 branch (runs/knot72's constants,
+   NTST 30, NCOL 7): the index with the row delta F2(0) = 0 */
+static void test_knot_mode1(void)
+{
+  cable_error err;
+  cable_sfile *sf = cable_sfile_read("tests/data/s.knot72_mode1_a", &err);
+  if (!test_true("mode 1: tests/data/s.knot72_mode1_a read", sf != NULL)) return;
+  const cable_solution *sol = cable_sfile_get(sf, 0);
+  printf("# mode-1 knot at T = %.6g, F = %.8g\n", sol->par[BP_T], sol->par[BP_F]);
+  int n, nc;
+  double *K, *M, *G;
+  braid_sv_info info;
+  int st = braid_ritz(sol, BSV_KNOT_SYM, 1, BSV_DEGREE_MAX, &n, &nc, &K, &M, &G, &info);
+  if (!test_int("mode 1: the Ritz matrices with the F2(0) row", st, 0)) {
+    cable_sfile_free(sf);
+    return;
+  }
+  printf("# N = %d, %d rows, first variation %.3e, asymmetry %.3e, F2(0) from the multipliers %.3e\n", n, nc,
+         info.stat_res, info.asym, info.f2);
+  test_le("mode 1: the first variation vanishes on the Ritz space", info.stat_res, stat_tol);
+  test_le("mode 1: the Hessian is symmetric", info.asym, asym_tol);
+  /* the solution is S0-symmetric: F2(0) = lambda_r . d1(0) = 0 to the
+     multipliers' accuracy (mult_tol of |F|) */
+  test_le("mode 1: F2(0) from the multipliers is 0 (rel. to |F|)", fabs(info.f2) / sol->par[BP_F], mult_tol);
+  test_true("mode 1: the shift row and the F2(0) row are there", info.shift_row == 1 && info.f2_row == 1);
+  double *ev1 = malloc((size_t)n * sizeof *ev1), *ev0 = malloc((size_t)n * sizeof *ev0);
+  int nz1 = spectrum(n, K, M, G, nc, nc, ev1), nz0 = spectrum(n, K, M, G, nc, nc - 1, ev0);
+  test_int("mode 1: the F2(0) row removes one degree of freedom", nz0 - nz1, 1);
+  /* without the row: sigma_1 < 0 and a zero eigenvalue to the Ritz error
+     (measured 2.6e-6 at degree 4; its sign changes with the degree); with
+     it: index 1 and the next eigenvalue 8.9e-4, far from zero */
+  double z0 = INFINITY, z1 = INFINITY;
+  int neg1 = 0;
+  for (int i = 0; i < nz0; i++) z0 = fmin(z0, fabs(ev0[i]));
+  for (int i = 0; i < nz1; i++) {
+    z1 = fmin(z1, fabs(ev1[i]));
+    neg1 += ev1[i] < 0;
+  }
+  printf("# without the F2(0) row: sigma = %.6g %.4g %.4g; with it: %.6g %.4g %.4g\n", ev0[0], ev0[1], ev0[2], ev1[0],
+         ev1[1], ev1[2]);
+  test_le("mode 1: without the row an eigenvalue at zero (|sigma| / |sigma_1|)", z0 / fabs(ev0[0]), 1e-6);
+  test_true("mode 1: with it none within 100 times that", z1 > 100 * z0);
+  test_int("mode 1: index 1 with the row", neg1, 1);
+  const cable_problem *pb = braid_problem_find("braid_knot_sym");
+  cable_stab_result res;
+  st = cable_stability_index(pb, sol, 1, sol->ncol, &res, &err);
+  test_true("mode 1: braid_knot_sym's index (degree capped at 4): 1, no zero eigenvalue",
+            st == 0 && res.index == 1 && res.nzero == 0 && res.nbasis == n);
+  test_rel("mode 1: its sigma_2 is the independent solve's", res.eig[1], ev1[1], 1e-8);
+  free(ev0); free(ev1); free(K); free(M); free(G);
+  /* the family: pushing F2(0) away from 0 at fixed T keeps eps13 at zero on
+     the mode branch (a family of solutions of braid_knot through (a)),
+     while on the flat branch it does not (no family there: the flat knot
+     needs no row) */
+  double sm = push_slope("mode 1 (a)", "runs/knot72/c.knot72sym", sol);
+  double sf0 = push_slope("flat knot T = 0", "runs/knot72/c.knot72", NULL);
+  test_le("mode 1: eps13 stays 0 along the push (|d eps13 / d F2(0)|)", sm, 1e-7);
+  test_true("flat knot: eps13 moves along the push (no family)", sf0 > 1e-4);
+  cable_sfile_free(sf);
+}
+
+/* a STAB=1 run of the mode-1 branch (braid_knot_sym) from (a), ILP = 1 and
+   ISP = 1: the index may change only at a located LP (by 1) or BP; returns
+   the index at the first point, -1 on failure */
+static int mode_stretch(const char *what, const cable_solution *start, const char *const *over, int nover, int *nlp_out)
+{
+  const cable_problem *tpl = braid_problem_find("braid_knot_sym"), *pb = NULL;
+  cable_constants c;
+  cable_error err;
+  char msg[200];
+  int st = cable_constants_parse_file_for("runs/knot72/c.knot72sym", tpl, &c, NULL, &err);
+  const char *common[] = {"ISW=1", "ILP=1", "ISP=1", "STAB=1", "NPR=0", "UZR={}", "STOP=[]"};
+  for (size_t i = 0; i < sizeof common / sizeof *common; i++)
+    st |= cable_constants_parse_override(common[i], &c, NULL, tpl->parnames, tpl->npar, &err);
+  for (int i = 0; i < nover; i++) st |= cable_constants_parse_override(over[i], &c, NULL, tpl->parnames, tpl->npar, &err);
+  if (st == 0) st = cable_problem_prepare(tpl, &c, 0, &pb, &err);
+  snprintf(msg, sizeof msg, "%s: constants and problem", what);
+  if (!test_int(msg, st, 0)) return -1;
+  brun *r = calloc(1, sizeof *r);
+  cable_cont *cc = cable_cont_alloc(pb, &c, &st);
+  if (st == CABLE_SUCCESS) st = cable_cont_set_start(cc, start);
+  if (st == CABLE_SUCCESS) {
+    cable_sink sink = {r, brun_point, NULL, NULL};
+    st = cable_cont_run(cc, &sink, 1, 1, NULL);
+  }
+  cable_cont_free(cc);
+  cable_problem_release(tpl, pb);
+  printf("# %s: %d points, status %d (%s)\n", what, r->n, st, cable_status_message(st));
+  int ok = r->n > 5, all = 1, prev = r->index[0], pending = 0, nlp = 0, nbp = 0;
+  for (int i = 0; i < r->n; i++) {
+    all &= r->stab[i] != 0;
+    const int ty = r->itp[i] % 10;
+    printf("#   T = %10.5f  index %d%s\n", r->T[i], r->index[i],
+           ty == CABLE_TY_LP ? "  LP" : ty == CABLE_TY_BP ? "  BP" : "");
+    if (ty == CABLE_TY_LP || ty == CABLE_TY_BP) {
+      nlp += ty == CABLE_TY_LP;
+      nbp += ty == CABLE_TY_BP;
+      pending = 1;   /* the next regular point may differ from the last by the crossing */
+      continue;
+    }
+    if (r->index[i] != prev && !pending) {
+      ok = 0;
+      printf("#   index %d -> %d at T = %.6f, away from a located LP or BP\n", prev, r->index[i], r->T[i]);
+    }
+    prev = r->index[i];
+    pending = 0;
+  }
+  printf("# %s: %d LP, %d BP located\n", what, nlp, nbp);
+  snprintf(msg, sizeof msg, "%s: every point has an index", what);
+  test_true(msg, all);
+  snprintf(msg, sizeof msg, "%s: the index changes only at a located LP or BP", what);
+  test_true(msg, ok);
+  int first = r->n > 0 ? r->index[0] : -1, same = 1;
+  for (int i = 0; i < r->n; i++) same &= r->index[i] == first || r->itp[i] % 10 == CABLE_TY_LP;
+  snprintf(msg, sizeof msg, "%s: the index is %d at every point (the LP of the symmetric branch is no fold of the "
+           "family's sheet: S7.3)", what, first);
+  test_true(msg, same);
+  *nlp_out = nlp;
+  free(r);
+  return first;
+}
+
+static void test_mode_branch(void)
+{
+  cable_error err;
+  cable_sfile *sf = cable_sfile_read("tests/data/s.knot72_mode1_a", &err);
+  if (!test_true("mode 1 stretch: tests/data/s.knot72_mode1_a read", sf != NULL)) return;
+  const cable_solution *sol = cable_sfile_get(sf, 0);
+  /* (a) past the fold at T = -10.40 (the scene's run from (a) to its UZ2
+     in part), and from (a) back towards BP1 (T = 11.076); measured: index 1
+     at all 56 points of (a) -> fold -> (a)'s T and (a) -> T = 10.98 */
+  const char *fwd[] = {"DS=5", "DSMAX=10", "NMX=24"};
+  const char *bwd[] = {"DS=-5", "DSMAX=10", "NMX=12", "RL1=10.9"};
+  int nlp1 = 0, nlp2 = 0;
+  int i1 = mode_stretch("mode 1 from (a) past the fold", sol, fwd, 3, &nlp1);
+  int i2 = mode_stretch("mode 1 from (a) towards BP1", sol, bwd, 4, &nlp2);
+  test_int("mode 1 stretch: the fold at T = -10.40 located", nlp1, 1);
+  test_int("mode 1 stretch: index 1 at (a)", i1, 1);
+  test_int("mode 1 stretch: the same at (a) in both runs", i2, 1);
+  cable_sfile_free(sf);
+}
+
 int main(void)
 {
+  test_knot_mode1();
+  test_mode_branch();
   test_buckled_link();
   test_flat_branches();
   return test_summary();

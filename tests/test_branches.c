@@ -155,6 +155,8 @@ static void check_list(const char *name, const cable_branch_dir *br, int nb, int
     test_abs(what, br[k].phi, phi[k], 1e-3);
     snprintf(what, sizeof what, "%s: direction %d, lambda = pi^2 + mu s^2", name, k + 1);
     test_rel(what, br[k].mu, mu[k], 1e-4);
+    snprintf(what, sizeof what, "%s: direction %d stands for itself (no symmetry declared)", name, k + 1);
+    test_int(what, br[k].multiplicity, 1);
   }
 }
 
@@ -353,8 +355,172 @@ static void test_o2_pair(void)
   cable_solution_free(bp);
 }
 
+/* 5. Declared symmetries (cable_problem.symmetries; doc/engine.md,
+ *    "Symmetry: the restriction to Fix(S)").
+ *    The exchange S (theta1, theta1') <-> (theta2, theta2') by its act. */
+static void swap_act(int ndim, const double *u, double *su, void *params)
+{
+  (void)ndim; (void)params;
+  su[0] = u[2]; su[1] = u[3]; su[2] = u[0]; su[3] = u[1];
+}
+
+/* The Duffing branch theta'' + lambda theta - g theta^3 = 0, theta'(0) =
+ * theta'(1) = 0, first mode with theta(0) = A: with theta = A sin(phi) the
+ * energy integral gives the half period
+ *   int_0^(pi/2) dphi / sqrt(lambda - g A^2 (1 + sin^2 phi) / 2) = 1/2,
+ * decreasing in lambda > g A^2; solved by bisection, the smooth periodic
+ * integrand by the composite midpoint rule (exponentially accurate: 400
+ * nodes give round-off). */
+static double duffing_halfperiod(double lam, double g, double a)
+{
+  const int m = 400;
+  double s = 0.0;
+  for (int k = 0; k < m; k++) {
+    double ph = (k + 0.5) * (0.5 * CB_PI / m), sn = sin(ph);
+    s += 1.0 / sqrt(lam - 0.5 * g * a * a * (1.0 + sn * sn));
+  }
+  return s * (0.5 * CB_PI / m);
+}
+
+static double duffing_lambda(double g, double a)
+{
+  double lo = g * a * a * (1.0 + 1e-15) + 1e-300, hi = g * a * a + 4.0 * CB_PI * CB_PI + 10.0;
+  for (int it = 0; it < 200; it++) {
+    double mid = 0.5 * (lo + hi);
+    if (duffing_halfperiod(mid, g, a) > 0.5) lo = mid; else hi = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+/* follow BRANCH = k of pb from bp; over the stored solutions: the largest
+ * relative deviation of lambda from the Duffing closed form with g at
+ * A = |theta1(0)| (out[0]), max |theta1| (out[1]), max |theta2 - r theta1|
+ * (out[2]), max |PAR(2)| (the unfolding parameter, out[3]); the number of
+ * solutions into *nsol */
+static void follow_duffing(const cable_problem *pb, const cable_solution *bp, int k, double g, double r, double out[4],
+                           int *nsol)
+{
+  cable_constants c;
+  switch_constants(&c, k, 0.05);
+  memrun *m = calloc(1, sizeof *m);
+  memrun_run(pb, &c, bp, m);
+  out[0] = out[1] = out[2] = out[3] = 0.0;
+  for (int i = 1; i < m->nsol; i++) {
+    const cable_solution *s = m->sol[i];
+    for (int j = 0; j < cable_solution_npts(s); j++) {
+      double t1 = s->u[4 * j], t2 = s->u[4 * j + 2];
+      out[1] = fmax(out[1], fabs(t1));
+      out[2] = fmax(out[2], fabs(t2 - r * t1));
+    }
+    double a = fabs(s->u[0]), lam = s->par[0];
+    out[0] = fmax(out[0], fabs(lam - duffing_lambda(g, a)) / lam);
+    if (s->npar > 1) out[3] = fmax(out[3], fabs(s->par[1]));
+  }
+  *nsol = m->nsol;
+  memrun_free(m);
+  free(m);
+}
+
+static void test_declared_swap(void)
+{
+  pair_params pp = {1, 0.0};
+  cable_symmetry sym[1] = {{.name = "swap", .act = swap_act, .unfold_bc = -1, .unfold_par = -1, .multiplicity = 1}};
+  cable_problem pb = {.abi_version = CABLE_PROBLEM_ABI, .struct_size = sizeof(cable_problem),
+                      .name = "two elasticas with the exchange", .ndim = 4, .nbc = 4, .npar = 1,
+                      .func = pair_func, .bcnd = pair_bcnd, .stpnt = pair_stpnt, .params = &pp,
+                      .symmetries = sym, .nsym = 1};
+  memrun *r = calloc(1, sizeof *r);
+  cable_solution *bp = first_bp(&pb, r);
+  free(r);
+  test_true("swap: a branch point on the trivial branch", bp != NULL);
+  if (!bp) return;
+  cable_branch_dir br[CABLE_MAX_BRANCHES];
+  int order = 0, nb = list_branches(&pb, bp, br, &order);
+  /* theta1 alone (0) and theta2 alone (90) are exchanged by S: one class of
+     two; theta1 = theta2 (45) lies in Fix(S); theta1 = -theta2 (135) is
+     mapped onto itself reversed (the other half of the same branch) */
+  test_int("swap: three classes of branch directions", nb, 3);
+  if (nb == 3) {
+    test_abs("swap: class 1 at 0 degrees", br[0].phi, 0.0, 1e-3);
+    test_int("swap: class 1 stands for 0 and 90 degrees (multiplicity 2)", br[0].multiplicity, 2);
+    test_int("swap: class 1 is not in Fix(S)", br[0].sym, 0);
+    test_abs("swap: class 2 at 45 degrees", br[1].phi, 45.0, 1e-3);
+    test_int("swap: class 2 multiplicity 1", br[1].multiplicity, 1);
+    test_int("swap: class 2 lies in Fix(swap)", br[1].sym, 1);
+    test_abs("swap: class 3 at 135 degrees", br[2].phi, 135.0, 1e-3);
+    test_int("swap: class 3 multiplicity 1", br[2].multiplicity, 1);
+    test_int("swap: class 3 is not in Fix(S)", br[2].sym, 0);
+    test_int("swap: no restriction needed (the ABE decide)", br[0].restricted + br[1].restricted + br[2].restricted, 0);
+  }
+  /* BRANCH = 2 is the in-phase branch theta1 = theta2 */
+  double m[3];
+  follow(&pb, bp, 2, 0.05, 1.0, m);
+  char what[200];
+  snprintf(what, sizeof what, "swap: BRANCH=2 follows theta1 = theta2 (amplitude %.3f, deviation %.2e)", m[0], m[2]);
+  test_true(what, m[0] > 0.3 && m[2] < 1e-6);
+  cable_solution_free(bp);
+}
+
+/* The O(2) pair with one reflection declared: by odd (theta2 -> -theta2:
+ * U(3) at t = 0 is odd, Fix = {theta2 = 0}, the branch theta1'' + lambda
+ * theta1 - theta1^3 = 0: Duffing g = 1) or by act (the exchange, Fix =
+ * {theta1 = theta2}: theta'' + lambda theta - 2 theta^3 = 0, g = 2).  The
+ * ABE vanish identically; the switch restricts to Fix(S), where the BP is
+ * simple, and follows the symmetric branch.  Tolerance for lambda: the
+ * collocation error of NTST = 40, NCOL = 4 at amplitudes below 1 (measured
+ * 6.1e-13 relative; the test allows 1e-8), plus the corrector's EPSU = 1e-7
+ * on the unknowns (quadratic convergence leaves ~1e-12). */
+static void test_o2_declared(int by_act)
+{
+  pair_params pp = {2, 0.0};
+  cable_symmetry sym[1];
+  if (by_act)
+    sym[0] = (cable_symmetry){.name = "swap", .act = swap_act, .unfold_bc = -1, .unfold_par = -1, .multiplicity = 1};
+  else
+    sym[0] = (cable_symmetry){.name = "flip2", .odd_comp = 2, .odd_at = 0, .unfold_bc = -1, .unfold_par = -1,
+                              .multiplicity = 1};
+  const char *name = by_act ? "O(2) pair, exchange by act" : "O(2) pair, theta2 odd";
+  cable_problem pb = {.abi_version = CABLE_PROBLEM_ABI, .struct_size = sizeof(cable_problem),
+                      .name = name, .ndim = 4, .nbc = 4, .npar = 1,
+                      .func = pair_func, .bcnd = pair_bcnd, .stpnt = pair_stpnt, .params = &pp,
+                      .symmetries = sym, .nsym = 1};
+  memrun *r = calloc(1, sizeof *r);
+  cable_solution *bp = first_bp(&pb, r);
+  free(r);
+  char what[900];
+  snprintf(what, sizeof what, "%s: a branch point", name);
+  test_true(what, bp != NULL);
+  if (!bp) return;
+  cable_branch_dir br[CABLE_MAX_BRANCHES];
+  int order = 0, nb = list_branches(&pb, bp, br, &order);
+  snprintf(what, sizeof what, "%s: one direction, from the symmetry", name);
+  test_int(what, nb, 1);
+  if (nb == 1) {
+    snprintf(what, sizeof what, "%s: it lies in Fix(S) and is followed in the restricted problem", name);
+    test_true(what, br[0].sym == 1 && br[0].restricted == 1 && br[0].multiplicity == 1);
+  }
+  double m[4];
+  int nsol = 0;
+  follow_duffing(&pb, bp, 1, by_act ? 2.0 : 1.0, by_act ? 1.0 : 0.0, m, &nsol);
+  snprintf(what, sizeof what, "%s: the symmetric branch is followed (%d solutions, max |theta1| %.3f)", name, nsol,
+           m[1]);
+  test_true(what, nsol >= 3 && m[1] > 0.3);
+  snprintf(what, sizeof what, "%s: it stays in Fix(S) (max |theta2 - %s theta1| = %.2e)", name, by_act ? "" : "0",
+           m[2]);
+  test_true(what, m[2] < 1e-6);
+  snprintf(what, sizeof what, "%s: lambda agrees with the Duffing closed form, g = %d (max rel. dev. %.2e)", name,
+           by_act ? 2 : 1, m[0]);
+  test_true(what, m[0] < 1e-8);
+  snprintf(what, sizeof what, "%s: the unfolding parameter stays 0 (max |PAR(2)| = %.2e)", name, m[3]);
+  test_true(what, m[3] < 1e-9);
+  cable_solution_free(bp);
+}
+
 int main(void)
 {
+  test_declared_swap();
+  test_o2_declared(0);
+  test_o2_declared(1);
   test_pair(1, 0.0);
   test_pair(0, 0.0);
   test_pair(0, 1.0);

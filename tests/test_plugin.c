@@ -290,13 +290,32 @@ static void expect_reject(const char *name, int want_status, const char *want_ta
   test_true(what, ok);
 }
 
+/* An ABI 5 plug-in (no symmetries) still loads: the loader completes its
+ * struct with nsym = 0 and never reads past its struct_size. */
+static void test_abi5(void)
+{
+  char path[600];
+  cable_error err;
+  const cable_problem *pb = NULL;
+  cable_plugin *p = cable_plugin_open(plugin_path("abi5_plugin", path, sizeof path), &pb, &err);
+  char buf[1200];
+  if (!p) printf("  error: %s\n", cable_error_format(&err, buf, sizeof buf));
+  test_true("an ABI 5 plug-in loads", p != NULL && pb != NULL);
+  if (!p) return;
+  test_int("ABI 5: completed to the current ABI", pb->abi_version, CABLE_PROBLEM_ABI);
+  test_true("ABI 5: the struct size is the current one", pb->struct_size == sizeof(cable_problem));
+  test_true("ABI 5: no symmetries (the garbage past its struct is not read)", pb->nsym == 0 && pb->symmetries == NULL);
+  test_true("ABI 5: its own fields are kept", strcmp(pb->name, "abi5") == 0 && pb->ndim == 1 && pb->nbc == 1);
+  cable_plugin_close(p);
+}
+
 static void test_broken(void)
 {
   expect_reject("broken_noentry", CABLE_ERR_PLUGIN,
                 "cable_problem_entry: the plug-in does not export it (define `const cable_problem "
                 "*cable_problem_entry(void)` with external linkage)");
   expect_reject("broken_abi", CABLE_ERR_PLUGIN,
-                "abi_version: built for ABI 99, this cable expects 5 (rebuild the plug-in against "
+                "abi_version: built for ABI 99, this cable expects 6 (rebuild the plug-in against "
                 "this cable's cable_problem.h)");
   char tail[400];
   snprintf(tail, sizeof tail,
@@ -514,6 +533,7 @@ int main(int argc, char **argv)
   set_plugin_dir(argv[0]);
   test_bratu();
   test_broken();
+  test_abi5();
   test_validate();
   test_documented_build();
   return test_summary();

@@ -377,6 +377,42 @@ static void test_matvec(void)
     test_report(t != NULL && same, "matvec: a team of %d thread(s) gives colloc_jac_matvec_many's bits", size);
     cable_team_free(t);
   }
+  /* J X and J^T X' in one pass (colloc_jac_matvec_pair_team): the bits of
+     the separate calls for every team size; J^T X' against the dense
+     product, the blocks' sums of squares against a plain sum */
+  double *XT = malloc(k * n * sizeof *XT), *YT0 = malloc(k * n * sizeof *YT0), *YT = malloc(k * n * sizeof *YT);
+  double *scr = malloc(colloc_jac_pair_scratch(J, (int)k) * sizeof *scr), *sq = malloc((size_t)J->ntst * sizeof *sq);
+  if (XT && YT0 && YT && scr && sq) {
+    for (size_t i = 0; i < k * n; i++) XT[i] = X[(i * 7 + 3) % (k * n)] - 0.25;
+    colloc_jac_matvec_transpose_many(J, (int)k, XT, YT0);
+    double errt = 0, scalet = 0;
+    for (size_t v = 0; v < k; v++)
+      for (size_t c = 0; c < n; c++) {
+        double y = 0;
+        for (size_t r = 0; r < n; r++) y += A[c * n + r] * XT[v * n + r];
+        errt = fmax(errt, fabs(y - YT0[v * n + c]));
+        scalet = fmax(scalet, fabs(y));
+      }
+    test_le("matvec: J^T X equals the dense product (max abs error / max |J^T X|)", errt / scalet, 1e-14);
+    double sqerr = 0;
+    for (int size = 1; size <= 3; size++) {
+      cable_team *t = cable_team_alloc(size);
+      colloc_jac_matvec_pair_team(J, t, (int)k, X, Y, XT, YT, scr, sq);
+      int same = memcmp(Y, Y0, k * n * sizeof *Y) == 0 && memcmp(YT, YT0, k * n * sizeof *YT) == 0;
+      test_report(t != NULL && same,
+                  "matvec: J X and J^T X' in one pass, team of %d: the bits of the separate calls", size);
+      cable_team_free(t);
+    }
+    for (int j = 0; j < J->ntst; j++) {
+      double s = 0;
+      for (size_t i = 0; i < J->coll_stride; i++) s += J->coll[(size_t)j * J->coll_stride + i] * J->coll[(size_t)j * J->coll_stride + i];
+      sqerr = fmax(sqerr, fabs(s - sq[j]) / s);
+    }
+    test_le("matvec: the blocks' sums of squares from the pair pass (relative error)", sqerr, 1e-14);
+  } else {
+    test_true("matvec: allocation", 0);
+  }
+  free(XT); free(YT0); free(YT); free(scr); free(sq);
   free(X); free(Y0); free(Y); free(A);
   colloc_jac_free(J);
 }

@@ -9,6 +9,7 @@
 #include <dlfcn.h>
 #include <errno.h>
 #include <stdarg.h>
+#include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -23,7 +24,8 @@
 
 struct cable_plugin {
   void *handle;               /* from dlopen */
-  const cable_problem *pb;    /* inside the module */
+  const cable_problem *pb;    /* inside the module, or &copy */
+  cable_problem copy;         /* an older layout (ABI 5) completed with this cable's defaults */
   char path[512];
 };
 
@@ -108,22 +110,29 @@ static int check_keys(const cable_problem *pb, const char *origin, cable_error *
   return 0;
 }
 
+/* the struct size of a layout: ABI 5 ended with variational */
+static size_t abi_size(int abi)
+{
+  return abi == 5 ? offsetof(cable_problem, symmetries) : sizeof(cable_problem);
+}
+
 int cable_problem_validate(const cable_problem *pb, int npar_max, const char *origin,
                            cable_error *err)
 {
   if (!origin) origin = "";
   if (!pb) return reject(err, origin, CABLE_PROBLEM_ENTRY, "returned NULL (no problem)");
   /* version and size first: past them the layout may not be ours */
-  if (pb->abi_version != CABLE_PROBLEM_ABI)
+  if (pb->abi_version != CABLE_PROBLEM_ABI && pb->abi_version != CABLE_PROBLEM_ABI_OLDEST)
     return reject(err, origin, "abi_version",
                   "built for ABI %d, this cable expects %d (rebuild the plug-in against this "
                   "cable's cable_problem.h)",
                   pb->abi_version, CABLE_PROBLEM_ABI);
-  if (pb->struct_size != sizeof(cable_problem))
+  size_t want = abi_size(pb->abi_version);
+  if (pb->struct_size != want)
     return reject(err, origin, "struct_size",
                   "is %zu, this cable's cable_problem has %zu bytes (set it to "
                   "sizeof(cable_problem) and rebuild against this cable's headers)",
-                  pb->struct_size, sizeof(cable_problem));
+                  pb->struct_size, want);
   if (!pb->name || name_problem(pb->name))
     return reject(err, origin, "name", "the problem needs a name usable as e=NAME (%s)",
                   pb->name ? name_problem(pb->name) : "it is NULL");
@@ -150,7 +159,27 @@ int cable_problem_validate(const cable_problem *pb, int npar_max, const char *or
     return reject(err, origin, "parnames", "names are given but npar is 0");
   if (pb->parnames && check_names(pb->parnames, pb->npar, "parnames", origin, err)) return CABLE_ERR_PLUGIN;
   if (pb->unames && check_names(pb->unames, pb->ndim, "unames", origin, err)) return CABLE_ERR_PLUGIN;
-  return check_keys(pb, origin, err);
+  if (check_keys(pb, origin, err)) return CABLE_ERR_PLUGIN;
+  if (pb->abi_version < 6) return 0;
+  /* ABI 6: the declared reflections (doc/plugins.md, Symmetries) */
+  if (pb->nsym < 0 || (pb->nsym > 0 && !pb->symmetries))
+    return reject(err, origin, "symmetries", "nsym = %d needs nsym >= 0 and a symmetries array when positive",
+                  pb->nsym);
+  for (int i = 0; i < pb->nsym; i++) {
+    const cable_symmetry *sy = &pb->symmetries[i];
+    char key[48];
+    snprintf(key, sizeof key, "symmetries[%d]", i);
+    if (!sy->act && (sy->odd_comp < 0 || sy->odd_comp >= pb->ndim || (sy->odd_at != 0 && sy->odd_at != 1)))
+      return reject(err, origin, key, "needs act, or odd_comp in [0, ndim = %d) and odd_at 0 or 1 (got %d, %d)",
+                    pb->ndim, sy->odd_comp, sy->odd_at);
+    if (sy->unfold_bc < -1 || sy->unfold_bc >= pb->nbc)
+      return reject(err, origin, key, "unfold_bc = %d: -1 or a row below nbc = %d", sy->unfold_bc, pb->nbc);
+    if (sy->unfold_par < -1 || sy->unfold_par >= npar_max)
+      return reject(err, origin, key, "unfold_par = %d: -1 or a slot below NPAR = %d", sy->unfold_par, npar_max);
+    if (sy->multiplicity < 0)
+      return reject(err, origin, key, "multiplicity = %d must not be negative", sy->multiplicity);
+  }
+  return 0;
 }
 
 cable_plugin *cable_plugin_open_npar(const char *path, int npar_max, const cable_problem **pb,
@@ -213,6 +242,14 @@ cable_plugin *cable_plugin_open_npar(const char *path, int npar_max, const cable
   if (cable_problem_validate(p->pb, npar_max, path, err)) {
     cable_plugin_close(p);
     return NULL;
+  }
+  if (p->pb->abi_version != CABLE_PROBLEM_ABI) {
+    /* an older layout: its fields, the newer ones zero (no symmetries) */
+    memset(&p->copy, 0, sizeof p->copy);
+    memcpy(&p->copy, p->pb, p->pb->struct_size);
+    p->copy.abi_version = CABLE_PROBLEM_ABI;
+    p->copy.struct_size = sizeof p->copy;
+    p->pb = &p->copy;
   }
   if (pb) *pb = p->pb;
   return p;

@@ -292,7 +292,12 @@ int cable_cmd_analyze(const char *sfile, int nlab, char **labels, FILE *out, cab
     if (a.topo.closure > 0) fprintf(out, "  material closure of strand 2 %.6f\n", a.closure2);
     if (stab) {
       cable_stab_result r;
-      const cable_problem *pb = cable_problem_builtin(a.topo.closure < 0 ? "braid_knot" : "braid_link");
+      /* a knot computed with eps13 free is a braid_knot_sym solution (the
+         mode branches): its second variation has the row delta F2(0) = 0 */
+      int sym = 0;
+      for (int j = 0; j < x->nfpr; j++) sym |= x->icp[j] == BP_EPS13;
+      const cable_problem *pb =
+        cable_problem_builtin(a.topo.closure < 0 ? (sym ? "braid_knot_sym" : "braid_knot") : "braid_link");
       rc = cable_stability_index(pb, x, 1, x->ncol, &r, err);
       if (rc) break;
       fprintf(out, "  stability: Morse index %d (%s), zero eigenvalues %d; smallest eigenvalues", r.index,

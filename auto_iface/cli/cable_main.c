@@ -32,6 +32,10 @@ static void usage(FILE *out)
         "  atlas SWEEP.toml [--workers N | --scheduler ADDRESS] [--check] [--retry-failed]\n"
         "                     an atlas of cable knots and links on Dask (python3 -m\n"
         "                     cable.atlas; doc/atlas.md)\n"
+        "  explore TORUS=p HAND=+-1 Delta=D Ltot=L [modes=N] [out=DIR] [KEY=VALUE ...]\n"
+        "                     the flat branch of a torus knot or link, its branch points\n"
+        "                     and every branch from the first N of them: the diagram, the\n"
+        "                     pictures and a table (python3 -m cable.explorer; doc/explore.md)\n"
         "  view DIR [o=FILE.html]\n"
         "                     one offline HTML page of a run directory's b./s. files or\n"
         "                     an atlas: the diagram beside the 3-D knot (python3 -m\n"
@@ -206,6 +210,7 @@ int main(int argc, char **argv)
   if (strcmp(cmd, "run") == 0) return run_command(argc - 2, argv + 2, &err);
   if (strcmp(cmd, "atlas") == 0) return python_module("cable.atlas", argc, argv);
   if (strcmp(cmd, "view") == 0) return python_module("cable.webview", argc, argv);
+  if (strcmp(cmd, "explore") == 0) return python_module("cable.explorer", argc, argv);
   if (strcmp(cmd, "replay") == 0) {
     if (argc != 3) {
       fprintf(stderr, "cable: usage: cable replay SCRIPT\n");

@@ -6,6 +6,7 @@
 #include "pycable.h"
 
 #include <math.h>
+#include <string.h>
 
 
 static int set_num(PyObject *d, const char *key, double x)
@@ -97,7 +98,15 @@ PyObject *pyc_analyze(PyObject *mod, PyObject *args)
     /* the Morse index (doc/stability.md S7): 'index', 'nzero', 'sigma' */
     cable_stab_result r;
     cable_error err;
-    const cable_problem *pb = cable_problem_builtin(closure_sign < 0 ? "braid_knot" : "braid_link");
+    /* a knot computed with eps13 free is a braid_knot_sym solution (the mode
+       branches): its second variation has the row delta F2(0) = 0 (S7.3) */
+    const cable_problem *ks = cable_problem_builtin("braid_knot_sym");
+    int sym = 0;
+    for (int j = 0; ks && ks->parnames && j < s->nfpr; j++)
+      sym |= s->icp[j] >= 0 && s->icp[j] < ks->npar && ks->parnames[s->icp[j]] &&
+             strcmp(ks->parnames[s->icp[j]], "eps13") == 0;
+    const cable_problem *pb =
+      cable_problem_builtin(closure_sign < 0 ? (sym ? "braid_knot_sym" : "braid_knot") : "braid_link");
     int st;
     Py_BEGIN_ALLOW_THREADS
     st = cable_stability_index(pb, s, 1, s->ncol, &r, &err);

@@ -267,7 +267,33 @@ static PyObject *branch_constants(PyObject *self, PyObject *noargs)
   return pyc_constants_dict(cable_branch_constants(b), cable_branch_names(b), cable_branch_problem(b));
 }
 
+/* directions() -> [dict, ...] or None: the branch directions the run's
+ * switch found at a double branch point (cable_branch_switch_directions) */
+static PyObject *branch_directions(PyObject *self, PyObject *noargs)
+{
+  (void)noargs;
+  cable_branch_dir d[CABLE_MAX_BRANCHES];
+  int order = 0, n = cable_branch_switch_directions(((pyc_branch *)self)->b, d, CABLE_MAX_BRANCHES, &order);
+  if (n < 0) Py_RETURN_NONE;
+  PyObject *out = PyList_New(n);
+  for (int k = 0; out && k < n; k++) {
+    PyObject *e = Py_BuildValue("{s:i,s:d,s:(ddd),s:d,s:(dd),s:(dd),s:d,s:i,s:i,s:O,s:O,s:i}", "BRANCH", k + 1, "phi",
+                                d[k].phi, "a", d[k].a[0], d[k].a[1], d[k].a[2], "mu", d[k].mu, "L", d[k].L[0],
+                                d[k].L[1], "N", d[k].N[0], d[k].N[1], "dg", d[k].dg, "multiplicity",
+                                d[k].multiplicity, "sym", d[k].sym, "symmetric", d[k].sym ? Py_True : Py_False,
+                                "restricted", d[k].restricted ? Py_True : Py_False, "order", order);
+    if (!e) {
+      Py_DECREF(out);
+      return NULL;
+    }
+    PyList_SET_ITEM(out, k, e);
+  }
+  return out;
+}
+
 static PyMethodDef branch_methods[] = {
+    {"directions", branch_directions, METH_NOARGS,
+     "the branch directions of the run's switch at a double branch point (list of dicts), None: none"},
     {"points", branch_points, METH_NOARGS, "the branch's points (b-file rows) as numpy arrays"},
     {"solution", branch_solution, METH_O, "labelled solution i: a dict of its data (numpy arrays)"},
     {"constants", branch_constants, METH_NOARGS, "the constants of the branch's run as a dict (AUTO's s.c)"},

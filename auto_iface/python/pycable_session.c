@@ -165,7 +165,7 @@ static void inputs_free(run_inputs *in)
   Py_XDECREF(in->over_fast);
 }
 
-/* (start, sol, mbr, mlab, name, e, c, s, sv, ap, over): start a Branch with
+/* (start, sol, mbr, mlab, name, e, c, s, sv, ap, over[, keep_state]): start a Branch with
  * sol >= 0 (a solution, mbr and mlab the largest branch number and label of
  * the result it was taken from), a list of branches (a result), or None;
  * name, e, c, s, sv, ap str or None; over a list of "KEY=VALUE" statements. */
@@ -173,9 +173,10 @@ static int inputs_parse(PyObject *args, run_inputs *in)
 {
   memset(in, 0, sizeof *in);
   PyObject *start, *name, *e, *c, *s, *sv, *ap, *over;
-  int sol, mbr, mlab;
-  if (!PyArg_ParseTuple(args, "OiiiOOOOOOO", &start, &sol, &mbr, &mlab, &name, &e, &c, &s, &sv, &ap, &over))
+  int sol, mbr, mlab, keep = 0;
+  if (!PyArg_ParseTuple(args, "OiiiOOOOOOO|p", &start, &sol, &mbr, &mlab, &name, &e, &c, &s, &sv, &ap, &over, &keep))
     return -1;
+  in->a.keep_state = keep;
   if (PyObject_TypeCheck(start, &pyc_branch_type) && sol >= 0) {
     in->a.sol_branch = ((pyc_branch *)start)->b;
     in->a.sol_index = sol;
@@ -227,19 +228,23 @@ static PyObject *interrupted(cable_branch *b, const cable_error *err)
   return NULL;
 }
 
+/* The opening of run() and load(): the arguments parsed into in and the
+ * session entered; -1 with the Python error set (in freed) otherwise. */
+static int inputs_open(pyc_session *self, PyObject *args, run_inputs *in)
+{
+  if (inputs_parse(args, in) < 0 || session_enter(self) < 0) {
+    inputs_free(in);
+    return -1;
+  }
+  return 0;
+}
+
 /* run(start, sol, mbr, mlab, name, e, c, s, sv, ap, over) -> Branch */
 static PyObject *session_run(PyObject *obj, PyObject *args)
 {
   pyc_session *self = (pyc_session *)obj;
   run_inputs in;
-  if (inputs_parse(args, &in) < 0) {
-    inputs_free(&in);
-    return NULL;
-  }
-  if (session_enter(self) < 0) {
-    inputs_free(&in);
-    return NULL;
-  }
+  if (inputs_open(self, args, &in) < 0) return NULL;
   cable_branch *b = NULL;
   cable_error err;
   cable_error_clear(&err);
@@ -260,14 +265,7 @@ static PyObject *session_load(PyObject *obj, PyObject *args)
 {
   pyc_session *self = (pyc_session *)obj;
   run_inputs in;
-  if (inputs_parse(args, &in) < 0) {
-    inputs_free(&in);
-    return NULL;
-  }
-  if (session_enter(self) < 0) {
-    inputs_free(&in);
-    return NULL;
-  }
+  if (inputs_open(self, args, &in) < 0) return NULL;
   cable_branch *b = NULL;
   cable_error err;
   cable_error_clear(&err);
@@ -395,14 +393,53 @@ static PyObject *session_info(PyObject *obj, PyObject *args)
   return out;
 }
 
+/* add_known(branch, sol) -> int: the branch points of branch (sol < 0:
+ * every one; else that solution) become known points of later runs
+ * (cable_session_add_known); the number added */
+static PyObject *session_add_known(PyObject *obj, PyObject *args)
+{
+  pyc_session *self = (pyc_session *)obj;
+  PyObject *b;
+  int sol;
+  if (!PyArg_ParseTuple(args, "O!i", &pyc_branch_type, &b, &sol)) return NULL;
+  if (session_enter(self) < 0) return NULL;
+  cable_error err;
+  cable_error_clear(&err);
+  int rc = cable_session_add_known(self->s, ((pyc_branch *)b)->b, sol, &err);
+  session_leave(self);
+  return rc < 0 ? pyc_raise(rc, &err) : PyLong_FromLong(rc);
+}
+
+/* clear_known(): forgets the known points; nknown() -> int */
+static PyObject *session_clear_known(PyObject *obj, PyObject *noargs)
+{
+  (void)noargs;
+  pyc_session *self = (pyc_session *)obj;
+  if (session_enter(self) < 0) return NULL;
+  cable_session_clear_known(self->s);
+  session_leave(self);
+  Py_RETURN_NONE;
+}
+
+static PyObject *session_nknown(PyObject *obj, PyObject *noargs)
+{
+  (void)noargs;
+  return PyLong_FromLong(cable_session_nknown(((pyc_session *)obj)->s));
+}
+
 static PyMethodDef session_methods[] = {
     {"info", session_info, METH_VARARGS, "info(e) -> str: the problem's parameters, components, keys, recommended constants"},
-    {"run", session_run, METH_VARARGS, "run(start, sol, name, e, c, s, sv, ap, overrides) -> Branch"},
+    {"run", session_run, METH_VARARGS,
+     "run(start, sol, name, e, c, s, sv, ap, overrides[, keep_state]) -> Branch (keep_state: a probe that leaves "
+     "the runner's state as it was)"},
     {"load", session_load, METH_VARARGS, "load(start, sol, name, e, c, s, sv, ap, overrides) -> Branch or None (no solution)"},
     {"save", session_save, METH_VARARGS, "save(branches, sol, name, append)"},
     {"loadbd", session_loadbd, METH_VARARGS, "loadbd(name) -> [Branch, ...]"},
     {"transform", session_transform, METH_VARARGS, "transform(branches, relabel) -> [Branch, ...]"},
     {"transform_files", session_transform_files, METH_VARARGS, "transform_files(name, relabel)"},
+    {"add_known", session_add_known, METH_VARARGS, "add_known(branch, sol) -> int: its BPs (sol < 0: all) become known points"},
+    {"clear_known", session_clear_known, METH_NOARGS, "clear_known(): forget the known points"},
+    {"nknown", session_nknown, METH_NOARGS, "nknown() -> int: the number of known points"},
     {"constants", session_constants, METH_NOARGS, "constants() -> dict: the runner's constants (AUTO's pr())"},
     {NULL, NULL, 0, NULL}};
 

@@ -914,6 +914,8 @@ static int engine_run(cable_session *r, rp_setup *s, const char *out_name, int o
       free(mesh);
     }
   }
+  /* the branch points earlier branches computed (cable_session_add_known) */
+  if (st == 0) st = rp_session_known_to(r, cc, pb->ndim);
   if (st == 0) st = cable_cont_set_start(cc, start);
   if (st) {
     /* the engine's report: its message and the key it is about (PAR) */
@@ -993,6 +995,7 @@ static int engine_run(cable_session *r, rp_setup *s, const char *out_name, int o
   snprintf(end_note, sizeof end_note, "branch %d ended: %s: %s", ibr, cable_status_message(st), why);
   if (!col.rc && (st < 0 || st == CABLE_END_LOOP)) col.rc = rp_branch_set_end_note(col.b, end_note);
   col.b->end_status = st;
+  col.b->ndirs = cable_cont_branches(cc, col.b->dirs, CABLE_MAX_BRANCHES, &col.b->dir_order);
   cable_cont_free(cc);
   cable_fold_free(fold);
   cable_bpcont_free(bpc);
@@ -1128,7 +1131,7 @@ int rp_session_run(cable_session *r, const cable_run_args *a, cable_branch **out
   /* sv= is written as the run goes (ap= too, when there is no sv=) */
   const char *live = s.sv[0] ? s.sv : s.ap[0] ? s.ap : NULL;
   if (!rc) rc = engine_run(r, &s, live, !s.sv[0], &b, err);
-  if (!rc) remember(r, &s);
+  if (!rc && !a->keep_state) remember(r, &s);
   rp_result res = {1, &b};
   if (!rc && s.sv[0] && s.ap[0]) rc = rp_result_write(r, &res, s.ap, 1, err);
   if (!rc && (s.sv[0] || s.ap[0]))
@@ -1352,5 +1355,6 @@ void cable_session_free(cable_session *r)
   for (int i = 0; i < r->nautoeq; i++) cable_autoeq_close(r->autoeq[i]);
   cable_sfile_free(r->cur_sf);
   rp_branch_decref(r->cur_br);
+  rp_session_known_free(r);
   free(r);
 }

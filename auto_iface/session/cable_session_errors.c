@@ -84,3 +84,9 @@ int cable_session_transform_files(cable_session *s, const char *name, int relabe
   cable_error local, *e = target(err, &local);
   return report(s, rp_session_transform_files(s, name, relabel, e), e);
 }
+
+int cable_session_add_known(cable_session *s, const cable_branch *b, int sol_index, cable_error *err)
+{
+  cable_error local, *e = target(err, &local);
+  return report(s, rp_session_add_known(s, b, sol_index, e), e);
+}

@@ -5,6 +5,7 @@
 
 #include "cable/cable_aufile.h"
 #include "cable/cable_autoeq.h"
+#include "cable/cable_cont.h"
 #include "cable/cable_names.h"
 #include "cable/cable_output.h"
 #include "cable/cable_plugin.h"
@@ -42,6 +43,10 @@ typedef struct cable_branch {
      largest branch number and label (AUTO's _mbr, _mlab), which a run from
      its solution continues after; 0 for a computed branch */
   int src_mbr, src_mlab;
+  /* the switch's branch directions at a double BP (cable_branch_switch_directions):
+     ndirs -1 none */
+  int ndirs, dir_order;
+  cable_branch_dir dirs[CABLE_MAX_BRANCHES];
 } rp_branch;
 
 /* A result: branches in order. */
@@ -84,7 +89,18 @@ struct cable_session {
   int nautoeq;
   char autoeq_name[RP_MAX_PLUGINS][CABLE_NAME_MAX];
   cable_autoeq *autoeq[RP_MAX_PLUGINS];
+  /* known branch points (cable_session_add_known): owned clones and names */
+  int nknown, capknown;
+  cable_solution **known;
+  char (*known_name)[64];
 };
+
+/* ---- known branch points (cable_session_known.c) ------------------------------------ */
+
+int rp_session_add_known(cable_session *r, const cable_branch *b, int sol_index, cable_error *err);
+/* Hands every known point of the run's NDIM to cc; 0 or the engine's status. */
+int rp_session_known_to(const cable_session *r, cable_cont *cc, int ndim);
+void rp_session_known_free(cable_session *r);
 
 /* ---- store (cable_session_store.c) ------------------------------------------------- */
 

@@ -18,6 +18,7 @@ rp_branch *rp_branch_alloc(int ibr, const cable_constants *c, const cable_names 
   if (!b) return NULL;
   b->refs = 1;
   b->ibr = ibr;
+  b->ndirs = -1;
   b->c = *c;
   if (names) b->names = *names;
   else cable_names_init(&b->names);
@@ -567,4 +568,12 @@ const char *cable_branch_solution_note(const cable_branch *b, int i)
   for (int k = 0; b && k < b->npt; k++)
     if (b->pts[k].sol == i) return b->pts[k].note;
   return NULL;
+}
+
+int cable_branch_switch_directions(const cable_branch *b, cable_branch_dir *out, int max, int *order)
+{
+  if (order) *order = b && b->ndirs >= 0 ? b->dir_order : 0;
+  if (!b || b->ndirs < 0) return -1;
+  for (int k = 0; out && k < b->ndirs && k < max; k++) out[k] = b->dirs[k];
+  return b->ndirs;
 }

@@ -24,6 +24,9 @@ struct cable_team {
   int stamp_cap;
   int lead_waiting;            /* the calling thread sleeps on `progress` */
   pthread_cond_t progress;
+  int consumed, window;        /* items consumed so far; items may start below consumed + window */
+  int room_waiting;            /* workers sleeping on `room` (the window is full) */
+  pthread_cond_t room;
 };
 
 typedef struct {
@@ -41,7 +44,7 @@ static void run_block(cable_team *t, cable_team_fn *fn, void *ctx, int n, int k)
  * was left.  Called and returns with t->mu held. */
 static int run_next(cable_team *t, cable_team_fn *fn, void *ctx)
 {
-  if (t->front >= t->back) return 0;
+  if (t->front >= t->back || t->front - t->consumed >= t->window) return 0;
   const unsigned long gen = t->generation;
   int i = t->front++;
   pthread_mutex_unlock(&t->mu);
@@ -51,11 +54,19 @@ static int run_next(cable_team *t, cable_team_fn *fn, void *ctx)
   return 1;
 }
 
-/* Ordered job, a worker's part: items from the front until none is left. */
+/* Ordered job, a worker's part: items from the front until none is left,
+ * waiting while the window ahead of the consumer is full. */
 static void claim_front(cable_team *t, cable_team_fn *fn, void *ctx)
 {
-  while (run_next(t, fn, ctx))
-    if (t->lead_waiting) pthread_cond_signal(&t->progress);
+  while (t->front < t->back) {
+    if (run_next(t, fn, ctx)) {
+      if (t->lead_waiting) pthread_cond_signal(&t->progress);
+    } else {
+      t->room_waiting++;
+      pthread_cond_wait(&t->room, &t->mu);
+      t->room_waiting--;
+    }
+  }
 }
 
 static void *worker(void *p)
@@ -102,6 +113,7 @@ cable_team *cable_team_alloc(int size)
   pthread_cond_init(&t->go, NULL);
   pthread_cond_init(&t->done, NULL);
   pthread_cond_init(&t->progress, NULL);
+  pthread_cond_init(&t->room, NULL);
   for (int k = 1; k < size; k++) {
     worker_arg *a = malloc(sizeof *a);
     if (!a) break;
@@ -132,6 +144,7 @@ void cable_team_free(cable_team *t)
     pthread_cond_destroy(&t->go);
     pthread_cond_destroy(&t->done);
     pthread_cond_destroy(&t->progress);
+    pthread_cond_destroy(&t->room);
     pthread_mutex_destroy(&t->mu);
   }
   free(t->threads);
@@ -172,6 +185,12 @@ static void ordered_loop(cable_team_fn *fn, void *ctx, int n, cable_team_fn *con
 
 void cable_team_run_ordered(cable_team *t, cable_team_fn *fn, void *ctx, int n, cable_team_fn *consume, void *cctx)
 {
+  cable_team_run_ordered_window(t, fn, ctx, n, consume, cctx, n);
+}
+
+void cable_team_run_ordered_window(cable_team *t, cable_team_fn *fn, void *ctx, int n, cable_team_fn *consume,
+                                   void *cctx, int window)
+{
   if (!t || t->size == 1 || n < 2) {
     ordered_loop(fn, ctx, n, consume, cctx);
     return;
@@ -193,6 +212,8 @@ void cable_team_run_ordered(cable_team *t, cable_team_fn *fn, void *ctx, int n, 
   t->ordered = 1;
   t->front = 0;
   t->back = n;
+  t->consumed = 0;
+  t->window = window > 1 ? window : 1;
   t->pending = t->size - 1;
   const unsigned long gen = ++t->generation;
   pthread_cond_broadcast(&t->go);
@@ -212,6 +233,8 @@ void cable_team_run_ordered(cable_team *t, cable_team_fn *fn, void *ctx, int n, 
     pthread_mutex_unlock(&t->mu);
     consume(cctx, i);
     pthread_mutex_lock(&t->mu);
+    t->consumed = i + 1;
+    if (t->room_waiting) pthread_cond_broadcast(&t->room);
   }
   while (t->pending > 0) pthread_cond_wait(&t->done, &t->mu);
   pthread_mutex_unlock(&t->mu);

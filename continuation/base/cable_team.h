@@ -36,5 +36,11 @@ int cable_team_size(const cable_team *t);
 /* t NULL runs the loop on the calling thread. */
 void cable_team_run(cable_team *t, cable_team_fn *fn, void *ctx, int n);
 void cable_team_run_ordered(cable_team *t, cable_team_fn *fn, void *ctx, int n, cable_team_fn *consume, void *cctx);
+/* The same with a bounded lookahead: fn(ctx, i) starts only once
+ * consume(cctx, k) has returned for every k <= i - window (window >= 1), so
+ * at most `window` items run ahead of the consumer (abd_solver.c keeps its
+ * band storage as a ring of that many intervals' columns). */
+void cable_team_run_ordered_window(cable_team *t, cable_team_fn *fn, void *ctx, int n, cable_team_fn *consume,
+                                   void *cctx, int window);
 
 #endif

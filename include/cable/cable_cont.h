@@ -85,7 +85,14 @@ typedef struct cable_branch_dir {
   double mu;      /* cubic ABE: the s^2 coefficient of q0 along the branch; NAN otherwise */
   double L[2];    /* L_1, L_2 at the direction (psi_i^T F_xx[q0, u]) */
   double N[2];    /* P_i (quadratic ABE) or C_i (cubic) at the direction */
-  double dg;      /* |g'(phi)|: small means an ill-conditioned direction */
+  double dg;      /* |g'(phi)|: small means an ill-conditioned direction (0 for a direction
+                     from a symmetry) */
+  int multiplicity; /* equivalent directions under the problem's declared symmetries that this
+                       entry stands for (>= 1) */
+  int sym;        /* 0: from the bifurcation equations and in no declared Fix(S); k > 0: it lies
+                     in Fix(S) of the problem's k-th symmetry (symmetries[k - 1]) */
+  int restricted; /* 1: found by the restriction to Fix(S) (the ABE were degenerate); following
+                     it runs the restricted problem */
 } cable_branch_dir;
 
 /* Copies at most max of them into out; returns their number (0 when the

@@ -27,8 +27,12 @@
 
 #include <stddef.h>
 
-#define CABLE_PROBLEM_ABI 5        /* bump when the struct layout changes (2: keys, prepare, release;
-                                      3: concurrent; 4: variational; 5: variational.ritz) */
+#define CABLE_PROBLEM_ABI 6        /* bump when the struct layout changes (2: keys, prepare, release;
+                                      3: concurrent; 4: variational; 5: variational.ritz;
+                                      6: symmetries) */
+/* The oldest layout still loaded: an ABI 5 plug-in (no symmetries) is copied
+ * into the current struct with nsym = 0. */
+#define CABLE_PROBLEM_ABI_OLDEST 5
 #define CABLE_NPAR_DEFAULT 36      /* AUTO's default NPAR */
 #define CABLE_PROBLEM_ENTRY "cable_problem_entry"
 
@@ -122,6 +126,34 @@ typedef struct cable_variational {
               double **G, void *params);
 } cable_variational;
 
+/* A reflection S of the problem (doc/plugins.md, "Symmetries"; doc/engine.md,
+ * "Symmetry: the restriction to Fix(S)"): S maps solutions to solutions and
+ * S^2 = 1.  At a double branch point whose kernel S splits into a symmetric
+ * and an antisymmetric direction, the engine restricts the problem to Fix(S)
+ * (one condition: the odd quantity below = 0, and one unfolding parameter,
+ * zero on the restricted branch), where the branch point is simple, and
+ * switches there.  S is given either
+ *  - by act (pointwise: su = S u for the state at one t, linear; the
+ *    parameters are fixed by S): the engine forms the odd quantity itself, or
+ *  - by odd_comp, odd_at (act NULL): u_{odd_comp}(odd_at) (odd_at 0: t = 0,
+ *    1: t = 1) changes sign under S and vanishes exactly on Fix(S) near the
+ *    branch point (e.g. a reversing symmetry u(t) -> R u(1 - t) of a
+ *    reversible ODE, which the pointwise act cannot express). */
+typedef void cable_sym_act_fn(int ndim, const double *u, double *su, void *params);
+typedef struct cable_symmetry {
+  const char *name;             /* one word, shown in notes ("swap", "S0") */
+  cable_sym_act_fn *act;        /* S on the state, or NULL (then odd_comp, odd_at) */
+  int odd_comp;                 /* 0-based state component, with act NULL */
+  int odd_at;                   /* 0: at t = 0, 1: at t = 1 */
+  int unfold_bc;                /* the boundary condition (0-based row) that gets the unfolding
+                                   parameter added; -1: the engine picks the row where the
+                                   antisymmetric left null vector is largest */
+  int unfold_par;               /* 0-based parameter slot of the unfolding parameter; -1: the first
+                                   slot at or after npar that ICP does not use (< NPAR) */
+  int multiplicity;             /* copies of a branch in Fix(S) under the problem's whole symmetry
+                                   group (the torus knot's rotations: TORUS); 0 counts as 1 */
+} cable_symmetry;
+
 typedef struct cable_problem {
   int abi_version;              /* CABLE_PROBLEM_ABI */
   size_t struct_size;           /* sizeof(cable_problem) when compiled */
@@ -154,6 +186,9 @@ typedef struct cable_problem {
                                    zero-initialised struct): func is called from one thread. */
   /* ABI 4 */
   const cable_variational *variational;  /* NULL: not variational (STAB=1 is refused) */
+  /* ABI 6 */
+  const cable_symmetry *symmetries;  /* nsym reflections of the problem, or NULL */
+  int nsym;
 } cable_problem;
 
 /* A plug-in exports `const cable_problem *cable_problem_entry(void);`. */

@@ -26,6 +26,7 @@
 
 #include "cable/cable_api.h"
 #include "cable/cable_constants.h"
+#include "cable/cable_cont.h"
 #include "cable/cable_error.h"
 #include "cable/cable_names.h"
 #include "cable/cable_output.h"
@@ -116,6 +117,8 @@ typedef struct cable_run_args {
   const char *const *over;
   const char *over_file;   /* the file name errors in over[] report ("<command line>"); NULL: none */
   int sol_mbr, sol_mlab;   /* a solution start: its bundle's largest branch number and label (0: none) */
+  int keep_state;          /* 1: the run leaves the runner's state (constants, current solution) as it
+                              was: a probe, as Python's branches() makes (0: AUTO's run) */
 } cable_run_args;
 
 /* One continuation run; *out: the new branch (also when it ended abnormally,
@@ -172,6 +175,22 @@ CABLE_API int cable_session_transform_files(cable_session *s, const char *name, 
  * 0, or CABLE_ERR_NULL with err when s is NULL (the outputs set to NULL). */
 CABLE_API int cable_session_constants(const cable_session *s, const cable_constants **c, const cable_names **names,
                                       const char **e, cable_error *err);
+/* Branch identity across runs (doc/engine.md, "Branch identity: known
+ * branch points"): the branch points of b become known points of every later
+ * run of the session (cable_cont_add_known_point), so that a branch that
+ * locates one of them ends there with CABLE_END_LOOP, its end note saying
+ * "joins a known branch" and naming the point ("BP label 3 of branch 1").
+ * sol_index < 0: every labelled BP solution of b; else solution sol_index,
+ * which must be a BP (CABLE_ERR_INPUT otherwise, CABLE_ERR_RANGE outside b).
+ * A run hands over only the points of its own NDIM (a fold or branch-point
+ * curve's extended problem gets none); its start is never taken for a known
+ * point (the engine looks from its second point on).  Returns the number of
+ * points added (0 for a branch without BPs) or a negative status with err. */
+CABLE_API int cable_session_add_known(cable_session *s, const cable_branch *b, int sol_index, cable_error *err);
+/* Forgets every known point (0; CABLE_ERR_NULL for a NULL session). */
+CABLE_API int cable_session_clear_known(cable_session *s);
+/* The number of known points (0 for a NULL session). */
+CABLE_API int cable_session_nknown(const cable_session *s);
 /* The path of TYPE.NAME ("c", "s", "b", "d") or of a plain file (type NULL)
  * in the session's directory ("" for a NULL session or name; nothing for a
  * NULL buf or len 0). */
@@ -198,6 +217,13 @@ CABLE_API const char *cable_branch_problem(const cable_branch *b);
 /* Why the branch ended abnormally (the d-file's note, for people), NULL: a
  * normal end. */
 CABLE_API const char *cable_branch_end_note(const cable_branch *b);
+/* The branch directions its run's switch found at a double branch point
+ * (ISW = -1; cable_cont_branches, doc/engine.md "Multiple branch points" and
+ * "Symmetry: the restriction to Fix(S)"): copies at most max into out (may be
+ * NULL) and returns their number; -1 when the run computed none (not a
+ * switch at a double BP, or degenerate equations and no declared symmetry).
+ * *order (may be NULL): 2 quadratic, 3 cubic ABE, 0 none. */
+CABLE_API int cable_branch_switch_directions(const cable_branch *b, cable_branch_dir *out, int max, int *order);
 /* How the run that computed b ended, for programs: its status (enum
  * cable_status: CABLE_END_NMX, CABLE_END_BOUNDS, ... > 0 a normal end, < 0
  * the error, CABLE_ERR_INTERRUPTED a stopped run); 0 for a branch no run of

@@ -47,7 +47,7 @@ _COMMANDS = ('run', 'r', 'load', 'ld', 'loadbd', 'bd', 'save', 'sv', 'merge', 'm
              'rl', 'clean', 'cl',
              'delete', 'dl', 'copy', 'cp', 'append', 'ap', 'cd', 'wait', 'pr', 'printconstant',
              'pc', 'analyze', 'plot', 'render', 'compare',
-             'overlap_free', 'branch_table', 'info')
+             'overlap_free', 'branch_table', 'info', 'branches', 'known', 'clear_known')
 for _n in _COMMANDS:
     globals()[_n] = _delegate(_n)
 del _n
@@ -62,6 +62,15 @@ def view(x, file=None, title=None):
     return _view(x, file, title)
 
 
+def explore(TORUS, HAND, Delta, **kw):
+    """explore(TORUS=p, HAND=+-1, Delta=..., Ltot=..., modes=N, out='DIR', ...): the flat
+    branch of a torus knot or link, its branch points and every branch from the
+    first N of them, with the diagram, pictures and table (cable.explorer,
+    doc/explore.md)."""
+    from .explorer import explore as _explore
+    return _explore(TORUS, HAND, Delta, **kw)
+
+
 branch_points = scenes.branch_points
 branch_point = scenes.branch_point
 mirror_table = scenes.mirror_table
@@ -71,4 +80,4 @@ __all__ = ['CableError', 'CableFileNotFoundError', 'CableKeyError', 'CableTypeEr
            'Runner', 'constant_text', 'Constants', 'Parameters', 'Result', 'Solution',
            'SolutionList',
            'scenes', 'run_script', 'runner', 'view', 'branch_points', 'branch_point',
-           'mirror_table'] + list(_COMMANDS)
+           'mirror_table', 'explore'] + list(_COMMANDS)

@@ -42,7 +42,15 @@ MESH_DEFAULTS = {'NTST': 30, 'NCOL': 4}
 KNOT_LTOT = 1.98889      # the knot72 scene's total length (both strands)
 LINK_L = 1.0             # the link scenes' strand length
 
-_TOP_KEYS = ('output', 'deltas', 'modes', 'arms', 'family', 'mesh', 'flat', 'branch', 'record')
+_TOP_KEYS = ('output', 'deltas', 'modes', 'arms', 'switch', 'family', 'mesh', 'flat', 'branch',
+             'record')
+# How a task switches at its branch point (cable.explorer.follow): 'sym' (the
+# S0-symmetric formulation at a double point, the plain problem at a simple
+# one: the atlas's rule before explore, and its default, so that the keys of
+# stored tasks stay as they were), 'auto' (every direction the bifurcation
+# equations give on the plain problem, the S0 formulation when they give
+# none), 'plain'.  Only a value other than 'sym' enters the task's inputs.
+SWITCHES = ('sym', 'auto', 'plain')
 _FAMILY_KEYS = ('kind', 'p', 'hands', 'deltas', 'modes', 'arms', 'length')
 _RECORD_KEYS = ('files',)
 
@@ -340,6 +348,9 @@ def load(path):
     top = {'deltas': _deltas(w, doc['deltas']) if 'deltas' in doc else None,
            'modes': _modes(w, doc['modes']) if 'modes' in doc else [1],
            'arms': _arms(w, doc['arms']) if 'arms' in doc else ['knotting']}
+    switch = doc.get('switch', 'sym')
+    if switch not in SWITCHES:
+        raise w.error('must be one of %s' % ', '.join('"%s"' % x for x in SWITCHES), 'switch')
     fams = doc.get('family')
     if not isinstance(fams, list) or not fams:
         raise SweepError('%s: family: no [[family]] table (each names a kind and its p)' % path)
@@ -372,11 +383,14 @@ def load(path):
                                   else mesh['NTST'])
                         group = []
                         for m in modes:
-                            t = Task({'version': TASK_VERSION, 'kind': kind, 'p': p, 'hand': h,
-                                      'Delta': d,
-                                      'length': length, 'arm': sign, 'mode': m, 'mesh': me,
-                                      'flat': flat,
-                                      'branch': branch, 'files': record['files']})
+                            ti = {'version': TASK_VERSION, 'kind': kind, 'p': p, 'hand': h,
+                                  'Delta': d,
+                                  'length': length, 'arm': sign, 'mode': m, 'mesh': me,
+                                  'flat': flat,
+                                  'branch': branch, 'files': record['files']}
+                            if switch != 'sym':
+                                ti['switch'] = switch
+                            t = Task(ti)
                             if t.key not in seen:
                                 seen.add(t.key)
                                 tasks.append(t)

@@ -25,7 +25,7 @@ import threading
 import time
 import traceback
 
-from . import _cable, scenes
+from . import _cable, explorer, scenes
 from .commands import Runner, constant_text
 from .atomic import write_text as write_atomic
 
@@ -59,7 +59,7 @@ def _wait_at_gate(name):
     while gate and not os.path.exists(os.path.join(gate, name)):
         time.sleep(0.05)
 
-ROW_FIELDS = ['family', 'kind', 'p', 'hand', 'Delta', 'arm', 'mode', 'bp_T', 'bp_F',
+ROW_FIELDS = ['family', 'kind', 'p', 'hand', 'Delta', 'arm', 'mode', 'direction', 'bp_T', 'bp_F',
               'bp_multiplicity',
               'formulation', 'segment', 'passages', 'companion', 'crossings', 'Lk', 'Lk_tube',
               'overlap_free',
@@ -220,24 +220,31 @@ def compute(inp, times, flat, flat_dir):
                                 % (flat['name'], len(start), bp['LAB']))
     start = start[0]
     # doc/links.md, 2: double BPs switch in the S0-symmetric formulation
-    sym = bp['kind'] == 'double'
+    # (switch 'sym', the default), or on the plain problem along every
+    # direction of the bifurcation equations (switch 'auto'/'plain'): every
+    # branch of the mode-th branch point (cable.explorer.follow)
+    switch = inp.get('switch', 'sym')
+    sym = bp['kind'] == 'double' and switch == 'sym'
     bc = _branch_constants(inp, sym)
     _constants_file('c.branch', '# the branch from branch point %d (cable.atlas)'
                     % inp['mode'], bc)
     lk_bp = _cable.analyze(*start.branch)['Lk']
     t1 = time.time()
-    # e= is given to run() as well: from a start solution the runner keeps the start's problem over
-    # a
-    # constants file's e (measured: c.branch's e = 'braid_knot_sym' alone left the switch in
-    # braid_knot)
-    mode = runner.run(start, c='branch', e=bc['e'], sv='branch')
+    # e= and ICP are given to run() as well (follow does): from a start solution the runner
+    # keeps the start's problem over a constants file's e (measured: c.branch's e =
+    # 'braid_knot_sym' alone left the switch in braid_knot)
+    followed = explorer.follow(runner, start, inp['kind'], switch, folds=0, sv='branch',
+                              bp_kind=bp['kind'])
     t2 = time.time()
     times['branch'] = t2 - t1
-    base = {'family': _family(inp), 'kind': inp['kind'], 'p': inp['p'], 'hand': inp['hand'],
-            'Delta': inp['Delta'],
-            'arm': inp['arm'], 'mode': inp['mode'], 'bp_T': bp['T'], 'bp_F': bp['F'],
-            'bp_multiplicity': 2 if sym else 1, 'formulation': bc['e']}
-    rows = branch_rows(mode, bp, lk_bp, base)
+    rows = []
+    for k, n, e, mode, _ in followed:
+        base = {'family': _family(inp), 'kind': inp['kind'], 'p': inp['p'], 'hand': inp['hand'],
+                'Delta': inp['Delta'],
+                'arm': inp['arm'], 'mode': inp['mode'], 'direction': k, 'bp_T': bp['T'],
+                'bp_F': bp['F'],
+                'bp_multiplicity': 2 if bp['kind'] == 'double' else 1, 'formulation': e}
+        rows += branch_rows(mode, bp, lk_bp, base)
     times['analysis'] = time.time() - t2 + (t1 - t0)
     return rows
 

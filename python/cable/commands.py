@@ -10,7 +10,7 @@ Its commands are AUTO's, with AUTO's short aliases:
   run/r/rn, load/ld, save/sv, loadbd/bd, merge/mb, relabel/rl, clean/cl,
   delete/dl, copy/cp, append/ap, cd, auto, wait, pr/printconstant/pc,
   plus cable's analyze,
-  compare, overlap_free, branch_table, plot, render.
+  compare, overlap_free, branch_table, plot, render, known, clear_known.
 """
 
 __all__ = ['constant_text', 'COMMANDS', 'command_names', 'Runner']
@@ -205,7 +205,8 @@ COMMANDS = {
     'sl': ('solutionget', 'commandParseSolutionFile'),
     'ch': ('changeconstant', 'cc', 'commandRunnerConfigFort2'),
     'render': (), 'compare': (),
-    'overlap_free': (), 'branch_table': (), 'info': (),
+    'overlap_free': (), 'branch_table': (), 'info': (), 'branches': (),
+    'known': (), 'clear_known': (),
 }
 
 
@@ -242,6 +243,41 @@ class Runner:
                     e.result = self.last = Result([e.branch])
                 raise
         return self.last
+
+    def branches(self, data, **kw):
+        """branches(bp, KEY=value, ...): the branch directions at a double branch
+        point bp (doc/engine.md, "Multiple branch points" and "Symmetry: the
+        restriction to Fix(S)"), as run(bp, ISW=-1, BRANCH=k) would follow them:
+        a list of dicts, BRANCH (the k), phi (degrees from e1 towards e2), a
+        (the coefficients of the known tangent, e1, e2), mu, L, N, dg (|g'|),
+        multiplicity (equivalent directions under the problem's declared
+        symmetries that the entry stands for), symmetric (it lies in a declared
+        Fix(S)), sym (which symmetry, 1-based; 0 none), restricted (followed in
+        the problem restricted to Fix(S)), order (2, 3: quadratic or cubic
+        bifurcation equations).  [] when the equations have no real solution or
+        are degenerate without a declared symmetry (the d-file note says why).
+        It makes the switch's first step (one run of NMX=2, saved nowhere, that
+        leaves the runner's state as it was): the keywords are those of that
+        run (e=, c=, ...).  A point with no list: CableValueError."""
+        for k in ('ISW', 'BRANCH', 'BPANGLE', 'BPDIR', 'NMX', 'sv', 'ap'):
+            if k in kw:
+                raise CableValueError('branches: %s= is set by branches itself' % k)
+        kw = dict(kw, ISW=-1, NMX=2)
+        sys.stdout.flush()
+        with _data_start(data, kw) as (data, kw):
+            # keep_state: the probe leaves the runner's constants and solution
+            # (and the last result) as they were
+            r = Result([self.session.run(*_args(data, kw), True)])
+        br = r.branches[0] if r.branches else None
+        dirs = br.directions() if br is not None else None
+        if dirs is None:
+            note = ''
+            for s in r():
+                note = s.note or note
+            raise CableValueError('branches: no branch directions at this point (not a double '
+                                  'branch point, or a switch that could not reduce it)%s'
+                                  % (': ' + note if note else ''))
+        return dirs
 
     def load(self, data=None, **kw):
         """load([start], KEY=value, ...): the solution a run with the same
@@ -422,6 +458,25 @@ class Runner:
         if sys.stdin is not None and sys.stdin.isatty():
             input('Hit <return> to continue')
 
+    # --- branch identity ------------------------------------------------------------------
+    def known(self, x):
+        """known(result | solution): the branch points of the result's branches
+        (or the one BP solution) become known points of every later run: a
+        branch that reaches one ends there (end status CABLE_END_LOOP, end
+        note "joins a known branch ... BP label L of branch B"), so an
+        exploration does not compute a branch twice (doc/engine.md, Branch
+        identity).  Returns the number of points added."""
+        if isinstance(x, Result):
+            return sum(self.session.add_known(b, -1) for b in x.branches)
+        if isinstance(x, Solution):
+            br, i = x.branch
+            return self.session.add_known(br, i)
+        raise CableTypeError('known(result | solution), got a %s' % type(x).__name__)
+
+    def clear_known(self):
+        """clear_known(): forget the known points (known())."""
+        self.session.clear_known()
+
     # --- cable's scene functions ---------------------------------------------------------
     def analyze(self, sol, STAB=0):
         """analyze(sol) -> dict: Lk, Tw, Wr, knot type, pressure, tube distance ...
@@ -494,19 +549,20 @@ class Runner:
                       float(thicken), color == 'pressure', vtp, ply)
         print('  label %d rendered to %s' % (sol.LAB, file))
 
-    def compare(self, file, rows, ref=None, notes=()):
-        """compare('table.txt', [[name, x, T, F, Lk(, ref)], ...], ref=sol, notes=[...])
-        (scenes.compare)"""
-        return scenes.compare(self, file, rows, ref=ref, notes=notes)
+    def compare(self, file, rows, ref=None, notes=(), stab=False):
+        """compare('table.txt', [[name, x, T, F, Lk(, ref)], ...], ref=sol, notes=[...],
+        stab=True) (scenes.compare; stab: the Morse index of every point)"""
+        return scenes.compare(self, file, rows, ref=ref, notes=notes, stab=stab)
 
     def overlap_free(self, result):
         """overlap_free(result): the stretches where the tubes do not overlap (scenes.overlap_free)
         """
         return scenes.overlap_free(result)
 
-    def branch_table(self, file, result, paper=None, title=None):
-        """branch_table('table.txt', result, paper={...}, title='...') (scenes.branch_table)"""
-        return scenes.branch_table(self, file, result, paper=paper, title=title)
+    def branch_table(self, file, result, paper=None, title=None, stab=False):
+        """branch_table('table.txt', result, paper={...}, title='...', stab=True)
+        (scenes.branch_table; stab: the Morse index of every labelled point)"""
+        return scenes.branch_table(self, file, result, paper=paper, title=title, stab=stab)
 
     # --- the namespace of a script ---------------------------------------------------------
     def namespace(self):

@@ -38,6 +38,26 @@ def _analyze(sol):
     return _cable.analyze(br, i)
 
 
+def _stab(sol):
+    """The Morse index of a braid solution (analyze(sol, STAB=1); a knot
+    computed with eps13 free is taken as braid_knot_sym, doc/stability.md S7)."""
+    br, i = sol.branch
+    return _cable.analyze(br, i, 1)
+
+
+_STAB_HEADER = ('# Morse index (STAB=1, doc/stability.md S7): the number of independent '
+                'admissible variations\n'
+                '#   that lower the energy; zero: eigenvalues within rounding of 0; '
+                'stable = index 0 and no zero eigenvalue\n')
+
+
+def _stab_line(head, s, st):
+    sig = st['sigma'][:3]
+    return ('STAB %s  T = %12.6f  index %2d  zero %d  sigma = %s  %s\n'
+            % (head, s['T'], st['index'], st['nzero'], ' '.join('%.4g' % x for x in sig),
+               'stable' if st['index'] == 0 and st['nzero'] == 0 else 'unstable'))
+
+
 def _knot_text(a):
     return '%s%s' % ('right ' if a['hand'] > 0 else 'left ' if a['hand'] < 0 else '', a['knot'])
 
@@ -163,11 +183,13 @@ def _is_number(x):
     return isinstance(x, (int, float)) and not isinstance(x, bool)
 
 
-def compare(runner, file, rows, ref=None, notes=()):
+def compare(runner, file, rows, ref=None, notes=(), stab=False):
     """Writes (atomically) and prints the comparison of computed solutions
     with target values; returns one dict per row (name, LAB, T, F, T_paper,
     F_paper, rel, uz_at_T, uz_chosen, Lk, lk_in_tube, lk_paper, dLk_half,
-    passes, passes_net, passes_mixed, knot, hand, crossings, pmin, dmin, err).
+    passes, passes_net, passes_mixed, knot, hand, crossings, pmin, dmin, err;
+    with stab=True also index, nzero, sigma: the Morse index, written in a
+    block of 'STAB' lines after the table).
 
     rows: [[name, x, T_target, F_target, Lk_target(, ref)], ...]: x a result
     (of its UZ labels at T_target the one whose F is nearest F_target) or a
@@ -223,6 +245,13 @@ def compare(runner, file, rows, ref=None, notes=()):
                        'crossings': a['crossings'], 'pmin': a['pmin'], 'dmin': a['dmin'],
                        'err': a['err'],
                        'solution': s})
+        if stab:
+            st = _stab(s)
+            result[-1].update(index=st['index'], nzero=st['nzero'], sigma=list(st['sigma']))
+    if stab and result:
+        out.append('\n' + _STAB_HEADER)
+        out.extend(_stab_line('%-6s LAB %4d' % (d['name'], d['LAB']), d['solution'], d)
+                   for d in result)
     if notes:
         out.append('\n')
         out.extend(n + '\n' for n in notes)
@@ -456,12 +485,14 @@ def _same_type(a, b):
     return a['knot'] == b['knot'] and a['hand'] == b['hand']
 
 
-def branch_table(runner, file, result, paper=None, title=None):
+def branch_table(runner, file, result, paper=None, title=None, stab=False):
     """Analyzes every labelled solution of the result, decides from the branch
     alone the knot type its axis settles into (that of its last analysable
     solution) and the reported point (the first solution of that final
     stretch whose tubes do not overlap), writes (atomically) and prints the
-    table.  Returns the reported point's label (None: no solution)."""
+    table (stab=True: and the Morse index of the reported point, a 'STAB' line
+    at the end).  Returns the reported point's label (None: no
+    solution)."""
     if not isinstance(file, str) or not isinstance(result, Result):
         raise CableTypeError("branch_table('file', result, paper={...}, title='...') takes a file "
                              "name and a result")
@@ -532,6 +563,12 @@ def branch_table(runner, file, result, paper=None, title=None):
             continue
         out.append(_positions('LAB %4d  p1 at s     =' % s.LAB, a['psign_s1'], a['psign']))
         out.append(_positions('          p2 at sigma =', a['psign_sigma2'], a['psign2']))
+    if stab and rep is not None:
+        # the reported point's index only: one index costs O(N^3), N = 5 (4 NTST + 1)
+        # (2005 at the link scenes' NTST 100), seconds per label (doc/stability.md S7.6)
+        out.append('\n' + _STAB_HEADER)
+        out.append(_stab_line('reported LAB %4d %-2s' % (sols[rep].LAB, sols[rep].TY), sols[rep],
+                              _stab(sols[rep])))
     text = ''.join(out)
     write_atomic(file, text)
     print(text, end='')

@@ -460,3 +460,36 @@ def test_flat_branch_without_its_files(work):
     # task: exit status 1 (it was 0, as if the atlas were complete)
     rc, out, err = _finish(_start(path, workers=1))
     assert rc == 1 and '2 finished earlier (1 of them failed' in out and '0 computed' in out, out + err
+
+
+def test_switch_auto_on_a_cluster(work):
+    """switch = "auto" (cable.explorer.follow): a task follows every direction the bifurcation
+    equations give at its branch point on the plain problem, or the S0 formulation at a double
+    point when they give none; run on `dask scheduler` and `dask worker` processes.  The
+    switch enters the task's inputs (its key), the default "sym" does not."""
+    text = TINY.replace('modes = [1]', 'modes = [1]\nswitch = "auto"')
+    text = text[:text.index('[[family]]\nkind = "link"')] + text[text.index('[mesh]'):]
+    path = _write(work, text, 'auto.toml')
+    sweep = atlas.load(path)
+    assert len(sweep.tasks) == 1 and sweep.tasks[0].inputs['switch'] == 'auto'
+    assert 'switch' not in atlas.load(_write(work, TINY)).tasks[0].inputs
+    cluster = _Cluster(work)
+    try:
+        rc, out, err = _finish(_start(path, scheduler=cluster.address))
+    finally:
+        cluster.stop()
+    assert rc == 0 and '1 computed (0 failed)' in out, out + err
+    with open(os.path.join(sweep.output, 'tasks', sweep.tasks[0].name, 'result.json')) as f:
+        res = json.load(f)
+    assert res['status'] == 'ok', res['error']
+    rows = res['rows']
+    assert rows and all(r['status'] == 'ok' for r in rows)
+    dirs = sorted({r['direction'] for r in rows})
+    assert dirs == list(range(1, len(dirs) + 1))
+    # one branch in the S0 formulation, or every direction of the plain problem's equations
+    forms = {r['formulation'] for r in rows}
+    assert forms == {'braid_knot_sym'} and dirs == [1] or forms == {'braid_knot'}
+    for k in dirs:
+        first = [r for r in rows if r['direction'] == k][0]
+        assert first['segment'] == 0 and abs(first['Lk'] - 1.5) < LK_TOL and first['companion'] == 'unknot'
+    assert atlas.read_csv(os.path.join(sweep.output, 'atlas.csv'))[0]['direction'] == '1'

@@ -8,7 +8,8 @@ trefoil, a right (4,3) and a right (5,4) torus knot, Lk = Tw + Wr = 5.5, 9.5,
 15.5, 23.5 and the paper's 'linking numbers' 5.5, 6.5, 7.5, 8.5 as Lk minus
 the writhe of the companion's minimal diagram, non-negative contact
 pressure, the axis self-passages counted along each branch equal to
-(Lk - Lk_flat)/2.  The paper's values are comparison targets only.
+(Lk - Lk_flat)/2, and Morse index 2k - 1 on mode k (doc/stability.md S7.5).  The
+paper's values are comparison targets only.
 
 CABLE_TEST_QUICK skips it (a minute or more of continuation)."""
 import math
@@ -51,8 +52,8 @@ def test_knot72_acceptance(work):
     # the flat branch's right arm has four branch points (BP1-BP4)
     assert len(cable.branch_points(flat, T=(0, 34))) >= 4
     rows = ns['compare']('knot72_check.txt', [[p[0], ns[p[1]], p[2], p[3], p[5]] for p in POINTS],
-                         ref=flat('EP1'))
-    for p, d in zip(POINTS, rows):
+                         ref=flat('EP1'), stab=True)
+    for k, (p, d) in enumerate(zip(POINTS, rows), 1):
         name, br, T, F, lk, lk_paper, knot, hand = p
         assert d['name'] == name
         assert abs(d['T'] - T) <= 1e-5 * max(1.0, abs(T)), name
@@ -65,6 +66,10 @@ def test_knot72_acceptance(work):
         # self-passages of the braid axis counted along the branch against the
         # change of Lk since the flat knot: each passage changes Lk by 2
         assert abs(d['dLk_half'] - d['passes_net']) < LK_TOL and d['passes'] == abs(d['passes_net']), name
+        # the Morse index (doc/stability.md S7.5): the mode-k branch's point has index
+        # 2k - 1 (between the flat branch's 2(k - 1) and 2k at the k-th double BP) and,
+        # with braid_knot_sym's F2(0) row, no zero eigenvalue: none of (a)-(d) is stable
+        assert (d['index'], d['nzero']) == (2 * k - 1, 0), (name, d['index'], d['nzero'], d['sigma'])
         if name == 'a':   # the paper's figure-eight self-crossing
             assert d['passes'] == 1
         # the branch is followed through the point, to the fold beyond and back
