@@ -4,6 +4,8 @@
  * colloc_jac.h; this file only walks it. */
 #include "colloc_jac.h"
 
+#include "cable/cable_status.h"
+
 #include <cblas.h>
 #include <stdlib.h>
 #include <string.h>
@@ -140,41 +142,65 @@ void colloc_jac_matvec_team(const colloc_jac *J, cable_team *team, const double 
   colloc_jac_matvec_many_team(J, team, 1, x, y);
 }
 
-void colloc_jac_matvec_transpose_many(const colloc_jac *J, int k, const double *X, double *Y)
+/* Interval j's transposed contributions for one vector: C_j^T x_j (nodes,
+ * then parameters) and D_j^T x_d into t (2 nn + nfpr doubles), each with
+ * beta = 0.  The BLAS may add a column's dot product to y in parts (OpenBLAS's
+ * dgemv_t kernel for AMD Zen does), so y + C^T x with beta = 1 need not be
+ * y + t to the bit: both the single pass and the one-pass pair below add t. */
+static void interval_transposed(const colloc_jac *J, int j, const double *x, double *t)
 {
-  const int nd = J->ndim, nc = J->ncol, nf = J->nfpr, nb = J->nbc, nq = J->ndense;
+  const int nd = J->ndim, nc = J->ncol, nf = J->nfpr, nq = J->ndense, nb = J->nbc;
   const int nr = nc * nd, nn = (nc + 1) * nd;
-  const size_t n = (size_t)J->n, rb = jac_bc_row(J);
+  const double *C = colloc_jac_coll_block(J, j), *xd = x + jac_bc_row(J) + (size_t)nb;
+  const double *xj = x + (size_t)j * (size_t)nr;
+  cblas_dgemv(CblasColMajor, CblasTrans, nr, nn, 1.0, C, nr, xj, 1, 0.0, t, 1);
+  if (nf > 0) cblas_dgemv(CblasColMajor, CblasTrans, nr, nf, 1.0, C + (size_t)nn * (size_t)nr, nr, xj, 1, 0.0, t + nn, 1);
+  cblas_dgemv(CblasColMajor, CblasTrans, nq, nn, 1.0, colloc_jac_dense_block(J, j), nq, xd, 1, 0.0, t + nn + nf, 1);
+}
 
+/* y += interval j's contributions t (interval_transposed), in one order. */
+static void add_interval(const colloc_jac *J, int j, const double *t, double *y)
+{
+  const int nf = J->nfpr, nn = (J->ncol + 1) * J->ndim;
+  double *yn = y + jac_node(J, j), *p = y + jac_par(J);
+  for (int i = 0; i < nn; i++) yn[i] += t[i];
+  for (int q = 0; q < nf; q++) p[q] += t[nn + q];
+  for (int i = 0; i < nn; i++) yn[i] += t[nn + nf + i];
+}
+
+/* y += the boundary and dense rows' transposed contributions. */
+static void add_end_rows_transposed(const colloc_jac *J, const double *x, double *y)
+{
+  const int nd = J->ndim, nf = J->nfpr, nb = J->nbc, nq = J->ndense;
+  const size_t rb = jac_bc_row(J);
+  const double *xd = x + rb + (size_t)nb;
+  double *p = y + jac_par(J);
+  if (nb > 0) {
+    const double *xb = x + rb;
+    cblas_dgemv(CblasColMajor, CblasTrans, nb, nd, 1.0, J->bc, nb, xb, 1, 1.0, y, 1);
+    cblas_dgemv(CblasColMajor, CblasTrans, nb, nd, 1.0, J->bc + (size_t)nd * (size_t)nb, nb, xb, 1, 1.0,
+                y + jac_node(J, J->ntst), 1);
+    if (nf > 0)
+      cblas_dgemv(CblasColMajor, CblasTrans, nb, nf, 1.0, J->bc + (size_t)(2 * nd) * (size_t)nb, nb, xb, 1, 1.0, p,
+                  1);
+  }
+  if (nf > 0) cblas_dgemv(CblasColMajor, CblasTrans, nq, nf, 1.0, J->dense_par, nq, xd, 1, 1.0, p, 1);
+}
+
+int colloc_jac_matvec_transpose_many(const colloc_jac *J, int k, const double *X, double *Y)
+{
+  const size_t n = (size_t)J->n, per = colloc_jac_pair_scratch(J, 1) / (size_t)J->ntst;
+  double *t = malloc(per * sizeof *t);
+  if (!t) return CABLE_ERR_ALLOC;
   memset(Y, 0, (size_t)k * n * sizeof(double));
-  for (int j = 0; j < J->ntst; j++) {
-    const double *C = colloc_jac_coll_block(J, j);
+  for (int j = 0; j < J->ntst; j++)
     for (int v = 0; v < k; v++) {
-      const double *x = X + (size_t)v * n, *xd = x + rb + (size_t)nb;
-      double *y = Y + (size_t)v * n, *p = y + jac_par(J);
-      const double *xj = x + (size_t)j * (size_t)nr;
-      /* beta = 1: the mesh point shared with interval j-1 accumulates. */
-      cblas_dgemv(CblasColMajor, CblasTrans, nr, nn, 1.0, C, nr, xj, 1, 1.0, y + jac_node(J, j), 1);
-      if (nf > 0)
-        cblas_dgemv(CblasColMajor, CblasTrans, nr, nf, 1.0, C + (size_t)nn * (size_t)nr, nr, xj, 1, 1.0, p, 1);
-      cblas_dgemv(CblasColMajor, CblasTrans, nq, nn, 1.0, colloc_jac_dense_block(J, j), nq, xd, 1, 1.0,
-                  y + jac_node(J, j), 1);
+      interval_transposed(J, j, X + (size_t)v * n, t);
+      add_interval(J, j, t, Y + (size_t)v * n);
     }
-  }
-  for (int v = 0; v < k; v++) {
-    const double *x = X + (size_t)v * n, *xd = x + rb + (size_t)nb;
-    double *y = Y + (size_t)v * n, *p = y + jac_par(J);
-    if (nb > 0) {
-      const double *xb = x + rb;
-      cblas_dgemv(CblasColMajor, CblasTrans, nb, nd, 1.0, J->bc, nb, xb, 1, 1.0, y, 1);
-      cblas_dgemv(CblasColMajor, CblasTrans, nb, nd, 1.0, J->bc + (size_t)nd * (size_t)nb, nb, xb, 1, 1.0,
-                  y + jac_node(J, J->ntst), 1);
-      if (nf > 0)
-        cblas_dgemv(CblasColMajor, CblasTrans, nb, nf, 1.0, J->bc + (size_t)(2 * nd) * (size_t)nb, nb, xb, 1, 1.0, p,
-                    1);
-    }
-    if (nf > 0) cblas_dgemv(CblasColMajor, CblasTrans, nq, nf, 1.0, J->dense_par, nq, xd, 1, 1.0, p, 1);
-  }
+  for (int v = 0; v < k; v++) add_end_rows_transposed(J, X + (size_t)v * n, Y + (size_t)v * n);
+  free(t);
+  return CABLE_SUCCESS;
 }
 
 size_t colloc_jac_pair_scratch(const colloc_jac *J, int k)
@@ -196,9 +222,8 @@ static void pair_interval(void *p, int j)
 {
   const pair_ctx *c = p;
   const colloc_jac *J = c->mv.J;
-  const int nd = J->ndim, nc = J->ncol, nf = J->nfpr, nq = J->ndense, nb = J->nbc;
-  const int nr = nc * nd, nn = (nc + 1) * nd;
-  const size_t n = (size_t)J->n, rb = jac_bc_row(J), per = 2 * (size_t)nn + (size_t)nf;
+  const int nn = (J->ncol + 1) * J->ndim;
+  const size_t n = (size_t)J->n, per = 2 * (size_t)nn + (size_t)J->nfpr;
   const double *C = colloc_jac_coll_block(J, j);
   if (c->sumsq) {
     const size_t len = J->coll_stride;
@@ -210,14 +235,8 @@ static void pair_interval(void *p, int j)
     c->sumsq[j] = (q[0] + q[1]) + (q[2] + q[3]);
   }
   matvec_interval((void *)&c->mv, j);
-  for (int v = 0; v < c->mv.k; v++) {
-    const double *x = c->XT + (size_t)v * n, *xd = x + rb + (size_t)nb;
-    const double *xj = x + (size_t)j * (size_t)nr;
-    double *t = c->scratch + ((size_t)j * (size_t)c->mv.k + (size_t)v) * per;
-    cblas_dgemv(CblasColMajor, CblasTrans, nr, nn, 1.0, C, nr, xj, 1, 0.0, t, 1);
-    if (nf > 0) cblas_dgemv(CblasColMajor, CblasTrans, nr, nf, 1.0, C + (size_t)nn * (size_t)nr, nr, xj, 1, 0.0, t + nn, 1);
-    cblas_dgemv(CblasColMajor, CblasTrans, nq, nn, 1.0, colloc_jac_dense_block(J, j), nq, xd, 1, 0.0, t + nn + nf, 1);
-  }
+  for (int v = 0; v < c->mv.k; v++)
+    interval_transposed(J, j, c->XT + (size_t)v * n, c->scratch + ((size_t)j * (size_t)c->mv.k + (size_t)v) * per);
 }
 
 void colloc_jac_matvec_pair_team(const colloc_jac *J, cable_team *team, int k, const double *X, double *Y,
@@ -252,32 +271,14 @@ void colloc_jac_matvec_pair_team(const colloc_jac *J, cable_team *team, int k, c
      colloc_jac_matvec_transpose_many adds them), then the end rows */
   memset(YT, 0, (size_t)k * n * sizeof(double));
   for (int j = 0; j < J->ntst; j++)
-    for (int v = 0; v < k; v++) {
-      const double *t = scratch + ((size_t)j * (size_t)k + (size_t)v) * per;
-      double *y = YT + (size_t)v * n, *yn = y + jac_node(J, j), *p = y + jac_par(J);
-      for (int i = 0; i < nn; i++) yn[i] += t[i];
-      for (int q = 0; q < nf; q++) p[q] += t[nn + q];
-      for (int i = 0; i < nn; i++) yn[i] += t[nn + nf + i];
-    }
-  for (int v = 0; v < k; v++) {
-    const double *x = XT + (size_t)v * n, *xd = x + rb + (size_t)nb;
-    double *y = YT + (size_t)v * n, *p = y + jac_par(J);
-    if (nb > 0) {
-      const double *xb = x + rb;
-      cblas_dgemv(CblasColMajor, CblasTrans, nb, nd, 1.0, J->bc, nb, xb, 1, 1.0, y, 1);
-      cblas_dgemv(CblasColMajor, CblasTrans, nb, nd, 1.0, J->bc + (size_t)nd * (size_t)nb, nb, xb, 1, 1.0,
-                  y + jac_node(J, J->ntst), 1);
-      if (nf > 0)
-        cblas_dgemv(CblasColMajor, CblasTrans, nb, nf, 1.0, J->bc + (size_t)(2 * nd) * (size_t)nb, nb, xb, 1, 1.0, p,
-                    1);
-    }
-    if (nf > 0) cblas_dgemv(CblasColMajor, CblasTrans, nq, nf, 1.0, J->dense_par, nq, xd, 1, 1.0, p, 1);
-  }
+    for (int v = 0; v < k; v++)
+      add_interval(J, j, scratch + ((size_t)j * (size_t)k + (size_t)v) * per, YT + (size_t)v * n);
+  for (int v = 0; v < k; v++) add_end_rows_transposed(J, XT + (size_t)v * n, YT + (size_t)v * n);
 }
 
-void colloc_jac_matvec_transpose(const colloc_jac *J, const double *x, double *y)
+int colloc_jac_matvec_transpose(const colloc_jac *J, const double *x, double *y)
 {
-  colloc_jac_matvec_transpose_many(J, 1, x, y);
+  return colloc_jac_matvec_transpose_many(J, 1, x, y);
 }
 
 void colloc_jac_to_dense(const colloc_jac *J, double *A)

@@ -49,13 +49,13 @@ static inline double *colloc_jac_dense_block(const colloc_jac *J, int j) { retur
 
 /* y = J x (length n each). */
 void colloc_jac_matvec(const colloc_jac *J, const double *x, double *y);
-/* y = J^T x. */
-void colloc_jac_matvec_transpose(const colloc_jac *J, const double *x, double *y);
+/* y = J^T x; CABLE_SUCCESS, or CABLE_ERR_ALLOC (its work space). */
+int colloc_jac_matvec_transpose(const colloc_jac *J, const double *x, double *y);
 /* The same for k vectors at once: X, Y hold k vectors of length n one after
  * the other; each block of J is read once for all of them, and every vector's
  * result is bit for bit that of the single-vector call. */
 void colloc_jac_matvec_many(const colloc_jac *J, int k, const double *X, double *Y);
-void colloc_jac_matvec_transpose_many(const colloc_jac *J, int k, const double *X, double *Y);
+int colloc_jac_matvec_transpose_many(const colloc_jac *J, int k, const double *X, double *Y);
 /* J x and J X with the collocation rows of the intervals shared out over a
  * thread team (cable_team.h; NULL: the calling thread): the same results, bit
  * for bit, for every team size, and the same as the calls above. */
@@ -67,8 +67,9 @@ void colloc_jac_matvec_many_team(const colloc_jac *J, cable_team *team, int k, c
  * 4-way sum of abd_solver.c's ||J||_F).  The transposed contributions go to
  * scratch (colloc_jac_pair_scratch doubles) and are added in interval order
  * afterwards, so Y is bit for bit colloc_jac_matvec_many_team's and YT
- * colloc_jac_matvec_transpose_many's (the BLAS adds a column's dot product
- * to y as y + dot; tests/test_colloc.c compares them), for every team size. */
+ * colloc_jac_matvec_transpose_many's (both add each interval's contribution,
+ * computed with beta = 0, in the same order: a BLAS may add a dot product to
+ * y in parts; tests/test_threads.c compares them), for every team size. */
 size_t colloc_jac_pair_scratch(const colloc_jac *J, int k);
 void colloc_jac_matvec_pair_team(const colloc_jac *J, cable_team *team, int k, const double *X, double *Y,
                                  const double *XT, double *YT, double *scratch, double *sumsq);

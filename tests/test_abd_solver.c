@@ -168,7 +168,7 @@ static void check_config(const config *c, uint64_t seed)
   dense_mv(d.A, n, 0, b, t2);
   snprintf(what, sizeof what, "%s matvec vs dense (tol n*eps*||J||*||x||)", tag);
   test_le(what, diff_inf(t, t2, n), n * eps * d.anorm * norm_inf(b, n));
-  colloc_jac_matvec_transpose(J, b, t);
+  test_int("matvec_transpose: status", colloc_jac_matvec_transpose(J, b, t), 0);
   dense_mv(d.A, n, 1, b, t2);
   snprintf(what, sizeof what, "%s matvec_transpose vs dense", tag);
   test_le(what, diff_inf(t, t2, n), n * eps * LAPACKE_dlange(LAPACK_COL_MAJOR, '1', n, n, d.A, n) * norm_inf(b, n));

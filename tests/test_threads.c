@@ -384,7 +384,7 @@ static void test_matvec(void)
   double *scr = malloc(colloc_jac_pair_scratch(J, (int)k) * sizeof *scr), *sq = malloc((size_t)J->ntst * sizeof *sq);
   if (XT && YT0 && YT && scr && sq) {
     for (size_t i = 0; i < k * n; i++) XT[i] = X[(i * 7 + 3) % (k * n)] - 0.25;
-    colloc_jac_matvec_transpose_many(J, (int)k, XT, YT0);
+    test_int("matvec: J^T X (status)", colloc_jac_matvec_transpose_many(J, (int)k, XT, YT0), CABLE_SUCCESS);
     double errt = 0, scalet = 0;
     for (size_t v = 0; v < k; v++)
       for (size_t c = 0; c < n; c++) {
