@@ -390,12 +390,43 @@ int cont_locate(cable_cont *cc, int type, int which, double seed)
 int cont_locate_events(cable_cont *cc, int type, int which, double seed, int *itp)
 {
   *itp = CABLE_TY_NONE;
+  const double lp_far = cc->tft.lp;
+  int lp_at_bp = 0;   /* the fold test's sign change is the located BP's */
   int rc = cont_locate(cc, type, which, seed);
+  if (rc != CABLE_SUCCESS && rc != CABLE_ERR_CALLBACK && type == CABLE_TY_LP && cont_bp_detect(cc) &&
+      cc->tf.det_sign != cc->tft.det_sign) {
+    /* The fold test's sign change was not located, and the determinant
+       changed sign in the same step: the extended matrix is singular inside
+       it, and the tangent there is dominated by its kernel, so the fold test
+       computed from it passes through a pole, not a zero (the (7,2) knot's
+       mode 3 branch in braid_knot_sym at T = -15.507: -4.1e-4 and 3.7e-4 at
+       the step's ends, -1.1e-2 and -2.7e-2 at iterates 2e-3 apart in its
+       middle; whether the secant still converged depended on the BLAS's
+       rounding).  The branch point is the special point to locate, and
+       the fold test's sign change is counted as passed there: the turn in
+       the parameter and the singular point are one point to the location's
+       resolution (the next step's fold location failed again, within 3e-6
+       of arclength of the located BP). */
+    char lp_err[300];
+    snprintf(lp_err, sizeof lp_err, "%.299s", cc->err);
+    type = CABLE_TY_BP;
+    which = -1;
+    rc = cont_locate(cc, type, which, (double)NAN);
+    if (rc == CABLE_SUCCESS) {
+      char note[sizeof cc->note];
+      snprintf(note, sizeof note, "%s", cc->note);
+      snprintf(cc->note, sizeof cc->note, "%.199s%.2sa fold and a branch point in one point: the fold test changed "
+               "sign with the determinant and was not located (%.200s); the branch point is", note,
+               note[0] ? "; " : "", lp_err);
+      cc->tft.lp = copysign(fabs(cc->tft.lp), lp_far);
+      lp_at_bp = 1;
+    }
+  }
   if (rc != CABLE_SUCCESS) return rc;
   *itp = type;
   if (type == CABLE_TY_BP) cc->bp_kind = CABLE_BP_SIMPLE; /* det changed sign */
   if (CONT_EVENTS_MAX < 2) return rc;
-  if (type == CABLE_TY_BP && cc->c->ilp > 0) {
+  if (type == CABLE_TY_BP && cc->c->ilp > 0 && !lp_at_bp) {
     /* At the located BP the tangent is the interpolated one (branch_tangent):
        its principal-parameter component is no fold test when a fold is
        closer than the step's curvature error (a BP 0.005 from an LP: the
@@ -420,8 +451,8 @@ int cont_locate_events(cable_cont *cc, int type, int which, double seed, int *it
        it, and any user zero that vanishes there too (it is at the point,
        not before it: one point, AUTO's "first come, first served") */
     cont_tests seen = cc->tft;
-    if (type == CABLE_TY_LP) seen.lp = cc->tf.lp;
-    else if (type == CABLE_TY_BP) seen.det_sign = cc->tf.det_sign;
+    if (type == CABLE_TY_LP || lp_at_bp) seen.lp = cc->tf.lp;
+    if (type == CABLE_TY_BP) seen.det_sign = cc->tf.det_sign;
     for (int k = 0; k < cc->c->nuzr; k++)
       if (seen.uz[k] == 0.0 ||
           (type == CABLE_TY_UZ && cc->c->uzr[k].par == cc->c->uzr[which].par &&
