@@ -21,7 +21,7 @@ from conftest import BUILD, PYTHON, ROOT
 CABLE = os.path.join(BUILD, 'cable')
 AUTO_PY = '/usr/lib/auto-07p/python'
 KNOT = "e='braid_knot', c='knot72'"
-NMX = 40          # the knot72 flat branch (it ends at RL1 after 29 points; labels at its branch points)
+NMX = 40          # the knot72 flat branch (it ends at RL1 after about 30 points; labels at its BPs)
 POLL = 0.02       # seconds between looks at the files while a run goes
 
 # AUTO-07p's parsers, in a python of their own: rows (PT, LAB, TY, PAR) of
@@ -146,8 +146,15 @@ def reference(tmp_path_factory):
                        env=env(), timeout=600)
     assert p.returncode == 0, p.stderr
     rows = check_files(d, 'flat')
-    # the branch leaves RL1 = 34 at its 29th point
-    assert len(rows) == 29 and sum(1 for r in rows if r[1]) == 6
+    # the branch leaves RL1 = 34 at its 29th or 30th point, an EP, with the
+    # start and its four double BPs labelled.  Which of the two depends on
+    # whether a double BP is found by the pencil test inside its step (the
+    # next step starts at the BP) or by the dip test after it (the grid goes
+    # on from the point behind it): rounding decides near sigma_1 ~ 1e-6,
+    # 29 on one CI machine, 30 on an AMD EPYC with the same code.  The tests
+    # compare the killed runs with this machine's own complete run.
+    assert len(rows) < NMX and rows[-1][2] == 9 and rows[-1][3] > 34.0
+    assert sum(1 for r in rows if r[1]) == 6 and sum(1 for r in rows if r[2] == 6) == 4
     return rows
 
 
@@ -187,7 +194,7 @@ def test_sigkill_cable_replay_keeps_every_published_point(tmp_path, reference, k
     wait_rows(p, os.path.join(d, 'b.flat'), k)
     p.send_signal(signal.SIGKILL)
     p.wait()
-    # killed while computing (the whole branch has 29 points)
+    # killed while computing (the whole branch has about 30 points)
     assert k <= len(check_files(d, 'flat', reference)) < len(reference)
 
 
