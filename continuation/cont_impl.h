@@ -78,6 +78,7 @@ struct cable_cont {
   int started;                  /* the start has been processed */
   int restart;                  /* start came from a stored solution */
   int switch_pending;           /* ISW = -1 from a BP: first step along the kernel */
+  int switched_start;           /* the run's first point was such a switch (its first step is checked) */
   int pvls_fatal;               /* a negative PVLS status seen at a trial point (0: none) */
   int store_failed;             /* PVLS failed while storing a point: its solution is half
                                    written, so no MX point repeats it */
